@@ -1,0 +1,345 @@
+// stereoshift: a thin command line over the library (transpiler/stereoshift.h).
+//
+//   stereoshift [options] <input> -o <output>          one shader
+//   stereoshift [options] --pipeline a.vert,a.geom,a.frag -o <dir>   one pipeline
+//   stereoshift build <src-dir> -o <out-dir> [options] a whole tree (pipelines by base name)
+#include "transpiler/stereoshift.h"
+
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace stereoshift;
+
+namespace {
+
+bool readFile(const std::string& path, std::string* out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  *out = s.str();
+  return true;
+}
+
+// Writes through a temporary file renamed into place: a failure never leaves a partial output.
+bool writeAtomically(const fs::path& path, const std::string& bytes, std::string* error) {
+  std::error_code ec;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+  fs::path temp = path;
+  temp += ".stereoshift-tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      *error = "cannot write '" + temp.string() + "'";
+      return false;
+    }
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out.flush()) {
+      *error = "cannot write '" + temp.string() + "'";
+      fs::remove(temp, ec);
+      return false;
+    }
+  }
+  fs::rename(temp, path, ec);
+  if (ec) {
+    *error = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message();
+    fs::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+// Prints the diagnostics; returns how many were errors.
+int printDiagnostics(const Diagnostics& diags) {
+  std::cerr << diags.format();
+  return diags.errorCount();
+}
+
+void printErrorSummary(int errors) {
+  if (errors > 0) std::cerr << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
+}
+
+struct CliOptions {
+  TranspileOptions t;
+  std::vector<std::string> inputs;
+  std::string output;
+  std::string stage, target, eyeSource = "auto", shiftForm = "branch";
+  std::string pipeline;
+  std::string reportPath;
+  bool noCutoff = false, exactCutoff = false, noInvariant = false, noHalo = false;
+  std::optional<uint32_t> set, binding, hlslRegister, glBinding;
+  std::optional<int> targetVersion;
+};
+
+void addConversionOptions(CLI::App& app, CliOptions& o) {
+  app.add_option("-S,--stage", o.stage, "Shader stage when the extension does not say: vert, tesc, tese, geom, frag, comp, mesh, task");
+  app.add_option("-e,--entry-point", o.t.entryPoint, "HLSL entry point (default: main, then VSMain/PSMain/GSMain/DSMain/HSMain/CSMain)");
+  app.add_option("-D", o.t.defines, "Define a preprocessor macro: -DNAME or -DNAME=VALUE")->allow_extra_args(false);
+  app.add_option("-I", o.t.includeDirs, "Add an #include search directory")->allow_extra_args(false);
+  app.add_option("--target", o.target, "Output language: glsl, essl, hlsl, msl, spirv, spirv-asm (default: the input's own)");
+  app.add_option("--target-version", o.targetVersion, "GLSL/ESSL version or HLSL shader model (50, 51, 60) of the output");
+  app.add_option("--eye-source", o.eyeSource, "Where eyeSign/separation/convergence live: auto, uniform-block, push-constant, spec-constant, loose-uniforms");
+  app.add_option("--block-name", o.t.eye.blockName, "Name of the injected uniform block / cbuffer")->capture_default_str();
+  app.add_option("--instance-name", o.t.eye.instanceName, "Instance name of the injected block")->capture_default_str();
+  app.add_option("--set", o.set, "Descriptor set of the injected block (default 0)");
+  app.add_option("--binding", o.binding, "Binding of the injected block (default: one past the highest used)");
+  app.add_option("--hlsl-register", o.hlslRegister, "HLSL cbuffer register b<N> of the injected block (default: first free)");
+  app.add_option("--gl-binding", o.glBinding, "OpenGL uniform-block binding (default: none, bound by name)");
+  app.add_option("--spec-id-base", o.t.eye.specIdBase, "SpecId of eyeSign with --eye-source=spec-constant; separation and convergence follow")->capture_default_str();
+  app.add_option("--cutoff-epsilon", o.t.cutoffEpsilon, "Leave vertices with |w - 1| <= epsilon unshifted (0: the driver's exact w != 1)")->capture_default_str();
+  app.add_flag("--no-cutoff", o.noCutoff, "Shift every vertex, including w == 1 (2D) ones");
+  app.add_option("--shift-form", o.shiftForm, "How the cutoff is coded: branch (if) or select (branch-free)")->capture_default_str();
+  app.add_flag("--no-invariant", o.noInvariant, "Do not mark the position invariant / the shift NoContraction");
+  app.add_flag("--no-halo", o.noHalo, "Do not shift outputs derived from the clip position");
+  app.add_option("--pass", o.t.onlyPasses, "Run only this pass (repeatable): clip-position-detection, eye-params, halo, stereo-shift");
+  app.add_flag("--print-all", o.t.printAll, "Print the SPIR-V after every pass to stderr");
+  app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
+  app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
+  app.add_flag("--force-reemit", o.t.forceReemit, "Re-emit shaders that need no change instead of copying them");
+  app.add_option("--report", o.reportPath, "Write a JSON report of what was done");
+}
+
+std::optional<std::string> finishOptions(CliOptions& o) {
+  if (!o.stage.empty()) {
+    o.t.stage = stageFromName(o.stage);
+    if (!o.t.stage) return "unknown stage '" + o.stage + "' (vert, tesc, tese, geom, frag, comp, mesh, task)";
+  }
+  static const std::map<std::string, TargetLanguage> targets = {
+      {"glsl", TargetLanguage::Glsl}, {"essl", TargetLanguage::Essl}, {"hlsl", TargetLanguage::Hlsl},
+      {"msl", TargetLanguage::Msl}, {"spirv", TargetLanguage::Spirv}, {"spirv-asm", TargetLanguage::SpirvAsm}};
+  if (!o.target.empty()) {
+    auto it = targets.find(o.target);
+    if (it == targets.end()) return "unknown --target '" + o.target + "'";
+    o.t.target = it->second;
+  }
+  static const std::map<std::string, EyeSource> sources = {
+      {"auto", EyeSource::Auto}, {"uniform-block", EyeSource::UniformBlock},
+      {"push-constant", EyeSource::PushConstant}, {"spec-constant", EyeSource::SpecConstant},
+      {"loose-uniforms", EyeSource::LooseUniforms}};
+  auto src = sources.find(o.eyeSource);
+  if (src == sources.end()) return "unknown --eye-source '" + o.eyeSource + "'";
+  o.t.eye.source = src->second;
+  if (o.shiftForm == "branch") o.t.shiftForm = ShiftForm::Branch;
+  else if (o.shiftForm == "select") o.t.shiftForm = ShiftForm::Select;
+  else return "unknown --shift-form '" + o.shiftForm + "' (branch, select)";
+  if (o.t.cutoffEpsilon < 0) return "--cutoff-epsilon must be >= 0";
+  if (o.noCutoff) o.t.cutoff = CutoffMode::None;
+  else if (o.t.cutoffEpsilon == 0.0f) o.t.cutoff = CutoffMode::Exact;
+  o.t.invariantPosition = !o.noInvariant;
+  o.t.haloFix = !o.noHalo;
+  o.t.eye.descriptorSet = o.set;
+  o.t.eye.binding = o.binding;
+  o.t.eye.hlslRegister = o.hlslRegister;
+  o.t.eye.glBinding = o.glBinding;
+  o.t.targetVersion = o.targetVersion;
+  static const std::vector<std::string> passNames = {"clip-position-detection", "eye-params", "halo", "stereo-shift"};
+  for (const auto& p : o.t.onlyPasses)
+    if (std::find(passNames.begin(), passNames.end(), p) == passNames.end()) return "unknown --pass '" + p + "'";
+  return std::nullopt;
+}
+
+bool writeReport(const std::string& path, const nlohmann::json& report) {
+  if (path.empty()) return true;
+  std::string error;
+  if (!writeAtomically(path, report.dump(2) + "\n", &error)) {
+    std::cerr << "stereoshift: error: " << error << "\n";
+    return false;
+  }
+  return true;
+}
+
+// Converts one list of stages (a single shader is a pipeline of one) and writes the outputs.
+// `outputFor(i)` names each stage's output. Returns the number of errors.
+int convert(const std::vector<SourceFile>& sources, const CliOptions& o,
+            const std::function<std::string(size_t, const TranspileResult&)>& outputFor, nlohmann::json& reports) {
+  std::vector<TranspileResult> results = sources.size() == 1 && !o.t.stage.has_value() && o.pipeline.empty()
+                                             ? std::vector<TranspileResult>{transpile(sources[0], o.t)}
+                                             : transpilePipeline(sources, o.t);
+  int errors = 0;
+  for (size_t i = 0; i < results.size(); ++i) {
+    auto& r = results[i];
+    int diagnosticErrors = printDiagnostics(r.diagnostics);
+    if (!r.passLog.empty()) std::cerr << r.passLog;
+    if (!r.ok) {
+      errors += std::max(1, diagnosticErrors);
+      r.report["ok"] = false;
+      reports.push_back(r.report);
+      continue;
+    }
+    std::string out = outputFor(i, r);
+    if (out == "-" || out.empty()) {
+      std::cout << r.output;
+    } else {
+      std::string error;
+      if (!writeAtomically(out, r.output, &error)) {
+        std::cerr << out << ": error: " << error << "\n";
+        ++errors;
+        continue;
+      }
+      r.report["output_file"] = out;
+    }
+    r.report["ok"] = true;
+    reports.push_back(r.report);
+  }
+  return errors;
+}
+
+std::vector<std::string> splitCommas(const std::string& s) {
+  std::vector<std::string> parts;
+  std::stringstream in(s);
+  for (std::string part; std::getline(in, part, ',');)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+// The file name of a shader without its stage and language extensions: terrain.vert.hlsl -> terrain.
+std::string pipelineKey(const fs::path& p) {
+  std::string name = p.filename().string();
+  return (p.parent_path() / name.substr(0, name.find('.'))).string();
+}
+
+int runBuild(const std::string& sourceDir, const std::string& outDir, CliOptions& o) {
+  std::error_code ec;
+  if (!fs::is_directory(sourceDir, ec)) {
+    std::cerr << sourceDir << ": error: not a directory\n";
+    printErrorSummary(1);
+    return 1;
+  }
+  // Shaders are the files whose name carries a stage; everything else (includes, docs) is skipped.
+  std::map<std::string, std::vector<fs::path>> pipelines;
+  std::vector<fs::path> files;
+  for (auto& entry : fs::recursive_directory_iterator(sourceDir, ec))
+    if (entry.is_regular_file()) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files)
+    if (stageFromPath(f.string())) pipelines[pipelineKey(f)].push_back(f);
+
+  nlohmann::json reports = nlohmann::json::array();
+  int errors = 0, done = 0, total = static_cast<int>(files.size());
+  bool tty = ::isatty(2);
+  for (auto& [key, stages] : pipelines) {
+    std::vector<SourceFile> sources;
+    for (const auto& p : stages) {
+      SourceFile s{p.string(), {}};
+      if (!readFile(p.string(), &s.contents)) {
+        std::cerr << p.string() << ": error: cannot read file\n";
+        ++errors;
+        continue;
+      }
+      sources.push_back(std::move(s));
+    }
+    CliOptions stageOptions = o;
+    stageOptions.pipeline = "group";
+    // Each shader directory and an `include` directory beside it are include roots.
+    for (const auto& s : sources) {
+      fs::path dir = fs::path(s.path).parent_path();
+      stageOptions.t.includeDirs.push_back(dir.string());
+      if (fs::is_directory(dir / "include")) stageOptions.t.includeDirs.push_back((dir / "include").string());
+    }
+    errors += convert(sources, stageOptions,
+                      [&](size_t i, const TranspileResult&) {
+                        return (fs::path(outDir) / fs::relative(sources[i].path, sourceDir)).string();
+                      },
+                      reports);
+    done += static_cast<int>(sources.size());
+    if (tty) std::cerr << "\r[" << done << "/" << total << "] " << key << "\x1b[K" << std::flush;
+  }
+  if (tty) std::cerr << "\n";
+  nlohmann::json summary;
+  summary["tool"] = std::string("stereoshift ") + version();
+  summary["shaders"] = reports;
+  std::map<std::string, int> counts;
+  for (const auto& r : reports) counts[r.value("classification", r.value("ok", false) ? "?" : "failed")]++;
+  summary["classification_counts"] = counts;
+  std::string reportPath = o.reportPath.empty() ? (fs::path(outDir) / "stereoshift-report.json").string() : o.reportPath;
+  writeReport(reportPath, summary);
+  std::cerr << "converted " << reports.size() << " shaders from " << sourceDir << " into " << outDir;
+  for (const auto& [c, n] : counts) std::cerr << ", " << n << " " << c;
+  std::cerr << "\n";
+  printErrorSummary(errors);
+  return errors ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"stereoshift: converts mono shaders (GLSL, ESSL, HLSL, SPIR-V) into stereoscopic ones"};
+  app.set_version_flag("--version", std::string("stereoshift ") + version());
+  CliOptions o;
+  addConversionOptions(app, o);
+  app.add_option("input", o.inputs, "Input shader (.vert .tesc .tese .geom .frag .comp .mesh .task, .hlsl, .spv)");
+  app.add_option("-o,--output", o.output, "Output file (a directory with --pipeline); '-' or none: standard output");
+  app.add_option("--pipeline", o.pipeline, "Comma-separated stages of one pipeline; only its last pre-rasterization stage is shifted");
+
+  CliOptions b;
+  auto* build = app.add_subcommand("build", "Convert a whole shader tree: stages grouped into pipelines by base name");
+  addConversionOptions(*build, b);
+  std::string buildSource, buildOut;
+  build->add_option("source", buildSource, "Source directory")->required();
+  build->add_option("-o,--output", buildOut, "Output directory (mirrors the source tree)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  if (*build) {
+    if (auto error = finishOptions(b)) {
+      std::cerr << "stereoshift: error: " << *error << "\n";
+      return 2;
+    }
+    return runBuild(buildSource, buildOut, b);
+  }
+
+  if (auto error = finishOptions(o)) {
+    std::cerr << "stereoshift: error: " << *error << "\n";
+    return 2;
+  }
+  std::vector<std::string> paths = o.pipeline.empty() ? o.inputs : splitCommas(o.pipeline);
+  if (!o.pipeline.empty()) paths.insert(paths.end(), o.inputs.begin(), o.inputs.end());
+  if (paths.empty()) {
+    std::cerr << "stereoshift: error: no input file (see --help)\n";
+    return 2;
+  }
+  if (paths.size() > 1 && o.pipeline.empty()) {
+    std::cerr << "stereoshift: error: several inputs need --pipeline (or use 'stereoshift build')\n";
+    return 2;
+  }
+  std::vector<SourceFile> sources;
+  int readErrors = 0;
+  for (const auto& p : paths) {
+    SourceFile s{p, {}};
+    std::error_code ec;
+    if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
+      std::cerr << p << ": error: cannot read file\n";
+      ++readErrors;
+      continue;
+    }
+    sources.push_back(std::move(s));
+  }
+  if (readErrors) {
+    printErrorSummary(readErrors);
+    return 1;
+  }
+  nlohmann::json reports = nlohmann::json::array();
+  int errors = convert(sources, o,
+                       [&](size_t i, const TranspileResult&) {
+                         if (sources.size() == 1) return o.output;
+                         if (o.output.empty() || o.output == "-") return std::string("-");
+                         return (fs::path(o.output) / fs::path(sources[i].path).filename()).string();
+                       },
+                       reports);
+  writeReport(o.reportPath, sources.size() == 1 && !reports.empty() ? reports[0] : reports);
+  printErrorSummary(errors);
+  return errors ? 1 : 0;
+}

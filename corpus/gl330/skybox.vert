@@ -1,0 +1,19 @@
+#version 330
+// stereoshift-expect: shift
+// Skybox vertex shader: rotation-only view matrix, depth forced to the far plane with pos.xyww.
+
+layout(location = 0) in vec3 aPosition;
+
+uniform mat4 uView;
+uniform mat4 uProjection;
+
+out vec3 vDirection;
+
+void main()
+{
+    // Drop the translation so the box stays centred on the camera.
+    mat4 rotationOnly = mat4(mat3(uView));
+    vec4 pos = uProjection * rotationOnly * vec4(aPosition, 1.0);
+    vDirection = aPosition;
+    gl_Position = pos.xyww;
+}

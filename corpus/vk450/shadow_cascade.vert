@@ -1,0 +1,26 @@
+#version 450
+// stereoshift-expect: shift
+// Cascaded shadow-map vertex shader: light view-projection per cascade selected by a push constant (mono pass).
+
+const int CASCADE_COUNT = 4;
+
+layout(set = 0, binding = 0) uniform ShadowUBO {
+    mat4 lightViewProj[CASCADE_COUNT];
+    vec4 cascadeSplits;
+} shadow;
+
+layout(push_constant) uniform ShadowPush {
+    mat4 model;
+    int cascadeIndex;
+} push;
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec2 inUV;
+
+layout(location = 0) out vec2 outUV;
+
+void main()
+{
+    outUV = inUV;
+    gl_Position = shadow.lightViewProj[push.cascadeIndex] * push.model * vec4(inPosition, 1.0);
+}

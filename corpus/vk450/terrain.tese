@@ -1,0 +1,34 @@
+#version 450
+// stereoshift-expect: shift
+// Terrain tessellation evaluation shader: bilinear patch interpolation, height-map displacement, perspective projection.
+
+layout(quads, fractional_even_spacing, ccw) in;
+
+layout(set = 0, binding = 0) uniform TerrainUBO {
+    mat4 viewProj;
+    vec4 cameraPos;
+    vec4 terrainScale;
+    vec4 viewport;
+} terrain;
+
+layout(set = 0, binding = 1) uniform sampler2D heightMap;
+
+layout(location = 0) in vec2 inUV[];
+
+layout(location = 0) out vec2 outUV;
+layout(location = 1) out float outHeight;
+
+void main()
+{
+    vec2 t = gl_TessCoord.xy;
+    vec2 uv = mix(mix(inUV[0], inUV[1], t.x), mix(inUV[3], inUV[2], t.x), t.y);
+    vec4 pos = mix(mix(gl_in[0].gl_Position, gl_in[1].gl_Position, t.x),
+                   mix(gl_in[3].gl_Position, gl_in[2].gl_Position, t.x), t.y);
+
+    float h = textureLod(heightMap, uv, 0.0).r;
+    pos.y += h * terrain.terrainScale.y;
+
+    outUV = uv;
+    outHeight = h;
+    gl_Position = terrain.viewProj * pos;
+}

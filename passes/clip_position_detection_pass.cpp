@@ -1,0 +1,157 @@
+// clip-position-detection: turns a module into a classification and the list of its clip-position
+// outputs (BuiltIn Position variables, members of gl_PerVertex-style blocks, per-vertex arrays).
+// It changes nothing; later passes act on what it found.
+#include "passes/pass.h"
+
+#include <cstring>
+
+namespace stereoshift {
+
+using spirv::Instruction;
+
+namespace {
+
+bool isFloatConstantOne(const spirv::Module& m, uint32_t id) {
+  const Instruction* def = m.definition(id);
+  if (!def || def->opcode != spv::OpConstant) return false;
+  const Instruction* type = m.definition(def->typeId);
+  if (!type || type->opcode != spv::OpTypeFloat || type->operand(0) != 32) return false;
+  float value;
+  uint32_t bits = def->operand(0);
+  std::memcpy(&value, &bits, 4);
+  return value == 1.0f;
+}
+
+// Whether `value` (a vec4) provably has w == 1.0 at compile time.
+bool hasConstantW1(const spirv::Module& m, uint32_t value) {
+  const Instruction* def = m.definition(value);
+  if (!def) return false;
+  if (def->opcode == spv::OpConstantComposite && def->operands.size() == 4)
+    return isFloatConstantOne(m, def->operands[3]);
+  if (def->opcode == spv::OpCompositeConstruct && !def->operands.empty())
+    return isFloatConstantOne(m, def->operands.back());  // last constituent is the scalar w
+  return false;
+}
+
+class ClipPositionDetectionPass final : public Pass {
+ public:
+  const char* name() const override { return "clip-position-detection"; }
+
+  PassResult run(PassContext& ctx) override {
+    auto& m = ctx.module;
+    auto& report = ctx.report["passes"][name()];
+    spv::ExecutionModel model = m.executionModel();
+    findPositions(ctx);
+    nlohmann::json found = nlohmann::json::array();
+    for (const auto& p : ctx.positions) found.push_back(p.description);
+    report["positions"] = found;
+
+    bool preRaster = model == spv::ExecutionModelVertex || model == spv::ExecutionModelTessellationEvaluation ||
+                     model == spv::ExecutionModelGeometry || model == spv::ExecutionModelMeshEXT ||
+                     model == spv::ExecutionModelMeshNV;
+    if (!preRaster) {
+      ctx.classification = Classification::NoPositionStage;
+    } else if (!ctx.options.shiftThisStage) {
+      ctx.classification = Classification::Intermediate;
+    } else if (ctx.positions.empty()) {
+      ctx.classification = Classification::NoPositionOutput;
+    } else if (carriesEyeParameters(ctx)) {
+      ctx.classification = Classification::AlreadyStereo;
+      ctx.diags.note(ctx.file, "shader already carries stereo eye parameters ('" + ctx.options.eye.eyeSignName +
+                                   "'); left as it is, never shifted twice");
+    } else if (allWritesHaveConstantW1(ctx)) {
+      ctx.classification = Classification::ConstantW1;
+    } else {
+      ctx.classification = Classification::Perspective;
+    }
+    report["classification"] = toString(ctx.classification);
+    return PassResult::Unchanged;
+  }
+
+ private:
+  static void findPositions(PassContext& ctx) {
+    auto& m = ctx.module;
+    for (uint32_t id : m.entryInterface()) {
+      const Instruction* var = m.definition(id);
+      if (!var || var->opcode != spv::OpVariable || var->operand(0) != spv::StorageClassOutput) continue;
+      uint32_t type = m.pointeeType(var->typeId);
+      bool arrayed = false;
+      const Instruction* typeDef = m.definition(type);
+      if (typeDef && typeDef->opcode == spv::OpTypeArray) {
+        arrayed = true;
+        type = typeDef->operand(0);
+        typeDef = m.definition(type);
+      }
+      std::string varName = m.name(id);
+      if (m.decorationValue(id, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInPosition)) {
+        ctx.positions.push_back({id, false, 0, arrayed, varName.empty() ? "position" : varName});
+        continue;
+      }
+      if (!typeDef || typeDef->opcode != spv::OpTypeStruct) continue;
+      for (uint32_t member = 0; member < typeDef->operands.size(); ++member)
+        if (m.memberDecorationValue(type, member, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInPosition))
+          ctx.positions.push_back({id, true, member, arrayed,
+                                   m.name(type) + "." + m.memberName(type, member)});
+    }
+  }
+
+  // An earlier stereoshift run (or the application itself) already declares eyeSign next to
+  // separation: shifting again would double the parallax.
+  static bool carriesEyeParameters(const PassContext& ctx) {
+    bool eyeSign = false, separation = false;
+    for (const auto& n : ctx.module.allNames()) {
+      eyeSign |= n == ctx.options.eye.eyeSignName;
+      separation |= n == ctx.options.eye.separationName;
+    }
+    return eyeSign && separation;
+  }
+
+  // True when every write of every clip position stores a vector whose w is the literal 1.0.
+  static bool allWritesHaveConstantW1(const PassContext& ctx) {
+    const auto& m = ctx.module;
+    bool sawStore = false;
+    for (const auto& position : ctx.positions) {
+      if (position.arrayed) return false;
+      // Pointers to the whole position: the variable itself, or chains to the position member.
+      auto isChainToPosition = [&](const Instruction& inst) {
+        if (inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain) return false;
+        if (inst.operand(0) != position.variable || inst.operands.size() != 2) return false;
+        const Instruction* index = m.definition(inst.operand(1));
+        return index && index->opcode == spv::OpConstant && index->operand(0) == position.member;
+      };
+      std::vector<uint32_t> pointers;
+      if (!position.isMember) pointers.push_back(position.variable);
+      for (const auto& fn : m.functions)
+        for (const auto& block : fn.blocks)
+          for (const auto& inst : block.instructions)
+            if (position.isMember && isChainToPosition(inst)) pointers.push_back(inst.resultId);
+      for (const auto& fn : m.functions)
+        for (const auto& block : fn.blocks)
+          for (const auto& inst : block.instructions) {
+            if (inst.opcode == spv::OpLoad) continue;
+            if (position.isMember && isChainToPosition(inst)) continue;
+            if (position.isMember && (inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) &&
+                inst.operand(0) == position.variable && inst.operands.size() > 2) {
+              const Instruction* index = m.definition(inst.operand(1));
+              if (!index || index->opcode != spv::OpConstant || index->operand(0) == position.member) return false;
+            }
+            bool usesPointer = false;
+            for (uint32_t operand : inst.operands)
+              for (uint32_t p : pointers) usesPointer |= operand == p;
+            // The whole block written at once (e.g. a struct copy) is not provable either.
+            if (position.isMember && inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain)
+              for (uint32_t operand : inst.operands) usesPointer |= operand == position.variable;
+            if (!usesPointer) continue;
+            if (inst.opcode != spv::OpStore || !hasConstantW1(m, inst.operand(1))) return false;
+            sawStore = true;
+          }
+    }
+    return sawStore;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Pass> createClipPositionDetectionPass() { return std::make_unique<ClipPositionDetectionPass>(); }
+
+}  // namespace stereoshift

@@ -1,0 +1,166 @@
+// halo: turns outputs computed from the clip position before the shift (a copied position, screen
+// UVs derived from it) into ones computed from the shifted position, so they move with the geometry
+// instead of leaving a mono "halo" behind (a known 3Dmigoto artifact).
+//
+// Data flow tracked: values stored to the position, loads of the position, and function-local
+// variables whose every store is such a value. Each other output whose stored value is computed
+// from one of those, through pure arithmetic in the same function, gets that computation cloned
+// with the position replaced by its shifted value (the same instruction sequence as the shift).
+#include "passes/pass.h"
+
+#include <map>
+#include <set>
+
+namespace stereoshift {
+
+using spirv::Instruction;
+
+namespace {
+
+bool isPureArithmetic(spv::Op op) {
+  switch (op) {
+    case spv::OpCompositeExtract: case spv::OpCompositeConstruct: case spv::OpCompositeInsert:
+    case spv::OpVectorShuffle: case spv::OpFAdd: case spv::OpFSub: case spv::OpFMul: case spv::OpFDiv:
+    case spv::OpFNegate: case spv::OpVectorTimesScalar: case spv::OpMatrixTimesVector:
+    case spv::OpVectorTimesMatrix: case spv::OpDot: case spv::OpExtInst: case spv::OpCopyObject:
+    case spv::OpFMod: case spv::OpSelect:
+      return true;
+    default:
+      return false;
+  }
+}
+
+class HaloPass final : public Pass {
+ public:
+  const char* name() const override { return "halo"; }
+
+  PassResult run(PassContext& ctx) override {
+    if (ctx.classification != Classification::Perspective || !ctx.options.haloFix || !ctx.eyeDeclared)
+      return PassResult::Unchanged;
+    auto& m = ctx.module;
+    auto& report = ctx.report["passes"][name()];
+
+    std::set<uint32_t> positionPointers, positionOutputs;
+    for (const auto& p : ctx.positions) positionOutputs.insert(p.variable);
+    std::set<uint32_t> builtinOutputs;
+    for (uint32_t id : m.entryInterface())
+      if (m.hasDecoration(id, spv::DecorationBuiltIn)) builtinOutputs.insert(id);
+
+    nlohmann::json fixed = nlohmann::json::array();
+    for (auto& fn : m.functions) {
+      // Pointers to the position: the variable, or its chain to the position member.
+      std::set<uint32_t> pointers;
+      for (const auto& p : ctx.positions) {
+        if (!p.isMember) pointers.insert(p.variable);
+        for (const auto& block : fn.blocks)
+          for (const auto& inst : block.instructions)
+            if (p.isMember && inst.opcode == spv::OpAccessChain && inst.operand(0) == p.variable &&
+                inst.operands.size() == 2) {
+              const Instruction* index = m.definition(inst.operand(1));
+              if (index && index->operand(0) == p.member) pointers.insert(inst.resultId);
+            }
+      }
+      // Values equal to the (mono) position.
+      std::set<uint32_t> positionValues;
+      std::map<uint32_t, std::vector<uint32_t>> storesToLocal;
+      std::set<uint32_t> locals;
+      for (const auto& block : fn.blocks)
+        for (const auto& inst : block.instructions) {
+          if (inst.opcode == spv::OpStore && pointers.count(inst.operand(0))) positionValues.insert(inst.operand(1));
+          if (inst.opcode == spv::OpVariable) locals.insert(inst.resultId);
+          if (inst.opcode == spv::OpStore) storesToLocal[inst.operand(0)].push_back(inst.operand(1));
+        }
+      for (bool grew = true; grew;) {
+        grew = false;
+        for (const auto& block : fn.blocks)
+          for (const auto& inst : block.instructions) {
+            if (inst.opcode != spv::OpLoad || positionValues.count(inst.resultId)) continue;
+            uint32_t from = inst.operand(0);
+            bool fromLocalCopy = locals.count(from) && !storesToLocal[from].empty() &&
+                                 std::all_of(storesToLocal[from].begin(), storesToLocal[from].end(),
+                                             [&](uint32_t v) { return positionValues.count(v) > 0; });
+            if (pointers.count(from) || fromLocalCopy) {
+              positionValues.insert(inst.resultId);
+              grew = true;
+            }
+          }
+        // Stores into locals from position values make those locals' loads position values next round.
+      }
+      if (positionValues.empty()) continue;
+
+      for (auto& block : fn.blocks) {
+        for (size_t i = 0; i < block.instructions.size(); ++i) {
+          const Instruction store = block.instructions[i];
+          if (store.opcode != spv::OpStore || pointers.count(store.operand(0))) continue;
+          uint32_t target = rootVariable(m, store.operand(0));
+          if (!target || positionOutputs.count(target) || builtinOutputs.count(target)) continue;
+          if (m.storageClassOf(target) != spv::StorageClassOutput) continue;
+          std::vector<Instruction> code;
+          std::map<uint32_t, uint32_t> cloned;
+          uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
+          if (newValue == store.operand(1)) continue;  // not derived from the position
+          block.instructions[i].operands[1] = newValue;
+          block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
+          i += code.size();
+          m.invalidateDefinitions();
+          fixed.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
+        }
+      }
+    }
+    report["shifted_outputs"] = fixed;
+    return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
+  }
+
+ private:
+  static uint32_t rootVariable(const spirv::Module& m, uint32_t pointer) {
+    for (int depth = 0; depth < 16; ++depth) {
+      const Instruction* def = m.definition(pointer);
+      if (!def) return 0;
+      if (def->opcode == spv::OpVariable) return pointer;
+      if (def->opcode != spv::OpAccessChain && def->opcode != spv::OpInBoundsAccessChain) return 0;
+      pointer = def->operand(0);
+    }
+    return 0;
+  }
+
+  // Returns `value` itself when it does not depend on the position, else the id of a clone computed
+  // from the shifted position (instructions appended to `code`).
+  uint32_t cloneWithShift(PassContext& ctx, uint32_t value, const std::set<uint32_t>& positionValues,
+                          std::vector<Instruction>& code, std::map<uint32_t, uint32_t>& cloned, int depth) {
+    if (auto it = cloned.find(value); it != cloned.end()) return it->second;
+    auto& m = ctx.module;
+    if (positionValues.count(value)) {
+      uint32_t shifted = emitShiftedVec4Select(ctx, code, value);
+      cloned[value] = shifted;
+      return shifted;
+    }
+    const Instruction* def = m.definition(value);
+    if (!def || depth > 64 || !isPureArithmetic(def->opcode)) return value;
+    Instruction copy = *def;
+    bool changed = false;
+    // Operand words that are ids: all for these opcodes except literal indices and ext-inst numbers.
+    size_t firstLiteral = copy.operands.size();
+    if (copy.opcode == spv::OpCompositeExtract) firstLiteral = 1;
+    if (copy.opcode == spv::OpCompositeInsert) firstLiteral = 2;
+    if (copy.opcode == spv::OpVectorShuffle) firstLiteral = 2;
+    for (size_t k = 0; k < std::min(firstLiteral, copy.operands.size()); ++k) {
+      if (copy.opcode == spv::OpExtInst && k < 2) continue;  // set id and instruction number
+      uint32_t replaced = cloneWithShift(ctx, copy.operands[k], positionValues, code, cloned, depth + 1);
+      if (replaced != copy.operands[k]) {
+        copy.operands[k] = replaced;
+        changed = true;
+      }
+    }
+    if (!changed) return value;
+    copy.resultId = m.takeId();
+    code.push_back(copy);
+    cloned[value] = copy.resultId;
+    return copy.resultId;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Pass> createHaloPass() { return std::make_unique<HaloPass>(); }
+
+}  // namespace stereoshift

@@ -1,0 +1,141 @@
+#include "passes/pass.h"
+
+#include <glslang/SPIRV/GLSL.std.450.h>
+
+namespace stereoshift {
+
+using spirv::Instruction;
+
+const char* toString(PassResult result) {
+  switch (result) {
+    case PassResult::Unchanged: return "unchanged";
+    case PassResult::Changed: return "changed";
+    case PassResult::Failed: return "failed";
+  }
+  return "?";
+}
+
+const char* toString(Classification c) {
+  switch (c) {
+    case Classification::Perspective: return "perspective";
+    case Classification::ConstantW1: return "2d-constant-w";
+    case Classification::AlreadyStereo: return "already-stereo";
+    case Classification::Intermediate: return "intermediate-stage";
+    case Classification::NoPositionStage: return "no-position-stage";
+    case Classification::NoPositionOutput: return "no-position-output";
+  }
+  return "?";
+}
+
+bool targetSupportsPrecise(const PassContext& context) {
+  TargetLanguage target = context.options.target;
+  if (target == TargetLanguage::Auto) {
+    switch (context.source.language) {
+      case SourceLanguage::Hlsl: return true;
+      case SourceLanguage::Spirv: return true;
+      case SourceLanguage::Glsl: break;
+    }
+    int version = context.options.targetVersion.value_or(context.source.version);
+    if (context.source.vulkan) return true;
+    return context.source.es ? version >= 320 : version >= 400;
+  }
+  switch (target) {
+    case TargetLanguage::Spirv: case TargetLanguage::SpirvAsm: case TargetLanguage::Hlsl: return true;
+    case TargetLanguage::Glsl: return context.options.targetVersion.value_or(450) >= 400;
+    case TargetLanguage::Essl: return context.options.targetVersion.value_or(310) >= 320;
+    default: return false;
+  }
+}
+
+uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
+  auto& m = context.module;
+  const EyeParams& eye = context.eye;
+  uint32_t floatType = m.typeFloat(32);
+  switch (eye.source) {
+    case EyeSource::SpecConstant:
+      return eye.specConstants[which];
+    case EyeSource::LooseUniforms: {
+      uint32_t value = m.takeId();
+      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{eye.looseVariables[which]});
+      return value;
+    }
+    case EyeSource::UniformBlock:
+    case EyeSource::PushConstant:
+    case EyeSource::Auto: {
+      auto storage = eye.source == EyeSource::PushConstant ? spv::StorageClassPushConstant
+                                                           : spv::StorageClassUniform;
+      uint32_t pointerType = m.typePointer(storage, floatType);
+      uint32_t index = m.constantInt(static_cast<int32_t>(eye.firstMember + which));
+      uint32_t pointer = m.takeId();
+      out.emplace_back(spv::OpAccessChain, pointerType, pointer, std::vector<uint32_t>{eye.variable, index});
+      uint32_t value = m.takeId();
+      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{pointer});
+      return value;
+    }
+  }
+  return 0;
+}
+
+uint32_t emitShiftedX(PassContext& context, std::vector<Instruction>& out, uint32_t x, uint32_t w) {
+  auto& m = context.module;
+  uint32_t f = m.typeFloat(32);
+  uint32_t eyeSign = emitLoadEyeParam(context, out, 0);
+  uint32_t separation = emitLoadEyeParam(context, out, 1);
+  uint32_t convergence = emitLoadEyeParam(context, out, 2);
+  bool precise = context.options.invariantPosition && targetSupportsPrecise(context);
+  auto op = [&](spv::Op code, uint32_t a, uint32_t b) {
+    uint32_t id = m.takeId();
+    out.emplace_back(code, f, id, std::vector<uint32_t>{a, b});
+    if (precise) m.decorate(id, spv::DecorationNoContraction);
+    return id;
+  };
+  // x + (eyeSign * separation) * (w - convergence): the order of STEREO.md section 1.
+  uint32_t depth = op(spv::OpFSub, w, convergence);
+  uint32_t scale = op(spv::OpFMul, eyeSign, separation);
+  uint32_t offset = op(spv::OpFMul, scale, depth);
+  return op(spv::OpFAdd, x, offset);
+}
+
+uint32_t emitCutoffCondition(PassContext& context, std::vector<Instruction>& out, uint32_t w) {
+  auto& m = context.module;
+  if (context.options.cutoff == CutoffMode::None) return 0;
+  uint32_t boolType = m.typeBool();
+  uint32_t f = m.typeFloat(32);
+  uint32_t one = m.constantFloat(1.0f);
+  if (context.options.cutoff == CutoffMode::Exact || context.options.cutoffEpsilon <= 0.0f) {
+    // The driver's rule: w != 1. Ordered, so a NaN w is never shifted (no new NaN in x).
+    uint32_t cond = m.takeId();
+    out.emplace_back(spv::OpFOrdNotEqual, boolType, cond, std::vector<uint32_t>{w, one});
+    return cond;
+  }
+  uint32_t glsl = m.extInstImport("GLSL.std.450");
+  uint32_t diff = m.takeId();
+  out.emplace_back(spv::OpFSub, f, diff, std::vector<uint32_t>{w, one});
+  uint32_t absDiff = m.takeId();
+  out.emplace_back(spv::OpExtInst, f, absDiff, std::vector<uint32_t>{glsl, GLSLstd450FAbs, diff});
+  uint32_t cond = m.takeId();
+  out.emplace_back(spv::OpFOrdGreaterThan, boolType, cond,
+                   std::vector<uint32_t>{absDiff, m.constantFloat(context.options.cutoffEpsilon)});
+  return cond;
+}
+
+uint32_t emitShiftedVec4Select(PassContext& context, std::vector<Instruction>& out, uint32_t value) {
+  auto& m = context.module;
+  uint32_t f = m.typeFloat(32);
+  uint32_t v4 = m.typeVector(f, 4);
+  uint32_t x = m.takeId();
+  out.emplace_back(spv::OpCompositeExtract, f, x, std::vector<uint32_t>{value, 0});
+  uint32_t w = m.takeId();
+  out.emplace_back(spv::OpCompositeExtract, f, w, std::vector<uint32_t>{value, 3});
+  uint32_t shifted = emitShiftedX(context, out, x, w);
+  if (uint32_t cond = emitCutoffCondition(context, out, w)) {
+    uint32_t chosen = m.takeId();
+    out.emplace_back(spv::OpSelect, f, chosen, std::vector<uint32_t>{cond, shifted, x});
+    shifted = chosen;
+  }
+  uint32_t result = m.takeId();
+  out.emplace_back(spv::OpCompositeInsert, v4, result, std::vector<uint32_t>{shifted, value, 0});
+  return result;
+}
+
+}  // namespace stereoshift

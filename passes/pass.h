@@ -1,0 +1,97 @@
+// The pass interface and what passes share: the clip-position analysis, the eye parameters, and
+// the one piece of code that emits the stereo shift (so the position and its halo copies are shifted
+// by exactly the same instruction sequence, bit for bit).
+#pragma once
+
+#include "transpiler/front_end.h"
+#include "transpiler/spirv_module.h"
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+enum class PassResult { Unchanged, Changed, Failed };
+const char* toString(PassResult result);
+
+// Where the clip position lives: an Output variable, or a member of an Output block.
+struct ClipPosition {
+  uint32_t variable = 0;
+  bool isMember = false;
+  uint32_t member = 0;        // member index in the block, when isMember
+  bool arrayed = false;       // per-vertex arrays (tessellation control, mesh): not shifted here
+  std::string description;    // e.g. "gl_PerVertex.gl_Position"
+};
+
+// Why a shader gets (or does not get) the shift; reported per shader.
+enum class Classification {
+  Perspective,      // last pre-rasterization stage writing a clip position: shifted
+  ConstantW1,       // every write of the position has the literal w = 1.0: 2D, nothing injected
+  AlreadyStereo,    // already carries the eye parameters: never shifted twice
+  Intermediate,     // pre-rasterization stage followed by a later one in its pipeline
+  NoPositionStage,  // tessellation control, fragment, compute, task: no clip position to shift
+  NoPositionOutput, // a pre-rasterization stage that writes no clip position
+};
+const char* toString(Classification c);
+
+// Ids of the injected eye parameters.
+struct EyeParams {
+  EyeSource source = EyeSource::UniformBlock;
+  uint32_t variable = 0;           // block / push-constant variable (UniformBlock, PushConstant)
+  uint32_t firstMember = 0;        // index of eyeSign in that block
+  uint32_t looseVariables[3] = {}; // LooseUniforms
+  uint32_t specConstants[3] = {};  // SpecConstant
+  std::string names[3];            // final names after clash resolution
+};
+
+struct PassContext {
+  spirv::Module& module;
+  const TranspileOptions& options;
+  const SourceInfo& source;
+  Diagnostics& diags;
+  std::string file;
+  nlohmann::json& report;  // passes add what they did under report["passes"][name()]
+
+  // Filled by clip-position-detection.
+  std::vector<ClipPosition> positions;
+  Classification classification = Classification::NoPositionOutput;
+  // Filled by eye-params.
+  EyeParams eye;
+  bool eyeDeclared = false;
+};
+
+class Pass {
+ public:
+  virtual ~Pass() = default;
+  virtual const char* name() const = 0;  // equal to its --pass flag
+  virtual PassResult run(PassContext& context) = 0;
+};
+
+std::unique_ptr<Pass> createClipPositionDetectionPass();
+std::unique_ptr<Pass> createEyeParamsPass();
+std::unique_ptr<Pass> createStereoShiftPass();
+std::unique_ptr<Pass> createHaloPass();
+
+// ---- shared emission helpers -------------------------------------------------------------------
+
+// Appends instructions to `out` that load eye parameter `which` (0 eyeSign, 1 separation,
+// 2 convergence) and returns the id of the loaded float.
+uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>& out, int which);
+
+// Appends `x + eyeSign*separation*(w - convergence)` for the float ids `x` and `w`; returns its id.
+// Marked NoContraction when the options ask for an invariant position, so every copy rounds alike.
+uint32_t emitShiftedX(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t x, uint32_t w);
+
+// Appends the cutoff condition for `w` (a bool id), or returns 0 when the cutoff is off.
+uint32_t emitCutoffCondition(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t w);
+
+// Returns a vec4 id: `value` with x shifted, selected by the cutoff (branch-free; used for halo copies).
+uint32_t emitShiftedVec4Select(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t value);
+
+// Whether the emitted language can express NoContraction (`precise`).
+bool targetSupportsPrecise(const PassContext& context);
+
+}  // namespace stereoshift

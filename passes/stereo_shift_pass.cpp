@@ -1,0 +1,182 @@
+// stereo-shift: turns the last pre-rasterization stage's clip position into the per-eye one,
+// `if (abs(w - 1) > eps) x += eyeSign * separation * (w - convergence)`, applied where the
+// position is final: before every return of a vertex / tessellation-evaluation entry point, and
+// before every EmitVertex / EmitStreamVertex of a geometry shader (in any function).
+#include "passes/pass.h"
+
+namespace stereoshift {
+
+using spirv::Block;
+using spirv::Instruction;
+
+namespace {
+
+class StereoShiftPass final : public Pass {
+ public:
+  const char* name() const override { return "stereo-shift"; }
+
+  PassResult run(PassContext& ctx) override {
+    if (ctx.classification != Classification::Perspective) return PassResult::Unchanged;
+    auto& m = ctx.module;
+    auto& report = ctx.report["passes"][name()];
+    if (!ctx.eyeDeclared) {
+      ctx.diags.error(ctx.file, "stereo-shift needs the eye-params pass to run first");
+      return PassResult::Failed;
+    }
+    spv::ExecutionModel model = m.executionModel();
+    if (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV) {
+      ctx.diags.error(ctx.file, "mesh shaders are not supported yet: the shift of every written vertex "
+                                "(SetMeshOutputs + per-vertex gl_Position writes) is not implemented");
+      return PassResult::Failed;
+    }
+    for (const auto& p : ctx.positions)
+      if (p.arrayed) {
+        ctx.diags.error(ctx.file, "per-vertex clip-position arrays are not supported in this stage");
+        return PassResult::Failed;
+      }
+
+    bool geometry = model == spv::ExecutionModelGeometry;
+    int sites = 0;
+    for (auto& fn : m.functions) {
+      if (!geometry && fn.id() != m.entryFunctionId()) continue;
+      for (size_t bi = 0; bi < fn.blocks.size(); ++bi) {
+        size_t start = 0;
+        while (true) {
+          Block& block = fn.blocks[bi];
+          size_t at = findSite(block, start, geometry);
+          if (at == block.instructions.size()) break;
+          bool split = insertShift(ctx, fn, bi, at);
+          ++sites;
+          if (split) {
+            bi += 2;    // then-block, then the rest block which starts with the site itself
+            start = 1;
+          } else {
+            start = at + 1 + insertedCount_;
+          }
+        }
+      }
+    }
+    if (ctx.options.invariantPosition)
+      for (const auto& p : ctx.positions) {
+        if (p.isMember)
+          m.decorateMember(m.pointeeType(m.definition(p.variable)->typeId), p.member, spv::DecorationInvariant);
+        else
+          m.decorate(p.variable, spv::DecorationInvariant);
+      }
+    m.invalidateDefinitions();
+    report["sites"] = sites;
+    report["form"] = ctx.options.cutoff == CutoffMode::None ? "unconditional"
+                     : ctx.options.shiftForm == ShiftForm::Branch ? "branch" : "select";
+    if (sites == 0) {
+      ctx.diags.warning(ctx.file, geometry ? "geometry shader emits no vertex: nothing shifted"
+                                           : "entry point has no return: nothing shifted");
+      return PassResult::Unchanged;
+    }
+    return PassResult::Changed;
+  }
+
+ private:
+  size_t insertedCount_ = 0;
+
+  static size_t findSite(const Block& block, size_t start, bool geometry) {
+    for (size_t i = start; i < block.instructions.size(); ++i) {
+      spv::Op op = block.instructions[i].opcode;
+      if (geometry ? (op == spv::OpEmitVertex || op == spv::OpEmitStreamVertex) : op == spv::OpReturn) return i;
+    }
+    return block.instructions.size();
+  }
+
+  // Inserts the shift before instruction `at` of block `bi`. Returns true when the block was split
+  // into [head | then | rest]; false when the code went inline (select form, no cutoff, loop header).
+  bool insertShift(PassContext& ctx, spirv::Function& fn, size_t bi, size_t at) {
+    auto& m = ctx.module;
+    uint32_t f = m.typeFloat(32);
+    uint32_t v4 = m.typeVector(f, 4);
+    bool loopHeader = fn.blocks[bi].mergeInstruction() &&
+                      fn.blocks[bi].mergeInstruction()->opcode == spv::OpLoopMerge;
+    bool branch = ctx.options.shiftForm == ShiftForm::Branch && ctx.options.cutoff != CutoffMode::None &&
+                  !loopHeader;
+
+    if (!branch) {
+      std::vector<Instruction> code;
+      for (const auto& p : ctx.positions) {
+        uint32_t pointer = positionPointer(ctx, code, p, v4);
+        uint32_t value = m.takeId();
+        code.emplace_back(spv::OpLoad, v4, value, std::vector<uint32_t>{pointer});
+        uint32_t shifted = emitShiftedVec4Select(ctx, code, value);
+        code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{pointer, shifted});
+      }
+      auto& insts = fn.blocks[bi].instructions;
+      insts.insert(insts.begin() + static_cast<long>(at), code.begin(), code.end());
+      insertedCount_ = code.size();
+      m.invalidateDefinitions();
+      return false;
+    }
+
+    // head: load the position and test the cutoff; then: store the shifted x; rest: the site onward.
+    Block& head = fn.blocks[bi];
+    uint32_t headLabel = head.labelId;
+    Block rest{m.takeId(), {}};
+    rest.instructions.assign(head.instructions.begin() + static_cast<long>(at), head.instructions.end());
+    head.instructions.resize(at);
+    Block then{m.takeId(), {}};
+
+    // Several clip positions are exotic; each gets its own guard inside the single then-block.
+    std::vector<Instruction>& headCode = head.instructions;
+    const auto& p = ctx.positions.front();
+    uint32_t pointer = positionPointer(ctx, headCode, p, v4);
+    uint32_t value = m.takeId();
+    headCode.emplace_back(spv::OpLoad, v4, value, std::vector<uint32_t>{pointer});
+    uint32_t w = m.takeId();
+    headCode.emplace_back(spv::OpCompositeExtract, f, w, std::vector<uint32_t>{value, 3});
+    uint32_t cond = emitCutoffCondition(ctx, headCode, w);
+    headCode.emplace_back(spv::OpSelectionMerge, 0, 0, std::vector<uint32_t>{rest.labelId, 0});
+    headCode.emplace_back(spv::OpBranchConditional, 0, 0, std::vector<uint32_t>{cond, then.labelId, rest.labelId});
+
+    uint32_t x = m.takeId();
+    then.instructions.emplace_back(spv::OpCompositeExtract, f, x, std::vector<uint32_t>{value, 0});
+    uint32_t shiftedX = emitShiftedX(ctx, then.instructions, x, w);
+    uint32_t xPointer = m.takeId();
+    std::vector<uint32_t> chain = {p.variable};
+    if (p.isMember) chain.push_back(m.constantInt(static_cast<int32_t>(p.member)));
+    chain.push_back(m.constantInt(0));
+    then.instructions.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, f), xPointer, chain);
+    then.instructions.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{xPointer, shiftedX});
+    for (size_t i = 1; i < ctx.positions.size(); ++i) {  // further positions: branch-free
+      const auto& extra = ctx.positions[i];
+      uint32_t extraPointer = positionPointer(ctx, then.instructions, extra, v4);
+      uint32_t extraValue = m.takeId();
+      then.instructions.emplace_back(spv::OpLoad, v4, extraValue, std::vector<uint32_t>{extraPointer});
+      uint32_t shifted = emitShiftedVec4Select(ctx, then.instructions, extraValue);
+      then.instructions.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{extraPointer, shifted});
+    }
+    then.instructions.emplace_back(spv::OpBranch, 0, 0, std::vector<uint32_t>{rest.labelId});
+
+    // Successors' phis that named the head as their predecessor now come from the rest block.
+    for (auto& block : fn.blocks)
+      for (auto& inst : block.instructions) {
+        if (inst.opcode != spv::OpPhi) continue;
+        for (size_t k = 1; k < inst.operands.size(); k += 2)
+          if (inst.operands[k] == headLabel) inst.operands[k] = rest.labelId;
+      }
+    fn.blocks.insert(fn.blocks.begin() + static_cast<long>(bi) + 1, std::move(then));
+    fn.blocks.insert(fn.blocks.begin() + static_cast<long>(bi) + 2, std::move(rest));
+    m.invalidateDefinitions();
+    return true;
+  }
+
+  static uint32_t positionPointer(PassContext& ctx, std::vector<Instruction>& out, const ClipPosition& p, uint32_t v4) {
+    if (!p.isMember) return p.variable;
+    auto& m = ctx.module;
+    uint32_t pointer = m.takeId();
+    out.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, v4), pointer,
+                     std::vector<uint32_t>{p.variable, m.constantInt(static_cast<int32_t>(p.member))});
+    return pointer;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Pass> createStereoShiftPass() { return std::make_unique<StereoShiftPass>(); }
+
+}  // namespace stereoshift

@@ -1,0 +1,45 @@
+// Diagnostics in clang/glslc form: `file:line:col: error: message`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+enum class Severity { Note, Warning, Error };
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  std::string file;  // empty: no location
+  int line = 0;      // 0: whole file
+  int column = 0;    // 0: unknown
+  std::string message;
+
+  std::string format() const;  // "file:line:col: error: message"
+};
+
+class Diagnostics {
+ public:
+  void error(std::string file, int line, int column, std::string message);
+  void error(std::string file, std::string message) { error(std::move(file), 0, 0, std::move(message)); }
+  void warning(std::string file, std::string message);
+  void note(std::string file, std::string message);
+  void add(Diagnostic d) { list_.push_back(std::move(d)); }
+  void append(const Diagnostics& other) { list_.insert(list_.end(), other.list_.begin(), other.list_.end()); }
+
+  int errorCount() const;
+  bool hasErrors() const { return errorCount() > 0; }
+  const std::vector<Diagnostic>& all() const { return list_; }
+  std::string format() const;  // every diagnostic, one per line
+
+ private:
+  std::vector<Diagnostic> list_;
+};
+
+// Turns a glslang info log into diagnostics. glslang 12 reports `ERROR: file:line: 'token' : text`
+// without a column; the column is recovered by finding the quoted token on that source line.
+// `sourceOf(file)` returns the text of a file the compile read (main file or an include).
+void parseGlslangLog(const std::string& log, const std::string& mainFile,
+                     const std::vector<std::pair<std::string, std::string>>& sources, Diagnostics& out);
+
+}  // namespace stereoshift

@@ -1,0 +1,386 @@
+#include "transpiler/front_end.h"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+void ensureGlslangInitialized() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+namespace {
+
+EShLanguage toGlslang(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return EShLangVertex;
+    case Stage::TessControl: return EShLangTessControl;
+    case Stage::TessEvaluation: return EShLangTessEvaluation;
+    case Stage::Geometry: return EShLangGeometry;
+    case Stage::Fragment: return EShLangFragment;
+    case Stage::Compute: return EShLangCompute;
+    case Stage::Task: return EShLangTask;
+    case Stage::Mesh: return EShLangMesh;
+    default: return EShLangVertex;
+  }
+}
+
+std::string readFile(const fs::path& path, bool* ok) {
+  std::ifstream in(path, std::ios::binary);
+  *ok = static_cast<bool>(in);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Resolves #include only inside the including file's directory and the -I directories, so a
+// shader tree conversion never reads outside what the user named.
+class RestrictedIncluder : public glslang::TShader::Includer {
+ public:
+  RestrictedIncluder(std::string mainFile, std::vector<std::string> includeDirs)
+      : mainFile_(std::move(mainFile)), includeDirs_(std::move(includeDirs)) {}
+
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
+    fs::path base = (depth <= 1 || !includer || !*includer) ? fs::path(mainFile_).parent_path()
+                                                            : fs::path(includer).parent_path();
+    if (auto* r = tryOpen(base, header)) return r;
+    return includeSystem(header, includer, depth);
+  }
+
+  IncludeResult* includeSystem(const char* header, const char*, size_t) override {
+    for (const auto& dir : includeDirs_)
+      if (auto* r = tryOpen(dir, header)) return r;
+    return nullptr;
+  }
+
+  void releaseInclude(IncludeResult* result) override {
+    if (!result) return;
+    delete static_cast<std::string*>(result->userData);
+    delete result;
+  }
+
+  const std::vector<std::pair<std::string, std::string>>& sources() const { return sources_; }
+  const std::vector<std::string>& includedFiles() const { return included_; }
+
+ private:
+  IncludeResult* tryOpen(const fs::path& dir, const char* header) {
+    fs::path candidate = (dir.empty() ? fs::path(".") : dir) / header;
+    std::error_code ec;
+    if (!fs::is_regular_file(candidate, ec)) return nullptr;
+    fs::path root = fs::weakly_canonical(dir.empty() ? fs::path(".") : dir, ec);
+    fs::path resolved = fs::weakly_canonical(candidate, ec);
+    auto rel = resolved.lexically_relative(root);
+    if (rel.empty() || *rel.begin() == "..") return nullptr;  // escapes the allowed directory
+    bool ok = false;
+    auto* text = new std::string(readFile(candidate, &ok));
+    if (!ok) {
+      delete text;
+      return nullptr;
+    }
+    std::string name = candidate.lexically_normal().string();
+    sources_.emplace_back(name, *text);
+    if (std::find(included_.begin(), included_.end(), name) == included_.end()) included_.push_back(name);
+    return new IncludeResult(name, text->data(), text->size(), text);
+  }
+
+  std::string mainFile_;
+  std::vector<std::string> includeDirs_;
+  std::vector<std::pair<std::string, std::string>> sources_;
+  std::vector<std::string> included_;
+};
+
+struct VersionLine {
+  int version = 110;  // GLSL's default without #version
+  bool es = false;
+  size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
+};
+
+VersionLine findVersion(const std::string& text) {
+  static const std::regex re(R"((^|\n)[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]*(es|core|compatibility)?)");
+  VersionLine v;
+  std::smatch m;
+  if (std::regex_search(text, m, re)) {
+    v.version = std::stoi(m[2]);
+    v.es = m[3] == "es";
+    v.begin = static_cast<size_t>(m.position(0)) + m[1].length();
+    v.end = static_cast<size_t>(m.position(0) + m.length(0));
+  }
+  if (v.version == 100) v.es = true;
+  return v;
+}
+
+std::string buildPreamble(const std::vector<std::string>& defines, bool glsl) {
+  std::string preamble;
+  if (glsl) preamble += "#extension GL_GOOGLE_include_directive : enable\n";
+  for (const auto& d : defines) {
+    auto eq = d.find('=');
+    if (eq == std::string::npos)
+      preamble += "#define " + d + " 1\n";
+    else
+      preamble += "#define " + d.substr(0, eq) + " " + d.substr(eq + 1) + "\n";
+  }
+  return preamble;
+}
+
+void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, SourceInfo& info) {
+  auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
+  if (!root) return;
+  for (auto* node : root->getSequence()) {
+    auto* agg = node->getAsAggregate();
+    if (!agg || agg->getOp() != glslang::EOpLinkerObjects) continue;
+    for (auto* object : agg->getSequence()) {
+      auto* symbol = object->getAsSymbolNode();
+      if (!symbol) continue;
+      const auto& type = symbol->getType();
+      const auto& q = type.getQualifier();
+      std::vector<std::string> keys = {symbol->getName().c_str()};
+      if (type.getBasicType() == glslang::EbtBlock) keys.push_back(type.getTypeName().c_str());
+      for (const auto& key : keys) {
+        if (q.hasLocation()) info.explicitLocation.insert(key);
+        if (q.hasBinding()) info.explicitBinding.insert(key);
+        if (q.hasSet()) info.explicitSet.insert(key);
+      }
+    }
+  }
+}
+
+struct Attempt {
+  bool ok = false;
+  std::vector<uint32_t> spirv;
+  Diagnostics diags;
+  SourceInfo info;
+  std::vector<std::string> included;
+};
+
+enum class Client { Vulkan, OpenGL };
+
+Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
+                           Client client, const std::string& entry, const TranspileOptions& options) {
+  Attempt attempt;
+  EShLanguage lang = toGlslang(stage);
+  glslang::TShader shader(lang);
+  const char* strings[] = {text.c_str()};
+  const int lengths[] = {static_cast<int>(text.size())};
+  const char* names[] = {input.path.c_str()};
+  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  std::string preamble = buildPreamble(options.defines, language == SourceLanguage::Glsl);
+  shader.setPreamble(preamble.c_str());
+  int messages = EShMsgSpvRules;
+  if (language == SourceLanguage::Hlsl) {
+    shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTargetHlslFunctionality1();  // keeps semantic strings (UserSemantic decorations)
+    shader.setHlslIoMapping(true);
+    shader.setEntryPoint(entry.c_str());
+    shader.setSourceEntryPoint(entry.c_str());
+    messages |= EShMsgReadHlsl | EShMsgVulkanRules | EShMsgHlslOffsets;
+  } else if (client == Client::Vulkan) {
+    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    messages |= EShMsgVulkanRules;
+  } else {
+    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 100);
+    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+  }
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  shader.setAutoMapLocations(true);
+  shader.setAutoMapBindings(true);
+
+  RestrictedIncluder includer(input.path, options.includeDirs);
+  bool parsed = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includer);
+  std::vector<std::pair<std::string, std::string>> sources = {{input.path, input.contents}};
+  for (const auto& s : includer.sources()) sources.push_back(s);
+  attempt.included = includer.includedFiles();
+  if (!parsed) {
+    parseGlslangLog(shader.getInfoLog(), input.path, sources, attempt.diags);
+    if (!attempt.diags.hasErrors()) attempt.diags.error(input.path, "glslang could not parse the shader");
+    return attempt;
+  }
+  recordExplicitQualifiers(*shader.getIntermediate(), attempt.info);
+
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(static_cast<EShMessages>(messages)) || !program.mapIO()) {
+    parseGlslangLog(program.getInfoLog(), input.path, sources, attempt.diags);
+    if (!attempt.diags.hasErrors()) attempt.diags.error(input.path, "glslang could not link the shader");
+    return attempt;
+  }
+  glslang::SpvOptions spvOptions;
+  spvOptions.generateDebugInfo = false;
+  spvOptions.disableOptimizer = true;
+  spvOptions.validate = false;
+  spv::SpvBuildLogger logger;
+  glslang::GlslangToSpv(*program.getIntermediate(lang), attempt.spirv, &logger, &spvOptions);
+  std::string spvMessages = logger.getAllMessages();
+  if (attempt.spirv.empty()) {
+    attempt.diags.error(input.path, "SPIR-V generation failed: " + spvMessages);
+    return attempt;
+  }
+  attempt.ok = true;
+  return attempt;
+}
+
+bool looksBinary(const std::string& bytes) {
+  size_t checked = std::min<size_t>(bytes.size(), 4096);
+  return std::memchr(bytes.data(), '\0', checked) != nullptr;
+}
+
+// HLSL entry point: -e, else `main`, else the stage-conventional name found in the source.
+std::string chooseHlslEntry(const std::string& text, Stage stage, const std::string& requested) {
+  if (!requested.empty()) return requested;
+  auto defines = [&](const std::string& name) {
+    return std::regex_search(text, std::regex("\\b" + name + "\\s*\\("));
+  };
+  if (defines("main")) return "main";
+  const char* conventional = nullptr;
+  switch (stage) {
+    case Stage::Vertex: conventional = "VSMain"; break;
+    case Stage::Fragment: conventional = "PSMain"; break;
+    case Stage::Geometry: conventional = "GSMain"; break;
+    case Stage::TessControl: conventional = "HSMain"; break;
+    case Stage::TessEvaluation: conventional = "DSMain"; break;
+    case Stage::Compute: conventional = "CSMain"; break;
+    case Stage::Mesh: conventional = "MSMain"; break;
+    case Stage::Task: conventional = "ASMain"; break;
+    default: break;
+  }
+  if (conventional && defines(conventional)) return conventional;
+  return "main";
+}
+
+}  // namespace
+
+FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags) {
+  FrontEndResult result;
+  ensureGlslangInitialized();
+
+  std::optional<Stage> stage = options.stage ? options.stage : stageFromPath(input.path);
+  if (!stage) {
+    diags.error(input.path, "cannot tell the shader stage from the file name; use -S <stage> "
+                            "(vert, tesc, tese, geom, frag, comp, mesh, task)");
+    return result;
+  }
+  std::string lowerPath = input.path;
+  std::transform(lowerPath.begin(), lowerPath.end(), lowerPath.begin(), ::tolower);
+  bool hlsl = lowerPath.ends_with(".hlsl") || lowerPath.ends_with(".fx") || lowerPath.ends_with(".hlsli");
+  SourceLanguage language = hlsl ? SourceLanguage::Hlsl : SourceLanguage::Glsl;
+
+  if (language == SourceLanguage::Hlsl) {
+    std::string entry = chooseHlslEntry(input.contents, *stage, options.entryPoint);
+    Attempt a = compileGlslangOnce(input, input.contents, *stage, language, Client::Vulkan, entry, options);
+    diags.append(a.diags);
+    if (!a.ok) return result;
+    result.ok = true;
+    result.spirv = std::move(a.spirv);
+    result.info = std::move(a.info);
+    result.info.language = language;
+    result.info.stage = *stage;
+    result.info.entryPoint = entry;
+    result.info.vulkan = true;
+    result.includedFiles = std::move(a.included);
+    return result;
+  }
+
+  // GLSL: decide the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL
+  // (tried first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
+  VersionLine v = findVersion(input.contents);
+  std::string text = input.contents;
+  bool raised = false;
+  if (v.es && v.version < 310) {
+    if (v.version == 100) {
+      diags.error(input.path, 1, 1,
+                  "ESSL 100 is not supported yet: glslang 12 cannot make SPIR-V from `attribute`/`varying` "
+                  "shaders (convert to ESSL 300, or use --target with a GLSL 300 es source)");
+      return result;
+    }
+    // glslang 12 refuses ES < 310 for SPIR-V; parse as 310 (same line count) and emit the original.
+    if (v.begin != std::string::npos) text.replace(v.begin, v.end - v.begin, "#version 310 es");
+    raised = true;
+  }
+  std::vector<Client> clients;
+  bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);
+  if (mayBeVulkan) clients.push_back(Client::Vulkan);
+  clients.push_back(Client::OpenGL);
+
+  std::optional<Attempt> best;
+  for (Client client : clients) {
+    Attempt a = compileGlslangOnce(input, text, *stage, language, client, "main", options);
+    if (a.ok) {
+      a.info.vulkan = client == Client::Vulkan;
+      best = std::move(a);
+      break;
+    }
+    if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
+  }
+  if (!best->ok) {
+    diags.append(best->diags);
+    return result;
+  }
+  diags.append(best->diags);  // warnings
+  result.ok = true;
+  result.spirv = std::move(best->spirv);
+  result.info = std::move(best->info);
+  result.info.language = language;
+  result.info.stage = *stage;
+  result.info.version = v.version;
+  result.info.es = v.es;
+  result.info.versionRaised = raised;
+  result.info.entryPoint = "main";
+  result.includedFiles = std::move(best->included);
+  return result;
+}
+
+bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
+                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags) {
+  ensureGlslangInitialized();
+  EShLanguage lang = toGlslang(stage);
+  glslang::TShader shader(lang);
+  const char* strings[] = {text.c_str()};
+  const char* names[] = {displayName.c_str()};
+  const int lengths[] = {static_cast<int>(text.size())};
+  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  int messages = EShMsgDefault;
+  if (language == SourceLanguage::Hlsl) {
+    shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    shader.setEntryPoint(entryPoint.c_str());
+    shader.setSourceEntryPoint(entryPoint.c_str());
+    messages |= EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules;
+    shader.setAutoMapBindings(true);
+    shader.setAutoMapLocations(true);
+  } else if (vulkanSemantics) {
+    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    messages |= EShMsgSpvRules | EShMsgVulkanRules;
+  }
+  // OpenGL GLSL/ESSL is checked as the driver would see it: AST only, the original dialect's rules.
+  glslang::TShader::ForbidIncluder noIncludes;
+  bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), noIncludes);
+  if (ok) {
+    glslang::TProgram program;
+    program.addShader(&shader);
+    ok = program.link(static_cast<EShMessages>(messages));
+    if (!ok) parseGlslangLog(program.getInfoLog(), displayName, {{displayName, text}}, diags);
+  } else {
+    parseGlslangLog(shader.getInfoLog(), displayName, {{displayName, text}}, diags);
+  }
+  if (!ok && !diags.hasErrors()) diags.error(displayName, "emitted shader does not compile");
+  return ok;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,476 @@
+#include "transpiler/spirv_module.h"
+
+#include <spirv-tools/libspirv.hpp>
+
+#include <cstring>
+
+namespace stereoshift::spirv {
+
+namespace {
+
+constexpr uint32_t kMagic = 0x07230203;
+
+bool isTypeDeclaration(spv::Op op) {
+  switch (op) {
+    case spv::OpTypeVoid: case spv::OpTypeBool: case spv::OpTypeInt: case spv::OpTypeFloat:
+    case spv::OpTypeVector: case spv::OpTypeMatrix: case spv::OpTypeImage: case spv::OpTypeSampler:
+    case spv::OpTypeSampledImage: case spv::OpTypeArray: case spv::OpTypeRuntimeArray:
+    case spv::OpTypeStruct: case spv::OpTypeOpaque: case spv::OpTypePointer:
+    case spv::OpTypeFunction: case spv::OpTypeForwardPointer:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+std::string Instruction::stringOperand(size_t first) const {
+  std::string out;
+  for (size_t i = first; i < operands.size(); ++i) {
+    uint32_t word = operands[i];
+    for (int b = 0; b < 4; ++b) {
+      char c = static_cast<char>((word >> (8 * b)) & 0xff);
+      if (c == 0) return out;
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+size_t Instruction::stringWordCount(size_t first) const {
+  return stringOperand(first).size() / 4 + 1;
+}
+
+void Instruction::appendTo(std::vector<uint32_t>& words) const {
+  uint32_t count = 1 + (typeId ? 1 : 0) + (resultId ? 1 : 0) + static_cast<uint32_t>(operands.size());
+  words.push_back((count << 16) | static_cast<uint32_t>(opcode));
+  if (typeId) words.push_back(typeId);
+  if (resultId) words.push_back(resultId);
+  words.insert(words.end(), operands.begin(), operands.end());
+}
+
+std::vector<uint32_t> encodeString(std::string_view text) {
+  std::vector<uint32_t> words(text.size() / 4 + 1, 0);
+  for (size_t i = 0; i < text.size(); ++i)
+    words[i / 4] |= static_cast<uint32_t>(static_cast<unsigned char>(text[i])) << (8 * (i % 4));
+  return words;
+}
+
+const Instruction* Block::mergeInstruction() const {
+  if (instructions.size() < 2) return nullptr;
+  const Instruction& candidate = instructions[instructions.size() - 2];
+  if (candidate.opcode == spv::OpSelectionMerge || candidate.opcode == spv::OpLoopMerge)
+    return &candidate;
+  return nullptr;
+}
+
+std::optional<Module> Module::parse(const std::vector<uint32_t>& words, std::string* error) {
+  auto fail = [&](const std::string& message) -> std::optional<Module> {
+    if (error) *error = message;
+    return std::nullopt;
+  };
+  if (words.size() < 5) return fail("not a SPIR-V module: shorter than its 5-word header");
+  if (words[0] != kMagic) return fail("not a SPIR-V module: bad magic number");
+  Module module;
+  module.version = words[1];
+  module.generator = words[2];
+  module.bound_ = words[3];
+  module.schema = words[4];
+
+  Function* currentFunction = nullptr;
+  Block* currentBlock = nullptr;
+  size_t at = 5;
+  while (at < words.size()) {
+    uint32_t count = words[at] >> 16;
+    auto op = static_cast<spv::Op>(words[at] & 0xffff);
+    if (count == 0 || at + count > words.size())
+      return fail("malformed SPIR-V: instruction at word " + std::to_string(at) + " overruns the module");
+    bool hasResult = false, hasType = false;
+    spv::HasResultAndType(op, &hasResult, &hasType);
+    Instruction inst;
+    inst.opcode = op;
+    size_t w = at + 1;
+    if (hasType) inst.typeId = w < at + count ? words[w++] : 0;
+    if (hasResult) inst.resultId = w < at + count ? words[w++] : 0;
+    inst.operands.assign(words.begin() + static_cast<long>(w), words.begin() + static_cast<long>(at + count));
+    at += count;
+
+    if (currentFunction) {
+      switch (op) {
+        case spv::OpFunctionParameter:
+          currentFunction->parameters.push_back(std::move(inst));
+          break;
+        case spv::OpLabel:
+          currentFunction->blocks.push_back(Block{inst.resultId, {}});
+          currentBlock = &currentFunction->blocks.back();
+          break;
+        case spv::OpFunctionEnd:
+          currentFunction = nullptr;
+          currentBlock = nullptr;
+          break;
+        default:
+          if (!currentBlock) return fail("malformed SPIR-V: instruction outside a block");
+          currentBlock->instructions.push_back(std::move(inst));
+      }
+      continue;
+    }
+    switch (op) {
+      case spv::OpCapability: module.capabilities.push_back(std::move(inst)); break;
+      case spv::OpExtension: module.extensions.push_back(std::move(inst)); break;
+      case spv::OpExtInstImport: module.extInstImports.push_back(std::move(inst)); break;
+      case spv::OpMemoryModel: module.memoryModel.push_back(std::move(inst)); break;
+      case spv::OpEntryPoint: module.entryPoints.push_back(std::move(inst)); break;
+      case spv::OpExecutionMode: case spv::OpExecutionModeId:
+        module.executionModes.push_back(std::move(inst)); break;
+      case spv::OpString: case spv::OpSource: case spv::OpSourceContinued: case spv::OpSourceExtension:
+        module.debugSource.push_back(std::move(inst)); break;
+      case spv::OpName: case spv::OpMemberName: module.debugNames.push_back(std::move(inst)); break;
+      case spv::OpModuleProcessed: module.debugModuleProcessed.push_back(std::move(inst)); break;
+      case spv::OpDecorate: case spv::OpMemberDecorate: case spv::OpDecorationGroup:
+      case spv::OpGroupDecorate: case spv::OpGroupMemberDecorate: case spv::OpDecorateId:
+      case spv::OpDecorateString: case spv::OpMemberDecorateString:
+        module.annotations.push_back(std::move(inst)); break;
+      case spv::OpFunction:
+        module.functions.push_back(Function{std::move(inst), {}, {}});
+        currentFunction = &module.functions.back();
+        break;
+      default:
+        module.typesValues.push_back(std::move(inst));
+    }
+  }
+  if (currentFunction) return fail("malformed SPIR-V: function without OpFunctionEnd");
+  if (module.memoryModel.empty()) return fail("malformed SPIR-V: no OpMemoryModel");
+  return module;
+}
+
+std::vector<uint32_t> Module::encode() const {
+  std::vector<uint32_t> words = {kMagic, version, generator, bound_, schema};
+  for (const auto* section : {&capabilities, &extensions, &extInstImports, &memoryModel, &entryPoints,
+                              &executionModes, &debugSource, &debugNames, &debugModuleProcessed,
+                              &annotations, &typesValues})
+    for (const auto& inst : *section) inst.appendTo(words);
+  for (const auto& fn : functions) {
+    fn.definition.appendTo(words);
+    for (const auto& p : fn.parameters) p.appendTo(words);
+    for (const auto& block : fn.blocks) {
+      Instruction(spv::OpLabel, 0, block.labelId).appendTo(words);
+      for (const auto& inst : block.instructions) inst.appendTo(words);
+    }
+    Instruction(spv::OpFunctionEnd, 0, 0).appendTo(words);
+  }
+  return words;
+}
+
+void Module::rebuildDefinitions() const {
+  defs_.clear();
+  for (const auto* section : {&extInstImports, &debugSource, &typesValues})
+    for (const auto& inst : *section)
+      if (inst.resultId) defs_[inst.resultId] = &inst;
+  for (const auto& fn : functions) {
+    defs_[fn.definition.resultId] = &fn.definition;
+    for (const auto& p : fn.parameters) defs_[p.resultId] = &p;
+    for (const auto& block : fn.blocks)
+      for (const auto& inst : block.instructions)
+        if (inst.resultId) defs_[inst.resultId] = &inst;
+  }
+  defsValid_ = true;
+}
+
+const Instruction* Module::definition(uint32_t id) const {
+  if (!defsValid_) rebuildDefinitions();
+  auto it = defs_.find(id);
+  return it == defs_.end() ? nullptr : it->second;
+}
+
+std::string Module::name(uint32_t id) const {
+  for (const auto& inst : debugNames)
+    if (inst.opcode == spv::OpName && inst.operand(0) == id) return inst.stringOperand(1);
+  return {};
+}
+
+std::string Module::memberName(uint32_t structId, uint32_t member) const {
+  for (const auto& inst : debugNames)
+    if (inst.opcode == spv::OpMemberName && inst.operand(0) == structId && inst.operand(1) == member)
+      return inst.stringOperand(2);
+  return {};
+}
+
+void Module::setName(uint32_t id, std::string_view text) {
+  std::vector<uint32_t> ops = {id};
+  auto encoded = encodeString(text);
+  ops.insert(ops.end(), encoded.begin(), encoded.end());
+  for (auto& inst : debugNames)
+    if (inst.opcode == spv::OpName && inst.operand(0) == id) {
+      inst.operands = std::move(ops);
+      return;
+    }
+  debugNames.emplace_back(spv::OpName, 0, 0, std::move(ops));
+}
+
+void Module::setMemberName(uint32_t structId, uint32_t member, std::string_view text) {
+  std::vector<uint32_t> ops = {structId, member};
+  auto encoded = encodeString(text);
+  ops.insert(ops.end(), encoded.begin(), encoded.end());
+  for (auto& inst : debugNames)
+    if (inst.opcode == spv::OpMemberName && inst.operand(0) == structId && inst.operand(1) == member) {
+      inst.operands = std::move(ops);
+      return;
+    }
+  debugNames.emplace_back(spv::OpMemberName, 0, 0, std::move(ops));
+}
+
+std::vector<std::string> Module::allNames() const {
+  std::vector<std::string> names;
+  for (const auto& inst : debugNames)
+    names.push_back(inst.opcode == spv::OpName ? inst.stringOperand(1) : inst.stringOperand(2));
+  return names;
+}
+
+bool Module::hasDecoration(uint32_t id, spv::Decoration decoration) const {
+  for (const auto& inst : annotations)
+    if (inst.opcode == spv::OpDecorate && inst.operand(0) == id && inst.operand(1) == uint32_t(decoration))
+      return true;
+  return false;
+}
+
+std::optional<uint32_t> Module::decorationValue(uint32_t id, spv::Decoration decoration) const {
+  for (const auto& inst : annotations)
+    if (inst.opcode == spv::OpDecorate && inst.operand(0) == id && inst.operand(1) == uint32_t(decoration) &&
+        inst.operands.size() > 2)
+      return inst.operand(2);
+  return std::nullopt;
+}
+
+bool Module::hasMemberDecoration(uint32_t structId, uint32_t member, spv::Decoration decoration) const {
+  return memberDecorationValue(structId, member, decoration).has_value() ||
+         std::any_of(annotations.begin(), annotations.end(), [&](const Instruction& inst) {
+           return inst.opcode == spv::OpMemberDecorate && inst.operand(0) == structId &&
+                  inst.operand(1) == member && inst.operand(2) == uint32_t(decoration);
+         });
+}
+
+std::optional<uint32_t> Module::memberDecorationValue(uint32_t structId, uint32_t member,
+                                                      spv::Decoration decoration) const {
+  for (const auto& inst : annotations)
+    if (inst.opcode == spv::OpMemberDecorate && inst.operand(0) == structId && inst.operand(1) == member &&
+        inst.operand(2) == uint32_t(decoration) && inst.operands.size() > 3)
+      return inst.operand(3);
+  return std::nullopt;
+}
+
+void Module::decorate(uint32_t id, spv::Decoration decoration, std::vector<uint32_t> literals) {
+  std::vector<uint32_t> ops = {id, uint32_t(decoration)};
+  ops.insert(ops.end(), literals.begin(), literals.end());
+  annotations.emplace_back(spv::OpDecorate, 0, 0, std::move(ops));
+}
+
+void Module::decorateMember(uint32_t structId, uint32_t member, spv::Decoration decoration,
+                            std::vector<uint32_t> literals) {
+  std::vector<uint32_t> ops = {structId, member, uint32_t(decoration)};
+  ops.insert(ops.end(), literals.begin(), literals.end());
+  annotations.emplace_back(spv::OpMemberDecorate, 0, 0, std::move(ops));
+}
+
+void Module::removeDecorations(uint32_t id, spv::Decoration decoration) {
+  std::erase_if(annotations, [&](const Instruction& inst) {
+    return inst.opcode == spv::OpDecorate && inst.operand(0) == id && inst.operand(1) == uint32_t(decoration);
+  });
+}
+
+uint32_t Module::findType(spv::Op op, const std::vector<uint32_t>& operands) const {
+  for (const auto& inst : typesValues)
+    if (inst.opcode == op && inst.operands == operands) return inst.resultId;
+  return 0;
+}
+
+uint32_t Module::findConstant(uint32_t type, spv::Op op, const std::vector<uint32_t>& operands) const {
+  for (const auto& inst : typesValues)
+    if (inst.opcode == op && inst.typeId == type && inst.operands == operands && !hasDecoration(inst.resultId, spv::DecorationSpecId))
+      return inst.resultId;
+  return 0;
+}
+
+// Types are appended at the end of the types/values section: every operand they refer to already
+// exists, so the definition-before-use rule holds.
+#define STEREOSHIFT_FIND_OR_ADD_TYPE(op, ...)                           \
+  do {                                                                  \
+    std::vector<uint32_t> operands = {__VA_ARGS__};                     \
+    if (uint32_t found = findType(op, operands)) return found;          \
+    uint32_t id = takeId();                                             \
+    typesValues.emplace_back(op, 0, id, std::move(operands));           \
+    invalidateDefinitions();                                            \
+    return id;                                                          \
+  } while (0)
+
+uint32_t Module::typeVoid() { STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeVoid); }
+uint32_t Module::typeBool() { STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeBool); }
+uint32_t Module::typeInt(uint32_t width, bool isSigned) {
+  STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeInt, width, isSigned ? 1u : 0u);
+}
+uint32_t Module::typeFloat(uint32_t width) { STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeFloat, width); }
+uint32_t Module::typeVector(uint32_t componentType, uint32_t count) {
+  STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeVector, componentType, count);
+}
+uint32_t Module::typePointer(spv::StorageClass storage, uint32_t pointee) {
+  STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypePointer, uint32_t(storage), pointee);
+}
+#undef STEREOSHIFT_FIND_OR_ADD_TYPE
+
+uint32_t Module::typeFunction(uint32_t returnType, const std::vector<uint32_t>& params) {
+  std::vector<uint32_t> operands = {returnType};
+  operands.insert(operands.end(), params.begin(), params.end());
+  if (uint32_t found = findType(spv::OpTypeFunction, operands)) return found;
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpTypeFunction, 0, id, std::move(operands));
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::newStruct(const std::vector<uint32_t>& memberTypes) {
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpTypeStruct, 0, id, memberTypes);
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::constantFloat(float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  uint32_t type = typeFloat(32);
+  if (uint32_t found = findConstant(type, spv::OpConstant, {bits})) return found;
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{bits});
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::constantInt(int32_t value) {
+  uint32_t type = typeInt(32, true);
+  auto bits = static_cast<uint32_t>(value);
+  if (uint32_t found = findConstant(type, spv::OpConstant, {bits})) return found;
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{bits});
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::constantUint(uint32_t value) {
+  uint32_t type = typeInt(32, false);
+  if (uint32_t found = findConstant(type, spv::OpConstant, {value})) return found;
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{value});
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::specConstantFloat(float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  uint32_t type = typeFloat(32);
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpSpecConstant, type, id, std::vector<uint32_t>{bits});
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::extInstImport(std::string_view setName) {
+  for (const auto& inst : extInstImports)
+    if (inst.stringOperand(0) == setName) return inst.resultId;
+  uint32_t id = takeId();
+  extInstImports.emplace_back(spv::OpExtInstImport, 0, id, encodeString(setName));
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::addGlobalVariable(uint32_t pointerType, spv::StorageClass storage) {
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpVariable, pointerType, id, std::vector<uint32_t>{uint32_t(storage)});
+  invalidateDefinitions();
+  bool listAll = version >= 0x00010400;
+  if (listAll || storage == spv::StorageClassInput || storage == spv::StorageClassOutput)
+    for (auto& entry : entryPoints) entry.operands.push_back(id);
+  return id;
+}
+
+bool Module::hasCapability(spv::Capability capability) const {
+  for (const auto& inst : capabilities)
+    if (inst.operand(0) == uint32_t(capability)) return true;
+  return false;
+}
+
+void Module::addCapability(spv::Capability capability) {
+  if (!hasCapability(capability))
+    capabilities.emplace_back(spv::OpCapability, 0, 0, std::vector<uint32_t>{uint32_t(capability)});
+}
+
+spv::ExecutionModel Module::executionModel() const {
+  return entryPoints.empty() ? spv::ExecutionModelMax
+                             : static_cast<spv::ExecutionModel>(entryPoints.front().operand(0));
+}
+
+std::string Module::entryPointName() const {
+  return entryPoints.empty() ? std::string() : entryPoints.front().stringOperand(2);
+}
+
+uint32_t Module::entryFunctionId() const {
+  return entryPoints.empty() ? 0 : entryPoints.front().operand(1);
+}
+
+std::vector<uint32_t> Module::entryInterface() const {
+  if (entryPoints.empty()) return {};
+  const auto& entry = entryPoints.front();
+  size_t first = 2 + entry.stringWordCount(2);
+  return {entry.operands.begin() + static_cast<long>(first), entry.operands.end()};
+}
+
+Function* Module::function(uint32_t id) {
+  for (auto& fn : functions)
+    if (fn.id() == id) return &fn;
+  return nullptr;
+}
+
+const Function* Module::function(uint32_t id) const {
+  for (const auto& fn : functions)
+    if (fn.id() == id) return &fn;
+  return nullptr;
+}
+
+std::optional<spv::StorageClass> Module::storageClassOf(uint32_t pointerId) const {
+  const Instruction* def = definition(pointerId);
+  if (!def) return std::nullopt;
+  const Instruction* type = definition(def->typeId);
+  if (!type || type->opcode != spv::OpTypePointer) return std::nullopt;
+  return static_cast<spv::StorageClass>(type->operand(0));
+}
+
+uint32_t Module::pointeeType(uint32_t pointerTypeId) const {
+  const Instruction* type = definition(pointerTypeId);
+  return type && type->opcode == spv::OpTypePointer ? type->operand(1) : 0;
+}
+
+std::string disassemble(const std::vector<uint32_t>& words) {
+  spvtools::SpirvTools tools(SPV_ENV_UNIVERSAL_1_6);
+  std::string text;
+  tools.Disassemble(words, &text,
+                    SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES | SPV_BINARY_TO_TEXT_OPTION_INDENT);
+  return text;
+}
+
+std::vector<uint32_t> assemble(const std::string& text, std::string* error) {
+  spvtools::SpirvTools tools(SPV_ENV_UNIVERSAL_1_6);
+  std::string messages;
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& position,
+                               const char* message) {
+    messages += std::to_string(position.line + 1) + ":" + std::to_string(position.column + 1) +
+                ": error: " + message + "\n";
+  });
+  std::vector<uint32_t> words;
+  if (!tools.Assemble(text, &words, SPV_TEXT_TO_BINARY_OPTION_PRESERVE_NUMERIC_IDS)) {
+    if (error) *error = messages.empty() ? "invalid SPIR-V assembly" : messages;
+    return {};
+  }
+  return words;
+}
+
+}  // namespace stereoshift::spirv

@@ -1,0 +1,335 @@
+#include "transpiler/stereoshift.h"
+
+#include "transpiler/back_end.h"
+#include "transpiler/front_end.h"
+#include "transpiler/pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+namespace stereoshift {
+
+const char* version() { return STEREOSHIFT_VERSION; }
+
+std::optional<Stage> stageFromName(const std::string& raw) {
+  std::string n = raw;
+  std::transform(n.begin(), n.end(), n.begin(), ::tolower);
+  if (n == "vert" || n == "vertex" || n == "vs") return Stage::Vertex;
+  if (n == "tesc" || n == "tesscontrol" || n == "hs" || n == "hull") return Stage::TessControl;
+  if (n == "tese" || n == "tesseval" || n == "tessevaluation" || n == "ds" || n == "domain") return Stage::TessEvaluation;
+  if (n == "geom" || n == "geometry" || n == "gs") return Stage::Geometry;
+  if (n == "frag" || n == "fragment" || n == "ps" || n == "pixel") return Stage::Fragment;
+  if (n == "comp" || n == "compute" || n == "cs") return Stage::Compute;
+  if (n == "mesh" || n == "ms") return Stage::Mesh;
+  if (n == "task" || n == "as" || n == "amplification") return Stage::Task;
+  return std::nullopt;
+}
+
+std::optional<Stage> stageFromPath(const std::string& path) {
+  // name.vert, name.vert.glsl, name.vert.hlsl, name.vs.hlsl
+  std::string file = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  std::vector<std::string> parts;
+  for (size_t start = 0, dot; start <= file.size(); start = dot + 1) {
+    dot = file.find('.', start);
+    if (dot == std::string::npos) dot = file.size();
+    parts.push_back(file.substr(start, dot - start));
+  }
+  for (size_t i = parts.size(); i-- > 1;)
+    if (auto s = stageFromName(parts[i])) return s;
+  return std::nullopt;
+}
+
+const char* stageName(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "vert";
+    case Stage::TessControl: return "tesc";
+    case Stage::TessEvaluation: return "tese";
+    case Stage::Geometry: return "geom";
+    case Stage::Fragment: return "frag";
+    case Stage::Compute: return "comp";
+    case Stage::Task: return "task";
+    case Stage::Mesh: return "mesh";
+    default: return "unknown";
+  }
+}
+
+bool isPreRasterization(Stage stage) {
+  return stage == Stage::Vertex || stage == Stage::TessControl || stage == Stage::TessEvaluation ||
+         stage == Stage::Geometry || stage == Stage::Mesh;
+}
+
+namespace {
+
+constexpr uint32_t kSpirvMagic = 0x07230203;
+
+const char* languageName(SourceLanguage l) {
+  switch (l) {
+    case SourceLanguage::Glsl: return "glsl";
+    case SourceLanguage::Hlsl: return "hlsl";
+    case SourceLanguage::Spirv: return "spirv";
+  }
+  return "?";
+}
+
+const char* targetName(TargetLanguage t) {
+  switch (t) {
+    case TargetLanguage::Auto: return "auto";
+    case TargetLanguage::Glsl: return "glsl";
+    case TargetLanguage::Essl: return "essl";
+    case TargetLanguage::Hlsl: return "hlsl";
+    case TargetLanguage::Msl: return "msl";
+    case TargetLanguage::Spirv: return "spirv";
+    case TargetLanguage::SpirvAsm: return "spirv-asm";
+  }
+  return "?";
+}
+
+Stage stageFromModel(spv::ExecutionModel model) {
+  switch (model) {
+    case spv::ExecutionModelVertex: return Stage::Vertex;
+    case spv::ExecutionModelTessellationControl: return Stage::TessControl;
+    case spv::ExecutionModelTessellationEvaluation: return Stage::TessEvaluation;
+    case spv::ExecutionModelGeometry: return Stage::Geometry;
+    case spv::ExecutionModelFragment: return Stage::Fragment;
+    case spv::ExecutionModelGLCompute: return Stage::Compute;
+    case spv::ExecutionModelTaskEXT: case spv::ExecutionModelTaskNV: return Stage::Task;
+    case spv::ExecutionModelMeshEXT: case spv::ExecutionModelMeshNV: return Stage::Mesh;
+    default: return Stage::Unknown;
+  }
+}
+
+bool isSpirvBinary(const std::string& bytes) {
+  if (bytes.size() < 4) return false;
+  uint32_t magic;
+  std::memcpy(&magic, bytes.data(), 4);
+  return magic == kSpirvMagic;
+}
+
+// OpenGL shaders that relied on glBindAttribLocation, glGetUniformLocation and glUniform1i must not
+// gain layout(location/binding) qualifiers they did not have: drop what glslang auto-assigned.
+void stripAutoAssignedQualifiers(spirv::Module& m, const SourceInfo& info) {
+  if (info.language != SourceLanguage::Glsl || info.vulkan) return;
+  auto keyOf = [&](uint32_t var) {
+    std::vector<std::string> keys = {m.name(var)};
+    if (const auto* def = m.definition(var)) keys.push_back(m.name(m.pointeeType(def->typeId)));
+    return keys;
+  };
+  auto explicitIn = [&](const std::set<std::string>& set, uint32_t var) {
+    for (const auto& k : keyOf(var))
+      if (!k.empty() && set.count(k)) return true;
+    return false;
+  };
+  for (const auto& inst : std::vector<spirv::Instruction>(m.typesValues)) {
+    if (inst.opcode != spv::OpVariable) continue;
+    uint32_t var = inst.resultId;
+    if (!explicitIn(info.explicitLocation, var)) m.removeDecorations(var, spv::DecorationLocation);
+    if (!explicitIn(info.explicitBinding, var)) m.removeDecorations(var, spv::DecorationBinding);
+    m.removeDecorations(var, spv::DecorationDescriptorSet);
+  }
+}
+
+EmitHints collectHints(const spirv::Module& m) {
+  EmitHints hints;
+  for (const auto& inst : m.annotations) {
+    if (inst.opcode != spv::OpDecorateString || inst.operand(1) != uint32_t(spv::DecorationUserSemantic)) continue;
+    uint32_t var = inst.operand(0);
+    auto location = m.decorationValue(var, spv::DecorationLocation);
+    auto storage = m.storageClassOf(var);
+    if (!location || !storage) continue;
+    std::string semantic = inst.stringOperand(2);
+    std::transform(semantic.begin(), semantic.end(), semantic.begin(), ::toupper);
+    if (*storage == spv::StorageClassInput) hints.inputSemantics[*location] = semantic;
+    if (*storage == spv::StorageClassOutput) hints.outputSemantics[*location] = semantic;
+  }
+  // SPIRV-Cross names HLSL cbuffer members "<instance>_<member>" (instance "_<id>" when unnamed).
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassUniform) continue;
+    uint32_t type = m.pointeeType(inst.typeId);
+    const auto* def = m.definition(type);
+    if (!def || def->opcode != spv::OpTypeStruct) continue;
+    std::string instance = m.name(inst.resultId);
+    if (instance.empty()) instance = "_" + std::to_string(inst.resultId);
+    for (uint32_t i = 0; i < def->operands.size(); ++i) {
+      std::string member = m.memberName(type, i);
+      if (!member.empty()) hints.cbufferMemberNames[instance + "_" + member] = member;
+    }
+  }
+  return hints;
+}
+
+std::string bytesOf(const std::vector<uint32_t>& words) {
+  std::string out(words.size() * 4, '\0');
+  std::memcpy(out.data(), words.data(), out.size());
+  return out;
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+std::string defaultOutputExtension(const SourceFile& input, const TranspileOptions& options) {
+  switch (options.target) {
+    case TargetLanguage::Spirv: return ".spv";
+    case TargetLanguage::SpirvAsm: return ".spvasm";
+    case TargetLanguage::Msl: return ".metal";
+    case TargetLanguage::Hlsl: return ".hlsl";
+    default: break;
+  }
+  auto dot = input.path.find_last_of('.');
+  return dot == std::string::npos ? std::string() : input.path.substr(dot);
+}
+
+TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
+  auto started = std::chrono::steady_clock::now();
+  TranspileResult result;
+  Diagnostics& diags = result.diagnostics;
+  const std::string& file = input.path;
+  result.report["file"] = file;
+
+  if (input.contents.empty()) {
+    diags.error(file, "file is empty: no shader to convert");
+    return result;
+  }
+
+  // ---- front end ----
+  SourceInfo info;
+  std::vector<uint32_t> words;
+  if (isSpirvBinary(input.contents) || file.ends_with(".spv")) {
+    if (input.contents.size() % 4 != 0 || !isSpirvBinary(input.contents)) {
+      diags.error(file, "not a SPIR-V binary: " + std::string(input.contents.size() % 4 ? "size is not a multiple of 4 bytes" : "bad magic number"));
+      return result;
+    }
+    words.resize(input.contents.size() / 4);
+    std::memcpy(words.data(), input.contents.data(), input.contents.size());
+    info.language = SourceLanguage::Spirv;
+    info.vulkan = true;
+  } else {
+    if (std::memchr(input.contents.data(), '\0', std::min<size_t>(input.contents.size(), 4096))) {
+      diags.error(file, "binary content is not shader source (and not SPIR-V: bad magic number)");
+      return result;
+    }
+    FrontEndResult front = compileToSpirv(input, options, diags);
+    if (!front.ok) return result;
+    words = std::move(front.spirv);
+    info = std::move(front.info);
+    result.includedFiles = std::move(front.includedFiles);
+  }
+  result.report["timings_ms"]["front_end"] = msSince(started);
+
+  std::string parseError;
+  auto parsed = spirv::Module::parse(words, &parseError);
+  if (!parsed) {
+    diags.error(file, parseError);
+    return result;
+  }
+  spirv::Module module = std::move(*parsed);
+  if (info.language == SourceLanguage::Spirv) {
+    if (!validateSpirv(words, info, file, "input", diags)) return result;
+    info.stage = stageFromModel(module.executionModel());
+    info.entryPoint = module.entryPointName();
+    if (module.entryPoints.empty()) {
+      diags.error(file, "SPIR-V module has no entry point");
+      return result;
+    }
+  }
+  result.report["stage"] = stageName(info.stage);
+  result.report["language"] = languageName(info.language);
+  if (info.language == SourceLanguage::Glsl)
+    result.report["dialect"] = std::to_string(info.version) + (info.es ? " es" : "") + (info.vulkan ? " vulkan" : "");
+
+  // ---- passes ----
+  auto passesStarted = std::chrono::steady_clock::now();
+  PassContext ctx{module, options, info, diags, file, result.report};
+  bool changed = false;
+  if (!runPassPipeline(ctx, &changed, &result.passLog)) return result;
+  result.changed = changed;
+  result.report["classification"] = toString(ctx.classification);
+  result.report["changed"] = changed;
+  result.report["timings_ms"]["passes"] = msSince(passesStarted);
+
+  TargetLanguage target = resolveTarget(info, options);
+  result.report["target"] = targetName(target);
+  bool sameLanguage = (info.language == SourceLanguage::Spirv && target == TargetLanguage::Spirv) ||
+                      (info.language == SourceLanguage::Hlsl && target == TargetLanguage::Hlsl) ||
+                      (info.language == SourceLanguage::Glsl &&
+                       target == (info.es ? TargetLanguage::Essl : TargetLanguage::Glsl) && !options.targetVersion);
+  // Nothing to inject: the input is already its own drop-in replacement, byte for byte.
+  if (!changed && sameLanguage && !options.forceReemit) {
+    result.output = input.contents;
+    result.binaryOutput = info.language == SourceLanguage::Spirv;
+    result.copiedThrough = true;
+    result.ok = true;
+    result.report["output"] = "copied";
+    result.report["timings_ms"]["total"] = msSince(started);
+    return result;
+  }
+
+  std::vector<uint32_t> finalWords = module.encode();
+  if (!validateSpirv(finalWords, info, file, "after the passes", diags)) return result;
+
+  // ---- back end ----
+  auto backStarted = std::chrono::steady_clock::now();
+  if (target == TargetLanguage::Spirv) {
+    result.output = bytesOf(finalWords);
+    result.binaryOutput = true;
+  } else if (target == TargetLanguage::SpirvAsm) {
+    result.output = spirv::disassemble(finalWords);
+  } else {
+    spirv::Module emitModule = module;
+    stripAutoAssignedQualifiers(emitModule, info);
+    EmitHints hints = collectHints(emitModule);
+    EmitResult emitted = emitSource(emitModule.encode(), info, options, hints, file, diags);
+    if (!emitted.ok) return result;
+    result.output = std::move(emitted.text);
+    if (options.verify && target != TargetLanguage::Msl) {
+      SourceLanguage lang = target == TargetLanguage::Hlsl ? SourceLanguage::Hlsl : SourceLanguage::Glsl;
+      Diagnostics verifyDiags;
+      std::string entry = target == TargetLanguage::Hlsl ? (info.entryPoint.empty() ? "main" : info.entryPoint) : "main";
+      if (!verifyCompiles(result.output, lang, info.stage, entry, emitted.vulkanSemantics,
+                          file + " (emitted)", verifyDiags)) {
+        diags.append(verifyDiags);
+        diags.error(file, "--verify: the emitted shader does not compile");
+        return result;
+      }
+      result.report["verified"] = true;
+    }
+  }
+  result.report["timings_ms"]["back_end"] = msSince(backStarted);
+  result.report["timings_ms"]["total"] = msSince(started);
+  result.report["output"] = "emitted";
+  result.ok = true;
+  return result;
+}
+
+std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages, const TranspileOptions& options) {
+  // The last pre-rasterization stage (vertex, tessellation evaluation, geometry or mesh) gets the shift.
+  auto rank = [](Stage s) {
+    switch (s) {
+      case Stage::Vertex: return 1;
+      case Stage::TessEvaluation: return 2;
+      case Stage::Geometry: return 3;
+      case Stage::Mesh: return 4;
+      default: return 0;  // tessellation control, fragment, compute, task: never shifted
+    }
+  };
+  int last = -1, lastRank = 0;
+  for (size_t i = 0; i < stages.size(); ++i) {
+    auto stage = options.stage ? options.stage : stageFromPath(stages[i].path);
+    if (stage && rank(*stage) > lastRank) {
+      last = static_cast<int>(i);
+      lastRank = rank(*stage);
+    }
+  }
+  std::vector<TranspileResult> results;
+  for (size_t i = 0; i < stages.size(); ++i) {
+    TranspileOptions stageOptions = options;
+    stageOptions.shiftThisStage = static_cast<int>(i) == last;
+    results.push_back(transpile(stages[i], stageOptions));
+  }
+  return results;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,104 @@
+// stereoshift public API: turn one mono shader (or one pipeline of stages) into its stereo version.
+#pragma once
+
+#include "transpiler/diagnostics.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+enum class Stage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute, Task, Mesh, Unknown };
+enum class SourceLanguage { Glsl, Hlsl, Spirv };
+
+// Which output language: `Auto` keeps the input's own language and version.
+enum class TargetLanguage { Auto, Glsl, Essl, Hlsl, Msl, Spirv, SpirvAsm };
+
+// Where the eye parameters (eyeSign, separation, convergence) come from.
+enum class EyeSource {
+  Auto,           // loose uniforms for OpenGL GLSL shaders that use loose uniforms, else UniformBlock
+  UniformBlock,   // uniform block / cbuffer `StereoParams`
+  PushConstant,   // members of the push-constant block (merged into an existing one)
+  SpecConstant,   // specialization constants: a build can bake left and right variants
+  LooseUniforms,  // OpenGL default-block uniforms
+};
+
+enum class CutoffMode { Epsilon, Exact, None };
+enum class ShiftForm { Branch, Select };
+
+struct EyeParamOptions {
+  EyeSource source = EyeSource::Auto;
+  std::string blockName = "StereoParams";
+  std::string instanceName = "stereo";
+  std::string eyeSignName = "eyeSign";
+  std::string separationName = "separation";
+  std::string convergenceName = "convergence";
+  std::optional<uint32_t> descriptorSet;  // default 0
+  std::optional<uint32_t> binding;        // default: first binding unused in the set
+  std::optional<uint32_t> hlslRegister;   // cbuffer register b<N>; default: first unused
+  std::optional<uint32_t> glBinding;      // OpenGL uniform-block binding; default: none (by name)
+  uint32_t specIdBase = 100;              // SpecId of eyeSign; separation and convergence follow
+};
+
+struct TranspileOptions {
+  // Front end
+  std::optional<Stage> stage;        // default: from the file extension
+  std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
+  std::vector<std::string> defines;  // NAME or NAME=VALUE
+  std::vector<std::string> includeDirs;
+  // Passes
+  EyeParamOptions eye;
+  CutoffMode cutoff = CutoffMode::Epsilon;
+  float cutoffEpsilon = 1e-5f;
+  ShiftForm shiftForm = ShiftForm::Branch;
+  bool invariantPosition = true;  // mark the position invariant + NoContraction on the shift
+  bool haloFix = true;
+  bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
+  std::vector<std::string> onlyPasses;  // --pass: run only these (by name()); empty: all
+  bool validateEach = false;
+  bool printAll = false;          // dump SPIR-V after every pass to the report log
+  // Back end
+  TargetLanguage target = TargetLanguage::Auto;
+  std::optional<int> targetVersion;  // GLSL/ESSL version or HLSL shader model (50, 51, 60, ...)
+  bool verify = false;               // recompile emitted GLSL/HLSL with glslang
+  bool forceReemit = false;          // re-emit even when nothing changed
+};
+
+struct TranspileResult {
+  bool ok = false;
+  bool changed = false;          // some pass changed the shader
+  bool copiedThrough = false;    // output is the input's bytes (nothing to do)
+  std::string output;            // text, or the bytes of a SPIR-V binary
+  bool binaryOutput = false;
+  Diagnostics diagnostics;
+  nlohmann::json report;         // classification, passes and what they did, timings
+  std::vector<std::string> includedFiles;
+  std::string passLog;           // --print-all output
+};
+
+struct SourceFile {
+  std::string path;      // as given; used in diagnostics and for the extension
+  std::string contents;  // raw bytes
+};
+
+// Converts one shader.
+TranspileResult transpile(const SourceFile& input, const TranspileOptions& options);
+
+// Converts the stages of one pipeline: only the last pre-rasterization stage is shifted.
+std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages,
+                                               const TranspileOptions& options);
+
+// Helpers shared by the CLI and the tests.
+std::optional<Stage> stageFromPath(const std::string& path);
+std::optional<Stage> stageFromName(const std::string& name);  // vert, frag, vertex, ...
+const char* stageName(Stage stage);
+bool isPreRasterization(Stage stage);
+std::string defaultOutputExtension(const SourceFile& input, const TranspileOptions& options);
+
+const char* version();
+
+}  // namespace stereoshift
