@@ -105,7 +105,7 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
   app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
   app.add_flag("--force-reemit", o.t.forceReemit, "Re-emit shaders that need no change instead of copying them");
-  app.add_option("--report", o.reportPath, "Write a JSON report of what was done");
+  app.add_option("--report", o.reportPath, "Write a JSON report of what was done ('-': standard output)");
 }
 
 std::optional<std::string> finishOptions(CliOptions& o) {
@@ -149,6 +149,10 @@ std::optional<std::string> finishOptions(CliOptions& o) {
 
 bool writeReport(const std::string& path, const nlohmann::json& report) {
   if (path.empty()) return true;
+  if (path == "-") {
+    std::cout << report.dump(2) << "\n";
+    return true;
+  }
   std::string error;
   if (!writeAtomically(path, report.dump(2) + "\n", &error)) {
     std::cerr << "stereoshift: error: " << error << "\n";

@@ -3,6 +3,8 @@
 // It changes nothing; later passes act on what it found.
 #include "passes/pass.h"
 
+#include <spirv-tools/optimizer.hpp>
+
 #include <cstring>
 
 namespace stereoshift {
@@ -59,7 +61,7 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::AlreadyStereo;
       ctx.diags.note(ctx.file, "shader already carries stereo eye parameters ('" + ctx.options.eye.eyeSignName +
                                    "'); left as it is, never shifted twice");
-    } else if (allWritesHaveConstantW1(ctx)) {
+    } else if (allWritesHaveConstantW1(ctx.module, ctx.positions) || constantW1AfterFolding(ctx)) {
       ctx.classification = Classification::ConstantW1;
     } else {
       ctx.classification = Classification::Perspective;
@@ -106,11 +108,29 @@ class ClipPositionDetectionPass final : public Pass {
     return eyeSign && separation;
   }
 
+  // The literal w = 1.0 may only show after inlining and folding (HLSL output structs, helper
+  // functions): run SPIRV-Tools' optimizer on a copy used for this question only.
+  static bool constantW1AfterFolding(const PassContext& ctx) {
+    spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
+    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+    optimizer.RegisterPerformancePasses();
+    std::vector<uint32_t> folded;
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);
+    std::vector<uint32_t> words = ctx.module.encode();
+    if (!optimizer.Run(words.data(), words.size(), &folded, options)) return false;
+    std::string error;
+    auto module = spirv::Module::parse(folded, &error);
+    if (!module) return false;
+    PassContext copy{*module, ctx.options, ctx.source, ctx.diags, ctx.file, ctx.report};
+    findPositions(copy);
+    return !copy.positions.empty() && allWritesHaveConstantW1(*module, copy.positions);
+  }
+
   // True when every write of every clip position stores a vector whose w is the literal 1.0.
-  static bool allWritesHaveConstantW1(const PassContext& ctx) {
-    const auto& m = ctx.module;
+  static bool allWritesHaveConstantW1(const spirv::Module& m, const std::vector<ClipPosition>& positions) {
     bool sawStore = false;
-    for (const auto& position : ctx.positions) {
+    for (const auto& position : positions) {
       if (position.arrayed) return false;
       // Pointers to the whole position: the variable itself, or chains to the position member.
       auto isChainToPosition = [&](const Instruction& inst) {

@@ -351,6 +351,15 @@ TEST_F(Harness, CaptureReportsOverflowThroughTheStreamQuery) {
   EXPECT_EQ(r.primitivesNeeded, 2u);
   ASSERT_EQ(r.bytes.size(), 96u);
   for (uint32_t v = 0; v < 3; ++v) EXPECT_EQ(r.f32(v, 0), float(v));
+
+  // Capacity for 10, draw 6: the counter buffer says 192 bytes were written, and that is what
+  // comes back (not the whole buffer).
+  CaptureResult roomy = ctx().capture(mvpRequest(verts, identity, 10));
+  ASSERT_TRUE(roomy.ok()) << roomy.error;
+  EXPECT_EQ(roomy.primitivesWritten, 2u);
+  EXPECT_EQ(roomy.primitivesNeeded, 2u);
+  ASSERT_EQ(roomy.bytes.size(), 192u);
+  for (uint32_t v = 0; v < 6; ++v) EXPECT_EQ(roomy.f32(v, 0), float(v));
 }
 
 TEST_F(Harness, CaptureGeometryShaderEmitsTwoVerticesPerPoint) {
@@ -771,7 +780,9 @@ TEST_F(Harness, RenderMultiviewTwoEyesAreExactTranslations) {
       left += lOn;
       right += rOn;
       const bool rShifted = x + 8 < W && r.pixel(x + 8, y, 1)[1] == 255;
-      if (x + 8 < W) EXPECT_EQ(lOn, rShifted) << "left " << x << "," << y << " vs right " << x + 8;
+      if (x + 8 < W) {
+        EXPECT_EQ(lOn, rShifted) << "left " << x << "," << y << " vs right " << x + 8;
+      }
     }
   EXPECT_GT(left, 60u);
   EXPECT_EQ(left, right);

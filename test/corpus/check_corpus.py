@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""Corpus reference test (SPIRV-Cross style mirrored trees).
+
+Converts corpus/ with `stereoshift build`, then for every shader:
+  - compares the output with test/corpus/reference/<same path> byte for byte,
+  - re-compiles the output with glslangValidator (every output, copied or re-emitted),
+  - checks the classification in the JSON report against the `// stereoshift-expect:` header.
+`--update` rewrites the references instead of comparing them.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+# The corpus header names what a shader is; the report names what stereoshift decided.
+EXPECTED_CLASSIFICATION = {
+    "shift": {"perspective"},
+    "2d": {"2d-constant-w"},
+    "intermediate": {"intermediate-stage"},
+    "fragment": {"no-position-stage"},
+    "compute": {"no-position-stage"},
+    "deferred-unproject": {"no-position-stage"},
+    # per-eye view vectors live in vertex (shifted) or fragment (untouched) shaders
+    "per-eye-view": {"perspective", "no-position-stage"},
+}
+
+STAGE_OF = {"vert": "vert", "tesc": "tesc", "tese": "tese", "geom": "geom", "frag": "frag", "comp": "comp"}
+
+
+def expected_class(path):
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f.readlines()[:5]:
+            m = re.search(r"stereoshift-expect:\s*([\w-]+)", line)
+            if m:
+                return m.group(1)
+    return None
+
+
+def hlsl_entry(text):
+    if re.search(r"(^|[^A-Za-z0-9_])main\s*\(", text):
+        return "main"
+    for name in ("VSMain", "PSMain", "GSMain", "HSMain", "DSMain", "CSMain"):
+        if re.search(r"\b%s\s*\(" % name, text):
+            return name
+    return "main"
+
+
+def recompile(glslang, path, rel):
+    """Compiles an output shader the way its dialect is consumed."""
+    parts = os.path.basename(rel).split(".")
+    text = open(path, encoding="utf-8", errors="replace").read()
+    if rel.endswith(".hlsl"):
+        stage = STAGE_OF[parts[-2]]
+        cmd = [glslang, "-D", "-V", "-S", stage, "-e", hlsl_entry(text), "-o", os.devnull, path]
+    else:
+        stage = STAGE_OF[parts[-1]]
+        vulkan = rel.startswith("vk450/")
+        cmd = [glslang, "-S", stage, path] + (["-V", "-o", os.devnull] if vulkan else [])
+        include = os.path.join(os.path.dirname(path), "include")
+        if os.path.isdir(include):
+            cmd.insert(1, "-I" + include)
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    return run.returncode == 0, run.stdout + run.stderr
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--stereoshift", required=True)
+    ap.add_argument("--corpus", required=True)
+    ap.add_argument("--reference", required=True)
+    ap.add_argument("--glslang", default=shutil.which("glslangValidator") or "glslangValidator")
+    ap.add_argument("--update", action="store_true", help="rewrite the reference tree")
+    args = ap.parse_args()
+
+    failures = []
+    with tempfile.TemporaryDirectory() as out:
+        # Include files are copied so re-compiling a copied-through shader finds them.
+        run = subprocess.run([args.stereoshift, "build", args.corpus, "-o", out, "--verify"],
+                             capture_output=True, text=True)
+        if run.returncode != 0:
+            print(run.stderr)
+            failures.append("stereoshift build failed (exit %d)" % run.returncode)
+        report = json.load(open(os.path.join(out, "stereoshift-report.json")))
+        by_file = {os.path.relpath(s["file"], args.corpus): s for s in report["shaders"]}
+
+        checked = 0
+        for root, _, files in os.walk(args.corpus):
+            for name in sorted(files):
+                src = os.path.join(root, name)
+                rel = os.path.relpath(src, args.corpus)
+                expect = expected_class(src)
+                if expect is None:
+                    continue  # not a shader (include, README, script)
+                checked += 1
+                entry = by_file.get(rel)
+                if entry is None or not entry.get("ok"):
+                    failures.append("%s: not converted" % rel)
+                    continue
+                got = entry.get("classification")
+                allowed = set(EXPECTED_CLASSIFICATION.get(expect, set()))
+                if rel.split(".")[-1] == "tesc" or ".tesc." in rel:
+                    allowed.add("no-position-stage")  # nothing to shift before tessellation evaluation
+                if got not in allowed:
+                    failures.append("%s: classified %s, corpus header says %s" % (rel, got, expect))
+                produced = os.path.join(out, rel)
+                inc = os.path.join(os.path.dirname(src), "include")
+                if os.path.isdir(inc) and not os.path.isdir(os.path.join(os.path.dirname(produced), "include")):
+                    shutil.copytree(inc, os.path.join(os.path.dirname(produced), "include"))
+                ok, log = recompile(args.glslang, produced, rel)
+                if not ok:
+                    failures.append("%s: output does not compile:\n%s" % (rel, log))
+                ref = os.path.join(args.reference, rel)
+                data = open(produced, "rb").read()
+                if args.update:
+                    os.makedirs(os.path.dirname(ref), exist_ok=True)
+                    if not os.path.exists(ref) or open(ref, "rb").read() != data:
+                        open(ref, "wb").write(data)
+                        print("updated", ref)
+                elif not os.path.exists(ref):
+                    failures.append("%s: no reference (run with --update)" % rel)
+                elif open(ref, "rb").read() != data:
+                    diff = subprocess.run(["diff", "-u", ref, produced], capture_output=True, text=True).stdout
+                    failures.append("%s: differs from reference:\n%s" % (rel, diff[:3000]))
+
+    for f in failures:
+        print("FAIL:", f)
+    print("corpus: %d shaders checked" % checked)
+    print("%d passed, %d failed" % (checked - len(failures), len(failures)) if len(failures) <= checked
+          else "0 passed, %d failed" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
