@@ -1,0 +1,40 @@
+#version 300 es
+
+invariant gl_Position;
+
+uniform mat4 uModel;
+uniform mat4 uViewProj;
+uniform float eyeSign;
+uniform float separation;
+uniform float convergence;
+
+out mediump vec3 vNormal;
+layout(location = 1) in vec3 aNormal;
+out mediump vec3 vTangent;
+layout(location = 2) in vec4 aTangent;
+out mediump vec3 vBitangent;
+out mediump vec2 vTexCoord;
+layout(location = 3) in vec2 aTexCoord;
+layout(location = 0) in vec3 aPosition;
+
+void main()
+{
+    mat3 m = mat3(uModel[0].xyz, uModel[1].xyz, uModel[2].xyz);
+    vNormal = normalize(m * aNormal);
+    vTangent = normalize(m * aTangent.xyz);
+    vBitangent = cross(vNormal, vTangent) * aTangent.w;
+    vTexCoord = aTexCoord;
+    mat4 _63 = uViewProj * uModel;
+    vec4 _70 = vec4(aPosition, 1.0);
+    vec4 _71 = _63 * _70;
+    gl_Position = _71;
+    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    {
+        float _95 = gl_Position.w - convergence;
+        float _96 = eyeSign * separation;
+        float _97 = _96 * _95;
+        float _98 = gl_Position.x + _97;
+        gl_Position.x = _98;
+    }
+}
+

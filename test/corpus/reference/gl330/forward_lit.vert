@@ -1,0 +1,36 @@
+#version 330
+
+invariant gl_Position;
+
+uniform mat4 uModel;
+uniform mat3 uNormalMatrix;
+uniform mat4 uViewProj;
+uniform float eyeSign;
+uniform float separation;
+uniform float convergence;
+
+layout(location = 0) in vec3 aPosition;
+out vec3 vWorldPos;
+out vec3 vNormal;
+in vec3 aNormal;
+out vec2 vTexCoord;
+in vec2 aTexCoord;
+
+void main()
+{
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    vWorldPos = world.xyz;
+    vNormal = normalize(uNormalMatrix * aNormal);
+    vTexCoord = aTexCoord;
+    vec4 _54 = uViewProj * world;
+    gl_Position = _54;
+    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    {
+        float _78 = gl_Position.w - convergence;
+        float _79 = eyeSign * separation;
+        float _80 = _79 * _78;
+        float _81 = gl_Position.x + _80;
+        gl_Position.x = _81;
+    }
+}
+

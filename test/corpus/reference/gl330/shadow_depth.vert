@@ -1,0 +1,30 @@
+#version 330
+
+invariant gl_Position;
+
+uniform mat4 uLightMVP;
+uniform float uDepthBias;
+uniform float eyeSign;
+uniform float separation;
+uniform float convergence;
+
+out vec2 vTexCoord;
+in vec2 aTexCoord;
+layout(location = 0) in vec3 aPosition;
+
+void main()
+{
+    vTexCoord = aTexCoord;
+    vec4 clip = uLightMVP * vec4(aPosition, 1.0);
+    clip.z += (uDepthBias * clip.w);
+    gl_Position = clip;
+    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    {
+        float _74 = gl_Position.w - convergence;
+        float _75 = eyeSign * separation;
+        float _76 = _75 * _74;
+        float _77 = gl_Position.x + _76;
+        gl_Position.x = _77;
+    }
+}
+

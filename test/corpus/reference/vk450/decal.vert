@@ -1,0 +1,49 @@
+#version 450
+
+invariant gl_Position;
+
+layout(set = 0, binding = 0, std140) uniform CameraUBO
+{
+    mat4 viewProj;
+    mat4 invViewProj;
+} camera;
+
+layout(set = 0, binding = 1, std140) uniform StereoParams
+{
+    float eyeSign;
+    float separation;
+    float convergence;
+} stereo;
+
+layout(push_constant, std430) uniform DecalPush
+{
+    mat4 decalToWorld;
+    mat4 worldToDecal;
+    vec4 color;
+} decal;
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 0) out vec4 outClipPos;
+
+void main()
+{
+    vec4 world = decal.decalToWorld * vec4(inPosition, 1.0);
+    vec4 _42 = camera.viewProj * world;
+    gl_Position = _42;
+    vec4 _47 = gl_Position;
+    precise float _62 = _47.w - stereo.convergence;
+    precise float _63 = stereo.eyeSign * stereo.separation;
+    precise float _64 = _63 * _62;
+    precise float _65 = _47.x + _64;
+    _47.x = (abs(_47.w - 1.0) > 9.9999997473787516355514526367188e-06) ? _65 : _47.x;
+    outClipPos = _47;
+    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    {
+        precise float _88 = gl_Position.w - stereo.convergence;
+        precise float _89 = stereo.eyeSign * stereo.separation;
+        precise float _90 = _89 * _88;
+        precise float _91 = gl_Position.x + _90;
+        gl_Position.x = _91;
+    }
+}
+

@@ -1,0 +1,55 @@
+// HLSL source splice: stereo injection for HLSL geometry and domain shaders without SPIR-V.
+//
+// The Debian SPIRV-Cross cannot re-emit HLSL geometry/hull/domain shaders, so for those stages the
+// original HLSL text is kept and the clip-space shift is spliced around it:
+//
+//   geometry: a cbuffer and a helper `T stereoshift_shift_T(T v)` (T = the stream element struct)
+//             are inserted before the first function that appends to a stream, and every
+//             `stream.Append(expr)` becomes `stream.Append(stereoshift_shift_T(expr))`.
+//   domain:   the entry point is renamed `<entry>_stereoshift_mono` (its attributes are moved, left
+//             behind as a comment), and a wrapper with the original attributes, return type,
+//             parameter list and return semantic is appended after it; the wrapper calls the mono
+//             function and shifts the SV_Position output (return value, struct member or `out`
+//             parameter).
+//
+// The shift is `x' = x + (eyeSign * separation) * (w - convergence)`, skipped when `w` is 1 (see
+// HlslSpliceOptions::cutoff). Everything outside the inserted text and the rewritten tokens is
+// preserved byte for byte; inserted text starts on its own line and uses the file's line endings.
+//
+// Only the C++20 standard library is used. The scanner understands comments, string literals,
+// preprocessor lines (not macro expansion, except `#define`s whose body calls `.Append(`),
+// balanced brackets and template argument lists; it is not a full HLSL parser.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace stereoshift {
+
+struct HlslSpliceOptions {
+  std::string entryPoint;  // e.g. "GSMain", "DSMain", "main"
+  bool geometry = true;    // true: geometry shader; false: domain shader (tessellation evaluation)
+  std::string cbufferName = "StereoParams";
+  uint32_t cbufferRegister = 0;  // register(b<N>); an error if the source already uses b<N> in space0
+  std::string eyeSignName = "eyeSign", separationName = "separation", convergenceName = "convergence";
+  enum class Cutoff {
+    Epsilon,  // if (abs(p.w - 1.0f) > epsilon) shift
+    Exact,    // if (p.w != 1.0f) shift
+    None      // always shift
+  } cutoff = Cutoff::Epsilon;
+  float epsilon = 1e-5f;  // printed with 9 significant digits (round-trips a float)
+  bool precise = true;    // compute the shifted x into a `precise float` temporary
+};
+
+struct HlslSpliceResult {
+  bool ok = false;
+  std::string text;   // the stereo HLSL (ok == true)
+  std::string error;  // what went wrong (ok == false)
+  int line = 0;       // 1-based location of the problem; 0: no location (whole file)
+  int column = 0;     // 1-based byte column; 0: unknown
+  int sites = 0;      // number of shifted outputs: Append calls (geometry) or entry outputs (domain)
+};
+
+HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options);
+
+}  // namespace stereoshift
