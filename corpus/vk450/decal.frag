@@ -7,11 +7,15 @@ layout(set = 0, binding = 0) uniform CameraUBO {
     mat4 invViewProj;
 } camera;
 
+// 80 bytes: within the 128 bytes of push constants every Vulkan device guarantees.
 layout(push_constant) uniform DecalPush {
     mat4 decalToWorld;
-    mat4 worldToDecal;
     vec4 color;
 } decal;
+
+layout(set = 1, binding = 2) uniform DecalUBO {
+    mat4 worldToDecal;
+} decalSpace;
 
 layout(set = 1, binding = 0) uniform sampler2D sceneDepth;
 layout(set = 1, binding = 1) uniform sampler2D decalTexture;
@@ -27,7 +31,7 @@ void main()
 
     vec4 q = camera.invViewProj * vec4(ndc, depth, 1.0);
     vec3 world = q.xyz / q.w;
-    vec3 local = (decal.worldToDecal * vec4(world, 1.0)).xyz;
+    vec3 local = (decalSpace.worldToDecal * vec4(world, 1.0)).xyz;
     if (any(greaterThan(abs(local), vec3(0.5))))
         discard;
 

@@ -142,6 +142,9 @@ class Harness : public ::testing::Test {
     return s;
   }
   static void SetUpTestSuite() {
+    // The shared context validates whenever VK_LAYER_KHRONOS_validation is installed, unless the
+    // caller chose otherwise (STEREOSHIFT_VK_VALIDATION=0); TearDown fails a test on any message.
+    setenv("STEREOSHIFT_VK_VALIDATION", "auto", /*overwrite=*/0);
     std::string why;
     if (!VulkanContext::anyDeviceAvailable(&why)) {
       skipReason() = why;
@@ -154,7 +157,9 @@ class Harness : public ::testing::Test {
   void SetUp() override {
     if (!skipReason().empty()) {
       const char* req = std::getenv("STEREOSHIFT_REQUIRE_VULKAN");
-      if (req && std::string(req) == "1") FAIL() << "Vulkan required but unavailable: " << skipReason();
+      if (HARNESS_REQUIRE_VULKAN || (req && std::string(req) == "1"))
+        FAIL() << "Vulkan required (STEREOSHIFT_HARNESS_REQUIRE_VULKAN / STEREOSHIFT_REQUIRE_VULKAN) but unavailable: "
+               << skipReason();
       GTEST_SKIP() << "no Vulkan device: " << skipReason();
     }
     ASSERT_NE(ctxPtr(), nullptr) << createError();
@@ -225,6 +230,56 @@ TEST_F(Harness, PicksTheCpuDeviceWithVulkan11) {
   EXPECT_GE(ctx().apiVersion(), uint32_t(VK_API_VERSION_1_1));
   EXPECT_FALSE(ctx().deviceName().empty());
   EXPECT_NE(ctx().device(), VkDevice(VK_NULL_HANDLE));
+  std::printf("device: %s, Vulkan %u.%u, validation %s\n", ctx().deviceName().c_str(),
+              VK_API_VERSION_MAJOR(ctx().apiVersion()), VK_API_VERSION_MINOR(ctx().apiVersion()),
+              ctx().validationEnabled() ? "on" : "off");
+}
+
+// A private context with validation when the layer is installed: a capture and a render, then
+// destruction. The sink sees the messages emitted at vkDestroyDevice / vkDestroyInstance too, where
+// the layer reports any object the harness forgot to destroy.
+TEST_F(Harness, PrivateContextLifecycleIsCleanUnderValidation) {
+  std::vector<std::string> messages;
+  ContextOptions options;
+  options.validation = Validation::IfAvailable;
+  options.messageSink = [&](const std::string& m) { messages.push_back(m); };
+  std::string err;
+  {
+    auto own = VulkanContext::create(&err, options);
+    ASSERT_NE(own, nullptr) << err;
+    std::printf("validation layer %s\n", own->validationEnabled() ? "enabled" : "not installed: skipped");
+    CaptureRequest req;
+    req.pipeline.stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, "capture_push_spec.vert")};
+    const std::vector<float> pos = {1, 2, 3, 1};
+    req.pipeline.vertices = {toBytes(pos), 16, {{0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}}};
+    req.pipeline.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    req.pipeline.vertexCount = 1;
+    req.pipeline.pushConstants.resize(32);
+    req.xfbStride = 32;
+    req.expectedVertices = 1;
+    CaptureResult c = own->capture(req);
+    ASSERT_TRUE(c.ok()) << c.error;
+    EXPECT_EQ(c.f32(0, 2), 3.f);
+    RenderRequest rr;
+    rr.width = rr.height = 8;
+    rr.readDepth = true;
+    Draw d;
+    d.pipeline.stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, "render_solid.vert"),
+                         stage(VK_SHADER_STAGE_FRAGMENT_BIT, "render_textured.frag")};
+    const std::vector<float> tri = {-1, -1, 0.5f, 3, -1, 0.5f, -1, 3, 0.5f};
+    d.pipeline.vertices = {toBytes(tri), 12, {{0, VK_FORMAT_R32G32B32_SFLOAT, 0}}};
+    d.pipeline.vertexCount = 3;
+    d.pipeline.textures = {{0, 0, 1, 1, {0.f, 1.f, 0.f, 1.f}}};
+    d.pipeline.pushConstants.resize(16);
+    const float rect[4] = {0, 0, 8, 8};
+    std::memcpy(d.pipeline.pushConstants.data(), rect, 16);
+    rr.draws = {d};
+    RenderResult r = own->render(rr);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.pixel(3, 3)[1], 255);
+    EXPECT_EQ(r.depthAt(3, 3), 0.5f);
+  }
+  EXPECT_TRUE(messages.empty()) << joined(messages);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -657,8 +712,8 @@ std::vector<float> quadNdc(double x0, double y0, double x1, double y1, double W,
   return {nx(x0), ny(y0), z, nx(x1), ny(y0), z, nx(x1), ny(y1), z, nx(x0), ny(y1), z};
 }
 
-// A test scene in one render pass: an indexed "mesh" (near, red), a full-screen triangle (far,
-// green; depth LESS keeps it behind the mesh), a textured HUD quad with depth test off (drawn over
+// A test scene in one render pass: an indexed "mesh" (near, red), a full-screen pass without vertex
+// buffer (far, green; depth LESS keeps it behind the mesh), a textured HUD quad with depth test off (drawn over
 // the mesh although farther), and an alpha-blended quad. All edges are on pixel boundaries, so
 // every pixel is exact except blended ones (+-1: 0.5*255 rounds either way).
 TEST_F(Harness, RenderSceneDepthHudBlendAndIndexBuffer) {
@@ -671,7 +726,10 @@ TEST_F(Harness, RenderSceneDepthHudBlendAndIndexBuffer) {
   const float red[4] = {1, 0, 0, 1}, green[4] = {0, 1, 0, 1}, white[4] = {1, 1, 1, 0.5f};
   Draw mesh = solidDraw(quadNdc(0, 0, 48, 64, W, H, 0.25f), red);
   mesh.pipeline.indices = {0, 1, 2, 0, 2, 3};
-  Draw background = solidDraw({-1, -1, 0.5f, 3, -1, 0.5f, -1, 3, 0.5f}, green);
+  Draw background = solidDraw({}, green);  // full-screen pass: no vertex buffer at all
+  background.pipeline.stages[0] = stage(VK_SHADER_STAGE_VERTEX_BIT, "render_fullscreen.vert");
+  background.pipeline.vertices = {};
+  background.pipeline.vertexCount = 3;
 
   Draw hud = solidDraw(quadNdc(4, 4, 20, 20, W, H, 0.9f), red);
   hud.pipeline.indices = {0, 1, 2, 2, 3, 0};

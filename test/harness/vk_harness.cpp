@@ -308,14 +308,20 @@ struct VulkanContext::Impl {
   };
   BuiltPipeline buildPipeline(Scope& scope, VkCommandBuffer uploads, const PipelineInputs& in,
                               VkRenderPass renderPass, const RasterConfig& raster, const std::string& label);
-  void recordDraw(VkCommandBuffer cb, const BuiltPipeline& p, const PipelineInputs& in, uint32_t width,
+  // Binds the pipeline and its state; then recordDraw issues the draw. Split because transform
+  // feedback must begin after the pipeline is bound and no pipeline may be bound while it is active.
+  void recordBind(VkCommandBuffer cb, const BuiltPipeline& p, const PipelineInputs& in, uint32_t width,
                   uint32_t height);
+  void recordDraw(VkCommandBuffer cb, const BuiltPipeline& p, const PipelineInputs& in);
 
   void capture(const CaptureRequest& req, CaptureResult& out);
   void render(const RenderRequest& req, RenderResult& out);
 
+  std::function<void(const std::string&)> messageSink;
+
   void addMessage(std::string m) {
     std::lock_guard<std::mutex> lock(messageMutex);
+    if (messageSink) messageSink(m);
     messages.push_back(std::move(m));
   }
 };
@@ -333,6 +339,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
 }  // namespace
 
 void VulkanContext::Impl::init(const ContextOptions& options) {
+  messageSink = options.messageSink;
   // Loader version (vkEnumerateInstanceVersion is absent from 1.0 loaders).
   uint32_t loaderVersion = VK_API_VERSION_1_0;
   auto enumerateVersion =
@@ -977,7 +984,7 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
   return out;
 }
 
-void VulkanContext::Impl::recordDraw(VkCommandBuffer cb, const BuiltPipeline& p, const PipelineInputs& in,
+void VulkanContext::Impl::recordBind(VkCommandBuffer cb, const BuiltPipeline& p, const PipelineInputs& in,
                                      uint32_t width, uint32_t height) {
   vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, p.pipeline);
   VkViewport vp{0.f, 0.f, float(width), float(height), 0.f, 1.f};
@@ -993,8 +1000,11 @@ void VulkanContext::Impl::recordDraw(VkCommandBuffer cb, const BuiltPipeline& p,
   VkDeviceSize zero = 0;
   if (p.vertexBuffer) vkCmdBindVertexBuffers(cb, 0, 1, &p.vertexBuffer, &zero);
   if (p.instanceBuffer) vkCmdBindVertexBuffers(cb, 1, 1, &p.instanceBuffer, &zero);
+  if (p.indexBuffer) vkCmdBindIndexBuffer(cb, p.indexBuffer, 0, VK_INDEX_TYPE_UINT32);
+}
+
+void VulkanContext::Impl::recordDraw(VkCommandBuffer cb, const BuiltPipeline& p, const PipelineInputs& in) {
   if (p.indexBuffer) {
-    vkCmdBindIndexBuffer(cb, p.indexBuffer, 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cb, uint32_t(in.indices.size()), in.instanceCount, 0, 0, 0);
   } else {
     vkCmdDraw(cb, in.vertexCount, in.instanceCount, 0, 0);
@@ -1063,11 +1073,12 @@ void VulkanContext::Impl::capture(const CaptureRequest& req, CaptureResult& out)
   rbi.framebuffer = fb;
   rbi.renderArea = {{0, 0}, {1, 1}};
   vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
+  recordBind(cb, p, req.pipeline, 1, 1);
   VkDeviceSize zero = 0, size = capacity;
   cmdBindXfbBuffers(cb, 0, 1, &xfb.buffer, &zero, &size);
   if (query) cmdBeginQueryIndexed(cb, qp, 0, 0, 0);
   cmdBeginXfb(cb, 0, 0, nullptr, nullptr);  // no counter buffer: start writing at offset 0
-  recordDraw(cb, p, req.pipeline, 1, 1);
+  recordDraw(cb, p, req.pipeline);
   cmdEndXfb(cb, 0, 1, &counter.buffer, &zero);  // the counter receives the bytes written
   if (query) cmdEndQueryIndexed(cb, qp, 0, 0);
   vkCmdEndRenderPass(cb);
@@ -1221,8 +1232,10 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   rbi.clearValueCount = 2;
   rbi.pClearValues = clears;
   vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
-  for (size_t i = 0; i < req.draws.size(); ++i)
-    recordDraw(cb, pipelines[i], req.draws[i].pipeline, req.width, req.height);
+  for (size_t i = 0; i < req.draws.size(); ++i) {
+    recordBind(cb, pipelines[i], req.draws[i].pipeline, req.width, req.height);
+    recordDraw(cb, pipelines[i], req.draws[i].pipeline);
+  }
   vkCmdEndRenderPass(cb);
 
   VkBufferImageCopy copy{};

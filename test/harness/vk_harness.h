@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -203,6 +204,9 @@ struct ContextOptions {
   Validation validation = Validation::FromEnvironment;
   int deviceIndex = -1;  // -1: STEREOSHIFT_VK_DEVICE if set, else the CPU device (lavapipe),
                          // else the first device with transform feedback
+  // Also receives every validation message, including those emitted while the context is being
+  // destroyed (e.g. objects still alive at vkDestroyDevice). Must outlive the context.
+  std::function<void(const std::string&)> messageSink;
 };
 
 class VulkanContext {

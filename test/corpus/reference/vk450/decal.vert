@@ -18,7 +18,6 @@ layout(set = 0, binding = 1, std140) uniform StereoParams
 layout(push_constant, std430) uniform DecalPush
 {
     mat4 decalToWorld;
-    mat4 worldToDecal;
     vec4 color;
 } decal;
 

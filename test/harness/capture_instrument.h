@@ -1,0 +1,34 @@
+// Harness-only instrumentation: turns a copy of a shader's last pre-rasterization stage into one
+// that writes every output through transform feedback (ExecutionMode Xfb, XfbBuffer 0, Offsets),
+// so the harness can read back each output of each vertex. The shader's own code is not touched.
+#pragma once
+
+#include "transpiler/spirv_module.h"
+
+#include <string>
+#include <vector>
+
+namespace stereoshift::harness {
+
+struct CapturedField {
+  std::string name;       // output variable name (or "gl_Position")
+  uint32_t location = 0;  // interface location, UINT32_MAX for the position
+  uint32_t offset = 0;    // byte offset inside one captured vertex
+  uint32_t components = 0;
+  bool isPosition = false;
+  bool isFloat = true;
+};
+
+struct CaptureLayout {
+  std::vector<CapturedField> fields;
+  uint32_t stride = 0;
+  const CapturedField* position() const;
+};
+
+// Adds the transform-feedback decorations. The position is always the first field (offset 0);
+// other outputs follow in location order. Outputs that are not 32-bit scalars or vectors (matrices,
+// arrays, structs) are not captured and are listed in `skipped`.
+bool instrumentForCapture(spirv::Module& module, CaptureLayout* layout, std::vector<std::string>* skipped,
+                          std::string* error);
+
+}  // namespace stereoshift::harness

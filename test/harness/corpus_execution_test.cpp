@@ -1,0 +1,122 @@
+// Accuracy by execution on the corpus: every Vulkan GLSL and HLSL pipeline whose last
+// pre-rasterization stage gets the shift is run on lavapipe, original against transpiled, with
+// eyeSign = 0 (bit-exact mono identity), -1 and +1 (stereo error against the double reference).
+#include "test/harness/stereo_verify.h"
+#include "transpiler/front_end.h"
+#include "transpiler/stereoshift.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace stereoshift;
+using namespace stereoshift::harness;
+
+namespace {
+
+std::string readAll(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+VkShaderStageFlagBits vkStage(Stage s) {
+  switch (s) {
+    case Stage::TessControl: return VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
+    case Stage::TessEvaluation: return VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
+    case Stage::Geometry: return VK_SHADER_STAGE_GEOMETRY_BIT;
+    default: return VK_SHADER_STAGE_VERTEX_BIT;
+  }
+}
+
+std::vector<uint32_t> toWords(const std::string& bytes) {
+  std::vector<uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), words.size() * 4);
+  return words;
+}
+
+struct PipelineCase {
+  std::string name;
+  std::vector<fs::path> stages;  // pre-rasterization stages, in pipeline order
+};
+
+std::vector<PipelineCase> corpusPipelines() {
+  std::map<std::string, std::vector<fs::path>> groups;
+  for (const char* dialect : {"vk450", "hlsl"})
+    for (auto& e : fs::directory_iterator(fs::path(CORPUS_DIR) / dialect)) {
+      if (!e.is_regular_file()) continue;
+      auto stage = stageFromPath(e.path().string());
+      if (!stage || !isPreRasterization(*stage)) continue;
+      std::string file = e.path().filename().string();
+      groups[(e.path().parent_path() / file.substr(0, file.find('.'))).string()].push_back(e.path());
+    }
+  auto order = [](const fs::path& p) { return static_cast<int>(*stageFromPath(p.string())); };
+  std::vector<PipelineCase> cases;
+  for (auto& [key, stages] : groups) {
+    std::sort(stages.begin(), stages.end(), [&](auto& a, auto& b) { return order(a) < order(b); });
+    cases.push_back({fs::relative(key, CORPUS_DIR).string(), stages});
+  }
+  return cases;
+}
+
+class CorpusExecution : public ::testing::TestWithParam<PipelineCase> {
+ protected:
+  static void SetUpTestSuite() {
+    std::string error;
+    context_ = VulkanContext::create(&error);
+    if (!context_) setupError_ = error;
+  }
+  static void TearDownTestSuite() { context_.reset(); }
+  static std::unique_ptr<VulkanContext> context_;
+  static std::string setupError_;
+};
+std::unique_ptr<VulkanContext> CorpusExecution::context_;
+std::string CorpusExecution::setupError_;
+
+TEST_P(CorpusExecution, StereoMatchesReference) {
+  ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
+  const PipelineCase& c = GetParam();
+  std::vector<StageModules> stages;
+  std::string lastClassification;
+  for (size_t i = 0; i < c.stages.size(); ++i) {
+    SourceFile file{c.stages[i].string(), readAll(c.stages[i])};
+    TranspileOptions options;
+    options.includeDirs = {(c.stages[i].parent_path() / "include").string()};
+    options.target = TargetLanguage::Spirv;
+    options.forceReemit = true;
+    options.shiftThisStage = i + 1 == c.stages.size();
+    Diagnostics diags;
+    FrontEndResult front = compileToSpirv(file, options, diags);
+    ASSERT_TRUE(front.ok) << diags.format();
+    TranspileResult result = transpile(file, options);
+    ASSERT_TRUE(result.ok) << result.diagnostics.format();
+    lastClassification = result.report.value("classification", "");
+    stages.push_back({vkStage(front.info.stage), front.spirv, toWords(result.output), "main"});
+  }
+  if (lastClassification != "perspective") GTEST_SKIP() << c.name << " needs no shift (" << lastClassification << ")";
+  VerifySettings settings;
+  VerifyResult r = verifyStereo(*context_, stages, settings);
+  if (!r.error.empty() && r.error.find("harness cannot") != std::string::npos) GTEST_SKIP() << r.error;
+  ASSERT_TRUE(r.error.empty()) << c.name << ": " << r.error;
+  std::cout << "[verify] " << c.name << ": vertices " << r.vertices << ", mono identical " << r.monoIdentical
+            << ", max stereo error " << r.maxStereoUlps << " ULP, cutoff vertices " << r.cutoffVertices << "\n";
+  EXPECT_GT(r.vertices, 0u);
+  EXPECT_TRUE(r.monoIdentical) << c.name;
+  EXPECT_TRUE(r.otherOutputsUnchanged) << c.name << ": " << (r.problems.empty() ? "" : r.problems.front());
+  EXPECT_LE(r.maxStereoUlps, settings.maxUlps) << c.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusExecution, ::testing::ValuesIn(corpusPipelines()),
+                         [](const ::testing::TestParamInfo<PipelineCase>& info) {
+                           std::string n = info.param.name;
+                           for (char& ch : n)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return n;
+                         });
+
+}  // namespace
