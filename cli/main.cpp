@@ -31,8 +31,21 @@ bool readFile(const std::string& path, std::string* out) {
 }
 
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
-bool writeAtomically(const fs::path& path, const std::string& bytes, std::string* error) {
+bool writeAtomically(const fs::path& requested, const std::string& bytes, std::string* error) {
   std::error_code ec;
+  fs::path path = requested;
+  // A symlink is followed (the link stays a link); a device or pipe (/dev/null, /dev/stdout) is
+  // written in place: renaming over it would replace it with a regular file.
+  if (fs::is_symlink(path, ec)) path = fs::weakly_canonical(path, ec);
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out.flush()) {
+      *error = "cannot write '" + path.string() + "'";
+      return false;
+    }
+    return true;
+  }
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
   fs::path temp = path;
   temp += ".stereoshift-tmp-" + std::to_string(::getpid());
@@ -92,7 +105,7 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("--instance-name", o.t.eye.instanceName, "Instance name of the injected block")->capture_default_str();
   app.add_option("--set", o.set, "Descriptor set of the injected block (default 0)");
   app.add_option("--binding", o.binding, "Binding of the injected block (default: one past the highest used)");
-  app.add_option("--hlsl-register", o.hlslRegister, "HLSL cbuffer register b<N> of the injected block (default: first free)");
+  app.add_option("--hlsl-register", o.hlslRegister, "HLSL cbuffer register b<N> of the injected block (default: one past the highest used)");
   app.add_option("--gl-binding", o.glBinding, "OpenGL uniform-block binding (default: none, bound by name)");
   app.add_option("--spec-id-base", o.t.eye.specIdBase, "SpecId of eyeSign with --eye-source=spec-constant; separation and convergence follow")->capture_default_str();
   app.add_option("--cutoff-epsilon", o.t.cutoffEpsilon, "Leave vertices with |w - 1| <= epsilon unshifted (0: the driver's exact w != 1)")->capture_default_str();
@@ -100,7 +113,8 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("--shift-form", o.shiftForm, "How the cutoff is coded: branch (if) or select (branch-free)")->capture_default_str();
   app.add_flag("--no-invariant", o.noInvariant, "Do not mark the position invariant / the shift NoContraction");
   app.add_flag("--no-halo", o.noHalo, "Do not shift outputs derived from the clip position");
-  app.add_option("--pass", o.t.onlyPasses, "Run only this pass (repeatable): clip-position-detection, eye-params, halo, stereo-shift");
+  app.add_option("--pass", o.t.onlyPasses, "Run only this pass (repeatable): clip-position-detection, eye-params, halo, stereo-shift")
+      ->allow_extra_args(false);
   app.add_flag("--print-all", o.t.printAll, "Print the SPIR-V after every pass to stderr");
   app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
   app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
@@ -221,8 +235,15 @@ int runBuild(const std::string& sourceDir, const std::string& outDir, CliOptions
   // Shaders are the files whose name carries a stage; everything else (includes, docs) is skipped.
   std::map<std::string, std::vector<fs::path>> pipelines;
   std::vector<fs::path> files;
-  for (auto& entry : fs::recursive_directory_iterator(sourceDir, ec))
-    if (entry.is_regular_file()) files.push_back(entry.path());
+  // An output directory inside the source tree is not part of the source.
+  fs::path outCanonical = fs::weakly_canonical(outDir, ec);
+  for (auto it = fs::recursive_directory_iterator(sourceDir, ec); it != fs::recursive_directory_iterator(); ++it) {
+    if (it->is_directory() && fs::weakly_canonical(it->path(), ec) == outCanonical) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file()) files.push_back(it->path());
+  }
   std::sort(files.begin(), files.end());
   for (const auto& f : files)
     if (stageFromPath(f.string())) pipelines[pipelineKey(f)].push_back(f);
@@ -300,6 +321,7 @@ int main(int argc, char** argv) {
   if (*build) {
     if (auto error = finishOptions(b)) {
       std::cerr << "stereoshift: error: " << *error << "\n";
+      printErrorSummary(1);
       return 2;
     }
     return runBuild(buildSource, buildOut, b);
@@ -307,6 +329,7 @@ int main(int argc, char** argv) {
 
   if (auto error = finishOptions(o)) {
     std::cerr << "stereoshift: error: " << *error << "\n";
+    printErrorSummary(1);
     return 2;
   }
   std::vector<std::string> paths = o.pipeline.empty() ? o.inputs : splitCommas(o.pipeline);

@@ -80,6 +80,11 @@ class EyeParamsPass final : public Pass {
       source = (ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan && usesLooseUniforms(m))
                    ? EyeSource::LooseUniforms
                    : EyeSource::UniformBlock;
+    if (source == EyeSource::LooseUniforms && !(ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan)) {
+      ctx.diags.error(ctx.file, "--eye-source=loose-uniforms needs an OpenGL GLSL shader; Vulkan and HLSL have "
+                                "no default-block uniforms (use uniform-block, push-constant or spec-constant)");
+      return PassResult::Failed;
+    }
     if (source == EyeSource::PushConstant && ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan) {
       ctx.diags.error(ctx.file, "--eye-source=push-constant needs a Vulkan shader; this is OpenGL GLSL");
       return PassResult::Failed;
@@ -144,7 +149,9 @@ class EyeParamsPass final : public Pass {
         report["block"] = m.name(blockType_);
         report["instance"] = m.name(ctx.eye.variable);
         if (auto set = m.decorationValue(ctx.eye.variable, spv::DecorationDescriptorSet)) report["set"] = *set;
-        if (auto b = m.decorationValue(ctx.eye.variable, spv::DecorationBinding)) report["binding"] = *b;
+        bool gl = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
+        if (auto b = m.decorationValue(ctx.eye.variable, spv::DecorationBinding); b && (!gl || o.glBinding))
+          report["binding"] = *b;  // OpenGL blocks without --gl-binding are bound by name
         break;
       }
     }
@@ -194,6 +201,13 @@ class EyeParamsPass final : public Pass {
     std::string blockName = o.blockName, instanceName = o.instanceName;
     for (int i = 2; taken.count(blockName); ++i) blockName = o.blockName + std::to_string(i);
     for (int i = 2; taken.count(instanceName); ++i) instanceName = o.instanceName + std::to_string(i);
+    auto& report = ctx.report["passes"][name()];
+    for (const auto& [wanted, chosen] : {std::pair{o.blockName, blockName}, std::pair{o.instanceName, instanceName}})
+      if (wanted != chosen) {
+        ctx.diags.warning(ctx.file, "the shader already declares '" + wanted + "'; the injected block uses '" +
+                                        chosen + "'");
+        report["renamed"][wanted] = chosen;
+      }
     m.setName(blockType_, blockName);
     m.decorate(blockType_, spv::DecorationBlock);
     for (uint32_t i = 0; i < 3; ++i) {

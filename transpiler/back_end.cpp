@@ -103,6 +103,11 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
       }
       case TargetLanguage::Msl: {
         spirv_cross::CompilerMSL compiler(words);
+        auto msl = compiler.get_msl_options();
+        // 2.1 is the first MSL with [[invariant]] positions; default to it unless asked otherwise.
+        int v = options.targetVersion.value_or(21);
+        msl.msl_version = spirv_cross::CompilerMSL::Options::make_msl_version(uint32_t(v / 10), uint32_t(v % 10));
+        compiler.set_msl_options(msl);
         result.text = compiler.compile();
         break;
       }

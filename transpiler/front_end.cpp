@@ -195,7 +195,13 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 100);
     shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
   }
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  // Mesh and task shaders exist only from SPIR-V 1.4 / Vulkan 1.3 on.
+  if (stage == Stage::Mesh || stage == Stage::Task) {
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_4);
+  } else {
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  }
   shader.setAutoMapLocations(true);
   shader.setAutoMapBindings(true);
 
@@ -280,6 +286,11 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 
   if (language == SourceLanguage::Hlsl) {
     std::string entry = chooseHlslEntry(input.contents, *stage, options.entryPoint);
+    if (!std::regex_search(input.contents, std::regex("\\b" + entry + "\\s*\\("))) {
+      diags.error(input.path, "entry point '" + entry + "' not found" +
+                                  (options.entryPoint.empty() ? "; name it with -e <function>" : ""));
+      return result;
+    }
     Attempt a = compileGlslangOnce(input, input.contents, *stage, language, Client::Vulkan, entry, options);
     diags.append(a.diags);
     if (!a.ok) return result;

@@ -4,6 +4,7 @@
 #include "transpiler/front_end.h"
 #include "transpiler/hlsl_splice.h"
 #include "transpiler/pipeline.h"
+#include "transpiler/spirv_module.h"
 
 #include <algorithm>
 #include <chrono>
@@ -320,7 +321,9 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
     }
   } else {
     spirv::Module emitModule = module;
-    stripAutoAssignedQualifiers(emitModule, info);
+    SourceInfo emitInfo = info;
+    if (options.eye.glBinding && ctx.eye.variable) emitInfo.explicitBinding.insert(module.name(ctx.eye.variable));
+    stripAutoAssignedQualifiers(emitModule, emitInfo);
     EmitHints hints = collectHints(emitModule);
     EmitResult emitted = emitSource(emitModule.encode(), info, options, hints, file, diags);
     if (!emitted.ok) return result;
@@ -364,9 +367,36 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       lastRank = rank(*stage);
     }
   }
+  // The injected block must not take a binding another stage of the pipeline uses.
+  TranspileOptions pipelineOptions = options;
+  if (stages.size() > 1 && !options.eye.binding && !options.eye.hlslRegister) {
+    std::optional<uint32_t> highest;
+    bool hlsl = false;
+    for (const auto& stage : stages) {
+      Diagnostics ignored;
+      FrontEndResult front = compileToSpirv(stage, options, ignored);
+      if (!front.ok) continue;
+      hlsl |= front.info.language == SourceLanguage::Hlsl;
+      std::string error;
+      auto m = spirv::Module::parse(front.spirv, &error);
+      if (!m) continue;
+      uint32_t set = options.eye.descriptorSet.value_or(0);
+      for (const auto& inst : m->typesValues) {
+        if (inst.opcode != spv::OpVariable) continue;
+        if (front.info.language == SourceLanguage::Hlsl && inst.operand(0) != spv::StorageClassUniform) continue;
+        auto binding = m->decorationValue(inst.resultId, spv::DecorationBinding);
+        if (!binding || m->decorationValue(inst.resultId, spv::DecorationDescriptorSet).value_or(0) != set) continue;
+        highest = highest ? std::max(*highest, *binding) : *binding;
+      }
+    }
+    if (highest) {
+      if (hlsl) pipelineOptions.eye.hlslRegister = *highest + 1;
+      else pipelineOptions.eye.binding = *highest + 1;
+    }
+  }
   std::vector<TranspileResult> results;
   for (size_t i = 0; i < stages.size(); ++i) {
-    TranspileOptions stageOptions = options;
+    TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
     results.push_back(transpile(stages[i], stageOptions));
   }

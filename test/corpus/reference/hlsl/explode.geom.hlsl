@@ -25,7 +25,7 @@ struct GSOutput
 };
 
 // ---- stereoshift: stereo parameters and clip-space shift (injected) ----
-cbuffer StereoParams : register(b2)
+cbuffer StereoParams : register(b3)
 {
     float eyeSign;
     float separation;

@@ -20,7 +20,7 @@ cbuffer PerObject : register(b0)
     float4 MaterialTint : packoffset(c8);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

@@ -23,7 +23,7 @@ cbuffer ObjectConstants : register(b0)
     column_major float4x4 View : packoffset(c8);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

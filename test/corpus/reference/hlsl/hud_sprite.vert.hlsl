@@ -20,7 +20,7 @@ cbuffer HudConstants : register(b0)
     float Padding : packoffset(c4.w);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

@@ -29,7 +29,7 @@ cbuffer SceneConstants : register(b0)
     float Time : packoffset(c4.w);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

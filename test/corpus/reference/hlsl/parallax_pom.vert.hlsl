@@ -29,7 +29,7 @@ cbuffer FrameConstants : register(b0)
     float4 ViewportSize : packoffset(c9);
 };
 
-cbuffer StereoParams : register(b2)
+cbuffer StereoParams : register(b3)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

@@ -32,7 +32,7 @@ float3 EdgeControl(float3 pi, float3 pj, float3 ni)
 }
 
 // ---- stereoshift: stereo parameters and clip-space shift (injected) ----
-cbuffer StereoParams : register(b3)
+cbuffer StereoParams : register(b4)
 {
     float eyeSign;
     float separation;

@@ -15,7 +15,7 @@ cbuffer LightVolumeConstants : register(b0)
     float LightRadius : packoffset(c4.w);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

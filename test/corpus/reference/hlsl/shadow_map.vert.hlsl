@@ -17,7 +17,7 @@ cbuffer ShadowConstants : register(b0)
     float NormalOffset : packoffset(c4);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

@@ -25,7 +25,7 @@ cbuffer CameraConstants : register(b1)
     column_major float4x4 Projection : packoffset(c4);
 };
 
-cbuffer StereoParams : register(b2)
+cbuffer StereoParams : register(b3)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

@@ -16,7 +16,7 @@ cbuffer SkyConstants : register(b0)
     float4 SkyTint : packoffset(c4);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

@@ -22,7 +22,7 @@ cbuffer WaterConstants : register(b0)
     float Padding : packoffset(c8.w);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);

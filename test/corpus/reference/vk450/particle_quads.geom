@@ -11,7 +11,7 @@ layout(set = 0, binding = 0, std140) uniform CameraUBO
     vec4 cameraUp;
 } camera;
 
-layout(set = 0, binding = 1, std140) uniform StereoParams
+layout(set = 0, binding = 2, std140) uniform StereoParams
 {
     float eyeSign;
     float separation;

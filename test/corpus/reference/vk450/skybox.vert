@@ -9,7 +9,7 @@ layout(set = 0, binding = 0, std140) uniform SkyUBO
     float rotationY;
 } sky;
 
-layout(set = 0, binding = 1, std140) uniform StereoParams
+layout(set = 0, binding = 3, std140) uniform StereoParams
 {
     float eyeSign;
     float separation;

@@ -1,0 +1,25 @@
+// --shift-form select codes the cutoff branch-free: x = cond ? shifted : x, no if/selection merge.
+// RUN: %stereoshift --verify --shift-form select %s -o - | %rmchecks | FileCheck %s
+// RUN: %stereoshift --shift-form select --target spirv-asm %s -o - --report %t.json | %rmchecks | FileCheck %s --check-prefix=SPIRV
+// RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
+// RUN: %stereoshift --verify --shift-form branch %s -o - | %rmchecks | FileCheck %s --check-prefix=BRANCH
+#version 450
+layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
+layout(location = 0) in vec3 inPosition;
+void main() {
+  gl_Position = camera.viewProj * vec4(inPosition, 1.0);
+}
+// CHECK: void main()
+// CHECK-NOT: if (
+// CHECK: precise float [[X:_[0-9]+]] = {{_[0-9]+}}.x + {{_[0-9]+}};
+// CHECK-NEXT: [[V:_[0-9]+]].x = (abs([[V]].w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) ? [[X]] : [[V]].x;
+// CHECK-NEXT: gl_Position = [[V]];
+// CHECK-NOT: if (
+// SPIRV-NOT: OpSelectionMerge
+// SPIRV: [[COND:%[0-9]+]] = OpFOrdGreaterThan %bool
+// SPIRV-NEXT: [[SEL:%[0-9]+]] = OpSelect %float [[COND]]
+// SPIRV-NEXT: [[NEW:%[0-9]+]] = OpCompositeInsert %v4float [[SEL]] {{%[0-9]+}} 0
+// SPIRV-NEXT: OpStore {{%[0-9]+}} [[NEW]]
+// SPIRV-NOT: OpSelectionMerge
+// REPORT: "form": "select",
+// BRANCH: if (abs(gl_Position.w - 1.0) >

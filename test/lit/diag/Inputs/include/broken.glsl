@@ -1,0 +1,3 @@
+float helper(float v) {
+  return v * notDeclared;
+}

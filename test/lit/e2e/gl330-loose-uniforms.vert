@@ -1,0 +1,48 @@
+// An OpenGL GLSL 330 shader with loose uniforms stays a drop-in replacement: the same loose
+// uniforms (glGetUniformLocation keeps working), the eye parameters as loose uniforms too, no
+// gl_DefaultUniformBlock, no SPIRV_Cross_BaseInstance for gl_InstanceID, and no layout(location)
+// or layout(binding) on declarations that had none.
+// RUN: %stereoshift --verify %s -o %t.out.vert
+// RUN: %rmchecks %t.out.vert | FileCheck %s
+// RUN: %rmchecks %t.out.vert | FileCheck %s --check-prefix=NEG
+// RUN: glslangValidator %t.out.vert
+#version 330 core
+// CHECK: #version 330
+uniform mat4 uModel;
+uniform mat4 uViewProj;
+uniform sampler2D uHeight;
+// CHECK-DAG: {{^}}uniform mat4 uModel;
+// CHECK-DAG: {{^}}uniform mat4 uViewProj;
+// CHECK-DAG: {{^}}uniform sampler2D uHeight;
+// CHECK-DAG: {{^}}uniform float eyeSign;
+// CHECK-DAG: {{^}}uniform float separation;
+// CHECK-DAG: {{^}}uniform float convergence;
+layout(location = 0) in vec3 aPosition;
+in vec3 aOffset;
+in vec2 aTexCoord;
+out vec2 vTexCoord;
+// CHECK-DAG: {{^}}layout(location = 0) in vec3 aPosition;
+// CHECK-DAG: {{^}}in vec3 aOffset;
+// CHECK-DAG: {{^}}in vec2 aTexCoord;
+// CHECK-DAG: {{^}}out vec2 vTexCoord;
+void main() {
+  vTexCoord = aTexCoord + vec2(float(gl_InstanceID), 0.0);
+  float h = texture(uHeight, aTexCoord).r;
+  gl_Position = uViewProj * uModel * vec4(aPosition + aOffset + vec3(0.0, h, 0.0), 1.0);
+// CHECK: void main()
+// CHECK: gl_InstanceID
+// CHECK: gl_Position =
+// CHECK-NEXT: if (abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}})
+// CHECK-NEXT: {
+// CHECK: float [[S:_[0-9]+]] = eyeSign * separation;
+// CHECK: gl_Position.x =
+}
+// NEG-NOT: gl_DefaultUniformBlock
+// NEG-NOT: SPIRV_Cross_BaseInstance
+// NEG-NOT: StereoParams
+// NEG-NOT: layout(location = {{[1-9]}})
+// NEG-NOT: binding
+// NEG-NOT: #extension
+// NEG: void main()
+// NEG-NOT: gl_DefaultUniformBlock
+// NEG-NOT: SPIRV_Cross_BaseInstance
