@@ -2,7 +2,8 @@
 """Corpus reference test (SPIRV-Cross style mirrored trees).
 
 Converts corpus/ with `stereoshift build`, then for every shader:
-  - compares the output with test/corpus/reference/<same path> byte for byte,
+  - compares the output with test/corpus/reference/<same path> byte for byte (shaders that need no
+    change must come out as the very bytes of their source, and keep no reference),
   - re-compiles the output with glslangValidator (every output, copied or re-emitted),
   - checks the classification in the JSON report against the `// stereoshift-expect:` header.
 `--update` rewrites the references instead of comparing them.
@@ -115,6 +116,16 @@ def main():
                     failures.append("%s: output does not compile:\n%s" % (rel, log))
                 ref = os.path.join(args.reference, rel)
                 data = open(produced, "rb").read()
+                if entry.get("output") == "copied":
+                    # Nothing injected: the output must be the input, byte for byte; no reference kept.
+                    if data != open(src, "rb").read():
+                        failures.append("%s: reported as copied but differs from the source" % rel)
+                    if args.update and os.path.exists(ref):
+                        os.remove(ref)
+                        print("removed", ref)
+                    elif os.path.exists(ref):
+                        failures.append("%s: stale reference for a copied-through shader (run --update)" % rel)
+                    continue
                 if args.update:
                     os.makedirs(os.path.dirname(ref), exist_ok=True)
                     if not os.path.exists(ref) or open(ref, "rb").read() != data:
