@@ -3,6 +3,7 @@
 //   stereoshift [options] <input> -o <output>          one shader
 //   stereoshift [options] --pipeline a.vert,a.geom,a.frag -o <dir>   one pipeline
 //   stereoshift build <src-dir> -o <out-dir> [options] a whole tree (pipelines by base name)
+#include "cli/verify_command.h"
 #include "transpiler/stereoshift.h"
 
 #include <CLI/CLI.hpp>
@@ -312,10 +313,44 @@ int main(int argc, char** argv) {
   build->add_option("source", buildSource, "Source directory")->required();
   build->add_option("-o,--output", buildOut, "Output directory (mirrors the source tree)")->required();
 
+  CliOptions v;
+  VerifyCommandOptions verifyOptions;
+  auto* verify = app.add_subcommand(
+      "verify", "Run the original and the stereo shader on the CPU Vulkan driver (lavapipe) and check the shift");
+  addConversionOptions(*verify, v);
+  verify->add_option("input", v.inputs, "Shader, or the stages of one pipeline (only pre-rasterization stages run)");
+  verify->add_option("--separation", verifyOptions.separation, "Separation used for the check")->capture_default_str();
+  verify->add_option("--convergence", verifyOptions.convergence, "Convergence used for the check")->capture_default_str();
+  verify->add_flag("--json", verifyOptions.json, "Machine-readable result");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+
+  if (*verify) {
+    if (auto error = finishOptions(v)) {
+      std::cerr << "stereoshift: error: " << *error << "\n";
+      printErrorSummary(1);
+      return 2;
+    }
+    std::vector<SourceFile> sources;
+    for (const auto& p : v.inputs) {
+      SourceFile s{p, {}};
+      if (!readFile(p, &s.contents)) {
+        std::cerr << p << ": error: cannot read file\n";
+        printErrorSummary(1);
+        return 1;
+      }
+      sources.push_back(std::move(s));
+    }
+    if (sources.empty()) {
+      std::cerr << "stereoshift: error: no input file (see verify --help)\n";
+      printErrorSummary(1);
+      return 2;
+    }
+    return runVerifyCommand(sources, v.t, verifyOptions);
   }
 
   if (*build) {

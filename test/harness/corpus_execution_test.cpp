@@ -2,7 +2,6 @@
 // pre-rasterization stage gets the shift is run on lavapipe, original against transpiled, with
 // eyeSign = 0 (bit-exact mono identity), -1 and +1 (stereo error against the double reference).
 #include "test/harness/stereo_verify.h"
-#include "transpiler/front_end.h"
 #include "transpiler/stereoshift.h"
 
 #include <gtest/gtest.h>
@@ -23,21 +22,6 @@ std::string readAll(const fs::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-VkShaderStageFlagBits vkStage(Stage s) {
-  switch (s) {
-    case Stage::TessControl: return VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
-    case Stage::TessEvaluation: return VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-    case Stage::Geometry: return VK_SHADER_STAGE_GEOMETRY_BIT;
-    default: return VK_SHADER_STAGE_VERTEX_BIT;
-  }
-}
-
-std::vector<uint32_t> toWords(const std::string& bytes) {
-  std::vector<uint32_t> words(bytes.size() / 4);
-  std::memcpy(words.data(), bytes.data(), words.size() * 4);
-  return words;
 }
 
 struct PipelineCase {
@@ -81,23 +65,14 @@ std::string CorpusExecution::setupError_;
 TEST_P(CorpusExecution, StereoMatchesReference) {
   ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
   const PipelineCase& c = GetParam();
+  std::vector<SourceFile> sources;
+  for (const auto& p : c.stages) sources.push_back({p.string(), readAll(p)});
+  TranspileOptions options;
+  options.includeDirs = {(c.stages.front().parent_path() / "include").string()};
   std::vector<StageModules> stages;
   std::string lastClassification;
-  for (size_t i = 0; i < c.stages.size(); ++i) {
-    SourceFile file{c.stages[i].string(), readAll(c.stages[i])};
-    TranspileOptions options;
-    options.includeDirs = {(c.stages[i].parent_path() / "include").string()};
-    options.target = TargetLanguage::Spirv;
-    options.forceReemit = true;
-    options.shiftThisStage = i + 1 == c.stages.size();
-    Diagnostics diags;
-    FrontEndResult front = compileToSpirv(file, options, diags);
-    ASSERT_TRUE(front.ok) << diags.format();
-    TranspileResult result = transpile(file, options);
-    ASSERT_TRUE(result.ok) << result.diagnostics.format();
-    lastClassification = result.report.value("classification", "");
-    stages.push_back({vkStage(front.info.stage), front.spirv, toWords(result.output), "main"});
-  }
+  Diagnostics diags;
+  ASSERT_TRUE(buildStageModules(sources, options, &stages, &lastClassification, diags)) << diags.format();
   if (lastClassification != "perspective") GTEST_SKIP() << c.name << " needs no shift (" << lastClassification << ")";
   VerifySettings settings;
   VerifyResult r = verifyStereo(*context_, stages, settings);

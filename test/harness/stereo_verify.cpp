@@ -1,6 +1,7 @@
 #include "test/harness/stereo_verify.h"
 
 #include "test/harness/capture_instrument.h"
+#include "transpiler/front_end.h"
 #include "transpiler/spirv_module.h"
 
 #include <algorithm>
@@ -315,6 +316,46 @@ double ulpOf(double magnitude) {
 }
 
 }  // namespace
+
+bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                       std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags) {
+  std::vector<const SourceFile*> ordered;
+  for (const auto& s : sources) {
+    auto stage = options.stage ? options.stage : stageFromPath(s.path);
+    if (stage && isPreRasterization(*stage)) ordered.push_back(&s);
+  }
+  if (ordered.empty()) {
+    diags.error(sources.empty() ? std::string() : sources.front().path,
+                "nothing to verify: no vertex, tessellation or geometry stage");
+    return false;
+  }
+  std::stable_sort(ordered.begin(), ordered.end(), [&](const SourceFile* a, const SourceFile* b) {
+    return static_cast<int>(*stageFromPath(a->path)) < static_cast<int>(*stageFromPath(b->path));
+  });
+  for (size_t i = 0; i < ordered.size(); ++i) {
+    TranspileOptions o = options;
+    o.target = TargetLanguage::Spirv;
+    o.forceReemit = true;
+    o.shiftThisStage = i + 1 == ordered.size();
+    FrontEndResult front = compileToSpirv(*ordered[i], o, diags);
+    if (!front.ok) return false;
+    TranspileResult result = transpile(*ordered[i], o);
+    diags.append(result.diagnostics);
+    if (!result.ok) return false;
+    *classification = result.report.value("classification", "");
+    std::vector<uint32_t> words(result.output.size() / 4);
+    std::memcpy(words.data(), result.output.data(), words.size() * 4);
+    VkShaderStageFlagBits vk = VK_SHADER_STAGE_VERTEX_BIT;
+    switch (front.info.stage) {
+      case Stage::TessControl: vk = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT; break;
+      case Stage::TessEvaluation: vk = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT; break;
+      case Stage::Geometry: vk = VK_SHADER_STAGE_GEOMETRY_BIT; break;
+      default: break;
+    }
+    stages->push_back({vk, front.spirv, std::move(words), front.info.entryPoint});
+  }
+  return true;
+}
 
 VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules>& stages,
                           const VerifySettings& settings) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "test/harness/vk_harness.h"
+#include "transpiler/stereoshift.h"
 
 #include <nlohmann/json.hpp>
 
@@ -44,6 +45,12 @@ struct VerifyResult {
   std::vector<std::string> problems;
   nlohmann::json json() const;
 };
+
+// Compiles the pre-rasterization stages of `sources` (fragment / compute are dropped) both as the
+// original SPIR-V and through stereoshift's passes (only the last stage shifted), in pipeline order.
+// `classification` receives the last stage's classification. False with diagnostics on failure.
+bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                       std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags);
 
 // The stages form one pipeline (vertex first); the last one is captured.
 VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules>& stages,

@@ -1,0 +1,66 @@
+#include "cli/verify_command.h"
+
+#include "test/harness/stereo_verify.h"
+
+#include <iostream>
+
+namespace stereoshift {
+
+int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                     const VerifyCommandOptions& verify) {
+  Diagnostics diags;
+  std::vector<harness::StageModules> stages;
+  std::string classification;
+  if (!harness::buildStageModules(sources, options, &stages, &classification, diags)) {
+    std::cerr << diags.format();
+    int errors = std::max(1, diags.errorCount());
+    std::cerr << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
+    return 1;
+  }
+  const std::string name = sources.back().path;
+  if (classification != "perspective") {
+    if (verify.json)
+      std::cout << nlohmann::json{{"file", name}, {"classification", classification}, {"ok", true}, {"verified", false}}.dump(2)
+                << "\n";
+    else
+      std::cout << name << ": " << classification << ": nothing is injected, nothing to verify\n";
+    return 0;
+  }
+  std::string error;
+  auto context = harness::VulkanContext::create(&error);
+  if (!context) {
+    std::cerr << name << ": error: no Vulkan device to run on (install mesa-vulkan-drivers): " << error << "\n";
+    return 1;
+  }
+  harness::VerifySettings settings;
+  settings.separation = verify.separation;
+  settings.convergence = verify.convergence;
+  settings.cutoff = options.cutoff != CutoffMode::None;
+  settings.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  settings.eyeSignName = options.eye.eyeSignName;
+  settings.separationName = options.eye.separationName;
+  settings.convergenceName = options.eye.convergenceName;
+  harness::VerifyResult r = harness::verifyStereo(*context, stages, settings);
+  if (!r.error.empty()) {
+    std::cerr << name << ": error: " << r.error << "\n1 error generated.\n";
+    return 1;
+  }
+  if (verify.json) {
+    nlohmann::json j = r.json();
+    j["file"] = name;
+    j["device"] = context->deviceName();
+    j["bound_ulps"] = settings.maxUlps;
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << name << " on " << context->deviceName() << ": " << r.vertices << " vertices\n"
+              << "  mono identity (eyeSign 0):   " << (r.monoIdentical ? "bit-exact" : "DIFFERS") << "\n"
+              << "  other outputs per eye:       " << (r.otherOutputsUnchanged ? "unchanged" : "CHANGED") << "\n"
+              << "  stereo x error:              " << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ")\n"
+              << "  vertices kept by the cutoff: " << r.cutoffVertices << "\n";
+    for (const auto& p : r.problems) std::cout << "  problem: " << p << "\n";
+    std::cout << (r.ok ? "verified" : "FAILED") << "\n";
+  }
+  return r.ok ? 0 : 1;
+}
+
+}  // namespace stereoshift
