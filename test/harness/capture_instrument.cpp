@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <climits>
+#include <map>
+#include <set>
 
 namespace stereoshift::harness {
 
@@ -104,6 +106,187 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
     else
       m.decorate(c.variable, spv::DecorationOffset, {layout->fields[i].offset});
   }
+  return true;
+}
+
+namespace {
+
+bool isOpaque(const spirv::Module& m, uint32_t type) {
+  const Instruction* d = m.definition(type);
+  while (d && (d->opcode == spv::OpTypeArray || d->opcode == spv::OpTypeRuntimeArray)) d = m.definition(d->operand(0));
+  return d && (d->opcode == spv::OpTypeImage || d->opcode == spv::OpTypeSampler || d->opcode == spv::OpTypeSampledImage);
+}
+
+// std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type.
+void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, bool* matrix) {
+  const Instruction* d = m.definition(*type);
+  *matrix = false;
+  switch (d ? d->opcode : spv::OpNop) {
+    case spv::OpTypeFloat: case spv::OpTypeInt: case spv::OpTypeBool:
+      *size = 4; *align = 4; return;
+    case spv::OpTypeVector: {
+      uint32_t n = d->operand(1);
+      *size = 4 * n;
+      *align = n == 2 ? 8 : 16;
+      return;
+    }
+    case spv::OpTypeMatrix:
+      *matrix = true;
+      *size = 16 * d->operand(1);
+      *align = 16;
+      return;
+    case spv::OpTypeArray: {
+      uint32_t element = d->operand(0), length = d->operand(1);
+      uint32_t elementSize, elementAlign;
+      bool elementMatrix;
+      std140(m, &element, &elementSize, &elementAlign, &elementMatrix);
+      uint32_t stride = (std::max(elementSize, 16u) + 15) & ~15u;
+      const Instruction* count = m.definition(length);
+      uint32_t id = m.takeId();
+      m.typesValues.emplace_back(spv::OpTypeArray, 0, id, std::vector<uint32_t>{element, length});
+      m.invalidateDefinitions();
+      m.decorate(id, spv::DecorationArrayStride, {stride});
+      *type = id;
+      *size = stride * (count ? count->operand(0) : 1);
+      *align = 16;
+      *matrix = elementMatrix;
+      return;
+    }
+    default:
+      *size = 16; *align = 16; return;
+  }
+}
+
+}  // namespace
+
+bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string* error) {
+  bool changed = false;
+  for (auto& inst : m.annotations)
+    if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationBuiltIn)) {
+      if (inst.operand(2) == uint32_t(spv::BuiltInVertexId)) inst.operands[2] = spv::BuiltInVertexIndex, changed = true;
+      if (inst.operand(2) == uint32_t(spv::BuiltInInstanceId)) inst.operands[2] = spv::BuiltInInstanceIndex, changed = true;
+    }
+  std::vector<uint32_t> loose;
+  uint32_t highestBinding = 0;
+  bool anyBinding = false;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable) continue;
+    if (inst.operand(0) == spv::StorageClassUniformConstant && !isOpaque(m, m.pointeeType(inst.typeId))) {
+      loose.push_back(inst.resultId);  // its auto-mapped binding goes away with it
+      continue;
+    }
+    if (auto b = m.decorationValue(inst.resultId, spv::DecorationBinding)) {
+      highestBinding = anyBinding ? std::max(highestBinding, *b) : *b;
+      anyBinding = true;
+    }
+  }
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniformConstant)
+      m.removeDecorations(inst.resultId, spv::DecorationLocation);
+  // glslang's auto-mapped locations can collide with explicit ones in OpenGL shaders (the GL linker
+  // would have assigned them); give each collider the next free location, the same way in every copy.
+  for (auto storage : {spv::StorageClassInput, spv::StorageClassOutput}) {
+    std::set<uint32_t> used;
+    std::vector<uint32_t> colliders;
+    uint32_t highest = 0;
+    for (const auto& inst : m.typesValues) {
+      if (inst.opcode != spv::OpVariable || inst.operand(0) != uint32_t(storage)) continue;
+      auto location = m.decorationValue(inst.resultId, spv::DecorationLocation);
+      if (!location) continue;
+      highest = std::max(highest, *location);
+      if (!used.insert(*location).second) colliders.push_back(inst.resultId);
+    }
+    for (uint32_t var : colliders) {
+      m.removeDecorations(var, spv::DecorationLocation);
+      m.decorate(var, spv::DecorationLocation, {++highest + 3});  // past any matrix-sized neighbour
+      changed = true;
+    }
+  }
+  if (loose.empty()) return changed;
+
+  // The block: one member per loose uniform, std140 offsets.
+  std::vector<uint32_t> memberTypes, offsets;
+  std::vector<bool> matrices;
+  uint32_t offset = 0;
+  for (uint32_t var : loose) {
+    uint32_t type = m.pointeeType(m.definition(var)->typeId), size, align;
+    bool matrix;
+    std140(m, &type, &size, &align, &matrix);
+    offset = (offset + align - 1) / align * align;
+    memberTypes.push_back(type);
+    offsets.push_back(offset);
+    matrices.push_back(matrix);
+    offset += size;
+  }
+  uint32_t block = m.newStruct(memberTypes);
+  m.decorate(block, spv::DecorationBlock);
+  m.setName(block, "gl_DefaultUniformBlock");
+  for (uint32_t i = 0; i < loose.size(); ++i) {
+    m.decorateMember(block, i, spv::DecorationOffset, {offsets[i]});
+    m.setMemberName(block, i, m.name(loose[i]));
+    if (matrices[i]) {
+      m.decorateMember(block, i, spv::DecorationColMajor);
+      m.decorateMember(block, i, spv::DecorationMatrixStride, {16});
+    }
+  }
+  uint32_t blockVar = m.addGlobalVariable(m.typePointer(spv::StorageClassUniform, block), spv::StorageClassUniform);
+  m.decorate(blockVar, spv::DecorationDescriptorSet, {0});
+  if (anyBinding && highestBinding >= blockBinding) {
+    *error = "binding " + std::to_string(blockBinding) + " for the default uniform block is taken";
+    return false;
+  }
+  m.decorate(blockVar, spv::DecorationBinding, {blockBinding});
+
+  // Every use of a loose uniform becomes a chain into the block, made at the top of the function.
+  std::map<uint32_t, uint32_t> memberOf;
+  for (uint32_t i = 0; i < loose.size(); ++i) memberOf[loose[i]] = i;
+  std::set<uint32_t> uniformPointers;
+  for (auto& fn : m.functions) {
+    if (fn.blocks.empty()) continue;
+    std::map<uint32_t, uint32_t> replacement;
+    std::vector<Instruction> chains;
+    for (auto& block : fn.blocks)
+      for (auto& inst : block.instructions)
+        for (auto& operand : inst.operands) {
+          auto it = memberOf.find(operand);
+          if (it == memberOf.end()) continue;
+          if (!replacement.count(operand)) {
+            uint32_t id = m.takeId();
+            uint32_t pointee = memberTypes[it->second];
+            chains.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassUniform, pointee), id,
+                                std::vector<uint32_t>{blockVar, m.constantInt(static_cast<int32_t>(it->second))});
+            replacement[operand] = id;
+            uniformPointers.insert(id);
+          }
+          operand = replacement[operand];
+        }
+    auto& first = fn.blocks.front().instructions;
+    size_t at = 0;
+    while (at < first.size() && first[at].opcode == spv::OpVariable) ++at;
+    first.insert(first.begin() + static_cast<long>(at), chains.begin(), chains.end());
+  }
+  // Chains built on those pointers point into Uniform storage now.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (auto& fn : m.functions)
+      for (auto& block : fn.blocks)
+        for (auto& inst : block.instructions)
+          if ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) &&
+              uniformPointers.count(inst.operand(0)) && !uniformPointers.count(inst.resultId)) {
+            inst.typeId = m.typePointer(spv::StorageClassUniform, m.pointeeType(inst.typeId));
+            uniformPointers.insert(inst.resultId);
+            grew = true;
+          }
+  }
+  // Drop the loose variables and everything that names them.
+  std::set<uint32_t> gone(loose.begin(), loose.end());
+  std::erase_if(m.typesValues, [&](const Instruction& i) { return gone.count(i.resultId) > 0; });
+  std::erase_if(m.annotations, [&](const Instruction& i) { return gone.count(i.operand(0)) > 0; });
+  std::erase_if(m.debugNames, [&](const Instruction& i) { return i.opcode == spv::OpName && gone.count(i.operand(0)) > 0; });
+  for (auto& entry : m.entryPoints)
+    std::erase_if(entry.operands, [&](uint32_t id) { return gone.count(id) > 0; });
+  m.invalidateDefinitions();
+  (void)error;
   return true;
 }
 

@@ -31,4 +31,12 @@ struct CaptureLayout {
 bool instrumentForCapture(spirv::Module& module, CaptureLayout* layout, std::vector<std::string>* skipped,
                           std::string* error);
 
+// OpenGL SPIR-V (ARB_gl_spirv) cannot run on Vulkan as is: its loose uniforms become members of one
+// std140 uniform block (set 0, binding `blockBinding` — one per stage of a pipeline, since each stage
+// has its own default block —, members in declaration order, so an original and its transpiled
+// copy share the layout of their common prefix), gl_VertexID /
+// gl_InstanceID become VertexIndex / InstanceIndex, and uniform Locations are dropped. Returns true
+// when the module needed (and got) the conversion.
+bool convertOpenGLForVulkan(spirv::Module& module, uint32_t blockBinding, std::string* error);
+
 }  // namespace stereoshift::harness

@@ -26,6 +26,7 @@ nlohmann::json VerifyResult::json() const {
           {"max_stereo_error_ulps", maxStereoUlps},
           {"cutoff_vertices", cutoffVertices},
           {"other_outputs_unchanged", otherOutputsUnchanged},
+          {"halo_components_changed", haloComponentsChanged},
           {"problems", problems}};
 }
 
@@ -168,6 +169,16 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
     attributes.push_back({*location, m.pointeeType(var->typeId)});
   }
   std::sort(attributes.begin(), attributes.end());
+  // A matrix attribute takes one location per column.
+  std::vector<std::pair<uint32_t, uint32_t>> expanded;
+  for (auto [location, type] : attributes) {
+    const Instruction* d = m.definition(type);
+    if (d && d->opcode == spv::OpTypeMatrix)
+      for (uint32_t c = 0; c < d->operand(1); ++c) expanded.push_back({location + c, d->operand(0)});
+    else
+      expanded.push_back({location, type});
+  }
+  attributes = expanded;
   for (auto [location, type] : attributes) {
     uint32_t size = 0;
     VkFormat format = r.formatOf(type, &size);
@@ -352,7 +363,10 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
       case Stage::Geometry: vk = VK_SHADER_STAGE_GEOMETRY_BIT; break;
       default: break;
     }
-    stages->push_back({vk, front.spirv, std::move(words), front.info.entryPoint});
+    std::vector<std::string> halo;
+    for (const auto& n : result.report["passes"]["halo"].value("shifted_outputs", nlohmann::json::array()))
+      halo.push_back(n.get<std::string>());
+    stages->push_back({vk, front.spirv, std::move(words), front.info.entryPoint, std::move(halo)});
   }
   return true;
 }
@@ -373,6 +387,13 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
       result.error = "unparsable SPIR-V: " + error;
       return result;
     }
+    // OpenGL shaders run through the same Vulkan-compatible rewrite, original and transpiled alike.
+    const uint32_t blockBinding = 16 + static_cast<uint32_t>(originals.size());
+    if (!convertOpenGLForVulkan(*a, blockBinding, &error) && !error.empty()) {
+      result.error = error;
+      return result;
+    }
+    convertOpenGLForVulkan(*b, blockBinding, &error);
     originals.push_back(std::move(*a));
     transpiled.push_back(std::move(*b));
   }
@@ -471,7 +492,15 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     }
     if (eye == 0.0f) {
       result.monoIdentical = stereo.bytes == mono.bytes;
-      if (!result.monoIdentical) result.problems.push_back("eyeSign = 0 output differs from the original");
+      if (!result.monoIdentical) {
+        std::string where;
+        for (uint32_t v = 0; v < result.vertices && where.empty(); ++v)
+          for (uint32_t c = 0; c < layoutA.stride / 4 && where.empty(); ++c)
+            if (mono.u32(v, c) != stereo.u32(v, c))
+              where = ": first at vertex " + std::to_string(v) + " component " + std::to_string(c) + " (" +
+                      std::to_string(mono.f32(v, c)) + " became " + std::to_string(stereo.f32(v, c)) + ")";
+        result.problems.push_back("eyeSign = 0 output differs from the original" + where);
+      }
       continue;
     }
     for (uint32_t v = 0; v < result.vertices; ++v) {
@@ -488,14 +517,33 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
       // y, z, w and every other captured component: unchanged, except halo copies of the position.
       for (uint32_t c = 0; c < layoutA.stride / 4; ++c) {
         if (c == px) continue;
-        if (mono.u32(v, c) == stereo.u32(v, c)) continue;
-        bool haloCopy = false;
+        bool staleCopy = false;
         for (const auto& f : layoutA.fields)
-          if (!f.isPosition && f.components == 4 && c == f.offset / 4) {
-            // A copied position: must carry the same shifted x as gl_Position.
-            haloCopy = mono.u32(v, c) == mono.u32(v, px) && stereo.u32(v, c) == stereo.u32(v, px);
+          staleCopy |= !f.isPosition && f.components == 4 && c == f.offset / 4 &&
+                       mono.u32(v, c) == mono.u32(v, px) && stereo.u32(v, c) != stereo.u32(v, px);
+        if (staleCopy) {  // a copy of the position left mono: the 3Dmigoto "halo"
+          result.otherOutputsUnchanged = false;
+          if (result.problems.size() < 8)
+            result.problems.push_back("vertex " + std::to_string(v) + ": a copy of the position (component " +
+                                      std::to_string(c) + ") was not shifted with it (halo)");
+          continue;
+        }
+        if (mono.u32(v, c) == stereo.u32(v, c)) continue;
+        bool haloCopy = false, haloDerived = false;
+        for (const auto& f : layoutA.fields) {
+          if (f.isPosition || c < f.offset / 4 || c >= f.offset / 4 + f.components) continue;
+          // A copied position must carry exactly the shifted x of gl_Position; other outputs the
+          // halo pass re-derived may move (their formula is the shader's own).
+          if (f.components == 4 && c == f.offset / 4 && mono.u32(v, c) == mono.u32(v, px)) {
+            haloCopy = stereo.u32(v, c) == stereo.u32(v, px);
+          } else {
+            const auto& halo = stages.back().haloOutputs;
+            haloDerived = std::find(halo.begin(), halo.end(), f.name) != halo.end();
           }
-        if (!haloCopy) {
+        }
+        if (haloCopy || haloDerived) {
+          ++result.haloComponentsChanged;
+        } else {
           result.otherOutputsUnchanged = false;
           if (result.problems.size() < 8)
             result.problems.push_back("vertex " + std::to_string(v) + " component " + std::to_string(c) +

@@ -18,6 +18,7 @@ struct StageModules {
   std::vector<uint32_t> original;    // SPIR-V of the mono shader
   std::vector<uint32_t> transpiled;  // SPIR-V after stereoshift's passes
   std::string entry = "main";
+  std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
 };
 
 struct VerifySettings {
@@ -42,6 +43,7 @@ struct VerifyResult {
   double maxStereoUlps = 0;     // largest |x' - x_ref| in ULPs of max(|x|, |S(w - C)|)
   uint32_t cutoffVertices = 0;  // vertices left unshifted by the cutoff
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
+  uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
   std::vector<std::string> problems;
   nlohmann::json json() const;
 };

@@ -1,6 +1,8 @@
 // `stereoshift verify` runs the original and the transpiled shader on lavapipe and checks the shift.
 // RUN: %stereoshift verify %s | FileCheck %s
 // RUN: %stereoshift verify --json --separation 0.1 --convergence 5 %s | FileCheck %s --check-prefix=JSON
+// Without the halo pass the copied position stays mono: verify catches it and fails.
+// RUN: %not %stereoshift verify --no-halo %s | FileCheck %s --check-prefix=HALO
 #version 450
 layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
 layout(location = 0) in vec3 inPosition;
@@ -20,3 +22,5 @@ void main() {
 // JSON-DAG: "other_outputs_unchanged": true
 // JSON-DAG: "ok": true
 // JSON-DAG: "vertices": 96
+// HALO: problem: vertex {{[0-9]+}}: a copy of the position (component 4) was not shifted with it (halo)
+// HALO: {{^}}FAILED
