@@ -8,6 +8,9 @@
 // with the position replaced by its shifted value (the same instruction sequence as the shift).
 #include "passes/pass.h"
 
+#include <spirv-tools/optimizer.hpp>
+
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -107,11 +110,63 @@ class HaloPass final : public Pass {
         }
       }
     }
+    shiftExactCopiesSeenAfterInlining(ctx, fixed);
     report["shifted_outputs"] = fixed;
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 
  private:
+  // Copies made through structs and function calls (HLSL output structs: `o.clip = o.pos;` inside
+  // the user's entry, members copied out by glslang's wrapper) are invisible to the local data flow
+  // above. Inlining and folding a throw-away copy shows them: an output whose stored value is the
+  // very value stored to the position is an exact copy, and its stores in the real module get the
+  // same shift applied to their own value.
+  void shiftExactCopiesSeenAfterInlining(PassContext& ctx, nlohmann::json& fixed) {
+    auto& m = ctx.module;
+    if (ctx.positions.size() != 1 || ctx.positions.front().isMember) return;
+    uint32_t position = ctx.positions.front().variable;
+    spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
+    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+    optimizer.RegisterPerformancePasses();
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);
+    std::vector<uint32_t> words = m.encode(), folded;
+    if (!optimizer.Run(words.data(), words.size(), &folded, options)) return;
+    std::string error;
+    auto optimized = spirv::Module::parse(folded, &error);
+    if (!optimized) return;
+    std::set<uint32_t> positionValues;
+    std::map<uint32_t, std::set<uint32_t>> storedTo;
+    for (const auto& fn : optimized->functions)
+      for (const auto& block : fn.blocks)
+        for (const auto& inst : block.instructions)
+          if (inst.opcode == spv::OpStore) {
+            if (inst.operand(0) == position) positionValues.insert(inst.operand(1));
+            else storedTo[inst.operand(0)].insert(inst.operand(1));
+          }
+    if (positionValues.empty()) return;
+    uint32_t v4 = m.typeVector(m.typeFloat(32), 4);
+    for (const auto& [variable, values] : storedTo) {
+      if (m.storageClassOf(variable) != spv::StorageClassOutput) continue;
+      if (m.pointeeType(m.definition(variable)->typeId) != v4) continue;
+      if (!std::all_of(values.begin(), values.end(), [&](uint32_t v) { return positionValues.count(v) > 0; })) continue;
+      std::string name = m.name(variable).empty() ? std::to_string(variable) : m.name(variable);
+      if (std::find(fixed.begin(), fixed.end(), name) != fixed.end()) continue;
+      for (auto& fn : m.functions)
+        for (auto& block : fn.blocks)
+          for (size_t i = 0; i < block.instructions.size(); ++i) {
+            if (block.instructions[i].opcode != spv::OpStore || block.instructions[i].operand(0) != variable) continue;
+            std::vector<Instruction> code;
+            uint32_t shifted = emitShiftedVec4Select(ctx, code, block.instructions[i].operand(1));
+            block.instructions[i].operands[1] = shifted;
+            block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
+            i += code.size();
+          }
+      m.invalidateDefinitions();
+      fixed.push_back(name);
+    }
+  }
+
   static uint32_t rootVariable(const spirv::Module& m, uint32_t pointer) {
     for (int depth = 0; depth < 16; ++depth) {
       const Instruction* def = m.definition(pointer);

@@ -26,9 +26,7 @@ std::string readAll(const fs::path& p) {
 
 // Known limitations, each asserted to still fail (like lit's XFAIL): when one is fixed, this test
 // fails until the entry is removed.
-const std::map<std::string, std::string> kKnownLimitations = {
-    {"hlsl/water", "halo: the copy of SV_Position made through the HLSL output struct is not followed"},
-};
+const std::map<std::string, std::string> kKnownLimitations = {};
 
 struct PipelineCase {
   std::string name;

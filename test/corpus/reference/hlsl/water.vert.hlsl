@@ -73,17 +73,23 @@ void vert_main()
     VSInput param = _input;
     VSOutput flattenTemp = _main(param);
     gl_Position = flattenTemp.Position;
-    _entryPointOutput_ClipPos = flattenTemp.ClipPos;
+    float4 _116 = flattenTemp.ClipPos;
+    precise float _138 = _116.w - convergence;
+    precise float _139 = eyeSign * separation;
+    precise float _140 = _139 * _138;
+    precise float _141 = _116.x + _140;
+    _116.x = (abs(_116.w - 1.0f) > 9.9999997473787516355514526367188e-06f) ? _141 : _116.x;
+    _entryPointOutput_ClipPos = _116;
     _entryPointOutput_ScreenUV = flattenTemp.ScreenUV;
     _entryPointOutput_UV0 = flattenTemp.UV0;
     _entryPointOutput_UV1 = flattenTemp.UV1;
     if (abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f)
     {
-        precise float _146 = gl_Position.w - convergence;
-        precise float _147 = eyeSign * separation;
-        precise float _148 = _147 * _146;
-        precise float _149 = gl_Position.x + _148;
-        gl_Position.x = _149;
+        precise float _163 = gl_Position.w - convergence;
+        precise float _164 = eyeSign * separation;
+        precise float _165 = _164 * _163;
+        precise float _166 = gl_Position.x + _165;
+        gl_Position.x = _166;
     }
 }
 
