@@ -102,20 +102,27 @@ uint32_t emitCutoffCondition(PassContext& context, std::vector<Instruction>& out
   uint32_t boolType = m.typeBool();
   uint32_t f = m.typeFloat(32);
   uint32_t one = m.constantFloat(1.0f);
+  // Ordered comparisons: a NaN w is never shifted (no new NaN in x).
+  uint32_t far = m.takeId();
   if (context.options.cutoff == CutoffMode::Exact || context.options.cutoffEpsilon <= 0.0f) {
-    // The driver's rule: w != 1. Ordered, so a NaN w is never shifted (no new NaN in x).
-    uint32_t cond = m.takeId();
-    out.emplace_back(spv::OpFOrdNotEqual, boolType, cond, std::vector<uint32_t>{w, one});
-    return cond;
+    // The driver's rule: w != 1.
+    out.emplace_back(spv::OpFOrdNotEqual, boolType, far, std::vector<uint32_t>{w, one});
+  } else {
+    uint32_t glsl = m.extInstImport("GLSL.std.450");
+    uint32_t diff = m.takeId();
+    out.emplace_back(spv::OpFSub, f, diff, std::vector<uint32_t>{w, one});
+    uint32_t absDiff = m.takeId();
+    out.emplace_back(spv::OpExtInst, f, absDiff, std::vector<uint32_t>{glsl, GLSLstd450FAbs, diff});
+    out.emplace_back(spv::OpFOrdGreaterThan, boolType, far,
+                     std::vector<uint32_t>{absDiff, m.constantFloat(context.options.cutoffEpsilon)});
   }
-  uint32_t glsl = m.extInstImport("GLSL.std.450");
-  uint32_t diff = m.takeId();
-  out.emplace_back(spv::OpFSub, f, diff, std::vector<uint32_t>{w, one});
-  uint32_t absDiff = m.takeId();
-  out.emplace_back(spv::OpExtInst, f, absDiff, std::vector<uint32_t>{glsl, GLSLstd450FAbs, diff});
+  // An infinite w is not shifted either: eyeSign 0 (or separation 0) times infinity would be NaN.
+  uint32_t infinite = m.takeId();
+  out.emplace_back(spv::OpIsInf, boolType, infinite, std::vector<uint32_t>{w});
+  uint32_t finite = m.takeId();
+  out.emplace_back(spv::OpLogicalNot, boolType, finite, std::vector<uint32_t>{infinite});
   uint32_t cond = m.takeId();
-  out.emplace_back(spv::OpFOrdGreaterThan, boolType, cond,
-                   std::vector<uint32_t>{absDiff, m.constantFloat(context.options.cutoffEpsilon)});
+  out.emplace_back(spv::OpLogicalAnd, boolType, cond, std::vector<uint32_t>{far, finite});
   return cond;
 }
 

@@ -878,11 +878,12 @@ class Splicer {
     };
     switch (opt_.cutoff) {
       case HlslSpliceOptions::Cutoff::Epsilon:
-        body = ind + "if (abs(" + p + ".w - 1.0f) > " + epsilonLiteral() + ")" + nl + ind + "{" + nl +
+        // Same guard as the SPIR-V route: an infinite w is never shifted (0 * inf would be NaN).
+        body = ind + "if (abs(" + p + ".w - 1.0f) > " + epsilonLiteral() + " && !isinf(" + p + ".w))" + nl + ind + "{" + nl +
                indent(assign, ind + ind) + ind + "}" + nl;
         break;
       case HlslSpliceOptions::Cutoff::Exact:
-        body = ind + "if (" + p + ".w != 1.0f)" + nl + ind + "{" + nl + indent(assign, ind + ind) + ind + "}" + nl;
+        body = ind + "if (" + p + ".w != 1.0f && !isinf(" + p + ".w))" + nl + ind + "{" + nl + indent(assign, ind + ind) + ind + "}" + nl;
         break;
       case HlslSpliceOptions::Cutoff::None:
         body = indent(assign, ind);

@@ -206,7 +206,7 @@ TEST(HlslSplice, GeometryWrapsEveryAppendIncludingHelperFunctions) {
   EXPECT_LT(cb, r.text.find("// Emits one vertex"));
   EXPECT_LT(r.text.find("stereoshift_shift_GSOut(GSOut "), r.text.find("void EmitVertex"));
   // The shift uses the SV_POSITION member (case-insensitive semantic) and the exact formula.
-  EXPECT_NE(r.text.find("if (abs(stereoshift_v.clip.w - 1.0f) > 9.99999975e-06f)"), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("if (abs(stereoshift_v.clip.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.clip.w))"), std::string::npos) << r.text;
   EXPECT_NE(r.text.find("precise float stereoshift_x = stereoshift_v.clip.x + (eyeSign * separation) * "
                         "(stereoshift_v.clip.w - convergence);"),
             std::string::npos)
@@ -317,7 +317,7 @@ TEST(HlslSplice, CutoffModesAndPrecision) {
   o.cutoff = HlslSpliceOptions::Cutoff::Exact;
   HlslSpliceResult exact = spliceHlslStereo(kGeometry, o);
   ASSERT_TRUE(exact.ok) << exact.error;
-  EXPECT_NE(exact.text.find("if (stereoshift_v.clip.w != 1.0f)"), std::string::npos) << exact.text;
+  EXPECT_NE(exact.text.find("if (stereoshift_v.clip.w != 1.0f && !isinf(stereoshift_v.clip.w))"), std::string::npos) << exact.text;
   EXPECT_EQ(exact.text.find("abs("), std::string::npos);
   EXPECT_COMPILES(exact.text, "geom", "GSMain");
 
@@ -338,11 +338,11 @@ TEST(HlslSplice, CutoffModesAndPrecision) {
   o.epsilon = 1.0f;
   HlslSpliceResult one = spliceHlslStereo(kGeometry, o);
   ASSERT_TRUE(one.ok);
-  EXPECT_NE(one.text.find("> 1.0f)"), std::string::npos) << one.text;
+  EXPECT_NE(one.text.find("> 1.0f && !isinf("), std::string::npos) << one.text;
   o.epsilon = 2e-3f;
   HlslSpliceResult half = spliceHlslStereo(kGeometry, o);
   ASSERT_TRUE(half.ok);
-  EXPECT_NE(half.text.find("> 0.00200000009f)"), std::string::npos) << half.text;
+  EXPECT_NE(half.text.find("> 0.00200000009f && !isinf("), std::string::npos) << half.text;
   EXPECT_COMPILES(half.text, "geom", "GSMain");
 
   o.epsilon = -1.0f;

@@ -1,5 +1,5 @@
 // --cutoff-epsilon 0 reproduces the driver's exact rule: shift when w != 1.0 (ordered, so a NaN w
-// stays unshifted), with no abs() and no tolerance constant.
+// stays unshifted; an infinite w too), with no abs() and no tolerance constant.
 // RUN: %stereoshift --verify --cutoff-epsilon 0 %s -o - | %rmchecks | FileCheck %s
 // RUN: %stereoshift --cutoff-epsilon 0 --target spirv-asm %s -o - | %rmchecks | FileCheck %s --check-prefix=SPIRV
 #version 450
@@ -9,13 +9,16 @@ void main() {
   gl_Position = camera.viewProj * vec4(inPosition, 1.0);
 }
 // CHECK-NOT: abs(
-// CHECK: if (gl_Position.w != 1.0)
+// CHECK: if ((gl_Position.w != 1.0) && (!isinf(gl_Position.w)))
 // CHECK-NEXT: {
 // CHECK: gl_Position.x =
 // CHECK-NOT: abs(
 // SPIRV-NOT: FAbs
 // SPIRV: [[W:%[0-9]+]] = OpCompositeExtract %float {{%[0-9]+}} 3
 // SPIRV-NEXT: [[C:%[0-9]+]] = OpFOrdNotEqual %bool [[W]] %float_1
+// SPIRV-NEXT: [[INF:%[0-9]+]] = OpIsInf %bool [[W]]
+// SPIRV-NEXT: [[FINITE:%[0-9]+]] = OpLogicalNot %bool [[INF]]
+// SPIRV-NEXT: [[G:%[0-9]+]] = OpLogicalAnd %bool [[C]] [[FINITE]]
 // SPIRV-NEXT: OpSelectionMerge [[M:%[0-9]+]] None
-// SPIRV-NEXT: OpBranchConditional [[C]]
+// SPIRV-NEXT: OpBranchConditional [[G]]
 // SPIRV-NOT: FAbs

@@ -31,13 +31,13 @@ void main()
     vTint = mix(uTintA, uTintB, vec3(hash(param)));
     vec4 _82 = uViewProj * world;
     gl_Position = _82;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        float _104 = gl_Position.w - convergence;
-        float _105 = eyeSign * separation;
-        float _106 = _105 * _104;
-        float _107 = gl_Position.x + _106;
-        gl_Position.x = _107;
+        float _107 = gl_Position.w - convergence;
+        float _108 = eyeSign * separation;
+        float _109 = _108 * _107;
+        float _110 = gl_Position.x + _109;
+        gl_Position.x = _110;
     }
 }
 

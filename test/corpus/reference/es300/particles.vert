@@ -27,13 +27,13 @@ void main()
     vec4 _95 = vec4(world, 1.0);
     vec4 _96 = uViewProj * _95;
     gl_Position = _96;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        float _119 = gl_Position.w - convergence;
-        float _120 = eyeSign * separation;
-        float _121 = _120 * _119;
-        float _122 = gl_Position.x + _121;
-        gl_Position.x = _122;
+        float _122 = gl_Position.w - convergence;
+        float _123 = eyeSign * separation;
+        float _124 = _123 * _122;
+        float _125 = gl_Position.x + _124;
+        gl_Position.x = _125;
     }
 }
 

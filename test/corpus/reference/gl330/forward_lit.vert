@@ -24,13 +24,13 @@ void main()
     vTexCoord = aTexCoord;
     vec4 _54 = uViewProj * world;
     gl_Position = _54;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        float _78 = gl_Position.w - convergence;
-        float _79 = eyeSign * separation;
-        float _80 = _79 * _78;
-        float _81 = gl_Position.x + _80;
-        gl_Position.x = _81;
+        float _81 = gl_Position.w - convergence;
+        float _82 = eyeSign * separation;
+        float _83 = _82 * _81;
+        float _84 = gl_Position.x + _83;
+        gl_Position.x = _84;
     }
 }
 

@@ -23,13 +23,13 @@ void main()
     vec4 _48 = vec4(pixel, 0.0, 1.0);
     vec4 _49 = uProjection * _48;
     gl_Position = _49;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        float _71 = gl_Position.w - convergence;
-        float _72 = eyeSign * separation;
-        float _73 = _72 * _71;
-        float _74 = gl_Position.x + _73;
-        gl_Position.x = _74;
+        float _74 = gl_Position.w - convergence;
+        float _75 = eyeSign * separation;
+        float _76 = _75 * _74;
+        float _77 = gl_Position.x + _76;
+        gl_Position.x = _77;
     }
 }
 

@@ -35,13 +35,13 @@ void main()
     vViewDepth = -viewPos.z;
     vec4 _161 = uProjection * viewPos;
     gl_Position = _161;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        float _185 = gl_Position.w - convergence;
-        float _186 = eyeSign * separation;
-        float _187 = _186 * _185;
-        float _188 = gl_Position.x + _187;
-        gl_Position.x = _188;
+        float _188 = gl_Position.w - convergence;
+        float _189 = eyeSign * separation;
+        float _190 = _189 * _188;
+        float _191 = gl_Position.x + _190;
+        gl_Position.x = _191;
     }
 }
 

@@ -73,13 +73,13 @@ void vert_main()
     _entryPointOutput_WorldNormal = flattenTemp.WorldNormal;
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_Tint = flattenTemp.Tint;
-    if (abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f)
+    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
     {
-        precise float _119 = gl_Position.w - convergence;
-        precise float _120 = eyeSign * separation;
-        precise float _121 = _120 * _119;
-        precise float _122 = gl_Position.x + _121;
-        gl_Position.x = _122;
+        precise float _122 = gl_Position.w - convergence;
+        precise float _123 = eyeSign * separation;
+        precise float _124 = _123 * _122;
+        precise float _125 = gl_Position.x + _124;
+        gl_Position.x = _125;
     }
 }
 

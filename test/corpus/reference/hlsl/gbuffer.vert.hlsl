@@ -88,13 +88,13 @@ void vert_main()
     _entryPointOutput_Bitangent = flattenTemp.Bitangent;
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_ViewDepth = flattenTemp.ViewDepth;
-    if (abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f)
+    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
     {
-        precise float _167 = gl_Position.w - convergence;
-        precise float _168 = eyeSign * separation;
-        precise float _169 = _168 * _167;
-        precise float _170 = gl_Position.x + _169;
-        gl_Position.x = _170;
+        precise float _170 = gl_Position.w - convergence;
+        precise float _171 = eyeSign * separation;
+        precise float _172 = _171 * _170;
+        precise float _173 = gl_Position.x + _172;
+        gl_Position.x = _173;
     }
 }
 

@@ -63,13 +63,13 @@ void vert_main()
     VSOutput flattenTemp = _main(param);
     gl_Position = flattenTemp.Position;
     _entryPointOutput_UV = flattenTemp.UV;
-    if (abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f)
+    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
     {
-        precise float _100 = gl_Position.w - convergence;
-        precise float _101 = eyeSign * separation;
-        precise float _102 = _101 * _100;
-        precise float _103 = gl_Position.x + _102;
-        gl_Position.x = _103;
+        precise float _103 = gl_Position.w - convergence;
+        precise float _104 = eyeSign * separation;
+        precise float _105 = _104 * _103;
+        precise float _106 = gl_Position.x + _105;
+        gl_Position.x = _106;
     }
 }
 

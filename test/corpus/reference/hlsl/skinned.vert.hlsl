@@ -88,13 +88,13 @@ void vert_main()
     gl_Position = flattenTemp.Position;
     _entryPointOutput_Normal = flattenTemp.Normal;
     _entryPointOutput_UV = flattenTemp.UV;
-    if (abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f)
+    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
     {
-        precise float _210 = gl_Position.w - convergence;
-        precise float _211 = eyeSign * separation;
-        precise float _212 = _211 * _210;
-        precise float _213 = gl_Position.x + _212;
-        gl_Position.x = _213;
+        precise float _213 = gl_Position.w - convergence;
+        precise float _214 = eyeSign * separation;
+        precise float _215 = _214 * _213;
+        precise float _216 = gl_Position.x + _215;
+        gl_Position.x = _216;
     }
 }
 

@@ -60,13 +60,13 @@ void vert_main()
     gl_Position = flattenTemp.Position;
     _entryPointOutput_Direction = flattenTemp.Direction;
     _entryPointOutput_Tint = flattenTemp.Tint;
-    if (abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f)
+    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
     {
-        precise float _93 = gl_Position.w - convergence;
-        precise float _94 = eyeSign * separation;
-        precise float _95 = _94 * _93;
-        precise float _96 = gl_Position.x + _95;
-        gl_Position.x = _96;
+        precise float _96 = gl_Position.w - convergence;
+        precise float _97 = eyeSign * separation;
+        precise float _98 = _97 * _96;
+        precise float _99 = gl_Position.x + _98;
+        gl_Position.x = _99;
     }
 }
 

@@ -55,13 +55,13 @@ void main()
     outWorldToTangent = worldToTangent;
     vec4 _144 = camera.viewProj * world;
     gl_Position = _144;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        precise float _169 = gl_Position.w - stereo.convergence;
-        precise float _170 = stereo.eyeSign * stereo.separation;
-        precise float _171 = _170 * _169;
-        precise float _172 = gl_Position.x + _171;
-        gl_Position.x = _172;
+        precise float _172 = gl_Position.w - stereo.convergence;
+        precise float _173 = stereo.eyeSign * stereo.separation;
+        precise float _174 = _173 * _172;
+        precise float _175 = gl_Position.x + _174;
+        gl_Position.x = _175;
     }
 }
 

@@ -27,13 +27,13 @@ void main()
     outDirection = dir;
     vec4 pos = (sky.proj * sky.viewRotation) * vec4(inPosition, 1.0);
     gl_Position = pos.xyww;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        precise float _104 = gl_Position.w - stereo.convergence;
-        precise float _105 = stereo.eyeSign * stereo.separation;
-        precise float _106 = _105 * _104;
-        precise float _107 = gl_Position.x + _106;
-        gl_Position.x = _107;
+        precise float _107 = gl_Position.w - stereo.convergence;
+        precise float _108 = stereo.eyeSign * stereo.separation;
+        precise float _109 = _108 * _107;
+        precise float _110 = gl_Position.x + _109;
+        gl_Position.x = _110;
     }
 }
 

@@ -35,13 +35,13 @@ void main()
     outHeight = h;
     vec4 _115 = terrain.viewProj * pos;
     gl_Position = _115;
-    if (abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06)
+    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
     {
-        precise float _139 = gl_Position.w - stereo.convergence;
-        precise float _140 = stereo.eyeSign * stereo.separation;
-        precise float _141 = _140 * _139;
-        precise float _142 = gl_Position.x + _141;
-        gl_Position.x = _142;
+        precise float _142 = gl_Position.w - stereo.convergence;
+        precise float _143 = stereo.eyeSign * stereo.separation;
+        precise float _144 = _143 * _142;
+        precise float _145 = gl_Position.x + _144;
+        gl_Position.x = _145;
     }
 }
 
