@@ -98,9 +98,15 @@ uint32_t emitShiftedX(PassContext& context, std::vector<Instruction>& out, uint3
 
 uint32_t emitCutoffCondition(PassContext& context, std::vector<Instruction>& out, uint32_t w) {
   auto& m = context.module;
-  if (context.options.cutoff == CutoffMode::None) return 0;
   uint32_t boolType = m.typeBool();
   uint32_t f = m.typeFloat(32);
+  // eyeSign != 0 first: a mono draw runs none of the shift, so it is the original bit for bit
+  // (x + 0 would turn a -0 x into +0).
+  uint32_t eyeSign = emitLoadEyeParam(context, out, 0);
+  uint32_t stereo = m.takeId();
+  out.emplace_back(spv::OpFUnordNotEqual, boolType, stereo, std::vector<uint32_t>{eyeSign, m.constantFloat(0.0f)});
+  if (context.options.cutoff == CutoffMode::None) return stereo;
+
   uint32_t one = m.constantFloat(1.0f);
   // Ordered comparisons: a NaN w is never shifted (no new NaN in x).
   uint32_t far = m.takeId();
@@ -116,13 +122,15 @@ uint32_t emitCutoffCondition(PassContext& context, std::vector<Instruction>& out
     out.emplace_back(spv::OpFOrdGreaterThan, boolType, far,
                      std::vector<uint32_t>{absDiff, m.constantFloat(context.options.cutoffEpsilon)});
   }
-  // An infinite w is not shifted either: eyeSign 0 (or separation 0) times infinity would be NaN.
+  // An infinite w is not shifted either: separation 0 times infinity would be NaN.
   uint32_t infinite = m.takeId();
   out.emplace_back(spv::OpIsInf, boolType, infinite, std::vector<uint32_t>{w});
   uint32_t finite = m.takeId();
   out.emplace_back(spv::OpLogicalNot, boolType, finite, std::vector<uint32_t>{infinite});
+  uint32_t farAndFinite = m.takeId();
+  out.emplace_back(spv::OpLogicalAnd, boolType, farAndFinite, std::vector<uint32_t>{far, finite});
   uint32_t cond = m.takeId();
-  out.emplace_back(spv::OpLogicalAnd, boolType, cond, std::vector<uint32_t>{far, finite});
+  out.emplace_back(spv::OpLogicalAnd, boolType, cond, std::vector<uint32_t>{stereo, farAndFinite});
   return cond;
 }
 

@@ -85,7 +85,8 @@ uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>&
 // Marked NoContraction when the options ask for an invariant position, so every copy rounds alike.
 uint32_t emitShiftedX(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t x, uint32_t w);
 
-// Appends the cutoff condition for `w` (a bool id), or returns 0 when the cutoff is off.
+// Appends the condition under which `w` is shifted (a bool id): eyeSign != 0, and unless the cutoff
+// is off, |w - 1| > epsilon (or w != 1) and w finite.
 uint32_t emitCutoffCondition(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t w);
 
 // Returns a vec4 id: `value` with x shifted, selected by the cutoff (branch-free; used for halo copies).

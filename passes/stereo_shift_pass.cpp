@@ -65,8 +65,7 @@ class StereoShiftPass final : public Pass {
       }
     m.invalidateDefinitions();
     report["sites"] = sites;
-    report["form"] = ctx.options.cutoff == CutoffMode::None ? "unconditional"
-                     : ctx.options.shiftForm == ShiftForm::Branch ? "branch" : "select";
+    report["form"] = ctx.options.shiftForm == ShiftForm::Branch ? "branch" : "select";
     if (sites == 0) {
       ctx.diags.warning(ctx.file, geometry ? "geometry shader emits no vertex: nothing shifted"
                                            : "entry point has no return: nothing shifted");
@@ -87,14 +86,14 @@ class StereoShiftPass final : public Pass {
   }
 
   // Inserts the shift before instruction `at` of block `bi`. Returns true when the block was split
-  // into [head | then | rest]; false when the code went inline (select form, no cutoff, loop header).
+  // into [head | then | rest]; false when the code went inline (select form, loop header).
   bool insertShift(PassContext& ctx, spirv::Function& fn, size_t bi, size_t at) {
     auto& m = ctx.module;
     uint32_t f = m.typeFloat(32);
     uint32_t v4 = m.typeVector(f, 4);
     bool loopHeader = fn.blocks[bi].mergeInstruction() &&
                       fn.blocks[bi].mergeInstruction()->opcode == spv::OpLoopMerge;
-    bool branch = ctx.options.shiftForm == ShiftForm::Branch && ctx.options.cutoff != CutoffMode::None &&
+    bool branch = ctx.options.shiftForm == ShiftForm::Branch &&
                   !loopHeader;
 
     if (!branch) {

@@ -879,14 +879,15 @@ class Splicer {
     switch (opt_.cutoff) {
       case HlslSpliceOptions::Cutoff::Epsilon:
         // Same guard as the SPIR-V route: an infinite w is never shifted (0 * inf would be NaN).
-        body = ind + "if (abs(" + p + ".w - 1.0f) > " + epsilonLiteral() + " && !isinf(" + p + ".w))" + nl + ind + "{" + nl +
+        body = ind + "if (" + opt_.eyeSignName + " != 0.0f && abs(" + p + ".w - 1.0f) > " + epsilonLiteral() + " && !isinf(" + p + ".w))" + nl + ind + "{" + nl +
                indent(assign, ind + ind) + ind + "}" + nl;
         break;
       case HlslSpliceOptions::Cutoff::Exact:
-        body = ind + "if (" + p + ".w != 1.0f && !isinf(" + p + ".w))" + nl + ind + "{" + nl + indent(assign, ind + ind) + ind + "}" + nl;
+        body = ind + "if (" + opt_.eyeSignName + " != 0.0f && " + p + ".w != 1.0f && !isinf(" + p + ".w))" + nl + ind + "{" + nl + indent(assign, ind + ind) + ind + "}" + nl;
         break;
       case HlslSpliceOptions::Cutoff::None:
-        body = indent(assign, ind);
+        // Even without a cutoff, a mono draw (eyeSign 0) runs none of the shift.
+        body = ind + "if (" + opt_.eyeSignName + " != 0.0f)" + nl + ind + "{" + nl + indent(assign, ind + ind) + ind + "}" + nl;
         break;
     }
     return sh.type + " " + sh.function + "(" + sh.type + " " + v + ")" + nl + "{" + nl + body + ind + "return " + v +

@@ -27,6 +27,7 @@ nlohmann::json VerifyResult::json() const {
           {"cutoff_vertices", cutoffVertices},
           {"other_outputs_unchanged", otherOutputsUnchanged},
           {"halo_components_changed", haloComponentsChanged},
+          {"new_nans", newNaNs},
           {"problems", problems}};
 }
 
@@ -411,7 +412,9 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
 
   // Inputs, identical for both runs except for the eye parameters.
   PipelineInputs base;
-  if (!buildVertices(originals.front(), settings.vertexCount, &base.vertices, &error)) {
+  if (settings.vertices) {
+    base.vertices = *settings.vertices;
+  } else if (!buildVertices(originals.front(), settings.vertexCount, &base.vertices, &error)) {
     result.error = error;
     return result;
   }
@@ -506,13 +509,20 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     for (uint32_t v = 0; v < result.vertices; ++v) {
       double x = mono.f32(v, px), w = mono.f32(v, px + 3);
       float got = stereo.f32(v, px);
-      bool unshifted = settings.cutoff && (settings.cutoffEpsilon > 0 ? std::fabs(float(w) - 1.0f) <= settings.cutoffEpsilon
-                                                                      : float(w) == 1.0f);
+      // The shader's guard, in its own fp32 terms: ordered comparisons (a NaN w is not shifted)
+      // and never an infinite w.
+      bool far = settings.cutoffEpsilon > 0 ? std::fabs(float(w) - 1.0f) > settings.cutoffEpsilon : float(w) != 1.0f;
+      bool unshifted = settings.cutoff && (!far || std::isnan(w) || std::isinf(w));
       double shift = double(eye) * settings.separation * (w - settings.convergence);
       double reference = unshifted ? x : x + shift;
       if (unshifted && eye > 0) ++result.cutoffVertices;
       double scale = std::max(std::fabs(x), std::fabs(double(settings.separation) * (w - settings.convergence)));
-      double ulps = std::isnan(reference) ? (std::isnan(got) ? 0 : INFINITY) : std::fabs(got - reference) / ulpOf(scale);
+      if (std::isnan(got) && !std::isnan(x) && !std::isnan(w)) ++result.newNaNs;
+      double ulps;
+      if (std::isnan(reference) || std::isinf(reference) || std::isinf(got))
+        ulps = (std::isnan(reference) && std::isnan(got)) || double(got) == reference ? 0 : INFINITY;
+      else
+        ulps = std::fabs(got - reference) / ulpOf(scale);
       result.maxStereoUlps = std::max(result.maxStereoUlps, ulps);
       // y, z, w and every other captured component: unchanged, except halo copies of the position.
       for (uint32_t c = 0; c < layoutA.stride / 4; ++c) {
@@ -555,7 +565,9 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
   if (result.maxStereoUlps > settings.maxUlps)
     result.problems.push_back("stereo error " + std::to_string(result.maxStereoUlps) + " ULP exceeds the bound of " +
                               std::to_string(settings.maxUlps));
+  if (result.newNaNs) result.problems.push_back(std::to_string(result.newNaNs) + " new NaN x values");
   result.ok = result.monoIdentical && result.otherOutputsUnchanged && result.maxStereoUlps <= settings.maxUlps &&
+              result.newNaNs == 0 &&
               result.problems.empty();
   return result;
 }

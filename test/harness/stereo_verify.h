@@ -27,6 +27,7 @@ struct VerifySettings {
   float cutoffEpsilon = 1e-5f;  // the cutoff the transpiled shader was built with (0: exact)
   bool cutoff = true;
   uint32_t vertexCount = 96;
+  std::optional<VertexBuffer> vertices;  // explicit vertex data instead of generated (stress tests)
   std::string eyeSignName = "eyeSign", separationName = "separation", convergenceName = "convergence";
   // The bound on the stereo error, in ULPs of max(|x|, |S(w - C)|). The injected code rounds three
   // times in fp32: d = w - C (error <= |eS| ulp(d)/2 <= 1 ulp of the shift), p = eS*d (<= 1/2 ulp),
@@ -44,6 +45,7 @@ struct VerifyResult {
   uint32_t cutoffVertices = 0;  // vertices left unshifted by the cutoff
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
   uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
+  uint32_t newNaNs = 0;         // x became NaN although the original x and w were not NaN
   std::vector<std::string> problems;
   nlohmann::json json() const;
 };

@@ -206,7 +206,7 @@ TEST(HlslSplice, GeometryWrapsEveryAppendIncludingHelperFunctions) {
   EXPECT_LT(cb, r.text.find("// Emits one vertex"));
   EXPECT_LT(r.text.find("stereoshift_shift_GSOut(GSOut "), r.text.find("void EmitVertex"));
   // The shift uses the SV_POSITION member (case-insensitive semantic) and the exact formula.
-  EXPECT_NE(r.text.find("if (abs(stereoshift_v.clip.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.clip.w))"), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("if (eyeSign != 0.0f && abs(stereoshift_v.clip.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.clip.w))"), std::string::npos) << r.text;
   EXPECT_NE(r.text.find("precise float stereoshift_x = stereoshift_v.clip.x + (eyeSign * separation) * "
                         "(stereoshift_v.clip.w - convergence);"),
             std::string::npos)
@@ -317,7 +317,7 @@ TEST(HlslSplice, CutoffModesAndPrecision) {
   o.cutoff = HlslSpliceOptions::Cutoff::Exact;
   HlslSpliceResult exact = spliceHlslStereo(kGeometry, o);
   ASSERT_TRUE(exact.ok) << exact.error;
-  EXPECT_NE(exact.text.find("if (stereoshift_v.clip.w != 1.0f && !isinf(stereoshift_v.clip.w))"), std::string::npos) << exact.text;
+  EXPECT_NE(exact.text.find("if (eyeSign != 0.0f && stereoshift_v.clip.w != 1.0f && !isinf(stereoshift_v.clip.w))"), std::string::npos) << exact.text;
   EXPECT_EQ(exact.text.find("abs("), std::string::npos);
   EXPECT_COMPILES(exact.text, "geom", "GSMain");
 
@@ -328,8 +328,8 @@ TEST(HlslSplice, CutoffModesAndPrecision) {
   EXPECT_EQ(none.text.find("stereoshift_v.clip.w != 1.0f"), std::string::npos);
   EXPECT_EQ(none.text.find("if (abs("), std::string::npos);
   EXPECT_EQ(none.text.find("precise float"), std::string::npos);
-  EXPECT_NE(none.text.find("    stereoshift_v.clip.x = stereoshift_v.clip.x + (eyeSign * separation) * "
-                           "(stereoshift_v.clip.w - convergence);\n    return stereoshift_v;"),
+  EXPECT_NE(none.text.find("    if (eyeSign != 0.0f)\n    {\n        stereoshift_v.clip.x = stereoshift_v.clip.x + "
+                           "(eyeSign * separation) * (stereoshift_v.clip.w - convergence);\n    }\n    return stereoshift_v;"),
             std::string::npos)
       << none.text;
   EXPECT_COMPILES(none.text, "geom", "GSMain");

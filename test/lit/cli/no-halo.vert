@@ -15,13 +15,13 @@ void main() {
 }
 // CHECK: vClip = gl_Position;
 // CHECK-NEXT: vScreenUV = ((gl_Position.xy / vec2(gl_Position.w)) * 0.5) + vec2(0.5);
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) >
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
 // REPORT: "halo": {
 // REPORT-NEXT: "result": "unchanged"
 // REPORT-NEXT: },
 // DEFAULT: gl_Position = {{_[0-9]+}};
 // DEFAULT-NEXT: vec4 [[C:_[0-9]+]] = gl_Position;
-// DEFAULT: [[C]].x = ((abs([[C]].w - 1.0) > {{[^)]*}}) && (!isinf([[C]].w))) ? {{_[0-9]+}} : [[C]].x;
+// DEFAULT: [[C]].x = ((stereo.eyeSign != 0.0) && ((abs([[C]].w - 1.0) > {{[^)]*}}) && (!isinf([[C]].w)))) ? {{_[0-9]+}} : [[C]].x;
 // DEFAULT-NEXT: vClip = [[C]];
 // DEFAULT: vScreenUV =
-// DEFAULT-NEXT: if ((abs(gl_Position.w - 1.0) >
+// DEFAULT-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >

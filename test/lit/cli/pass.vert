@@ -31,6 +31,6 @@ void main() {
 // REPORT-NOT: "halo"
 // REPORT-NOT: "stereo-shift"
 // ALL: uniform StereoParams
-// ALL: if ((abs(gl_Position.w - 1.0) >
+// ALL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
 // NEEDS: error: stereo-shift needs the eye-params pass to run first
 // NEEDS: {{^}}1 error generated.

@@ -12,17 +12,18 @@ void main() {
 // CHECK: void main()
 // CHECK-NOT: if (
 // CHECK: precise float [[X:_[0-9]+]] = {{_[0-9]+}}.x + {{_[0-9]+}};
-// CHECK-NEXT: [[V:_[0-9]+]].x = ((abs([[V]].w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf([[V]].w))) ? [[X]] : [[V]].x;
+// CHECK-NEXT: [[V:_[0-9]+]].x = ((stereo.eyeSign != 0.0) && ((abs([[V]].w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf([[V]].w)))) ? [[X]] : [[V]].x;
 // CHECK-NEXT: gl_Position = [[V]];
 // CHECK-NOT: if (
 // SPIRV-NOT: OpSelectionMerge
 // SPIRV: [[FAR:%[0-9]+]] = OpFOrdGreaterThan %bool
 // SPIRV-NEXT: OpIsInf %bool
 // SPIRV-NEXT: OpLogicalNot %bool
-// SPIRV-NEXT: [[COND:%[0-9]+]] = OpLogicalAnd %bool [[FAR]]
+// SPIRV-NEXT: [[WG:%[0-9]+]] = OpLogicalAnd %bool [[FAR]]
+// SPIRV-NEXT: [[COND:%[0-9]+]] = OpLogicalAnd %bool {{%[0-9]+}} [[WG]]
 // SPIRV-NEXT: [[SEL:%[0-9]+]] = OpSelect %float [[COND]]
 // SPIRV-NEXT: [[NEW:%[0-9]+]] = OpCompositeInsert %v4float [[SEL]] {{%[0-9]+}} 0
 // SPIRV-NEXT: OpStore {{%[0-9]+}} [[NEW]]
 // SPIRV-NOT: OpSelectionMerge
 // REPORT: "form": "select",
-// BRANCH: if ((abs(gl_Position.w - 1.0) >
+// BRANCH: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >

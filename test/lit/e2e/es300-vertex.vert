@@ -26,7 +26,7 @@ void main() {
 // CHECK: void main()
 // CHECK: vUV = aUV;
 // CHECK: gl_Position =
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // CHECK: float {{_[0-9]+}} = eyeSign * separation;
 // CHECK: gl_Position.x =
 // CHECK-NOT: gl_DefaultUniformBlock

@@ -32,7 +32,7 @@ void main() {
 // CHECK: void main()
 // CHECK: gl_InstanceID
 // CHECK: gl_Position =
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // CHECK-NEXT: {
 // CHECK: float [[S:_[0-9]+]] = eyeSign * separation;
 // CHECK: gl_Position.x =

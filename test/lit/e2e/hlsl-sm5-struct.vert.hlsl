@@ -59,7 +59,7 @@ VSOutput VSMain(VSInput input)
   return output;
 }
 // CHECK: mul(WorldViewProj,
-// CHECK: if ((abs(gl_Position.w - 1.0f) > {{9\.9999997[0-9]*e-0*6}}f) && (!isinf(gl_Position.w)))
+// CHECK: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0f) > {{9\.9999997[0-9]*e-0*6}}f) && (!isinf(gl_Position.w))))
 // CHECK: precise float {{_[0-9]+}} = eyeSign * separation;
 // CHECK: gl_Position.x =
 // CHECK: SPIRV_Cross_Output VSMain(SPIRV_Cross_Input stage_input)

@@ -17,7 +17,7 @@ void main() {
   gl_Position = uMVP * vec4(aPosition * separation, 1.0);
 // CHECK: void main()
 // CHECK: aPosition * separation;
-// CHECK: if ((abs(gl_Position.w - 1.0) >
+// CHECK: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
 // CHECK: float {{_[0-9]+}} = eyeSign * separation_stereo;
 // CHECK: gl_Position.x =
 }

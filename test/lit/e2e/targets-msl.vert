@@ -14,5 +14,5 @@ void main() {
 // MSL-NEXT: };
 // MSL: float4 gl_Position {{\[\[position(, invariant)?\]\]}};
 // MSL: vertex main0_out main0(
-// MSL: if ((abs(out.gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(out.gl_Position.w)))
+// MSL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(out.gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(out.gl_Position.w))))
 // MSL: stereo.eyeSign * stereo.separation

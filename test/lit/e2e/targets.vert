@@ -28,20 +28,21 @@ layout(location = 0) in vec3 inPosition;
 void main() {
   gl_Position = camera.viewProj * vec4(inPosition, 1.0);
 }
-// GLSL: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// GLSL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // GLSL: precise float {{_[0-9]+}} = stereo.eyeSign * stereo.separation;
 // GLSL: gl_Position.x =
 // ESSL does not have `precise` before 320: the shift is plain float arithmetic.
-// ESSL: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// ESSL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // ESSL: {{^ *}}float {{_[0-9]+}} = stereo.eyeSign * stereo.separation;
 // ESSL: gl_Position.x =
-// HLSL: if ((abs(gl_Position.w - 1.0f) > {{9\.9999997[0-9]*e-0*6}}f) && (!isinf(gl_Position.w)))
+// HLSL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0f) > {{9\.9999997[0-9]*e-0*6}}f) && (!isinf(gl_Position.w))))
 // HLSL: precise float {{_[0-9]+}} = eyeSign * separation;
 // HLSL: gl_Position.x =
 // HLSL: SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
 // SPVASM: OpFOrdGreaterThan %bool {{%[0-9]+}} %float_9_99999975en06
 // SPVASM-NEXT: OpIsInf %bool
 // SPVASM-NEXT: OpLogicalNot %bool
+// SPVASM-NEXT: OpLogicalAnd %bool
 // SPVASM-NEXT: OpLogicalAnd %bool
 // SPVASM-NEXT: OpSelectionMerge
 // SPVASM: OpFAdd %float

@@ -15,7 +15,7 @@ void emitOne(vec3 p) {
 }
 // CHECK: void emitOne(vec3 p)
 // CHECK: gl_Position =
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // CHECK-NEXT: {
 // CHECK: gl_Position.x =
 // CHECK-NEXT: }
@@ -31,7 +31,7 @@ void main() {
 // CHECK: void main()
 // CHECK: for (int i = 0; i < 3; i++)
 // CHECK: gl_Position =
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // CHECK-NEXT: {
 // CHECK: gl_Position.x =
 // CHECK-NEXT: }

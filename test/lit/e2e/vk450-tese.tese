@@ -18,7 +18,7 @@ void main() {
 // CHECK: void main()
 // CHECK: outNormal = normalize(p);
 // CHECK: gl_Position =
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // CHECK-NEXT: {
 // CHECK-NEXT: precise float [[D:_[0-9]+]] = gl_Position.w - stereo.convergence;
 // CHECK-NEXT: precise float [[S:_[0-9]+]] = stereo.eyeSign * stereo.separation;

@@ -17,7 +17,7 @@ void main() {
 // CHECK: void main()
 // CHECK: camera.viewProj *
 // CHECK: gl_Position =
-// CHECK-NEXT: if ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w)))
+// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // CHECK-NEXT: {
 // CHECK: gl_Position.x = {{.*}}
 // CHECK-NEXT: }

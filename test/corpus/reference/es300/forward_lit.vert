@@ -27,13 +27,13 @@ void main()
     vec4 _68 = uModel * _67;
     vec4 _69 = uViewProj * _68;
     gl_Position = _69;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _96 = gl_Position.w - convergence;
-        float _97 = eyeSign * separation;
-        float _98 = _97 * _96;
-        float _99 = gl_Position.x + _98;
-        gl_Position.x = _99;
+        float _100 = gl_Position.w - convergence;
+        float _101 = eyeSign * separation;
+        float _102 = _101 * _100;
+        float _103 = gl_Position.x + _102;
+        gl_Position.x = _103;
     }
 }
 

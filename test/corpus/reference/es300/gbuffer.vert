@@ -28,13 +28,13 @@ void main()
     vec4 _70 = vec4(aPosition, 1.0);
     vec4 _71 = _63 * _70;
     gl_Position = _71;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _98 = gl_Position.w - convergence;
-        float _99 = eyeSign * separation;
-        float _100 = _99 * _98;
-        float _101 = gl_Position.x + _100;
-        gl_Position.x = _101;
+        float _102 = gl_Position.w - convergence;
+        float _103 = eyeSign * separation;
+        float _104 = _103 * _102;
+        float _105 = gl_Position.x + _104;
+        gl_Position.x = _105;
     }
 }
 

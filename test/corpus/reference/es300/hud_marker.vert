@@ -27,13 +27,13 @@ void main()
     float _54 = _47.y;
     vec4 _55 = vec4(_53, _54, _51, d);
     gl_Position = _55;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _81 = gl_Position.w - convergence;
-        float _82 = eyeSign * separation;
-        float _83 = _82 * _81;
-        float _84 = gl_Position.x + _83;
-        gl_Position.x = _84;
+        float _85 = gl_Position.w - convergence;
+        float _86 = eyeSign * separation;
+        float _87 = _86 * _85;
+        float _88 = gl_Position.x + _87;
+        gl_Position.x = _88;
     }
 }
 

@@ -31,13 +31,13 @@ void main()
     vTint = mix(uTintA, uTintB, vec3(hash(param)));
     vec4 _82 = uViewProj * world;
     gl_Position = _82;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _107 = gl_Position.w - convergence;
-        float _108 = eyeSign * separation;
-        float _109 = _108 * _107;
-        float _110 = gl_Position.x + _109;
-        gl_Position.x = _110;
+        float _111 = gl_Position.w - convergence;
+        float _112 = eyeSign * separation;
+        float _113 = _112 * _111;
+        float _114 = gl_Position.x + _113;
+        gl_Position.x = _114;
     }
 }
 

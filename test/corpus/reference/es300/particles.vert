@@ -27,13 +27,13 @@ void main()
     vec4 _95 = vec4(world, 1.0);
     vec4 _96 = uViewProj * _95;
     gl_Position = _96;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _122 = gl_Position.w - convergence;
-        float _123 = eyeSign * separation;
-        float _124 = _123 * _122;
-        float _125 = gl_Position.x + _124;
-        gl_Position.x = _125;
+        float _126 = gl_Position.w - convergence;
+        float _127 = eyeSign * separation;
+        float _128 = _127 * _126;
+        float _129 = gl_Position.x + _128;
+        gl_Position.x = _129;
     }
 }
 

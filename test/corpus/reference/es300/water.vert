@@ -29,20 +29,20 @@ void main()
     vec4 _103 = uViewProj * world;
     gl_Position = _103;
     vec4 _108 = gl_Position;
-    _108.x = ((abs(_108.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_108.w))) ? (_108.x + ((eyeSign * separation) * (_108.w - convergence))) : _108.x;
+    _108.x = ((eyeSign != 0.0) && ((abs(_108.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_108.w)))) ? (_108.x + ((eyeSign * separation) * (_108.w - convergence))) : _108.x;
     vClipPos = _108;
     vec4 _111 = gl_Position;
     vec2 _116 = vec2(gl_Position.w);
     vec2 _120 = vec2(0.5);
-    _111.x = ((abs(_111.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_111.w))) ? (_111.x + ((eyeSign * separation) * (_111.w - convergence))) : _111.x;
+    _111.x = ((eyeSign != 0.0) && ((abs(_111.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_111.w)))) ? (_111.x + ((eyeSign * separation) * (_111.w - convergence))) : _111.x;
     vScreenUV = ((_111.xy / _116) * 0.5) + _120;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _183 = gl_Position.w - convergence;
-        float _184 = eyeSign * separation;
-        float _185 = _184 * _183;
-        float _186 = gl_Position.x + _185;
-        gl_Position.x = _186;
+        float _193 = gl_Position.w - convergence;
+        float _194 = eyeSign * separation;
+        float _195 = _194 * _193;
+        float _196 = gl_Position.x + _195;
+        gl_Position.x = _196;
     }
 }
 

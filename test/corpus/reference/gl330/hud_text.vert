@@ -23,13 +23,13 @@ void main()
     vec4 _48 = vec4(pixel, 0.0, 1.0);
     vec4 _49 = uProjection * _48;
     gl_Position = _49;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _74 = gl_Position.w - convergence;
-        float _75 = eyeSign * separation;
-        float _76 = _75 * _74;
-        float _77 = gl_Position.x + _76;
-        gl_Position.x = _77;
+        float _77 = gl_Position.w - convergence;
+        float _78 = eyeSign * separation;
+        float _79 = _78 * _77;
+        float _80 = gl_Position.x + _79;
+        gl_Position.x = _80;
     }
 }
 

@@ -23,13 +23,13 @@ void emitLine(vec3 from, vec3 dir, vec3 color)
     vec4 _36 = vec4(from, 1.0);
     vec4 _37 = uViewProj * _36;
     gl_Position = _37;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _148 = gl_Position.w - convergence;
-        float _149 = eyeSign * separation;
-        float _150 = _149 * _148;
-        float _151 = gl_Position.x + _150;
-        gl_Position.x = _151;
+        float _151 = gl_Position.w - convergence;
+        float _152 = eyeSign * separation;
+        float _153 = _152 * _151;
+        float _154 = gl_Position.x + _153;
+        gl_Position.x = _154;
     }
     EmitVertex();
     gColor = color;
@@ -41,13 +41,13 @@ void emitLine(vec3 from, vec3 dir, vec3 color)
     vec4 _52 = vec4(_49, _50, _51, 1.0);
     vec4 _53 = uViewProj * _52;
     gl_Position = _53;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _169 = gl_Position.w - convergence;
-        float _170 = eyeSign * separation;
-        float _171 = _170 * _169;
-        float _172 = gl_Position.x + _171;
-        gl_Position.x = _172;
+        float _175 = gl_Position.w - convergence;
+        float _176 = eyeSign * separation;
+        float _177 = _176 * _175;
+        float _178 = gl_Position.x + _177;
+        gl_Position.x = _178;
     }
     EmitVertex();
     EndPrimitive();

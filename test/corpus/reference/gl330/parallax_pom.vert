@@ -30,13 +30,13 @@ void main()
     vTexCoord = aTexCoord;
     vec4 _118 = uViewProj * world;
     gl_Position = _118;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _145 = gl_Position.w - convergence;
-        float _146 = eyeSign * separation;
-        float _147 = _146 * _145;
-        float _148 = gl_Position.x + _147;
-        gl_Position.x = _148;
+        float _148 = gl_Position.w - convergence;
+        float _149 = eyeSign * separation;
+        float _150 = _149 * _148;
+        float _151 = gl_Position.x + _150;
+        gl_Position.x = _151;
     }
 }
 

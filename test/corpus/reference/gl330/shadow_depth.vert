@@ -18,13 +18,13 @@ void main()
     vec4 clip = uLightMVP * vec4(aPosition, 1.0);
     clip.z += (uDepthBias * clip.w);
     gl_Position = clip;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _77 = gl_Position.w - convergence;
-        float _78 = eyeSign * separation;
-        float _79 = _78 * _77;
-        float _80 = gl_Position.x + _79;
-        gl_Position.x = _80;
+        float _81 = gl_Position.w - convergence;
+        float _82 = eyeSign * separation;
+        float _83 = _82 * _81;
+        float _84 = gl_Position.x + _83;
+        gl_Position.x = _84;
     }
 }
 

@@ -35,13 +35,13 @@ void main()
     vViewDepth = -viewPos.z;
     vec4 _161 = uProjection * viewPos;
     gl_Position = _161;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _188 = gl_Position.w - convergence;
-        float _189 = eyeSign * separation;
-        float _190 = _189 * _188;
-        float _191 = gl_Position.x + _190;
-        gl_Position.x = _191;
+        float _192 = gl_Position.w - convergence;
+        float _193 = eyeSign * separation;
+        float _194 = _193 * _192;
+        float _195 = gl_Position.x + _194;
+        gl_Position.x = _195;
     }
 }
 

@@ -18,13 +18,13 @@ void main()
     vec4 pos = (uProjection * rotationOnly) * vec4(aPosition, 1.0);
     vDirection = aPosition;
     gl_Position = pos.xyww;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        float _92 = gl_Position.w - convergence;
-        float _93 = eyeSign * separation;
-        float _94 = _93 * _92;
-        float _95 = gl_Position.x + _94;
-        gl_Position.x = _95;
+        float _95 = gl_Position.w - convergence;
+        float _96 = eyeSign * separation;
+        float _97 = _96 * _95;
+        float _98 = gl_Position.x + _97;
+        gl_Position.x = _98;
     }
 }
 

@@ -34,7 +34,7 @@ cbuffer StereoParams : register(b3)
 
 GSOutput stereoshift_shift_GSOutput(GSOutput stereoshift_v)
 {
-    if (abs(stereoshift_v.Position.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.Position.w))
+    if (eyeSign != 0.0f && abs(stereoshift_v.Position.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.Position.w))
     {
         precise float stereoshift_x = stereoshift_v.Position.x + (eyeSign * separation) * (stereoshift_v.Position.w - convergence);
         stereoshift_v.Position.x = stereoshift_x;

@@ -73,13 +73,13 @@ void vert_main()
     _entryPointOutput_WorldNormal = flattenTemp.WorldNormal;
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_Tint = flattenTemp.Tint;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _122 = gl_Position.w - convergence;
-        precise float _123 = eyeSign * separation;
-        precise float _124 = _123 * _122;
-        precise float _125 = gl_Position.x + _124;
-        gl_Position.x = _125;
+        precise float _127 = gl_Position.w - convergence;
+        precise float _128 = eyeSign * separation;
+        precise float _129 = _128 * _127;
+        precise float _130 = gl_Position.x + _129;
+        gl_Position.x = _130;
     }
 }
 

@@ -88,13 +88,13 @@ void vert_main()
     _entryPointOutput_Bitangent = flattenTemp.Bitangent;
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_ViewDepth = flattenTemp.ViewDepth;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _170 = gl_Position.w - convergence;
-        precise float _171 = eyeSign * separation;
-        precise float _172 = _171 * _170;
-        precise float _173 = gl_Position.x + _172;
-        gl_Position.x = _173;
+        precise float _175 = gl_Position.w - convergence;
+        precise float _176 = eyeSign * separation;
+        precise float _177 = _176 * _175;
+        precise float _178 = gl_Position.x + _177;
+        gl_Position.x = _178;
     }
 }
 

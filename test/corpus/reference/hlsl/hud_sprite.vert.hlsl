@@ -70,13 +70,13 @@ void vert_main()
     gl_Position = flattenTemp.Position;
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_Color = flattenTemp.Color;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _108 = gl_Position.w - convergence;
-        precise float _109 = eyeSign * separation;
-        precise float _110 = _109 * _108;
-        precise float _111 = gl_Position.x + _110;
-        gl_Position.x = _111;
+        precise float _112 = gl_Position.w - convergence;
+        precise float _113 = eyeSign * separation;
+        precise float _114 = _113 * _112;
+        precise float _115 = gl_Position.x + _114;
+        gl_Position.x = _115;
     }
 }
 

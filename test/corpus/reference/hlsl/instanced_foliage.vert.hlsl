@@ -101,13 +101,13 @@ void vert_main()
     _entryPointOutput_Normal = flattenTemp.Normal;
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_Tint = flattenTemp.Tint;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _189 = gl_Position.w - convergence;
-        precise float _190 = eyeSign * separation;
-        precise float _191 = _190 * _189;
-        precise float _192 = gl_Position.x + _191;
-        gl_Position.x = _192;
+        precise float _194 = gl_Position.w - convergence;
+        precise float _195 = eyeSign * separation;
+        precise float _196 = _195 * _194;
+        precise float _197 = gl_Position.x + _196;
+        gl_Position.x = _197;
     }
 }
 

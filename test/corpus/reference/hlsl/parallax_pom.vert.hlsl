@@ -98,13 +98,13 @@ void vert_main()
     _entryPointOutput_UV = flattenTemp.UV;
     _entryPointOutput_ViewTS = flattenTemp.ViewTS;
     _entryPointOutput_NormalWS = flattenTemp.NormalWS;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _200 = gl_Position.w - convergence;
-        precise float _201 = eyeSign * separation;
-        precise float _202 = _201 * _200;
-        precise float _203 = gl_Position.x + _202;
-        gl_Position.x = _203;
+        precise float _204 = gl_Position.w - convergence;
+        precise float _205 = eyeSign * separation;
+        precise float _206 = _205 * _204;
+        precise float _207 = gl_Position.x + _206;
+        gl_Position.x = _207;
     }
 }
 

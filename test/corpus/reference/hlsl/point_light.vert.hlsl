@@ -52,13 +52,13 @@ void vert_main()
     VSOutput _64 = _VSMain(param);
     float4 _65 = _64.Position;
     gl_Position = _65;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _88 = gl_Position.w - convergence;
-        precise float _89 = eyeSign * separation;
-        precise float _90 = _89 * _88;
-        precise float _91 = gl_Position.x + _90;
-        gl_Position.x = _91;
+        precise float _93 = gl_Position.w - convergence;
+        precise float _94 = eyeSign * separation;
+        precise float _95 = _94 * _93;
+        precise float _96 = gl_Position.x + _95;
+        gl_Position.x = _96;
     }
 }
 

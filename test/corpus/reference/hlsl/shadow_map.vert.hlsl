@@ -63,13 +63,13 @@ void vert_main()
     VSOutput flattenTemp = _main(param);
     gl_Position = flattenTemp.Position;
     _entryPointOutput_UV = flattenTemp.UV;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _103 = gl_Position.w - convergence;
-        precise float _104 = eyeSign * separation;
-        precise float _105 = _104 * _103;
-        precise float _106 = gl_Position.x + _105;
-        gl_Position.x = _106;
+        precise float _108 = gl_Position.w - convergence;
+        precise float _109 = eyeSign * separation;
+        precise float _110 = _109 * _108;
+        precise float _111 = gl_Position.x + _110;
+        gl_Position.x = _111;
     }
 }
 

@@ -88,13 +88,13 @@ void vert_main()
     gl_Position = flattenTemp.Position;
     _entryPointOutput_Normal = flattenTemp.Normal;
     _entryPointOutput_UV = flattenTemp.UV;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _213 = gl_Position.w - convergence;
-        precise float _214 = eyeSign * separation;
-        precise float _215 = _214 * _213;
-        precise float _216 = gl_Position.x + _215;
-        gl_Position.x = _216;
+        precise float _218 = gl_Position.w - convergence;
+        precise float _219 = eyeSign * separation;
+        precise float _220 = _219 * _218;
+        precise float _221 = gl_Position.x + _220;
+        gl_Position.x = _221;
     }
 }
 

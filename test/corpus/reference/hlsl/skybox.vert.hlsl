@@ -60,13 +60,13 @@ void vert_main()
     gl_Position = flattenTemp.Position;
     _entryPointOutput_Direction = flattenTemp.Direction;
     _entryPointOutput_Tint = flattenTemp.Tint;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _96 = gl_Position.w - convergence;
-        precise float _97 = eyeSign * separation;
-        precise float _98 = _97 * _96;
-        precise float _99 = gl_Position.x + _98;
-        gl_Position.x = _99;
+        precise float _101 = gl_Position.w - convergence;
+        precise float _102 = eyeSign * separation;
+        precise float _103 = _102 * _101;
+        precise float _104 = gl_Position.x + _103;
+        gl_Position.x = _104;
     }
 }
 

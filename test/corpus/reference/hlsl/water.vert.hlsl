@@ -78,18 +78,18 @@ void vert_main()
     precise float _139 = eyeSign * separation;
     precise float _140 = _139 * _138;
     precise float _141 = _116.x + _140;
-    _116.x = ((abs(_116.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(_116.w))) ? _141 : _116.x;
+    _116.x = ((eyeSign != 0.0f) && ((abs(_116.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(_116.w)))) ? _141 : _116.x;
     _entryPointOutput_ClipPos = _116;
     _entryPointOutput_ScreenUV = flattenTemp.ScreenUV;
     _entryPointOutput_UV0 = flattenTemp.UV0;
     _entryPointOutput_UV1 = flattenTemp.UV1;
-    if ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w)))
+    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
     {
-        precise float _169 = gl_Position.w - convergence;
-        precise float _170 = eyeSign * separation;
-        precise float _171 = _170 * _169;
-        precise float _172 = gl_Position.x + _171;
-        gl_Position.x = _172;
+        precise float _178 = gl_Position.w - convergence;
+        precise float _179 = eyeSign * separation;
+        precise float _180 = _179 * _178;
+        precise float _181 = gl_Position.x + _180;
+        gl_Position.x = _181;
     }
 }
 

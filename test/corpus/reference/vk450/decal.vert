@@ -34,15 +34,15 @@ void main()
     precise float _63 = stereo.eyeSign * stereo.separation;
     precise float _64 = _63 * _62;
     precise float _65 = _47.x + _64;
-    _47.x = ((abs(_47.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_47.w))) ? _65 : _47.x;
+    _47.x = ((stereo.eyeSign != 0.0) && ((abs(_47.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_47.w)))) ? _65 : _47.x;
     outClipPos = _47;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _94 = gl_Position.w - stereo.convergence;
-        precise float _95 = stereo.eyeSign * stereo.separation;
-        precise float _96 = _95 * _94;
-        precise float _97 = gl_Position.x + _96;
-        gl_Position.x = _97;
+        precise float _103 = gl_Position.w - stereo.convergence;
+        precise float _104 = stereo.eyeSign * stereo.separation;
+        precise float _105 = _104 * _103;
+        precise float _106 = gl_Position.x + _105;
+        gl_Position.x = _106;
     }
 }
 

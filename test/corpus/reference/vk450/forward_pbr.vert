@@ -38,13 +38,13 @@ void main()
     mat4 _68 = camera.proj * camera.view;
     vec4 _70 = _68 * world;
     gl_Position = _70;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _98 = gl_Position.w - stereo.convergence;
-        precise float _99 = stereo.eyeSign * stereo.separation;
-        precise float _100 = _99 * _98;
-        precise float _101 = gl_Position.x + _100;
-        gl_Position.x = _101;
+        precise float _103 = gl_Position.w - stereo.convergence;
+        precise float _104 = stereo.eyeSign * stereo.separation;
+        precise float _105 = _104 * _103;
+        precise float _106 = gl_Position.x + _105;
+        gl_Position.x = _106;
     }
 }
 

@@ -41,13 +41,13 @@ void main()
     float _109 = _103.y;
     vec4 _110 = vec4(_108, _109, _106, d);
     gl_Position = _110;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _137 = gl_Position.w - stereo.convergence;
-        precise float _138 = stereo.eyeSign * stereo.separation;
-        precise float _139 = _138 * _137;
-        precise float _140 = gl_Position.x + _139;
-        gl_Position.x = _140;
+        precise float _141 = gl_Position.w - stereo.convergence;
+        precise float _142 = stereo.eyeSign * stereo.separation;
+        precise float _143 = _142 * _141;
+        precise float _144 = gl_Position.x + _143;
+        gl_Position.x = _144;
     }
 }
 

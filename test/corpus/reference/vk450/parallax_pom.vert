@@ -55,13 +55,13 @@ void main()
     outWorldToTangent = worldToTangent;
     vec4 _144 = camera.viewProj * world;
     gl_Position = _144;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _172 = gl_Position.w - stereo.convergence;
-        precise float _173 = stereo.eyeSign * stereo.separation;
-        precise float _174 = _173 * _172;
-        precise float _175 = gl_Position.x + _174;
-        gl_Position.x = _175;
+        precise float _176 = gl_Position.w - stereo.convergence;
+        precise float _177 = stereo.eyeSign * stereo.separation;
+        precise float _178 = _177 * _176;
+        precise float _179 = gl_Position.x + _178;
+        gl_Position.x = _179;
     }
 }
 

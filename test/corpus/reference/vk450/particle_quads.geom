@@ -31,13 +31,13 @@ void emitCorner(vec3 center, vec2 corner, float size, vec4 color)
     vec4 _72 = vec4(world, 1.0);
     vec4 _73 = camera.viewProj * _72;
     gl_Position = _73;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _167 = gl_Position.w - stereo.convergence;
-        precise float _168 = stereo.eyeSign * stereo.separation;
-        precise float _169 = _168 * _167;
-        precise float _170 = gl_Position.x + _169;
-        gl_Position.x = _170;
+        precise float _171 = gl_Position.w - stereo.convergence;
+        precise float _172 = stereo.eyeSign * stereo.separation;
+        precise float _173 = _172 * _171;
+        precise float _174 = gl_Position.x + _173;
+        gl_Position.x = _174;
     }
     EmitVertex();
 }

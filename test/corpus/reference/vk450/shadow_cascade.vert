@@ -32,13 +32,13 @@ void main()
     vec4 _50 = vec4(inPosition, 1.0);
     vec4 _51 = _41 * _50;
     gl_Position = _51;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _80 = gl_Position.w - stereo.convergence;
-        precise float _81 = stereo.eyeSign * stereo.separation;
-        precise float _82 = _81 * _80;
-        precise float _83 = gl_Position.x + _82;
-        gl_Position.x = _83;
+        precise float _85 = gl_Position.w - stereo.convergence;
+        precise float _86 = stereo.eyeSign * stereo.separation;
+        precise float _87 = _86 * _85;
+        precise float _88 = gl_Position.x + _87;
+        gl_Position.x = _88;
     }
 }
 

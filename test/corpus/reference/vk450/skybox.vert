@@ -27,13 +27,13 @@ void main()
     outDirection = dir;
     vec4 pos = (sky.proj * sky.viewRotation) * vec4(inPosition, 1.0);
     gl_Position = pos.xyww;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _107 = gl_Position.w - stereo.convergence;
-        precise float _108 = stereo.eyeSign * stereo.separation;
-        precise float _109 = _108 * _107;
-        precise float _110 = gl_Position.x + _109;
-        gl_Position.x = _110;
+        precise float _112 = gl_Position.w - stereo.convergence;
+        precise float _113 = stereo.eyeSign * stereo.separation;
+        precise float _114 = _113 * _112;
+        precise float _115 = gl_Position.x + _114;
+        gl_Position.x = _115;
     }
 }
 

@@ -35,13 +35,13 @@ void main()
     outHeight = h;
     vec4 _115 = terrain.viewProj * pos;
     gl_Position = _115;
-    if ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w)))
+    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
     {
-        precise float _142 = gl_Position.w - stereo.convergence;
-        precise float _143 = stereo.eyeSign * stereo.separation;
-        precise float _144 = _143 * _142;
-        precise float _145 = gl_Position.x + _144;
-        gl_Position.x = _145;
+        precise float _146 = gl_Position.w - stereo.convergence;
+        precise float _147 = stereo.eyeSign * stereo.separation;
+        precise float _148 = _147 * _146;
+        precise float _149 = gl_Position.x + _148;
+        gl_Position.x = _149;
     }
 }
 
