@@ -92,6 +92,14 @@ uint32_t emitShiftedX(PassContext& context, std::vector<Instruction>& out, uint3
   // x + (eyeSign * separation) * (w - convergence): the order of STEREO.md section 1.
   uint32_t depth = op(spv::OpFSub, w, convergence);
   uint32_t scale = op(spv::OpFMul, eyeSign, separation);
+  if (context.options.fusedShift) {
+    // One rounding less: fma(eyeSign * separation, w - convergence, x).
+    uint32_t glsl = m.extInstImport("GLSL.std.450");
+    uint32_t id = m.takeId();
+    out.emplace_back(spv::OpExtInst, f, id, std::vector<uint32_t>{glsl, GLSLstd450Fma, scale, depth, x});
+    if (precise) m.decorate(id, spv::DecorationNoContraction);
+    return id;
+  }
   uint32_t offset = op(spv::OpFMul, scale, depth);
   return op(spv::OpFAdd, x, offset);
 }

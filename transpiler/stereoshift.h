@@ -56,6 +56,7 @@ struct TranspileOptions {
   float cutoffEpsilon = 1e-5f;
   ShiftForm shiftForm = ShiftForm::Branch;
   bool invariantPosition = true;  // mark the position invariant + NoContraction on the shift
+  bool fusedShift = false;        // x' = fma(eyeSign*separation, w - convergence, x): one rounding less
   bool haloFix = true;
   bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
   std::vector<std::string> onlyPasses;  // --pass: run only these (by name()); empty: all

@@ -108,6 +108,31 @@ TEST_F(Stress, SeparationConvergenceAndDepthSweep) {
             << " ULP\n";
 }
 
+TEST_F(Stress, FusedShiftSweep) {
+  ASSERT_TRUE(context_) << setupError_;
+  TranspileOptions fused;
+  fused.fusedShift = true;
+  auto stages = build(kPassThrough, fused);
+  auto vertices = sweep();
+  double worst = 0;
+  for (float separation : {0.0f, 0.01f, 0.065f, 0.5f, 1.0f})
+    for (float convergence : {0.01f, 1.0f, 3.0f, 100.0f, 1e4f}) {
+      VerifySettings s;
+      s.separation = separation;
+      s.convergence = convergence;
+      s.vertices = clipVertices(vertices);
+      s.vertexCount = static_cast<uint32_t>(vertices.size());
+      VerifyResult r = verifyStereo(*context_, stages, s);
+      ASSERT_TRUE(r.error.empty()) << r.error;
+      EXPECT_TRUE(r.monoIdentical);
+      worst = std::max(worst, r.maxStereoUlps);
+    }
+  std::cout << "[stress] fused: worst stereo error " << worst << " ULP\n";
+  // Bound: fma saves the product's rounding, but w - C and the final sum still round: <= 2 ULP of
+  // max(|x|, |S(w - C)|) analytically; the separate-rounding bound 2.5 is asserted for both forms.
+  EXPECT_LE(worst, 2.5);
+}
+
 TEST_F(Stress, ExactCutoffShiftsTheOrthographicOffByOne) {
   ASSERT_TRUE(context_) << setupError_;
   TranspileOptions exact;
