@@ -113,6 +113,8 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_flag("--no-cutoff", o.noCutoff, "Shift every vertex, including w == 1 (2D) ones");
   app.add_option("--shift-form", o.shiftForm, "How the cutoff is coded: branch (if) or select (branch-free)")->capture_default_str();
   app.add_flag("--fused-shift", o.t.fusedShift, "Compute the shift as one fma (GLSL >= 400, ESSL >= 320, HLSL, MSL, SPIR-V)");
+  app.add_flag("--compensated-shift", o.t.compensatedShift,
+               "Compute the shift with error-free transformations (about 30 instructions, <= 1 ULP); needs `precise`");
   app.add_flag("--no-invariant", o.noInvariant, "Do not mark the position invariant / the shift NoContraction");
   app.add_flag("--no-halo", o.noHalo, "Do not shift outputs derived from the clip position");
   app.add_option("--pass", o.t.onlyPasses, "Run only this pass (repeatable): clip-position-detection, eye-params, halo, stereo-shift")

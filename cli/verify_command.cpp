@@ -37,6 +37,9 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
   settings.convergence = verify.convergence;
   settings.cutoff = options.cutoff != CutoffMode::None;
   settings.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  // The bound of the arithmetic that was injected: 1 ULP for the compensated form, else the
+  // analytic 2.5 ULP of three separately rounded fp32 operations (test/harness/stereo_verify.h).
+  if (options.compensatedShift) settings.maxUlps = 1.0;
   settings.eyeSignName = options.eye.eyeSignName;
   settings.separationName = options.eye.separationName;
   settings.convergenceName = options.eye.convergenceName;

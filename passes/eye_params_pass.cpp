@@ -90,6 +90,9 @@ class EyeParamsPass final : public Pass {
       return PassResult::Failed;
     }
     ctx.eye.source = source;
+    if (ctx.options.compensatedShift && !targetSupportsPrecise(ctx))
+      ctx.diags.warning(ctx.file, "--compensated-shift needs `precise`, which this output language lacks: a "
+                                  "driver may contract or re-associate the error-free arithmetic");
 
     std::set<std::string> taken;
     for (const auto& n : m.allNames()) taken.insert(n);

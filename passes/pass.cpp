@@ -92,6 +92,45 @@ uint32_t emitShiftedX(PassContext& context, std::vector<Instruction>& out, uint3
   // x + (eyeSign * separation) * (w - convergence): the order of STEREO.md section 1.
   uint32_t depth = op(spv::OpFSub, w, convergence);
   uint32_t scale = op(spv::OpFMul, eyeSign, separation);
+  if (context.options.compensatedShift) {
+    // x + a*(w - C) correctly rounded up to a hair: w - C exactly as dh + dl (TwoSum), a*dh exactly
+    // as ph + pl (TwoProduct), x + ph exactly as sh + sl (TwoSum), then one final rounding of
+    // sh + (sl + pl + a*dl). Needs NoContraction honoured (no re-association), so `precise`.
+    auto always = [&](spv::Op code, uint32_t a, uint32_t b) {
+      uint32_t id = m.takeId();
+      out.emplace_back(code, f, id, std::vector<uint32_t>{a, b});
+      m.decorate(id, spv::DecorationNoContraction);
+      return id;
+    };
+    uint32_t dh = always(spv::OpFSub, w, convergence);
+    uint32_t bb = always(spv::OpFSub, dh, w);
+    uint32_t dl = always(spv::OpFSub, always(spv::OpFSub, w, always(spv::OpFSub, dh, bb)),
+                         always(spv::OpFAdd, convergence, bb));
+    uint32_t a = always(spv::OpFMul, eyeSign, separation);
+    uint32_t ph = always(spv::OpFMul, a, dh);
+    // The product's rounding error by Dekker's TwoProduct (Veltkamp split, 2^12 + 1): exact without
+    // relying on a fused fma, which some drivers (lavapipe among them) evaluate as mul + add.
+    uint32_t splitter = m.constantFloat(4097.0f);
+    auto split = [&](uint32_t v, uint32_t* hi, uint32_t* lo) {
+      uint32_t c = always(spv::OpFMul, splitter, v);
+      *hi = always(spv::OpFSub, c, always(spv::OpFSub, c, v));
+      *lo = always(spv::OpFSub, v, *hi);
+    };
+    uint32_t ahi, alo, dhi, dlo;
+    split(a, &ahi, &alo);
+    split(dh, &dhi, &dlo);
+    uint32_t pl = always(spv::OpFAdd,
+                         always(spv::OpFAdd, always(spv::OpFAdd, always(spv::OpFSub, always(spv::OpFMul, ahi, dhi), ph),
+                                                    always(spv::OpFMul, ahi, dlo)),
+                                always(spv::OpFMul, alo, dhi)),
+                         always(spv::OpFMul, alo, dlo));
+    uint32_t sh = always(spv::OpFAdd, x, ph);
+    uint32_t bb2 = always(spv::OpFSub, sh, x);
+    uint32_t sl = always(spv::OpFAdd, always(spv::OpFSub, x, always(spv::OpFSub, sh, bb2)),
+                         always(spv::OpFSub, ph, bb2));
+    uint32_t tail = always(spv::OpFAdd, sl, always(spv::OpFAdd, pl, always(spv::OpFMul, a, dl)));
+    return always(spv::OpFAdd, sh, tail);
+  }
   if (context.options.fusedShift) {
     // One rounding less: fma(eyeSign * separation, w - convergence, x).
     uint32_t glsl = m.extInstImport("GLSL.std.450");

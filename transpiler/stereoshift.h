@@ -57,6 +57,7 @@ struct TranspileOptions {
   ShiftForm shiftForm = ShiftForm::Branch;
   bool invariantPosition = true;  // mark the position invariant + NoContraction on the shift
   bool fusedShift = false;        // x' = fma(eyeSign*separation, w - convergence, x): one rounding less
+  bool compensatedShift = false;  // error-free transformations: x' within ~0.5 ULP of the exact shift
   bool haloFix = true;
   bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
   std::vector<std::string> onlyPasses;  // --pass: run only these (by name()); empty: all

@@ -94,6 +94,19 @@ TEST_P(CorpusExecution, StereoMatchesReference) {
   EXPECT_TRUE(r.monoIdentical) << c.name;
   EXPECT_TRUE(r.otherOutputsUnchanged) << c.name << ": " << (r.problems.empty() ? "" : r.problems.front());
   EXPECT_LE(r.maxStereoUlps, settings.maxUlps) << c.name;
+
+  // --compensated-shift: the same pipeline within the 1 ULP bound.
+  TranspileOptions compensated = options;
+  compensated.compensatedShift = true;
+  std::vector<StageModules> precise;
+  ASSERT_TRUE(buildStageModules(sources, compensated, &precise, &lastClassification, diags)) << diags.format();
+  VerifySettings tight;
+  tight.maxUlps = 1.0;  // one final rounding of a nearly exact sum: 0.5 ulp(x') <= 1 ULP of max
+  VerifyResult rc = verifyStereo(*context_, precise, tight);
+  ASSERT_TRUE(rc.error.empty()) << c.name << ": " << rc.error;
+  std::cout << "[verify] " << c.name << " compensated: max stereo error " << rc.maxStereoUlps << " ULP\n";
+  EXPECT_TRUE(rc.monoIdentical) << c.name;
+  EXPECT_LE(rc.maxStereoUlps, 1.0) << c.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusExecution, ::testing::ValuesIn(corpusPipelines()),

@@ -133,6 +133,31 @@ TEST_F(Stress, FusedShiftSweep) {
   EXPECT_LE(worst, 2.5);
 }
 
+TEST_F(Stress, CompensatedShiftSweepWithinOneUlp) {
+  ASSERT_TRUE(context_) << setupError_;
+  TranspileOptions compensated;
+  compensated.compensatedShift = true;
+  auto stages = build(kPassThrough, compensated);
+  auto vertices = sweep();
+  double worst = 0;
+  for (float separation : {0.0f, 0.01f, 0.065f, 0.5f, 1.0f})
+    for (float convergence : {0.01f, 1.0f, 3.0f, 100.0f, 1e4f}) {
+      VerifySettings s;
+      s.separation = separation;
+      s.convergence = convergence;
+      s.vertices = clipVertices(vertices);
+      s.vertexCount = static_cast<uint32_t>(vertices.size());
+      VerifyResult r = verifyStereo(*context_, stages, s);
+      ASSERT_TRUE(r.error.empty()) << r.error;
+      EXPECT_TRUE(r.monoIdentical);
+      EXPECT_EQ(r.newNaNs, 0u);
+      worst = std::max(worst, r.maxStereoUlps);
+    }
+  std::cout << "[stress] compensated: worst stereo error " << worst << " ULP\n";
+  // Bound: one final rounding of a nearly exact sum: <= 0.5 ulp(x') <= 1 ULP of max(|x|, |S(w - C)|).
+  EXPECT_LE(worst, 1.0);
+}
+
 TEST_F(Stress, ExactCutoffShiftsTheOrthographicOffByOne) {
   ASSERT_TRUE(context_) << setupError_;
   TranspileOptions exact;
