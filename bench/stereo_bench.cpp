@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
     }
   std::printf("| configuration | transpile ms/shader | injected instructions (mean) | max stereo error, corpus (ULP) | mono identity |\n");
   std::printf("| --- | ---: | ---: | ---: | --- |\n");
+  int failures = 0;
   for (const auto& config : configs) {
     double ms = 0, injected = 0, worst = 0;
     int shaders = 0, pipelinesRun = 0;
@@ -124,8 +125,9 @@ int main(int argc, char** argv) {
       worst = std::max(worst, r.maxStereoUlps);
       mono &= r.monoIdentical;
     }
+    failures += mono ? 0 : 1;
     std::printf("| %s | %.2f | %.1f | %.2f (%d pipelines) | %s |\n", config.name, shaders ? ms / shaders : 0.0,
                 shaders ? injected / shaders : 0.0, worst, pipelinesRun, mono ? "bit-exact" : "DIFFERS");
   }
-  return 0;
+  return failures ? 1 : 0;
 }

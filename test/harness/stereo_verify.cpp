@@ -104,9 +104,10 @@ struct Reflector {
           }
         break;
       }
-      case spv::OpTypeArray: {
-        const Instruction* length = def(d->operand(1));
-        uint32_t count = length ? length->operand(0) : 1;
+      case spv::OpTypeArray:
+      case spv::OpTypeRuntimeArray: {
+        const Instruction* length = d->opcode == spv::OpTypeArray ? def(d->operand(1)) : nullptr;
+        uint32_t count = length ? length->operand(0) : 64;  // a runtime array gets 64 elements
         uint32_t stride = m.decorationValue(type, spv::DecorationArrayStride).value_or(16);
         const Instruction* element = def(d->operand(0));
         for (uint32_t i = 0; i < count; ++i) {
@@ -232,9 +233,15 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
         if (t.set == s && t.binding == b) return true;
       return false;
     };
-    if (storage == spv::StorageClass(spv::StorageClassUniform) && m.hasDecoration(type, spv::DecorationBufferBlock)) {
-      *error = "the harness cannot feed storage buffer '" + m.name(inst.resultId) + "' yet";
-      return false;
+    bool storageBuffer = storage == spv::StorageClassStorageBuffer ||
+                         (storage == spv::StorageClassUniform && m.hasDecoration(type, spv::DecorationBufferBlock));
+    if (storageBuffer) {  // e.g. an HLSL StructuredBuffer: 64 elements of plausible data
+      if (present(set, binding)) continue;
+      UniformBuffer sb{set, binding, {}, true};
+      r.fill(sb.bytes, type, 0, 0, false);
+      sb.bytes.resize((sb.bytes.size() + 15) & ~size_t(15), 0);
+      in->uniformBuffers.push_back(std::move(sb));
+      continue;
     }
     if (storage == spv::StorageClassUniform) {
       if (present(set, binding)) continue;
@@ -257,9 +264,6 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
         *error = "resource '" + m.name(inst.resultId) + "' is not a uniform buffer or combined image sampler";
         return false;
       }
-    } else if (storage == spv::StorageClassStorageBuffer) {
-      *error = "the harness cannot feed storage buffer '" + m.name(inst.resultId) + "' yet";
-      return false;
     }
   }
   return true;

@@ -220,7 +220,8 @@ bool buildDescriptorLayout(const PipelineInputs& in, std::vector<std::vector<Des
     return true;
   };
   for (uint32_t i = 0; i < in.uniformBuffers.size(); ++i)
-    if (!add(in.uniformBuffers[i].set, in.uniformBuffers[i].binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, i,
+    if (!add(in.uniformBuffers[i].set, in.uniformBuffers[i].binding,
+             in.uniformBuffers[i].storage ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, i,
              "uniform buffer"))
       return false;
   for (uint32_t i = 0; i < in.textures.size(); ++i)
@@ -785,12 +786,14 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
   if (!buildDescriptorLayout(in, &layoutSets, &layoutError)) err(layoutError);
 
   std::vector<VkDescriptorSetLayout> setLayouts;
-  uint32_t uboCount = 0, texCount = 0;
+  uint32_t uboCount = 0, ssboCount = 0, texCount = 0;
   for (auto& slots : layoutSets) {
     std::vector<VkDescriptorSetLayoutBinding> b;
     for (const DescriptorSlot& s : slots) {
       b.push_back({s.binding, s.type, 1, VK_SHADER_STAGE_ALL_GRAPHICS, nullptr});
-      (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER ? uboCount : texCount)++;
+      (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER   ? uboCount
+       : s.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER ? ssboCount
+                                                     : texCount)++;
     }
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     lci.bindingCount = uint32_t(b.size());
@@ -806,6 +809,7 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
   if (!setLayouts.empty()) {
     std::vector<VkDescriptorPoolSize> sizes;
     if (uboCount) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uboCount});
+    if (ssboCount) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ssboCount});
     if (texCount) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, texCount});
     VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pci.maxSets = uint32_t(setLayouts.size());
@@ -825,7 +829,7 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
   // Resources + writes. Infos are stored in pre-sized vectors so their addresses stay valid.
   std::vector<VkDescriptorBufferInfo> bufferInfos;
   std::vector<VkDescriptorImageInfo> imageInfos;
-  bufferInfos.reserve(uboCount);
+  bufferInfos.reserve(uboCount + ssboCount);
   imageInfos.reserve(texCount);
   std::vector<VkWriteDescriptorSet> writes;
   for (uint32_t set = 0; set < layoutSets.size(); ++set) {
@@ -836,13 +840,14 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
       w.descriptorCount = 1;
       w.descriptorType = s.type;
       std::string where = "(set " + std::to_string(set) + ", binding " + std::to_string(s.binding) + ")";
-      if (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
+      if (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || s.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER) {
         const UniformBuffer& u = in.uniformBuffers[s.resourceIndex];
         if (u.bytes.empty()) err("uniform buffer " + where + " is empty");
-        if (u.bytes.size() > props.limits.maxUniformBufferRange)
+        if (!u.storage && u.bytes.size() > props.limits.maxUniformBufferRange)
           err("uniform buffer " + where + " exceeds maxUniformBufferRange");
-        HostBuffer hb = hostBuffer(scope, u.bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.bytes.data(),
-                                   u.bytes.size(), "uniform buffer");
+        HostBuffer hb = hostBuffer(scope, u.bytes.size(),
+                                   u.storage ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                   u.bytes.data(), u.bytes.size(), "uniform buffer");
         bufferInfos.push_back({hb.buffer, 0, u.bytes.size()});
         w.pBufferInfo = &bufferInfos.back();
       } else {

@@ -58,6 +58,7 @@ struct UniformBuffer {
   uint32_t set = 0;
   uint32_t binding = 0;
   std::vector<uint8_t> bytes;
+  bool storage = false;  // bind as a (read-only) storage buffer, e.g. an HLSL StructuredBuffer
 };
 
 // A combined image sampler over a 2D VK_FORMAT_R32G32B32A32_SFLOAT image, one mip level,
