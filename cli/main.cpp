@@ -4,6 +4,7 @@
 //   stereoshift [options] --pipeline a.vert,a.geom,a.frag -o <dir>   one pipeline
 //   stereoshift build <src-dir> -o <out-dir> [options] a whole tree (pipelines by base name)
 #include "cli/verify_command.h"
+#include "transpiler/front_end.h"
 #include "transpiler/stereoshift.h"
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -73,8 +77,8 @@ bool writeAtomically(const fs::path& requested, const std::string& bytes, std::s
 }
 
 // Prints the diagnostics; returns how many were errors.
-int printDiagnostics(const Diagnostics& diags) {
-  std::cerr << diags.format();
+int printDiagnostics(const Diagnostics& diags, std::ostream& log) {
+  log << diags.format();
   return diags.errorCount();
 }
 
@@ -92,6 +96,7 @@ struct CliOptions {
   bool noCutoff = false, exactCutoff = false, noInvariant = false, noHalo = false;
   std::optional<uint32_t> set, binding, hlslRegister, glBinding;
   std::optional<int> targetVersion;
+  int jobs = 0;  // build: worker threads (0: one per core)
 };
 
 void addConversionOptions(CLI::App& app, CliOptions& o) {
@@ -182,15 +187,16 @@ bool writeReport(const std::string& path, const nlohmann::json& report) {
 // Converts one list of stages (a single shader is a pipeline of one) and writes the outputs.
 // `outputFor(i)` names each stage's output. Returns the number of errors.
 int convert(const std::vector<SourceFile>& sources, const CliOptions& o,
-            const std::function<std::string(size_t, const TranspileResult&)>& outputFor, nlohmann::json& reports) {
+            const std::function<std::string(size_t, const TranspileResult&)>& outputFor, nlohmann::json& reports,
+            std::ostream& log = std::cerr) {
   std::vector<TranspileResult> results = sources.size() == 1 && !o.t.stage.has_value() && o.pipeline.empty()
                                              ? std::vector<TranspileResult>{transpile(sources[0], o.t)}
                                              : transpilePipeline(sources, o.t);
   int errors = 0;
   for (size_t i = 0; i < results.size(); ++i) {
     auto& r = results[i];
-    int diagnosticErrors = printDiagnostics(r.diagnostics);
-    if (!r.passLog.empty()) std::cerr << r.passLog;
+    int diagnosticErrors = printDiagnostics(r.diagnostics, log);
+    if (!r.passLog.empty()) log << r.passLog;
     if (!r.ok) {
       errors += std::max(1, diagnosticErrors);
       r.report["ok"] = false;
@@ -203,7 +209,7 @@ int convert(const std::vector<SourceFile>& sources, const CliOptions& o,
     } else {
       std::string error;
       if (!writeAtomically(out, r.output, &error)) {
-        std::cerr << out << ": error: " << error << "\n";
+        log << out << ": error: " << error << "\n";
         ++errors;
         continue;
       }
@@ -252,37 +258,71 @@ int runBuild(const std::string& sourceDir, const std::string& outDir, CliOptions
   for (const auto& f : files)
     if (stageFromPath(f.string())) pipelines[pipelineKey(f)].push_back(f);
 
-  nlohmann::json reports = nlohmann::json::array();
-  int errors = 0, done = 0, total = static_cast<int>(files.size());
+  // Pipelines convert in parallel, in-process (glslang is initialised once); diagnostics and report
+  // entries are kept per pipeline and emitted in path order, so the result does not depend on the
+  // number of threads or on scheduling.
+  std::vector<std::pair<std::string, std::vector<fs::path>>> jobs(pipelines.begin(), pipelines.end());
+  std::vector<std::string> logs(jobs.size());
+  std::vector<nlohmann::json> jobReports(jobs.size(), nlohmann::json::array());
+  std::vector<int> jobErrors(jobs.size(), 0);
+  std::atomic<size_t> next{0};
+  std::atomic<int> done{0};
+  std::mutex progress;
+  int total = 0;
+  for (const auto& [key, stages] : jobs) total += static_cast<int>(stages.size());
   bool tty = ::isatty(2);
-  for (auto& [key, stages] : pipelines) {
-    std::vector<SourceFile> sources;
-    for (const auto& p : stages) {
-      SourceFile s{p.string(), {}};
-      if (!readFile(p.string(), &s.contents)) {
-        std::cerr << p.string() << ": error: cannot read file\n";
-        ++errors;
-        continue;
+  auto work = [&] {
+    for (size_t i; (i = next++) < jobs.size();) {
+      const auto& [key, stages] = jobs[i];
+      std::ostringstream log;
+      std::vector<SourceFile> sources;
+      for (const auto& p : stages) {
+        SourceFile s{p.string(), {}};
+        if (!readFile(p.string(), &s.contents)) {
+          log << p.string() << ": error: cannot read file\n";
+          ++jobErrors[i];
+          continue;
+        }
+        sources.push_back(std::move(s));
       }
-      sources.push_back(std::move(s));
+      CliOptions stageOptions = o;
+      stageOptions.pipeline = "group";
+      // Each shader directory and an `include` directory beside it are include roots.
+      for (const auto& s : sources) {
+        fs::path dir = fs::path(s.path).parent_path();
+        stageOptions.t.includeDirs.push_back(dir.string());
+        std::error_code dirError;
+        if (fs::is_directory(dir / "include", dirError)) stageOptions.t.includeDirs.push_back((dir / "include").string());
+      }
+      jobErrors[i] += convert(sources, stageOptions,
+                              [&](size_t k, const TranspileResult&) {
+                                return (fs::path(outDir) / fs::relative(sources[k].path, sourceDir)).string();
+                              },
+                              jobReports[i], log);
+      logs[i] = log.str();
+      int finished = done += static_cast<int>(stages.size());
+      if (tty) {
+        std::lock_guard<std::mutex> lock(progress);
+        std::cerr << "\r[" << finished << "/" << total << "] " << key << "\x1b[K" << std::flush;
+      }
     }
-    CliOptions stageOptions = o;
-    stageOptions.pipeline = "group";
-    // Each shader directory and an `include` directory beside it are include roots.
-    for (const auto& s : sources) {
-      fs::path dir = fs::path(s.path).parent_path();
-      stageOptions.t.includeDirs.push_back(dir.string());
-      if (fs::is_directory(dir / "include")) stageOptions.t.includeDirs.push_back((dir / "include").string());
-    }
-    errors += convert(sources, stageOptions,
-                      [&](size_t i, const TranspileResult&) {
-                        return (fs::path(outDir) / fs::relative(sources[i].path, sourceDir)).string();
-                      },
-                      reports);
-    done += static_cast<int>(sources.size());
-    if (tty) std::cerr << "\r[" << done << "/" << total << "] " << key << "\x1b[K" << std::flush;
-  }
+  };
+  unsigned threads = o.jobs > 0 ? static_cast<unsigned>(o.jobs) : std::max(1u, std::thread::hardware_concurrency());
+  threads = std::min<unsigned>(threads, std::max<size_t>(1, jobs.size()));
+  ensureGlslangInitialized();
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
   if (tty) std::cerr << "\n";
+
+  nlohmann::json reports = nlohmann::json::array();
+  int errors = 0;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    std::cerr << logs[i];
+    for (auto& r : jobReports[i]) reports.push_back(std::move(r));
+    errors += jobErrors[i];
+  }
   nlohmann::json summary;
   summary["tool"] = std::string("stereoshift ") + version();
   summary["shaders"] = reports;
@@ -315,6 +355,7 @@ int main(int argc, char** argv) {
   std::string buildSource, buildOut;
   build->add_option("source", buildSource, "Source directory")->required();
   build->add_option("-o,--output", buildOut, "Output directory (mirrors the source tree)")->required();
+  build->add_option("-j,--jobs", b.jobs, "Worker threads (default: one per core); the output does not depend on it");
 
   CliOptions v;
   VerifyCommandOptions verifyOptions;
