@@ -3,8 +3,6 @@
 // It changes nothing; later passes act on what it found.
 #include "passes/pass.h"
 
-#include <spirv-tools/optimizer.hpp>
-
 #include <cstring>
 
 namespace stereoshift {
@@ -43,7 +41,7 @@ class ClipPositionDetectionPass final : public Pass {
     auto& m = ctx.module;
     auto& report = ctx.report["passes"][name()];
     spv::ExecutionModel model = m.executionModel();
-    findPositions(ctx);
+    ctx.positions = findPositions(ctx.module);
     nlohmann::json found = nlohmann::json::array();
     for (const auto& p : ctx.positions) found.push_back(p.description);
     report["positions"] = found;
@@ -71,8 +69,8 @@ class ClipPositionDetectionPass final : public Pass {
   }
 
  private:
-  static void findPositions(PassContext& ctx) {
-    auto& m = ctx.module;
+  static std::vector<ClipPosition> findPositions(const spirv::Module& m) {
+    std::vector<ClipPosition> positions;
     for (uint32_t id : m.entryInterface()) {
       const Instruction* var = m.definition(id);
       if (!var || var->opcode != spv::OpVariable || var->operand(0) != spv::StorageClassOutput) continue;
@@ -86,15 +84,15 @@ class ClipPositionDetectionPass final : public Pass {
       }
       std::string varName = m.name(id);
       if (m.decorationValue(id, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInPosition)) {
-        ctx.positions.push_back({id, false, 0, arrayed, varName.empty() ? "position" : varName});
+        positions.push_back({id, false, 0, arrayed, varName.empty() ? "position" : varName});
         continue;
       }
       if (!typeDef || typeDef->opcode != spv::OpTypeStruct) continue;
       for (uint32_t member = 0; member < typeDef->operands.size(); ++member)
         if (m.memberDecorationValue(type, member, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInPosition))
-          ctx.positions.push_back({id, true, member, arrayed,
-                                   m.name(type) + "." + m.memberName(type, member)});
+          positions.push_back({id, true, member, arrayed, m.name(type) + "." + m.memberName(type, member)});
     }
+    return positions;
   }
 
   // An earlier stereoshift run (or the application itself) already declares eyeSign next to
@@ -109,22 +107,12 @@ class ClipPositionDetectionPass final : public Pass {
   }
 
   // The literal w = 1.0 may only show after inlining and folding (HLSL output structs, helper
-  // functions): run SPIRV-Tools' optimizer on a copy used for this question only.
-  static bool constantW1AfterFolding(const PassContext& ctx) {
-    spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
-    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
-    optimizer.RegisterPerformancePasses();
-    std::vector<uint32_t> folded;
-    spvtools::OptimizerOptions options;
-    options.set_run_validator(false);
-    std::vector<uint32_t> words = ctx.module.encode();
-    if (!optimizer.Run(words.data(), words.size(), &folded, options)) return false;
-    std::string error;
-    auto module = spirv::Module::parse(folded, &error);
-    if (!module) return false;
-    PassContext copy{*module, ctx.options, ctx.source, ctx.diags, ctx.file, ctx.report};
-    findPositions(copy);
-    return !copy.positions.empty() && allWritesHaveConstantW1(*module, copy.positions);
+  // functions): ask the shared folded copy.
+  static bool constantW1AfterFolding(PassContext& ctx) {
+    const spirv::Module* folded = foldedCopy(ctx);
+    if (!folded) return false;
+    auto positions = findPositions(*folded);
+    return !positions.empty() && allWritesHaveConstantW1(*folded, positions);
   }
 
   // True when every write of every clip position stores a vector whose w is the literal 1.0.

@@ -8,8 +8,6 @@
 // with the position replaced by its shifted value (the same instruction sequence as the shift).
 #include "passes/pass.h"
 
-#include <spirv-tools/optimizer.hpp>
-
 #include <algorithm>
 #include <map>
 #include <set>
@@ -125,15 +123,7 @@ class HaloPass final : public Pass {
     auto& m = ctx.module;
     if (ctx.positions.size() != 1 || ctx.positions.front().isMember) return;
     uint32_t position = ctx.positions.front().variable;
-    spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
-    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
-    optimizer.RegisterPerformancePasses();
-    spvtools::OptimizerOptions options;
-    options.set_run_validator(false);
-    std::vector<uint32_t> words = m.encode(), folded;
-    if (!optimizer.Run(words.data(), words.size(), &folded, options)) return;
-    std::string error;
-    auto optimized = spirv::Module::parse(folded, &error);
+    const spirv::Module* optimized = foldedCopy(ctx);
     if (!optimized) return;
     std::set<uint32_t> positionValues;
     std::map<uint32_t, std::set<uint32_t>> storedTo;

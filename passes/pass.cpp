@@ -1,6 +1,7 @@
 #include "passes/pass.h"
 
 #include <glslang/SPIRV/GLSL.std.450.h>
+#include <spirv-tools/optimizer.hpp>
 
 namespace stereoshift {
 
@@ -25,6 +26,22 @@ const char* toString(Classification c) {
     case Classification::NoPositionOutput: return "no-position-output";
   }
   return "?";
+}
+
+const spirv::Module* foldedCopy(PassContext& context) {
+  if (!context.foldTried) {
+    context.foldTried = true;
+    spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
+    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+    optimizer.RegisterPerformancePasses();
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);
+    std::vector<uint32_t> words = context.module.encode(), folded;
+    std::string error;
+    if (optimizer.Run(words.data(), words.size(), &folded, options))
+      context.folded = spirv::Module::parse(folded, &error);
+  }
+  return context.folded ? &*context.folded : nullptr;
 }
 
 bool targetSupportsPrecise(const PassContext& context) {

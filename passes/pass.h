@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ struct PassContext {
   // Filled by eye-params.
   EyeParams eye;
   bool eyeDeclared = false;
+  // See foldedCopy().
+  std::optional<spirv::Module> folded;
+  bool foldTried = false;
 };
 
 class Pass {
@@ -74,6 +78,12 @@ std::unique_ptr<Pass> createClipPositionDetectionPass();
 std::unique_ptr<Pass> createEyeParamsPass();
 std::unique_ptr<Pass> createStereoShiftPass();
 std::unique_ptr<Pass> createHaloPass();
+
+// An inlined, constant-folded throw-away copy of the module (SPIRV-Tools' performance passes), made
+// once per shader on first request and shared by the analyses that need to see through helper
+// functions and structs. Only used to answer questions, never emitted; global ids (variables) are
+// the module's own. Null when the optimizer cannot process the module.
+const spirv::Module* foldedCopy(PassContext& context);
 
 // ---- shared emission helpers -------------------------------------------------------------------
 
