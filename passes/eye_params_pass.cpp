@@ -178,21 +178,11 @@ class EyeParamsPass final : public Pass {
   // The binding for the new block: the option, else one past the highest binding in the set. HLSL
   // registers are per class (b, t, s, u), so for HLSL only constant buffers count.
   static uint32_t chooseBinding(const PassContext& ctx, uint32_t set) {
-    const auto& m = ctx.module;
     const auto& o = ctx.options.eye;
     if (ctx.source.language == SourceLanguage::Hlsl && o.hlslRegister) return *o.hlslRegister;
     if (o.binding) return *o.binding;
-    bool any = false;
-    uint32_t highest = 0;
-    for (const auto& inst : m.typesValues) {
-      if (inst.opcode != spv::OpVariable) continue;
-      if (ctx.source.language == SourceLanguage::Hlsl && inst.operand(0) != spv::StorageClassUniform) continue;
-      auto binding = m.decorationValue(inst.resultId, spv::DecorationBinding);
-      if (!binding || m.decorationValue(inst.resultId, spv::DecorationDescriptorSet).value_or(0) != set) continue;
-      highest = any ? std::max(highest, *binding) : *binding;
-      any = true;
-    }
-    return any ? highest + 1 : 0;
+    auto highest = highestBinding(ctx.module, set, ctx.source.language == SourceLanguage::Hlsl);
+    return highest ? *highest + 1 : 0;
   }
 
   void declareBlock(PassContext& ctx, uint32_t f, spv::StorageClass storage) {

@@ -44,6 +44,18 @@ const spirv::Module* foldedCopy(PassContext& context) {
   return context.folded ? &*context.folded : nullptr;
 }
 
+std::optional<uint32_t> highestBinding(const spirv::Module& m, uint32_t set, bool constantBuffersOnly) {
+  std::optional<uint32_t> highest;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable) continue;
+    if (constantBuffersOnly && inst.operand(0) != spv::StorageClassUniform) continue;
+    auto binding = m.decorationValue(inst.resultId, spv::DecorationBinding);
+    if (!binding || m.decorationValue(inst.resultId, spv::DecorationDescriptorSet).value_or(0) != set) continue;
+    highest = std::max(highest.value_or(0), *binding);
+  }
+  return highest;
+}
+
 bool targetSupportsPrecise(const PassContext& context) {
   TargetLanguage target = context.options.target;
   if (target == TargetLanguage::Auto) {

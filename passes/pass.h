@@ -85,6 +85,11 @@ std::unique_ptr<Pass> createHaloPass();
 // the module's own. Null when the optimizer cannot process the module.
 const spirv::Module* foldedCopy(PassContext& context);
 
+// The highest Binding among the variables of descriptor set `set`. With `constantBuffersOnly` only
+// Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
+// onto the same binding numbers.
+std::optional<uint32_t> highestBinding(const spirv::Module& module, uint32_t set, bool constantBuffersOnly);
+
 // ---- shared emission helpers -------------------------------------------------------------------
 
 // Appends instructions to `out` that load eye parameter `which` (0 eyeSign, 1 separation,

@@ -380,14 +380,9 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       std::string error;
       auto m = spirv::Module::parse(front.spirv, &error);
       if (!m) continue;
-      uint32_t set = options.eye.descriptorSet.value_or(0);
-      for (const auto& inst : m->typesValues) {
-        if (inst.opcode != spv::OpVariable) continue;
-        if (front.info.language == SourceLanguage::Hlsl && inst.operand(0) != spv::StorageClassUniform) continue;
-        auto binding = m->decorationValue(inst.resultId, spv::DecorationBinding);
-        if (!binding || m->decorationValue(inst.resultId, spv::DecorationDescriptorSet).value_or(0) != set) continue;
-        highest = highest ? std::max(*highest, *binding) : *binding;
-      }
+      auto stageHighest = highestBinding(*m, options.eye.descriptorSet.value_or(0),
+                                         front.info.language == SourceLanguage::Hlsl);
+      if (stageHighest) highest = std::max(highest.value_or(0), *stageHighest);
     }
     if (highest) {
       if (hlsl) pipelineOptions.eye.hlslRegister = *highest + 1;
