@@ -13,18 +13,10 @@ using spirv::Instruction;
 
 namespace {
 
-bool isOpaque(const spirv::Module& m, uint32_t type) {
-  const Instruction* def = m.definition(type);
-  while (def && (def->opcode == spv::OpTypeArray || def->opcode == spv::OpTypeRuntimeArray))
-    def = m.definition(def->operand(0));
-  return def && (def->opcode == spv::OpTypeImage || def->opcode == spv::OpTypeSampler ||
-                 def->opcode == spv::OpTypeSampledImage || def->opcode == spv::OpTypeAccelerationStructureKHR);
-}
-
 bool usesLooseUniforms(const spirv::Module& m) {
   for (const auto& inst : m.typesValues)
     if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniformConstant &&
-        !isOpaque(m, m.pointeeType(inst.typeId)))
+        !m.isOpaqueType(m.pointeeType(inst.typeId)))
       return true;
   return false;
 }

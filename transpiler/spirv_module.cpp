@@ -436,6 +436,14 @@ const Function* Module::function(uint32_t id) const {
   return nullptr;
 }
 
+bool Module::isOpaqueType(uint32_t type) const {
+  const Instruction* def = definition(type);
+  while (def && (def->opcode == spv::OpTypeArray || def->opcode == spv::OpTypeRuntimeArray))
+    def = definition(def->operand(0));
+  return def && (def->opcode == spv::OpTypeImage || def->opcode == spv::OpTypeSampler ||
+                 def->opcode == spv::OpTypeSampledImage || def->opcode == spv::OpTypeAccelerationStructureKHR);
+}
+
 std::optional<spv::StorageClass> Module::storageClassOf(uint32_t pointerId) const {
   const Instruction* def = definition(pointerId);
   if (!def) return std::nullopt;

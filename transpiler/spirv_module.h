@@ -138,6 +138,10 @@ class Module {
   Function* function(uint32_t id);
   const Function* function(uint32_t id) const;
 
+  // Images, samplers, sampled images, acceleration structures, and arrays of them: the types an
+  // OpenGL shader may declare as a plain `uniform` that are not default-block data.
+  bool isOpaqueType(uint32_t type) const;
+
   // Storage class and pointee type of a pointer-typed id (variable, access chain).
   std::optional<spv::StorageClass> storageClassOf(uint32_t pointerId) const;
   uint32_t pointeeType(uint32_t pointerTypeId) const;

@@ -111,12 +111,6 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
 
 namespace {
 
-bool isOpaque(const spirv::Module& m, uint32_t type) {
-  const Instruction* d = m.definition(type);
-  while (d && (d->opcode == spv::OpTypeArray || d->opcode == spv::OpTypeRuntimeArray)) d = m.definition(d->operand(0));
-  return d && (d->opcode == spv::OpTypeImage || d->opcode == spv::OpTypeSampler || d->opcode == spv::OpTypeSampledImage);
-}
-
 // std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type.
 void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, bool* matrix) {
   const Instruction* d = m.definition(*type);
@@ -171,7 +165,7 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
   bool anyBinding = false;
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable) continue;
-    if (inst.operand(0) == spv::StorageClassUniformConstant && !isOpaque(m, m.pointeeType(inst.typeId))) {
+    if (inst.operand(0) == spv::StorageClassUniformConstant && !m.isOpaqueType(m.pointeeType(inst.typeId))) {
       loose.push_back(inst.resultId);  // its auto-mapped binding goes away with it
       continue;
     }
