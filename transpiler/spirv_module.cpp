@@ -334,35 +334,23 @@ uint32_t Module::newStruct(const std::vector<uint32_t>& memberTypes) {
   return id;
 }
 
+uint32_t Module::scalarConstant(uint32_t type, uint32_t bits) {
+  if (uint32_t found = findConstant(type, spv::OpConstant, {bits})) return found;
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{bits});
+  invalidateDefinitions();
+  return id;
+}
+
 uint32_t Module::constantFloat(float value) {
   uint32_t bits;
   std::memcpy(&bits, &value, 4);
-  uint32_t type = typeFloat(32);
-  if (uint32_t found = findConstant(type, spv::OpConstant, {bits})) return found;
-  uint32_t id = takeId();
-  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{bits});
-  invalidateDefinitions();
-  return id;
+  return scalarConstant(typeFloat(32), bits);
 }
 
-uint32_t Module::constantInt(int32_t value) {
-  uint32_t type = typeInt(32, true);
-  auto bits = static_cast<uint32_t>(value);
-  if (uint32_t found = findConstant(type, spv::OpConstant, {bits})) return found;
-  uint32_t id = takeId();
-  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{bits});
-  invalidateDefinitions();
-  return id;
-}
+uint32_t Module::constantInt(int32_t value) { return scalarConstant(typeInt(32, true), static_cast<uint32_t>(value)); }
 
-uint32_t Module::constantUint(uint32_t value) {
-  uint32_t type = typeInt(32, false);
-  if (uint32_t found = findConstant(type, spv::OpConstant, {value})) return found;
-  uint32_t id = takeId();
-  typesValues.emplace_back(spv::OpConstant, type, id, std::vector<uint32_t>{value});
-  invalidateDefinitions();
-  return id;
-}
+uint32_t Module::constantUint(uint32_t value) { return scalarConstant(typeInt(32, false), value); }
 
 uint32_t Module::specConstantFloat(float value) {
   uint32_t bits;

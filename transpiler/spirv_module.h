@@ -153,6 +153,7 @@ class Module {
   void rebuildDefinitions() const;
   uint32_t findType(spv::Op op, const std::vector<uint32_t>& operands) const;
   uint32_t findConstant(uint32_t type, spv::Op op, const std::vector<uint32_t>& operands) const;
+  uint32_t scalarConstant(uint32_t type, uint32_t bits);  // find-or-create a 32-bit OpConstant
 };
 
 // Convenience: the disassembly of a module through SPIRV-Tools (friendly names, no header).
