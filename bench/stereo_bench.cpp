@@ -21,13 +21,6 @@ using namespace stereoshift::harness;
 
 namespace {
 
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 size_t instructionCount(const std::vector<uint32_t>& words) {
   std::string error;
   auto m = spirv::Module::parse(words, &error);
@@ -71,8 +64,9 @@ int main(int argc, char** argv) {
   for (auto& e : fs::directory_iterator(fs::path(CORPUS_DIR) / "vk450")) {
     auto stage = stageFromPath(e.path().string());
     if (!stage || !isPreRasterization(*stage)) continue;
-    std::string file = e.path().filename().string();
-    pipelines[file.substr(0, file.find('.'))].push_back({e.path().string(), readAll(e.path())});
+    SourceFile source{e.path().string(), {}};
+    if (!readFile(source.path, &source.contents)) continue;
+    pipelines[pipelineKey(source.path)].push_back(std::move(source));
   }
   std::string error;
   auto context = VulkanContext::create(&error);

@@ -26,15 +26,6 @@ using namespace stereoshift;
 
 namespace {
 
-bool readFile(const std::string& path, std::string* out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  *out = s.str();
-  return true;
-}
-
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
 bool writeAtomically(const fs::path& requested, const std::string& bytes, std::string* error) {
   std::error_code ec;
@@ -229,12 +220,6 @@ std::vector<std::string> splitCommas(const std::string& s) {
   return parts;
 }
 
-// The file name of a shader without its stage and language extensions: terrain.vert.hlsl -> terrain.
-std::string pipelineKey(const fs::path& p) {
-  std::string name = p.filename().string();
-  return (p.parent_path() / name.substr(0, name.find('.'))).string();
-}
-
 int runBuild(const std::string& sourceDir, const std::string& outDir, CliOptions& o) {
   std::error_code ec;
   if (!fs::is_directory(sourceDir, ec)) {
@@ -256,7 +241,7 @@ int runBuild(const std::string& sourceDir, const std::string& outDir, CliOptions
   }
   std::sort(files.begin(), files.end());
   for (const auto& f : files)
-    if (stageFromPath(f.string())) pipelines[pipelineKey(f)].push_back(f);
+    if (stageFromPath(f.string())) pipelines[pipelineKey(f.string())].push_back(f);
 
   // Pipelines convert in parallel, in-process (glslang is initialised once); diagnostics and report
   // entries are kept per pipeline and emitted in path order, so the result does not depend on the

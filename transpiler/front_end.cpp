@@ -38,14 +38,6 @@ EShLanguage toGlslang(Stage stage) {
   }
 }
 
-std::string readFile(const fs::path& path, bool* ok) {
-  std::ifstream in(path, std::ios::binary);
-  *ok = static_cast<bool>(in);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Resolves #include only inside the including file's directory and the -I directories, so a
 // shader tree conversion never reads outside what the user named.
 class RestrictedIncluder : public glslang::TShader::Includer {
@@ -84,9 +76,8 @@ class RestrictedIncluder : public glslang::TShader::Includer {
     fs::path resolved = fs::weakly_canonical(candidate, ec);
     auto rel = resolved.lexically_relative(root);
     if (rel.empty() || *rel.begin() == "..") return nullptr;  // escapes the allowed directory
-    bool ok = false;
-    auto* text = new std::string(readFile(candidate, &ok));
-    if (!ok) {
+    auto* text = new std::string;
+    if (!readFile(candidate.string(), text)) {
       delete text;
       return nullptr;
     }

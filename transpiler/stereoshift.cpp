@@ -8,11 +8,28 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <cstring>
 
 namespace stereoshift {
 
 const char* version() { return STEREOSHIFT_VERSION; }
+
+bool readFile(const std::string& path, std::string* contents) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream text;
+  text << in.rdbuf();
+  *contents = text.str();
+  return true;
+}
+
+std::string pipelineKey(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  size_t nameStart = slash == std::string::npos ? 0 : slash + 1;
+  return path.substr(0, path.find('.', nameStart));
+}
 
 std::optional<Stage> stageFromName(const std::string& raw) {
   std::string n = raw;

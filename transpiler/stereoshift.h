@@ -94,7 +94,11 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
 std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages,
                                                const TranspileOptions& options);
 
-// Helpers shared by the CLI and the tests.
+// Helpers shared by the CLI, the tests and the benchmark.
+bool readFile(const std::string& path, std::string* contents);  // false when it cannot be read
+// The pipeline a shader belongs to: its directory and file name without the stage and language
+// extensions (shaders/terrain.vert.hlsl -> shaders/terrain).
+std::string pipelineKey(const std::string& path);
 std::optional<Stage> stageFromPath(const std::string& path);
 std::optional<Stage> stageFromName(const std::string& name);  // vert, frag, vertex, ...
 const char* stageName(Stage stage);

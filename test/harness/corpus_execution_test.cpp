@@ -17,13 +17,6 @@ using namespace stereoshift::harness;
 
 namespace {
 
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Known limitations, each asserted to still fail (like lit's XFAIL): when one is fixed, this test
 // fails until the entry is removed.
 const std::map<std::string, std::string> kKnownLimitations = {};
@@ -40,8 +33,7 @@ std::vector<PipelineCase> corpusPipelines() {
       if (!e.is_regular_file()) continue;
       auto stage = stageFromPath(e.path().string());
       if (!stage || !isPreRasterization(*stage)) continue;
-      std::string file = e.path().filename().string();
-      groups[(e.path().parent_path() / file.substr(0, file.find('.'))).string()].push_back(e.path());
+      groups[pipelineKey(e.path().string())].push_back(e.path());
     }
   auto order = [](const fs::path& p) { return static_cast<int>(*stageFromPath(p.string())); };
   std::vector<PipelineCase> cases;
@@ -70,7 +62,10 @@ TEST_P(CorpusExecution, StereoMatchesReference) {
   ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
   const PipelineCase& c = GetParam();
   std::vector<SourceFile> sources;
-  for (const auto& p : c.stages) sources.push_back({p.string(), readAll(p)});
+  for (const auto& p : c.stages) {
+    sources.push_back({p.string(), {}});
+    ASSERT_TRUE(readFile(p.string(), &sources.back().contents)) << p;
+  }
   TranspileOptions options;
   options.includeDirs = {(c.stages.front().parent_path() / "include").string()};
   std::vector<StageModules> stages;
