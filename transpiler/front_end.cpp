@@ -156,19 +156,16 @@ struct Attempt {
   std::vector<std::string> included;
 };
 
-enum class Client { Vulkan, OpenGL };
+// How glslang reads a shader: Vulkan or OpenGL rules, each producing SPIR-V, or (for checking
+// emitted OpenGL GLSL/ESSL as a driver would) the dialect's own rules without SPIR-V.
+enum class Client { Vulkan, OpenGL, AstOnly };
 
-Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
-                           Client client, const std::string& entry, const TranspileOptions& options) {
-  Attempt attempt;
+// Sets the input language, client and target environment of `shader`; returns the messages to
+// parse and link with. HLSL always goes through Vulkan rules (descriptor sets, registers).
+int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage language, Client client,
+                         const std::string& entry) {
   EShLanguage lang = toGlslang(stage);
-  glslang::TShader shader(lang);
-  const char* strings[] = {text.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
-  const char* names[] = {input.path.c_str()};
-  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-  std::string preamble = buildPreamble(options.defines, language == SourceLanguage::Glsl);
-  shader.setPreamble(preamble.c_str());
+  if (language == SourceLanguage::Glsl && client == Client::AstOnly) return EShMsgDefault;
   int messages = EShMsgSpvRules;
   if (language == SourceLanguage::Hlsl) {
     shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
@@ -195,6 +192,21 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   }
   shader.setAutoMapLocations(true);
   shader.setAutoMapBindings(true);
+  return messages;
+}
+
+Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
+                           Client client, const std::string& entry, const TranspileOptions& options) {
+  Attempt attempt;
+  EShLanguage lang = toGlslang(stage);
+  glslang::TShader shader(lang);
+  const char* strings[] = {text.c_str()};
+  const int lengths[] = {static_cast<int>(text.size())};
+  const char* names[] = {input.path.c_str()};
+  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  std::string preamble = buildPreamble(options.defines, language == SourceLanguage::Glsl);
+  shader.setPreamble(preamble.c_str());
+  int messages = configureEnvironment(shader, stage, language, client, entry);
 
   RestrictedIncluder includer(input.path, options.includeDirs);
   bool parsed = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includer);
@@ -228,11 +240,6 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   }
   attempt.ok = true;
   return attempt;
-}
-
-bool looksBinary(const std::string& bytes) {
-  size_t checked = std::min<size_t>(bytes.size(), 4096);
-  return std::memchr(bytes.data(), '\0', checked) != nullptr;
 }
 
 // HLSL entry point: -e, else `main`, else the stage-conventional name found in the source.
@@ -348,28 +355,13 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
                     bool vulkanSemantics, const std::string& displayName, Diagnostics& diags) {
   ensureGlslangInitialized();
-  EShLanguage lang = toGlslang(stage);
-  glslang::TShader shader(lang);
+  glslang::TShader shader(toGlslang(stage));
   const char* strings[] = {text.c_str()};
   const char* names[] = {displayName.c_str()};
   const int lengths[] = {static_cast<int>(text.size())};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-  int messages = EShMsgDefault;
-  if (language == SourceLanguage::Hlsl) {
-    shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    shader.setEntryPoint(entryPoint.c_str());
-    shader.setSourceEntryPoint(entryPoint.c_str());
-    messages |= EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules;
-    shader.setAutoMapBindings(true);
-    shader.setAutoMapLocations(true);
-  } else if (vulkanSemantics) {
-    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    messages |= EShMsgSpvRules | EShMsgVulkanRules;
-  }
+  int messages = configureEnvironment(shader, stage, language, vulkanSemantics ? Client::Vulkan : Client::AstOnly,
+                                      entryPoint);
   // OpenGL GLSL/ESSL is checked as the driver would see it: AST only, the original dialect's rules.
   glslang::TShader::ForbidIncluder noIncludes;
   bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), noIncludes);
