@@ -73,6 +73,23 @@ int printDiagnostics(const Diagnostics& diags, std::ostream& log) {
   return diags.errorCount();
 }
 
+// Reads every path into `sources`; each one that cannot be read (or is a directory) is reported to
+// `log`. Returns how many failed.
+int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* sources, std::ostream& log) {
+  int failed = 0;
+  for (const auto& p : paths) {
+    SourceFile s{p, {}};
+    std::error_code ec;
+    if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
+      log << p << ": error: cannot read file\n";
+      ++failed;
+      continue;
+    }
+    sources->push_back(std::move(s));
+  }
+  return failed;
+}
+
 void printErrorSummary(int errors) {
   if (errors > 0) std::cerr << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
 }
@@ -261,15 +278,9 @@ int runBuild(const std::string& sourceDir, const std::string& outDir, CliOptions
       const auto& [key, stages] = jobs[i];
       std::ostringstream log;
       std::vector<SourceFile> sources;
-      for (const auto& p : stages) {
-        SourceFile s{p.string(), {}};
-        if (!readFile(p.string(), &s.contents)) {
-          log << p.string() << ": error: cannot read file\n";
-          ++jobErrors[i];
-          continue;
-        }
-        sources.push_back(std::move(s));
-      }
+      std::vector<std::string> paths;
+      for (const auto& p : stages) paths.push_back(p.string());
+      jobErrors[i] += readSources(paths, &sources, log);
       CliOptions stageOptions = o;
       stageOptions.pipeline = "group";
       // Each shader directory and an `include` directory beside it are include roots.
@@ -365,14 +376,9 @@ int main(int argc, char** argv) {
       return 2;
     }
     std::vector<SourceFile> sources;
-    for (const auto& p : v.inputs) {
-      SourceFile s{p, {}};
-      if (!readFile(p, &s.contents)) {
-        std::cerr << p << ": error: cannot read file\n";
-        printErrorSummary(1);
-        return 1;
-      }
-      sources.push_back(std::move(s));
+    if (int failed = readSources(v.inputs, &sources, std::cerr)) {
+      printErrorSummary(failed);
+      return 1;
     }
     if (sources.empty()) {
       std::cerr << "stereoshift: error: no input file (see verify --help)\n";
@@ -407,17 +413,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::vector<SourceFile> sources;
-  int readErrors = 0;
-  for (const auto& p : paths) {
-    SourceFile s{p, {}};
-    std::error_code ec;
-    if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
-      std::cerr << p << ": error: cannot read file\n";
-      ++readErrors;
-      continue;
-    }
-    sources.push_back(std::move(s));
-  }
+  int readErrors = readSources(paths, &sources, std::cerr);
   if (readErrors) {
     printErrorSummary(readErrors);
     return 1;
