@@ -238,6 +238,7 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
   }
   result.report["timings_ms"]["front_end"] = msSince(started);
 
+  result.originalSpirv = words;
   std::string parseError;
   auto parsed = spirv::Module::parse(words, &parseError);
   if (!parsed) {

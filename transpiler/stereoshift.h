@@ -80,6 +80,7 @@ struct TranspileResult {
   nlohmann::json report;         // classification, passes and what they did, timings
   std::vector<std::string> includedFiles;
   std::string passLog;           // --print-all output
+  std::vector<uint32_t> originalSpirv;  // the input as the front end made it, before any pass
 };
 
 struct SourceFile {

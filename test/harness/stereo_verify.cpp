@@ -1,7 +1,6 @@
 #include "test/harness/stereo_verify.h"
 
 #include "test/harness/capture_instrument.h"
-#include "transpiler/front_end.h"
 #include "transpiler/spirv_module.h"
 
 #include <algorithm>
@@ -353,25 +352,23 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     o.target = TargetLanguage::Spirv;
     o.forceReemit = true;
     o.shiftThisStage = i + 1 == ordered.size();
-    FrontEndResult front = compileToSpirv(*ordered[i], o, diags);
-    if (!front.ok) return false;
     TranspileResult result = transpile(*ordered[i], o);
     diags.append(result.diagnostics);
     if (!result.ok) return false;
     *classification = result.report.value("classification", "");
     std::vector<uint32_t> words(result.output.size() / 4);
     std::memcpy(words.data(), result.output.data(), words.size() * 4);
-    VkShaderStageFlagBits vk = VK_SHADER_STAGE_VERTEX_BIT;
-    switch (front.info.stage) {
-      case Stage::TessControl: vk = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT; break;
-      case Stage::TessEvaluation: vk = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT; break;
-      case Stage::Geometry: vk = VK_SHADER_STAGE_GEOMETRY_BIT; break;
-      default: break;
+    std::string error;
+    auto original = spirv::Module::parse(result.originalSpirv, &error);
+    if (!original) {
+      diags.error(ordered[i]->path, error);
+      return false;
     }
     std::vector<std::string> halo;
     for (const auto& n : result.report["passes"]["halo"].value("shifted_outputs", nlohmann::json::array()))
       halo.push_back(n.get<std::string>());
-    stages->push_back({vk, front.spirv, std::move(words), front.info.entryPoint, std::move(halo)});
+    stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
+                       original->entryPointName(), std::move(halo)});
   }
   return true;
 }
