@@ -101,7 +101,9 @@ struct CliOptions {
   std::string stage, target, eyeSource = "auto", shiftForm = "branch";
   std::string pipeline;
   std::string reportPath;
+  std::string depfile;  // single shader / pipeline: Makefile-style dependencies of the outputs
   bool noCutoff = false, exactCutoff = false, noInvariant = false, noHalo = false;
+  bool noPerEyeView = false, noDeferredUnprojection = false;
   std::optional<uint32_t> set, binding, hlslRegister, glBinding;
   std::optional<int> targetVersion;
   int jobs = 0;  // build: worker threads (0: one per core)
@@ -130,7 +132,19 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                "Compute the shift with error-free transformations (about 30 instructions, <= 1 ULP); needs `precise`");
   app.add_flag("--no-invariant", o.noInvariant, "Do not mark the position invariant / the shift NoContraction");
   app.add_flag("--no-halo", o.noHalo, "Do not shift outputs derived from the clip position");
-  app.add_option("--pass", o.t.onlyPasses, "Run only this pass (repeatable): clip-position-detection, eye-params, halo, stereo-shift")
+  app.add_flag("--no-per-eye-view", o.noPerEyeView,
+               "Keep the mono camera position in view vectors that offset texture coordinates (relief mapping)");
+  app.add_flag("--per-eye-specular", o.t.perEyeSpecular,
+               "Also use the per-eye camera position where a view vector only feeds lighting");
+  app.add_option("--camera-uniform", o.t.cameraUniform,
+                 "The camera-position uniform (NAME or Block.member) when detection does not find it");
+  app.add_flag("--no-deferred-unprojection", o.noDeferredUnprojection,
+               "Leave `InvM * vec4(ndc, depth, 1)` position reconstruction (deferred lighting) mono");
+  app.add_flag("--hud-at-depth", o.t.hudAtDepth,
+               "Place shaders proven 2D (w = 1) at the eye depth given by the injected `hudDepth` uniform");
+  app.add_option("--pass", o.t.onlyPasses,
+                 "Run only this pass (repeatable): clip-position-detection, hud-at-depth, eye-params, halo, "
+                 "stereo-shift, per-eye-view, deferred-unprojection")
       ->allow_extra_args(false);
   app.add_flag("--print-all", o.t.printAll, "Print the SPIR-V after every pass to stderr");
   app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
@@ -167,12 +181,15 @@ std::optional<std::string> finishOptions(CliOptions& o) {
   else if (o.t.cutoffEpsilon == 0.0f) o.t.cutoff = CutoffMode::Exact;
   o.t.invariantPosition = !o.noInvariant;
   o.t.haloFix = !o.noHalo;
+  o.t.perEyeView = !o.noPerEyeView;
+  o.t.deferredUnprojection = !o.noDeferredUnprojection;
   o.t.eye.descriptorSet = o.set;
   o.t.eye.binding = o.binding;
   o.t.eye.hlslRegister = o.hlslRegister;
   o.t.eye.glBinding = o.glBinding;
   o.t.targetVersion = o.targetVersion;
-  static const std::vector<std::string> passNames = {"clip-position-detection", "eye-params", "halo", "stereo-shift"};
+  static const std::vector<std::string> passNames = {"clip-position-detection", "hud-at-depth", "eye-params", "halo",
+                                                     "stereo-shift", "per-eye-view", "deferred-unprojection"};
   for (const auto& p : o.t.onlyPasses)
     if (std::find(passNames.begin(), passNames.end(), p) == passNames.end()) return "unknown --pass '" + p + "'";
   return std::nullopt;
@@ -227,6 +244,27 @@ int convert(const std::vector<SourceFile>& sources, const CliOptions& o,
     reports.push_back(r.report);
   }
   return errors;
+}
+
+// Make/Ninja depfile text: `target...: dependency...`, spaces and '#' escaped with a backslash, '$'
+// doubled (Ninja's and GNU make's shared rules).
+std::string makeDepfile(const std::vector<std::string>& targets, std::vector<std::string> dependencies) {
+  auto escape = [](const std::string& path) {
+    std::string out;
+    for (char c : path) {
+      if (c == ' ' || c == '#') out += '\\';
+      if (c == '$') out += '$';
+      out += c;
+    }
+    return out;
+  };
+  std::sort(dependencies.begin(), dependencies.end());
+  dependencies.erase(std::unique(dependencies.begin(), dependencies.end()), dependencies.end());
+  std::string text;
+  for (size_t i = 0; i < targets.size(); ++i) text += (i ? " " : "") + escape(targets[i]);
+  text += ":";
+  for (const auto& d : dependencies) text += " \\\n  " + escape(d);
+  return text + "\n";
 }
 
 std::vector<std::string> splitCommas(const std::string& s) {
@@ -344,6 +382,8 @@ int main(int argc, char** argv) {
   app.add_option("input", o.inputs, "Input shader (.vert .tesc .tese .geom .frag .comp .mesh .task, .hlsl, .spv)");
   app.add_option("-o,--output", o.output, "Output file (a directory with --pipeline); '-' or none: standard output");
   app.add_option("--pipeline", o.pipeline, "Comma-separated stages of one pipeline; only its last pre-rasterization stage is shifted");
+  app.add_option("--depfile", o.depfile,
+                 "Write the outputs' dependencies (the inputs and every #included file) as a Makefile-style depfile");
 
   CliOptions b;
   auto* build = app.add_subcommand("build", "Convert a whole shader tree: stages grouped into pipelines by base name");
@@ -427,6 +467,22 @@ int main(int argc, char** argv) {
                        },
                        reports);
   writeReport(o.reportPath, sources.size() == 1 && !reports.empty() ? reports[0] : reports);
+  if (!errors && !o.depfile.empty()) {
+    std::vector<std::string> targets, dependencies;
+    for (const auto& r : reports)
+      if (r.contains("output_file")) targets.push_back(r["output_file"].get<std::string>());
+    for (const auto& s : sources) dependencies.push_back(s.path);
+    for (const auto& r : reports)
+      for (const auto& inc : r.value("included_files", nlohmann::json::array())) dependencies.push_back(inc.get<std::string>());
+    std::string error;
+    if (targets.empty()) {
+      std::cerr << "stereoshift: error: --depfile needs an output file (-o)\n";
+      ++errors;
+    } else if (!writeAtomically(o.depfile, makeDepfile(targets, dependencies), &error)) {
+      std::cerr << o.depfile << ": error: " << error << "\n";
+      ++errors;
+    }
+  }
   printErrorSummary(errors);
   return errors ? 1 : 0;
 }

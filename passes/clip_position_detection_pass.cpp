@@ -63,6 +63,7 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::ConstantW1;
     } else {
       ctx.classification = Classification::Perspective;
+      ctx.shiftPosition = true;
     }
     report["classification"] = toString(ctx.classification);
     return PassResult::Unchanged;

@@ -1,5 +1,5 @@
 // eye-params: turns a shader that needs the shift into one that declares the eye parameters
-// (eyeSign, separation, convergence) as a uniform block / cbuffer, push-constant members, loose
+// (eyeSign, separation, convergence; more on request of later passes, see EyeParam) as a uniform block / cbuffer, push-constant members, loose
 // OpenGL uniforms or specialization constants. Names that clash with the application's own are
 // renamed (and reported), never aliased.
 #include "passes/pass.h"
@@ -57,186 +57,235 @@ uint32_t explicitSize(const spirv::Module& m, uint32_t type) {
   }
 }
 
-class EyeParamsPass final : public Pass {
- public:
-  const char* name() const override { return "eye-params"; }
+uint32_t firstFreeUniformLocation(const spirv::Module& m) {
+  uint32_t next = 0;
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniformConstant)
+      if (auto loc = m.decorationValue(inst.resultId, spv::DecorationLocation)) next = std::max(next, *loc + 16);
+  return next;
+}
 
-  PassResult run(PassContext& ctx) override {
-    if (ctx.classification != Classification::Perspective) return PassResult::Unchanged;
-    auto& m = ctx.module;
-    auto& report = ctx.report["passes"][name()];
-    const EyeParamOptions& o = ctx.options.eye;
+// The binding for the new block: the option, else one past the highest binding in the set. HLSL
+// registers are per class (b, t, s, u), so for HLSL only constant buffers count.
+uint32_t chooseBinding(const PassContext& ctx, uint32_t set) {
+  const auto& o = ctx.options.eye;
+  if (ctx.source.language == SourceLanguage::Hlsl && o.hlslRegister) return *o.hlslRegister;
+  if (o.binding) return *o.binding;
+  auto highest = highestBinding(ctx.module, set, ctx.source.language == SourceLanguage::Hlsl);
+  return highest ? *highest + 1 : 0;
+}
 
-    EyeSource source = o.source;
-    if (source == EyeSource::Auto)
-      source = (ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan && usesLooseUniforms(m))
-                   ? EyeSource::LooseUniforms
-                   : EyeSource::UniformBlock;
-    if (source == EyeSource::LooseUniforms && !(ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan)) {
-      ctx.diags.error(ctx.file, "--eye-source=loose-uniforms needs an OpenGL GLSL shader; Vulkan and HLSL have "
-                                "no default-block uniforms (use uniform-block, push-constant or spec-constant)");
-      return PassResult::Failed;
+const std::string& wantedName(const EyeParamOptions& o, int which) {
+  switch (which) {
+    case kEyeSign: return o.eyeSignName;
+    case kSeparation: return o.separationName;
+    case kConvergence: return o.convergenceName;
+    case kHudDepth: return o.hudDepthName;
+    case kEyeOffsetX: return o.eyeOffsetXName;
+    case kEyeOffsetY: return o.eyeOffsetYName;
+    default: return o.eyeOffsetZName;
+  }
+}
+
+// Mono until the application sets them: eyeSign 0, convergence 1, HUD at depth 1, no offset.
+float defaultValue(int which) { return which == kConvergence || which == kHudDepth ? 1.0f : 0.0f; }
+
+// Picks the source and checks it fits the shader; the first declaration only.
+bool chooseSource(PassContext& ctx) {
+  EyeSource source = ctx.options.eye.source;
+  auto& m = ctx.module;
+  bool gl = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
+  if (source == EyeSource::Auto) source = gl && usesLooseUniforms(m) ? EyeSource::LooseUniforms : EyeSource::UniformBlock;
+  if (source == EyeSource::LooseUniforms && !gl) {
+    ctx.diags.error(ctx.file, "--eye-source=loose-uniforms needs an OpenGL GLSL shader; Vulkan and HLSL have "
+                              "no default-block uniforms (use uniform-block, push-constant or spec-constant)");
+    return false;
+  }
+  if (source == EyeSource::PushConstant && gl) {
+    ctx.diags.error(ctx.file, "--eye-source=push-constant needs a Vulkan shader; this is OpenGL GLSL");
+    return false;
+  }
+  ctx.eye.source = source;
+  if (ctx.options.compensatedShift && ctx.shiftPosition && !targetSupportsPrecise(ctx))
+    ctx.diags.warning(ctx.file, "--compensated-shift needs `precise`, which this output language lacks: a "
+                                "driver may contract or re-associate the error-free arithmetic");
+  return true;
+}
+
+// Chooses names for params [from, to): clashes with the shader's own names get a suffix (and a
+// warning). Block members are scoped by the instance, except HLSL cbuffer members and loose uniforms.
+void chooseNames(PassContext& ctx, int from, int to) {
+  auto& report = ctx.report["passes"]["eye-params"];
+  EyeSource source = ctx.eye.source;
+  bool global = source == EyeSource::LooseUniforms || source == EyeSource::SpecConstant ||
+                ctx.source.language == SourceLanguage::Hlsl;
+  std::set<std::string> taken;
+  for (const auto& n : ctx.module.allNames()) taken.insert(n);
+  for (int i = 0; i < from; ++i) taken.insert(ctx.eye.names[i]);
+  for (int i = from; i < to; ++i) {
+    const std::string& wanted = wantedName(ctx.options.eye, i);
+    std::string chosen = wanted;
+    if (global)
+      for (int k = 1; taken.count(chosen); ++k) chosen = wanted + "_stereo" + (k > 1 ? std::to_string(k) : "");
+    if (chosen != wanted) {
+      ctx.diags.warning(ctx.file, "the shader already declares '" + wanted + "'; the injected one is named '" +
+                                      chosen + "'");
+      report["renamed"][wanted] = chosen;
     }
-    if (source == EyeSource::PushConstant && ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan) {
-      ctx.diags.error(ctx.file, "--eye-source=push-constant needs a Vulkan shader; this is OpenGL GLSL");
-      return PassResult::Failed;
+    taken.insert(chosen);
+    ctx.eye.names[i] = chosen;
+  }
+}
+
+// Appends params [from, to) as float members of the eye block (fresh or the shader's own push
+// constants): member firstMember+i at byte offset firstOffset+4*i.
+void appendMembers(PassContext& ctx, int from, int to) {
+  auto& m = ctx.module;
+  uint32_t f = m.typeFloat(32);
+  for (auto& t : m.typesValues)
+    if (t.resultId == ctx.eye.blockType) {
+      for (int i = from; i < to; ++i) t.operands.push_back(f);
+      break;
     }
-    ctx.eye.source = source;
-    if (ctx.options.compensatedShift && !targetSupportsPrecise(ctx))
-      ctx.diags.warning(ctx.file, "--compensated-shift needs `precise`, which this output language lacks: a "
-                                  "driver may contract or re-associate the error-free arithmetic");
+  m.invalidateDefinitions();
+  for (int i = from; i < to; ++i) {
+    uint32_t member = ctx.eye.firstMember + static_cast<uint32_t>(i);
+    m.setMemberName(ctx.eye.blockType, member, ctx.eye.names[i]);
+    m.decorateMember(ctx.eye.blockType, member, spv::DecorationOffset, {ctx.eye.firstOffset + 4u * i});
+  }
+}
 
-    std::set<std::string> taken;
-    for (const auto& n : m.allNames()) taken.insert(n);
-    auto unique = [&](const std::string& wanted, bool global) {
-      std::string chosen = wanted;
-      if (global)
-        for (int i = 1; taken.count(chosen); ++i) chosen = wanted + "_stereo" + (i > 1 ? std::to_string(i) : "");
-      if (chosen != wanted) {
-        ctx.diags.warning(ctx.file, "the shader already declares '" + wanted + "'; the injected one is named '" +
-                                        chosen + "'");
-        report["renamed"][wanted] = chosen;
-      }
-      taken.insert(chosen);
-      return chosen;
-    };
-    // Block members are scoped by the instance, except HLSL cbuffer members and loose uniforms.
-    bool membersGlobal = source == EyeSource::LooseUniforms || source == EyeSource::SpecConstant ||
-                         ctx.source.language == SourceLanguage::Hlsl;
-    const std::string wantedNames[3] = {o.eyeSignName, o.separationName, o.convergenceName};
-    for (int i = 0; i < 3; ++i) ctx.eye.names[i] = unique(wantedNames[i], membersGlobal);
+// Declares a fresh block (uniform block / cbuffer, or a push-constant block when the shader has none).
+void declareBlock(PassContext& ctx, spv::StorageClass storage) {
+  auto& m = ctx.module;
+  const auto& o = ctx.options.eye;
+  ctx.eye.blockType = m.newStruct({});
+  std::set<std::string> taken;
+  for (const auto& n : m.allNames()) taken.insert(n);
+  std::string blockName = o.blockName, instanceName = o.instanceName;
+  for (int i = 2; taken.count(blockName); ++i) blockName = o.blockName + std::to_string(i);
+  for (int i = 2; taken.count(instanceName); ++i) instanceName = o.instanceName + std::to_string(i);
+  auto& report = ctx.report["passes"]["eye-params"];
+  for (const auto& [wanted, chosen] : {std::pair{o.blockName, blockName}, std::pair{o.instanceName, instanceName}})
+    if (wanted != chosen) {
+      ctx.diags.warning(ctx.file, "the shader already declares '" + wanted + "'; the injected block uses '" +
+                                      chosen + "'");
+      report["renamed"][wanted] = chosen;
+    }
+  m.setName(ctx.eye.blockType, blockName);
+  m.decorate(ctx.eye.blockType, spv::DecorationBlock);
+  uint32_t var = m.addGlobalVariable(m.typePointer(storage, ctx.eye.blockType), storage);
+  m.setName(var, instanceName);
+  if (storage == spv::StorageClassUniform) {
+    bool gl = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
+    uint32_t set = o.descriptorSet.value_or(0);
+    uint32_t binding = gl ? o.glBinding.value_or(chooseBinding(ctx, set)) : chooseBinding(ctx, set);
+    m.decorate(var, spv::DecorationDescriptorSet, {set});
+    m.decorate(var, spv::DecorationBinding, {binding});
+  }
+  ctx.eye.variable = var;
+  ctx.eye.firstMember = 0;
+  ctx.eye.firstOffset = 0;
+}
 
-    uint32_t f = m.typeFloat(32);
-    switch (source) {
-      case EyeSource::LooseUniforms: {
-        uint32_t pointer = m.typePointer(spv::StorageClassUniformConstant, f);
-        uint32_t nextLocation = firstFreeUniformLocation(m);
-        for (int i = 0; i < 3; ++i) {
-          uint32_t var = m.addGlobalVariable(pointer, spv::StorageClassUniformConstant);
-          m.setName(var, ctx.eye.names[i]);
-          m.decorate(var, spv::DecorationLocation, {nextLocation + i});  // for validation; not emitted
-          ctx.eye.looseVariables[i] = var;
-        }
-        report["declared"] = "loose uniforms";
-        break;
-      }
-      case EyeSource::SpecConstant: {
-        const float defaults[3] = {0.0f, 0.0f, 1.0f};  // mono until the application specializes
-        for (int i = 0; i < 3; ++i) {
-          uint32_t id = m.specConstantFloat(defaults[i]);
-          m.setName(id, ctx.eye.names[i]);
-          m.decorate(id, spv::DecorationSpecId, {o.specIdBase + i});
-          ctx.eye.specConstants[i] = id;
-        }
-        report["declared"] = "specialization constants";
-        report["specIds"] = {o.specIdBase, o.specIdBase + 1, o.specIdBase + 2};
-        break;
-      }
-      case EyeSource::PushConstant: {
-        if (!mergeIntoPushConstants(ctx, f)) declareBlock(ctx, f, spv::StorageClassPushConstant);
+// Uses the shader's own push-constant block (one per entry point allowed): the parameters go after
+// its last member, 4-byte aligned.
+bool useShaderPushConstants(PassContext& ctx) {
+  auto& m = ctx.module;
+  for (auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassPushConstant) continue;
+    uint32_t structType = m.pointeeType(inst.typeId);
+    // Struct types are not shared between variables in glslang output; it is extended in place.
+    ctx.eye.variable = inst.resultId;
+    ctx.eye.blockType = structType;
+    ctx.eye.firstOffset = (explicitSize(m, structType) + 3) & ~3u;
+    const Instruction* def = m.definition(structType);
+    ctx.eye.firstMember = def ? static_cast<uint32_t>(def->operands.size()) : 0;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool ensureEyeParams(PassContext& ctx, int count) {
+  count = std::min<int>(count, kEyeParamCount);
+  int from = ctx.eyeDeclared ? ctx.eye.declared : 0;
+  if (count <= from) return true;
+  auto& m = ctx.module;
+  auto& report = ctx.report["passes"]["eye-params"];
+  if (!ctx.eyeDeclared) {
+    if (!chooseSource(ctx)) return false;
+    switch (ctx.eye.source) {
+      case EyeSource::LooseUniforms: report["declared"] = "loose uniforms"; break;
+      case EyeSource::SpecConstant: report["declared"] = "specialization constants"; break;
+      case EyeSource::PushConstant:
+        if (!useShaderPushConstants(ctx)) declareBlock(ctx, spv::StorageClassPushConstant);
         report["declared"] = "push constants";
-        report["offset"] = pushOffset_;
+        report["offset"] = ctx.eye.firstOffset;
         break;
-      }
       default: {
-        declareBlock(ctx, f, spv::StorageClassUniform);
+        declareBlock(ctx, spv::StorageClassUniform);
         report["declared"] = "uniform block";
-        report["block"] = m.name(blockType_);
+        report["block"] = m.name(ctx.eye.blockType);
         report["instance"] = m.name(ctx.eye.variable);
         if (auto set = m.decorationValue(ctx.eye.variable, spv::DecorationDescriptorSet)) report["set"] = *set;
         bool gl = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
-        if (auto b = m.decorationValue(ctx.eye.variable, spv::DecorationBinding); b && (!gl || o.glBinding))
+        if (auto b = m.decorationValue(ctx.eye.variable, spv::DecorationBinding); b && (!gl || ctx.options.eye.glBinding))
           report["binding"] = *b;  // OpenGL blocks without --gl-binding are bound by name
         break;
       }
     }
-    report["names"] = {ctx.eye.names[0], ctx.eye.names[1], ctx.eye.names[2]};
-    ctx.eyeDeclared = true;
-    return PassResult::Changed;
   }
-
- private:
-  uint32_t blockType_ = 0;
-  uint32_t pushOffset_ = 0;
-
-  static uint32_t firstFreeUniformLocation(const spirv::Module& m) {
-    uint32_t next = 0;
-    for (const auto& inst : m.typesValues)
-      if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniformConstant)
-        if (auto loc = m.decorationValue(inst.resultId, spv::DecorationLocation)) next = std::max(next, *loc + 16);
-    return next;
-  }
-
-  // The binding for the new block: the option, else one past the highest binding in the set. HLSL
-  // registers are per class (b, t, s, u), so for HLSL only constant buffers count.
-  static uint32_t chooseBinding(const PassContext& ctx, uint32_t set) {
-    const auto& o = ctx.options.eye;
-    if (ctx.source.language == SourceLanguage::Hlsl && o.hlslRegister) return *o.hlslRegister;
-    if (o.binding) return *o.binding;
-    auto highest = highestBinding(ctx.module, set, ctx.source.language == SourceLanguage::Hlsl);
-    return highest ? *highest + 1 : 0;
-  }
-
-  void declareBlock(PassContext& ctx, uint32_t f, spv::StorageClass storage) {
-    auto& m = ctx.module;
-    const auto& o = ctx.options.eye;
-    blockType_ = m.newStruct({f, f, f});
-    std::set<std::string> taken;
-    for (const auto& n : m.allNames()) taken.insert(n);
-    std::string blockName = o.blockName, instanceName = o.instanceName;
-    for (int i = 2; taken.count(blockName); ++i) blockName = o.blockName + std::to_string(i);
-    for (int i = 2; taken.count(instanceName); ++i) instanceName = o.instanceName + std::to_string(i);
-    auto& report = ctx.report["passes"][name()];
-    for (const auto& [wanted, chosen] : {std::pair{o.blockName, blockName}, std::pair{o.instanceName, instanceName}})
-      if (wanted != chosen) {
-        ctx.diags.warning(ctx.file, "the shader already declares '" + wanted + "'; the injected block uses '" +
-                                        chosen + "'");
-        report["renamed"][wanted] = chosen;
+  chooseNames(ctx, from, count);
+  uint32_t f = m.typeFloat(32);
+  switch (ctx.eye.source) {
+    case EyeSource::LooseUniforms: {
+      uint32_t pointer = m.typePointer(spv::StorageClassUniformConstant, f);
+      uint32_t nextLocation = firstFreeUniformLocation(m);
+      for (int i = from; i < count; ++i) {
+        uint32_t var = m.addGlobalVariable(pointer, spv::StorageClassUniformConstant);
+        m.setName(var, ctx.eye.names[i]);
+        m.decorate(var, spv::DecorationLocation, {nextLocation + i - from});  // for validation; not emitted
+        ctx.eye.looseVariables[i] = var;
       }
-    m.setName(blockType_, blockName);
-    m.decorate(blockType_, spv::DecorationBlock);
-    for (uint32_t i = 0; i < 3; ++i) {
-      m.setMemberName(blockType_, i, ctx.eye.names[i]);
-      m.decorateMember(blockType_, i, spv::DecorationOffset, {4 * i});
+      break;
     }
-    uint32_t var = m.addGlobalVariable(m.typePointer(storage, blockType_), storage);
-    m.setName(var, instanceName);
-    if (storage == spv::StorageClassUniform) {
-      bool gl = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
-      uint32_t set = o.descriptorSet.value_or(0);
-      uint32_t binding = gl ? o.glBinding.value_or(chooseBinding(ctx, set)) : chooseBinding(ctx, set);
-      m.decorate(var, spv::DecorationDescriptorSet, {set});
-      m.decorate(var, spv::DecorationBinding, {binding});
+    case EyeSource::SpecConstant: {
+      for (int i = from; i < count; ++i) {
+        uint32_t id = m.specConstantFloat(defaultValue(i));
+        m.setName(id, ctx.eye.names[i]);
+        m.decorate(id, spv::DecorationSpecId, {ctx.options.eye.specIdBase + i});
+        ctx.eye.specConstants[i] = id;
+      }
+      nlohmann::json ids = nlohmann::json::array();
+      for (int i = 0; i < count; ++i) ids.push_back(ctx.options.eye.specIdBase + i);
+      report["specIds"] = ids;
+      break;
     }
-    ctx.eye.variable = var;
-    ctx.eye.firstMember = 0;
+    default:
+      appendMembers(ctx, from, count);
+      break;
   }
+  nlohmann::json names = nlohmann::json::array();
+  for (int i = 0; i < count; ++i) names.push_back(ctx.eye.names[i]);
+  report["names"] = names;
+  ctx.eye.declared = count;
+  ctx.eyeDeclared = true;
+  return true;
+}
 
-  // Appends the three floats to the shader's own push-constant block (one per entry point allowed).
-  bool mergeIntoPushConstants(PassContext& ctx, uint32_t f) {
-    auto& m = ctx.module;
-    for (auto& inst : m.typesValues) {
-      if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassPushConstant) continue;
-      uint32_t var = inst.resultId;
-      uint32_t structType = m.pointeeType(inst.typeId);
-      uint32_t offset = (explicitSize(m, structType) + 3) & ~3u;
-      // Struct types are not shared between variables in glslang output; extend it in place.
-      for (auto& t : m.typesValues)
-        if (t.resultId == structType) {
-          uint32_t first = static_cast<uint32_t>(t.operands.size());
-          t.operands.insert(t.operands.end(), {f, f, f});
-          m.invalidateDefinitions();
-          for (uint32_t i = 0; i < 3; ++i) {
-            m.setMemberName(structType, first + i, ctx.eye.names[i]);
-            m.decorateMember(structType, first + i, spv::DecorationOffset, {offset + 4 * i});
-          }
-          ctx.eye.variable = var;
-          ctx.eye.firstMember = first;
-          pushOffset_ = offset;
-          return true;
-        }
-    }
-    return false;
+namespace {
+
+class EyeParamsPass final : public Pass {
+ public:
+  const char* name() const override { return "eye-params"; }
+
+  // Declares eyeSign, separation and convergence in a shader that gets the shift; passes that need
+  // more (or that fix a shader that gets no shift) call ensureEyeParams() themselves.
+  PassResult run(PassContext& ctx) override {
+    if (!ctx.shiftPosition || ctx.eyeDeclared) return PassResult::Unchanged;
+    return ensureEyeParams(ctx, kConvergence + 1) ? PassResult::Changed : PassResult::Failed;
   }
 };
 

@@ -36,7 +36,7 @@ class HaloPass final : public Pass {
   const char* name() const override { return "halo"; }
 
   PassResult run(PassContext& ctx) override {
-    if (ctx.classification != Classification::Perspective || !ctx.options.haloFix || !ctx.eyeDeclared)
+    if (!ctx.shiftPosition || !ctx.options.haloFix || !ctx.eyeDeclared)
       return PassResult::Unchanged;
     auto& m = ctx.module;
     auto& report = ctx.report["passes"][name()];

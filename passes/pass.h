@@ -38,14 +38,31 @@ enum class Classification {
 };
 const char* toString(Classification c);
 
+// The eye parameters by index. The injected block's layout is fixed by index (member i at byte
+// offset 4*i from the first), so every shader of an application agrees on it whichever prefix it
+// declares: the shift needs the first three, HUD-at-depth four, a per-eye camera offset all seven.
+enum EyeParam : int {
+  kEyeSign = 0,
+  kSeparation,
+  kConvergence,
+  kHudDepth,     // eye depth of a 2D element placed at depth (HUD-at-depth)
+  kEyeOffsetX,   // world-space offset of this eye's centre from the mono camera (per-eye view
+  kEyeOffsetY,   // vectors when the shader has no matrix to derive it from)
+  kEyeOffsetZ,
+  kEyeParamCount
+};
+
 // Ids of the injected eye parameters.
 struct EyeParams {
   EyeSource source = EyeSource::UniformBlock;
+  int declared = 0;                // how many of the EyeParam values are declared (a prefix)
   uint32_t variable = 0;           // block / push-constant variable (UniformBlock, PushConstant)
+  uint32_t blockType = 0;          // its struct type
   uint32_t firstMember = 0;        // index of eyeSign in that block
-  uint32_t looseVariables[3] = {}; // LooseUniforms
-  uint32_t specConstants[3] = {};  // SpecConstant
-  std::string names[3];            // final names after clash resolution
+  uint32_t firstOffset = 0;        // byte offset of eyeSign in that block
+  uint32_t looseVariables[kEyeParamCount] = {}; // LooseUniforms
+  uint32_t specConstants[kEyeParamCount] = {};  // SpecConstant
+  std::string names[kEyeParamCount];            // final names after clash resolution
 };
 
 struct PassContext {
@@ -59,6 +76,9 @@ struct PassContext {
   // Filled by clip-position-detection.
   std::vector<ClipPosition> positions;
   Classification classification = Classification::NoPositionOutput;
+  // Whether the stereo-shift (and halo) passes shift the clip position: set by detection for a
+  // perspective last stage, and by hud-at-depth for a 2D shader it places at depth.
+  bool shiftPosition = false;
   // Filled by eye-params.
   EyeParams eye;
   bool eyeDeclared = false;
@@ -78,6 +98,14 @@ std::unique_ptr<Pass> createClipPositionDetectionPass();
 std::unique_ptr<Pass> createEyeParamsPass();
 std::unique_ptr<Pass> createStereoShiftPass();
 std::unique_ptr<Pass> createHaloPass();
+std::unique_ptr<Pass> createHudAtDepthPass();
+std::unique_ptr<Pass> createPerEyeViewPass();
+std::unique_ptr<Pass> createDeferredUnprojectionPass();
+
+// Declares the eye parameters 0..count-1 (see EyeParam) if they are not declared yet, or extends
+// the declared ones up to `count`. Any pass that needs them calls this; the eye-params pass does so
+// for shaders that get the shift. False (with an error in ctx.diags) when they cannot be declared.
+bool ensureEyeParams(PassContext& context, int count);
 
 // An inlined, constant-folded throw-away copy of the module (SPIRV-Tools' performance passes), made
 // once per shader on first request and shared by the analyses that need to see through helper
@@ -92,8 +120,8 @@ std::optional<uint32_t> highestBinding(const spirv::Module& module, uint32_t set
 
 // ---- shared emission helpers -------------------------------------------------------------------
 
-// Appends instructions to `out` that load eye parameter `which` (0 eyeSign, 1 separation,
-// 2 convergence) and returns the id of the loaded float.
+// Appends instructions to `out` that load eye parameter `which` (an EyeParam, declared through
+// ensureEyeParams) and returns the id of the loaded float.
 uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>& out, int which);
 
 // Appends `x + eyeSign*separation*(w - convergence)` for the float ids `x` and `w`; returns its id.

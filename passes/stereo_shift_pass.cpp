@@ -16,7 +16,7 @@ class StereoShiftPass final : public Pass {
   const char* name() const override { return "stereo-shift"; }
 
   PassResult run(PassContext& ctx) override {
-    if (ctx.classification != Classification::Perspective) return PassResult::Unchanged;
+    if (!ctx.shiftPosition) return PassResult::Unchanged;
     auto& m = ctx.module;
     auto& report = ctx.report["passes"][name()];
     if (!ctx.eyeDeclared) {

@@ -13,17 +13,25 @@ struct PipelineEntry {
 };
 
 // The order matters:
-//  1. clip-position-detection is analysis only: it classifies the shader; every later pass reads
-//     its classification and does nothing unless the shader is a perspective last stage.
-//  2. eye-params declares eyeSign / separation / convergence; the shift and halo code load them.
-//  3. halo runs before the shift, while the only loads of the position are the application's own,
+//  1. clip-position-detection is analysis only: it classifies the shader; the geometry passes
+//     below do nothing unless it found a perspective last stage.
+//  2. hud-at-depth (opt-in) turns a proven-2D position into one at an eye depth, which then needs
+//     the shift like any perspective position: it must come before eye-params, halo and the shift.
+//  3. eye-params declares eyeSign / separation / convergence; the shift and halo code load them.
+//  4. halo runs before the shift, while the only loads of the position are the application's own,
 //     so it sees exactly the values the application derived its outputs from.
-//  4. stereo-shift goes last: it guards and shifts the final position at every return / emit.
+//  5. stereo-shift guards and shifts the final position at every return / emit.
+//  6. per-eye-view and deferred-unprojection fix pixel maths that sees the mono eye; they are
+//     independent of the shift (they also run on fragment shaders, which get no shift) and declare
+//     the eye parameters they need themselves.
 const PipelineEntry kPipeline[] = {
     {createClipPositionDetectionPass},
+    {createHudAtDepthPass},
     {createEyeParamsPass},
     {createHaloPass},
     {createStereoShiftPass},
+    {createPerEyeViewPass},
+    {createDeferredUnprojectionPass},
 };
 
 spv_target_env environmentFor(const SourceInfo& info, uint32_t version) {

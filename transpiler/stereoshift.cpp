@@ -235,6 +235,7 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
     words = std::move(front.spirv);
     info = std::move(front.info);
     result.includedFiles = std::move(front.includedFiles);
+    if (!result.includedFiles.empty()) result.report["included_files"] = result.includedFiles;
   }
   result.report["timings_ms"]["front_end"] = msSince(started);
 

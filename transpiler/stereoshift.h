@@ -37,6 +37,10 @@ struct EyeParamOptions {
   std::string eyeSignName = "eyeSign";
   std::string separationName = "separation";
   std::string convergenceName = "convergence";
+  std::string hudDepthName = "hudDepth";        // declared only with --hud-at-depth
+  std::string eyeOffsetXName = "eyeOffsetX";    // declared only for per-eye view vectors that have
+  std::string eyeOffsetYName = "eyeOffsetY";    // no matrix to derive the eye centre from
+  std::string eyeOffsetZName = "eyeOffsetZ";
   std::optional<uint32_t> descriptorSet;  // default 0
   std::optional<uint32_t> binding;        // default: first binding unused in the set
   std::optional<uint32_t> hlslRegister;   // cbuffer register b<N>; default: first unused
@@ -60,6 +64,12 @@ struct TranspileOptions {
   bool compensatedShift = false;  // error-free transformations: x' within ~0.5 ULP of the exact shift
   bool haloFix = true;
   bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
+  // Per-eye pixel maths (STEREO.md sections 2-4)
+  bool perEyeView = true;             // per-eye camera position where a view vector offsets texture coordinates
+  bool perEyeSpecular = false;        // also where it only feeds lighting (specular looks fine mono)
+  std::string cameraUniform;          // --camera-uniform: this uniform (or block member) is the camera position
+  bool deferredUnprojection = true;   // stereo-correct `InvM * vec4(ndc, depth, 1)` in deferred passes
+  bool hudAtDepth = false;            // place proven-2D shaders at the eye depth `hudDepth`
   std::vector<std::string> onlyPasses;  // --pass: run only these (by name()); empty: all
   bool validateEach = false;
   bool printAll = false;          // dump SPIR-V after every pass to the report log

@@ -32,6 +32,9 @@ void main() {
 // CHECK-NEXT: ],
 // CHECK-NEXT: "result": "unchanged"
 // CHECK-NEXT: },
+// CHECK-NEXT: "deferred-unprojection": {
+// CHECK-NEXT: "result": "unchanged"
+// CHECK-NEXT: },
 // CHECK-NEXT: "eye-params": {
 // CHECK: "result": "changed",
 // CHECK: "halo": {
@@ -39,6 +42,12 @@ void main() {
 // CHECK-NEXT: "shifted_outputs": [
 // CHECK-NEXT: "vClip"
 // CHECK-NEXT: ]
+// CHECK-NEXT: },
+// CHECK-NEXT: "hud-at-depth": {
+// CHECK-NEXT: "result": "unchanged"
+// CHECK-NEXT: },
+// CHECK-NEXT: "per-eye-view": {
+// CHECK-NEXT: "result": "unchanged"
 // CHECK-NEXT: },
 // CHECK-NEXT: "stereo-shift": {
 // CHECK-NEXT: "form": "branch",
