@@ -10,7 +10,7 @@ mode="${1:-run}"
 # Debian packages the build and the tests need (see README "Dependencies").
 packages=(cmake ninja-build g++ python3 glslang-dev glslang-tools spirv-tools
           libspirv-cross-c-shared-dev spirv-cross libcli11-dev llvm-14-tools
-          mesa-vulkan-drivers libvulkan-dev nlohmann-json3-dev libxxhash-dev
+          mesa-vulkan-drivers libvulkan-dev nlohmann-json3-dev libxxhash-dev libtomlplusplus-dev
           googletest libgtest-dev)
 missing=()
 for p in "${packages[@]}"; do

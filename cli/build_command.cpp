@@ -1,0 +1,644 @@
+// `stereoshift build`: a whole shader tree (or the pipelines a scene manifest names) converted
+// incrementally, in isolated worker processes, into a mirrored output directory.
+//
+// The run, in order:
+//  1. plan: find the shaders, group stages into pipelines by base name, and (with a manifest) give
+//     each pipeline the passes that use it; a pipeline used by several passes becomes one variant
+//     per pass (`name.<pass>.vert`).
+//  2. cache: a job whose key (tool, options, every input and included file) matches the cache and
+//     whose outputs are still the bytes it wrote is up to date: nothing runs for it.
+//  3. convert the rest in worker processes (a crash or a hang costs one pipeline, not the run), and
+//     write each output atomically as it arrives.
+//  4. report, in path order, whatever the number of workers: logs, the JSON report, the cache, the
+//     depfile.
+#include "cli/build_command.h"
+
+#include "cli/scene_manifest.h"
+#include "cli/worker_pool.h"
+#include "transpiler/front_end.h"
+
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+namespace {
+
+constexpr const char* kCacheFile = ".stereoshift-cache.json";
+constexpr int kCacheFormat = 1;
+
+std::string hex64(uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+std::string hashBytes(const std::string& bytes) { return hex64(XXH3_64bits(bytes.data(), bytes.size())); }
+
+// Feeds length-prefixed strings into one hash, so ("ab","c") and ("a","bc") differ.
+class KeyHasher {
+ public:
+  KeyHasher() { XXH3_64bits_reset(&state_); }
+  void add(const std::string& s) {
+    uint64_t size = s.size();
+    XXH3_64bits_update(&state_, &size, sizeof size);
+    XXH3_64bits_update(&state_, s.data(), s.size());
+  }
+  std::string digest() { return hex64(XXH3_64bits_digest(&state_)); }
+
+ private:
+  XXH3_state_t state_;
+};
+
+// What a cached result depends on besides its inputs: this very build of the tool.
+std::string toolIdentity() {
+  std::string id = std::string("stereoshift ") + version();
+  struct stat info {};
+  if (::stat("/proc/self/exe", &info) == 0)
+    id += " " + std::to_string(info.st_size) + " " + std::to_string(info.st_mtim.tv_sec) + "." +
+          std::to_string(info.st_mtim.tv_nsec);
+  return id;
+}
+
+// ---- plan ----------------------------------------------------------------------------------------
+
+struct BuildJob {
+  std::string id;                 // pipeline key relative to the root, `@pass` for a variant
+  std::string pipeline;           // pipeline key relative to the root
+  std::vector<fs::path> stages;   // source files, in path order
+  std::vector<fs::path> outputs;  // one per stage
+  std::string pass;               // manifest pass ("" without a manifest)
+  PassMode mode = PassMode::Stereo;
+  CliOptions options;
+  std::string fingerprint;        // options + mode: part of the cache key
+};
+
+bool insideDirectory(const fs::path& path, const fs::path& directory) {
+  fs::path p = path.lexically_normal(), d = directory.lexically_normal();
+  auto [end, _] = std::mismatch(d.begin(), d.end(), p.begin(), p.end());
+  return end == d.end() || (std::next(end) == d.end() && end->empty());
+}
+
+// `dir/name.vert` -> `dir/name.<variant>.vert` (variant before every extension).
+fs::path variantPath(const fs::path& path, const std::string& variant) {
+  std::string name = path.filename().string();
+  size_t dot = name.find('.');
+  std::string renamed = dot == std::string::npos ? name + "." + variant
+                                                 : name.substr(0, dot) + "." + variant + name.substr(dot);
+  return path.parent_path() / renamed;
+}
+
+// The conversion-option keys a manifest may set: the CLI long names, less the per-file and
+// debugging ones.
+std::vector<std::string> manifestOptionKeys() {
+  CliOptions scratch;
+  CLI::App app;
+  addConversionOptions(app, scratch);
+  static const std::set<std::string> excluded = {"help", "report", "pass", "print-all", "validate-each", "stage", "D", "I"};
+  std::vector<std::string> keys;
+  for (const CLI::Option* option : app.get_options())
+    for (const auto& name : option->get_lnames())
+      if (!excluded.count(name)) keys.push_back(name);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// Applies command-line words (`--block-name X`, `-D A`) on top of `o`; lists (defines, include
+// directories) are appended to. Returns an error message or "".
+std::string applyOptionWords(CliOptions& o, const std::vector<std::string>& words) {
+  if (words.empty()) return "";
+  CliOptions updated = o;
+  updated.t.defines.clear();
+  updated.t.includeDirs.clear();
+  CLI::App app;
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  addConversionOptions(app, updated);
+  std::vector<std::string> reversed(words.rbegin(), words.rend());  // CLI11 parses from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    return e.what();
+  }
+  std::vector<std::string> defines = o.t.defines, includes = o.t.includeDirs;
+  defines.insert(defines.end(), updated.t.defines.begin(), updated.t.defines.end());
+  includes.insert(includes.end(), updated.t.includeDirs.begin(), updated.t.includeDirs.end());
+  updated.t.defines = defines;
+  updated.t.includeDirs = includes;
+  if (auto error = finishOptions(updated)) return *error;
+  o = std::move(updated);
+  return "";
+}
+
+struct Plan {
+  fs::path root;
+  std::vector<BuildJob> jobs;
+  std::vector<std::string> errors;    // file:line:col: error: ...
+  std::vector<std::string> warnings;
+  std::vector<fs::path> extraDependencies;  // the manifest
+  bool manifest = false;
+};
+
+// Shader files under `root`, grouped into pipelines keyed by their path relative to `root`.
+std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir) {
+  std::error_code ec;
+  std::vector<fs::path> files;
+  // An output directory inside the source tree is not part of the source.
+  fs::path outCanonical = fs::weakly_canonical(outDir, ec);
+  for (auto it = fs::recursive_directory_iterator(root, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    if (it->is_directory() && fs::weakly_canonical(it->path(), ec) == outCanonical) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file() && stageFromPath(it->path().string())) files.push_back(it->path());
+  }
+  std::sort(files.begin(), files.end());
+  std::map<std::string, std::vector<fs::path>> pipelines;
+  for (const auto& f : files) pipelines[pipelineKey(fs::relative(f, root, ec).generic_string())].push_back(f);
+  return pipelines;
+}
+
+void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const std::vector<fs::path>& stages,
+            const CliOptions& options, const std::string& pass, PassMode mode, bool variant) {
+  BuildJob job;
+  job.id = variant ? key + "@" + pass : key;
+  job.pipeline = key;
+  job.stages = stages;
+  job.pass = pass;
+  job.mode = mode;
+  job.options = options;
+  job.options.pipeline = "group";
+  if (mode == PassMode::Deferred) job.options.t.deferredUnprojection = true;
+  if (mode == PassMode::UiAtDepth) job.options.t.hudAtDepth = true;
+  // Each shader's directory and an `include` directory beside it are include roots.
+  for (const auto& s : stages) {
+    fs::path dir = s.parent_path();
+    job.options.t.includeDirs.push_back(dir.string());
+    std::error_code ec;
+    if (fs::is_directory(dir / "include", ec)) job.options.t.includeDirs.push_back((dir / "include").string());
+  }
+  for (const auto& s : stages) {
+    std::error_code ec;
+    fs::path out = outDir / fs::relative(s, plan.root, ec);
+    if (variant) out = variantPath(out, pass);
+    job.outputs.push_back(out);
+  }
+  nlohmann::json fingerprint = describeOptions(job.options.t);
+  fingerprint["mode"] = toString(mode);
+  job.fingerprint = fingerprint.dump();
+  plan.jobs.push_back(std::move(job));
+}
+
+Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOptions& base) {
+  Plan plan;
+  plan.root = root;
+  for (const auto& [key, stages] : findPipelines(root, outDir))
+    addJob(plan, outDir, key, stages, base, "", PassMode::Stereo, false);
+  return plan;
+}
+
+Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const CliOptions& base) {
+  Plan plan;
+  plan.manifest = true;
+  plan.extraDependencies.push_back(manifestFile);
+  SceneManifest manifest;
+  auto check = [](const std::vector<std::string>& words) {
+    CliOptions scratch;
+    return applyOptionWords(scratch, words);
+  };
+  if (!loadSceneManifest(manifestFile, manifestOptionKeys(), check, &manifest, &plan.errors)) return plan;
+  plan.root = manifest.sourceRoot;
+  std::error_code ec;
+  if (!fs::is_directory(plan.root, ec)) {
+    plan.errors.push_back(manifestFile.string() + ":1:1: error: source directory '" + plan.root.string() +
+                          "' does not exist");
+    return plan;
+  }
+  auto pipelines = findPipelines(plan.root, outDir);
+
+  CliOptions defaults = base;
+  for (const auto& o : manifest.defaults) applyOptionWords(defaults, o.words);  // checked while loading
+
+  // Which passes use each pipeline, in manifest order.
+  std::map<std::string, std::vector<const ScenePass*>> users;
+  for (const auto& pass : manifest.passes)
+    for (const auto& [pattern, where] : pass.pipelines) {
+      int matched = 0;
+      for (const auto& [key, stages] : pipelines)
+        if (pipelineMatches(pattern, key)) {
+          auto& list = users[key];
+          if (std::find(list.begin(), list.end(), &pass) == list.end()) list.push_back(&pass);
+          ++matched;
+        }
+      if (!matched)
+        plan.errors.push_back(manifestFile.string() + ":" + std::to_string(where.line) + ":" +
+                              std::to_string(where.column) + ": error: pass '" + pass.name + "': '" + pattern +
+                              "' matches no pipeline under " + plan.root.string());
+    }
+  std::vector<std::string> unused;
+  for (const auto& [key, stages] : pipelines) {
+    auto it = users.find(key);
+    if (it == users.end()) {
+      unused.push_back(key);
+      continue;
+    }
+    bool variants = it->second.size() > 1;
+    for (const ScenePass* pass : it->second) {
+      CliOptions options = defaults;
+      for (const auto& o : pass->options) applyOptionWords(options, o.words);
+      addJob(plan, outDir, key, stages, options, pass->name, pass->mode, variants);
+    }
+  }
+  if (!unused.empty()) {
+    std::string list;
+    for (size_t i = 0; i < unused.size() && i < 5; ++i) list += (i ? ", " : "") + unused[i];
+    if (unused.size() > 5) list += ", ...";
+    plan.warnings.push_back(manifestFile.string() + ": warning: " + std::to_string(unused.size()) +
+                            " pipeline(s) used by no pass are not emitted: " + list);
+  }
+  return plan;
+}
+
+// ---- what a worker sends back -------------------------------------------------------------------
+
+struct JobResult {
+  int errors = 0;
+  std::string log;
+  nlohmann::json reports = nlohmann::json::array();
+  std::vector<std::string> outputs;  // per stage; only for stages whose report says ok
+  std::vector<std::string> dependencies;
+};
+
+void putString(std::string& out, const std::string& s) {
+  uint64_t size = s.size();
+  out.append(reinterpret_cast<const char*>(&size), sizeof size);
+  out += s;
+}
+
+bool getString(const std::string& in, size_t& at, std::string* s) {
+  uint64_t size;
+  if (in.size() - at < sizeof size) return false;
+  std::memcpy(&size, in.data() + at, sizeof size);
+  at += sizeof size;
+  if (in.size() - at < size) return false;
+  *s = in.substr(at, size);
+  at += size;
+  return true;
+}
+
+std::string serialize(const JobResult& r) {
+  nlohmann::json head = {{"errors", r.errors}, {"log", r.log}, {"reports", r.reports},
+                         {"dependencies", r.dependencies}, {"outputs", r.outputs.size()}};
+  std::string out;
+  putString(out, head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  for (const auto& o : r.outputs) putString(out, o);
+  return out;
+}
+
+bool deserialize(const std::string& in, JobResult* r) {
+  size_t at = 0;
+  std::string text;
+  if (!getString(in, at, &text)) return false;
+  nlohmann::json head = nlohmann::json::parse(text, nullptr, false);
+  if (head.is_discarded()) return false;
+  r->errors = head.value("errors", 1);
+  r->log = head.value("log", "");
+  r->reports = head.value("reports", nlohmann::json::array());
+  r->dependencies = head.value("dependencies", std::vector<std::string>{});
+  size_t count = head.value("outputs", size_t{0});
+  r->outputs.resize(count);
+  for (auto& o : r->outputs)
+    if (!getString(in, at, &o)) return false;
+  return true;
+}
+
+// Runs in a worker: converts one pipeline, keeping everything in memory.
+JobResult convertJob(const BuildJob& job) {
+  JobResult result;
+  std::ostringstream log;
+  std::vector<SourceFile> sources;
+  std::vector<std::string> paths;
+  for (const auto& p : job.stages) paths.push_back(p.string());
+  result.errors += readSources(paths, &sources, log);
+  if (!result.errors) {
+    std::vector<TranspileResult> converted = transpilePipeline(sources, job.options.t);
+    result.outputs.resize(converted.size());
+    for (size_t i = 0; i < converted.size(); ++i) {
+      auto& r = converted[i];
+      int diagnosticErrors = printDiagnostics(r.diagnostics, log);
+      if (!r.passLog.empty()) log << r.passLog;
+      for (const auto& inc : r.includedFiles) result.dependencies.push_back(inc);
+      r.report["ok"] = r.ok;
+      if (!job.pass.empty()) {
+        r.report["pass"] = job.pass;
+        r.report["mode"] = toString(job.mode);
+      }
+      if (r.ok) {
+        result.outputs[i] = std::move(r.output);
+        r.report["output_file"] = job.outputs[i].string();
+      } else {
+        result.errors += std::max(1, diagnosticErrors);
+      }
+      result.reports.push_back(std::move(r.report));
+    }
+  }
+  std::sort(result.dependencies.begin(), result.dependencies.end());
+  result.dependencies.erase(std::unique(result.dependencies.begin(), result.dependencies.end()), result.dependencies.end());
+  result.log = log.str();
+  return result;
+}
+
+// ---- the cache ------------------------------------------------------------------------------------
+
+struct Cache {
+  nlohmann::json jobs = nlohmann::json::object();  // id -> {key, dependencies, outputs{path: hash}, reports}
+};
+
+Cache loadCache(const fs::path& file, const std::string& tool) {
+  Cache cache;
+  std::string text;
+  if (!readFile(file.string(), &text)) return cache;
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || j.value("format", 0) != kCacheFormat || j.value("tool", "") != tool) return cache;
+  if (j.contains("jobs") && j["jobs"].is_object()) cache.jobs = j["jobs"];
+  return cache;
+}
+
+// The key of a job: this tool, its options, and the path and bytes of every input and dependency.
+// A file that cannot be read hashes as missing (its reappearance changes the key).
+std::string jobKey(const std::string& tool, const BuildJob& job, const std::vector<std::string>& dependencies) {
+  KeyHasher h;
+  h.add(tool);
+  h.add(job.fingerprint);
+  auto addFile = [&](const std::string& path) {
+    std::string bytes;
+    h.add(path);
+    h.add(readFile(path, &bytes) ? "=" + bytes : std::string("<missing>"));
+  };
+  for (const auto& s : job.stages) addFile(s.string());
+  for (const auto& o : job.outputs) h.add(o.string());
+  for (const auto& d : dependencies) addFile(d);
+  return h.digest();
+}
+
+// Whether the cached entry still describes the outputs on disk, byte for byte.
+bool outputsIntact(const nlohmann::json& entry) {
+  if (!entry.contains("outputs") || !entry["outputs"].is_object()) return false;
+  for (const auto& [path, hash] : entry["outputs"].items()) {
+    std::string bytes;
+    if (!readFile(path, &bytes) || hashBytes(bytes) != hash.get<std::string>()) return false;
+  }
+  return true;
+}
+
+// Writes `bytes` unless the file already holds them (an unchanged output keeps its timestamp, so a
+// build system downstream does not redo its work).
+bool writeIfChanged(const fs::path& path, const std::string& bytes, std::string* error) {
+  std::string existing;
+  if (readFile(path.string(), &existing) && existing == bytes) return true;
+  return writeAtomically(path, bytes, error);
+}
+
+void drawProgress(size_t done, size_t total, const std::string& what) {
+  constexpr int width = 24;
+  int filled = total ? static_cast<int>(width * done / total) : width;
+  std::string bar(static_cast<size_t>(filled), '=');
+  if (filled < width) bar += '>' + std::string(static_cast<size_t>(width - filled - 1), ' ');
+  std::cerr << "\r[" << bar << "] " << done << "/" << total << " " << what << "\x1b[K" << std::flush;
+}
+
+}  // namespace
+
+void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
+  build.add_option("source", o.source, "Source directory, or a scene manifest (.toml; see README \"Scene manifest\")")
+      ->required();
+  build.add_option("-o,--output", o.output, "Output directory (mirrors the source tree)")->required();
+  build.add_option("-j,--jobs", o.jobs, "Worker processes (default: one per core); the output does not depend on it");
+  build.add_option("--depfile", o.depfile, "Write the dependencies of the report (every input and included file) as a depfile");
+  build.add_flag("--no-cache", o.noCache, "Convert every shader, even those the incremental cache says are up to date");
+  build.add_option("--job-timeout", o.jobTimeoutSeconds, "Seconds one pipeline may take before it is stopped and reported (0: no limit)")
+      ->capture_default_str();
+}
+
+int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
+  std::error_code ec;
+  const fs::path outDir = build.output;
+  const bool manifestMode = fs::is_regular_file(build.source, ec);
+  if (!manifestMode && !fs::is_directory(build.source, ec)) {
+    std::cerr << build.source << ": error: no such directory or manifest\n";
+    printErrorSummary(1);
+    return 1;
+  }
+  Plan plan = manifestMode ? planManifest(build.source, outDir, base) : planDirectory(build.source, outDir, base);
+  for (const auto& w : plan.warnings) std::cerr << w << "\n";
+  if (!plan.errors.empty()) {
+    for (const auto& e : plan.errors) std::cerr << e << "\n";
+    printErrorSummary(static_cast<int>(plan.errors.size()));
+    return 1;
+  }
+  // Outputs go only under the output directory, and never onto an input.
+  std::set<fs::path> inputs;
+  for (const auto& job : plan.jobs)
+    for (const auto& s : job.stages) inputs.insert(fs::weakly_canonical(s, ec));
+  for (const auto& job : plan.jobs)
+    for (const auto& out : job.outputs)
+      if (!insideDirectory(out, outDir) || inputs.count(fs::weakly_canonical(out, ec))) {
+        std::cerr << out.string() << ": error: output would be outside the output directory or overwrite an input\n";
+        printErrorSummary(1);
+        return 1;
+      }
+
+  const std::string tool = toolIdentity();
+  const fs::path cacheFile = outDir / kCacheFile;
+  Cache previous = build.noCache ? Cache{} : loadCache(cacheFile, tool);
+  Cache next;
+
+  const size_t count = plan.jobs.size();
+  std::vector<JobResult> results(count);
+  std::vector<bool> upToDate(count, false);
+  std::vector<double> seconds(count, 0);
+  std::vector<size_t> toConvert;
+  for (size_t i = 0; i < count; ++i) {
+    const BuildJob& job = plan.jobs[i];
+    if (!convertsShaders(job.mode)) continue;  // copied in the parent below
+    auto entry = previous.jobs.find(job.id);
+    if (entry == previous.jobs.end()) {
+      toConvert.push_back(i);
+      continue;
+    }
+    std::vector<std::string> dependencies = entry->value("dependencies", std::vector<std::string>{});
+    if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry)) {
+      upToDate[i] = true;
+      results[i].dependencies = dependencies;
+      results[i].reports = entry->value("reports", nlohmann::json::array());
+      for (auto& r : results[i].reports) r["cached"] = true;
+      next.jobs[job.id] = *entry;
+    } else {
+      toConvert.push_back(i);
+    }
+  }
+
+  // Copy-through passes (mono, post, UI): the bytes of the source, no front end.
+  int errors = 0;
+  for (size_t i = 0; i < count; ++i) {
+    const BuildJob& job = plan.jobs[i];
+    if (convertsShaders(job.mode)) continue;
+    for (size_t k = 0; k < job.stages.size(); ++k) {
+      nlohmann::json report = {{"file", job.stages[k].string()}, {"pass", job.pass}, {"mode", toString(job.mode)},
+                               {"classification", std::string(toString(job.mode)) + "-pass"},
+                               {"output", "copied"}, {"changed", false}};
+      std::string bytes, error;
+      if (!readFile(job.stages[k].string(), &bytes)) {
+        results[i].log += job.stages[k].string() + ": error: cannot read file\n";
+        report["ok"] = false;
+        ++results[i].errors;
+      } else if (!writeIfChanged(job.outputs[k], bytes, &error)) {
+        results[i].log += job.outputs[k].string() + ": error: " + error + "\n";
+        report["ok"] = false;
+        ++results[i].errors;
+      } else {
+        report["ok"] = true;
+        report["output_file"] = job.outputs[k].string();
+      }
+      results[i].reports.push_back(report);
+    }
+  }
+
+  // Convert what is out of date in worker processes.
+  const bool tty = ::isatty(2);
+  size_t finished = 0;
+  auto record = [&](size_t slot, TaskOutcome&& outcome) {
+    size_t i = toConvert[slot];
+    const BuildJob& job = plan.jobs[i];
+    JobResult& result = results[i];
+    seconds[i] = outcome.seconds;
+    if (!outcome.completed || !deserialize(outcome.payload, &result)) {
+      std::string why = outcome.completed ? "sent back an unreadable result" : outcome.failure;
+      std::string stages;
+      for (const auto& s : job.stages) stages += (stages.empty() ? "" : ", ") + s.filename().string();
+      result = JobResult{};
+      result.errors = 1;
+      result.log = job.stages.front().string() + ": error: the conversion of pipeline '" + job.id + "' (" + stages +
+                   ") " + why + "; the other shaders are converted regardless\n";
+      for (const auto& s : job.stages)
+        result.reports.push_back({{"file", s.string()}, {"ok", false}, {"failure", why}, {"classification", "failed"}});
+    } else {
+      nlohmann::json outputs = nlohmann::json::object();
+      for (size_t k = 0; k < result.outputs.size() && k < job.outputs.size(); ++k) {
+        if (!result.reports[k].value("ok", false)) continue;
+        std::string error;
+        if (!writeIfChanged(job.outputs[k], result.outputs[k], &error)) {
+          result.log += job.outputs[k].string() + ": error: " + error + "\n";
+          result.reports[k]["ok"] = false;
+          ++result.errors;
+          continue;
+        }
+        outputs[job.outputs[k].string()] = hashBytes(result.outputs[k]);
+      }
+      for (auto& r : result.reports) {
+        r["cached"] = false;
+        r["timings_ms"]["pipeline_wall"] = outcome.seconds * 1000.0;
+      }
+      if (!result.errors) {
+        nlohmann::json stored = result.reports;
+        for (auto& r : stored) r.erase("cached");
+        next.jobs[job.id] = {{"key", jobKey(tool, job, result.dependencies)},
+                             {"dependencies", result.dependencies},
+                             {"outputs", outputs},
+                             {"reports", stored}};
+      }
+    }
+    ++finished;
+    if (tty) drawProgress(finished, toConvert.size(), job.id);
+  };
+  if (!toConvert.empty()) {
+    ensureGlslangInitialized();  // once, before forking: every worker inherits it
+    unsigned workers = build.jobs > 0 ? static_cast<unsigned>(build.jobs) : std::max(1u, std::thread::hardware_concurrency());
+    runIsolated(
+        toConvert.size(), workers, build.jobTimeoutSeconds,
+        [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]])); }, record);
+    if (tty) std::cerr << "\n";
+  }
+
+  // Outputs of pipelines that are gone from the source (or from the manifest): removed, but only
+  // files this tool wrote and nobody changed since.
+  int removed = 0;
+  for (const auto& [id, entry] : previous.jobs.items()) {
+    if (next.jobs.contains(id) || std::any_of(plan.jobs.begin(), plan.jobs.end(), [&](const BuildJob& j) { return j.id == id; }))
+      continue;
+    const nlohmann::json outputs = entry.value("outputs", nlohmann::json::object());
+    for (const auto& [path, hash] : outputs.items()) {
+      std::string bytes;
+      if (insideDirectory(path, outDir) && readFile(path, &bytes) && hashBytes(bytes) == hash.get<std::string>() &&
+          fs::remove(path, ec))
+        ++removed;
+    }
+  }
+
+  // Report, in path order.
+  nlohmann::json reports = nlohmann::json::array();
+  std::map<std::string, int> counts;
+  int converted = 0, cached = 0, copied = 0, failed = 0;
+  std::vector<std::string> dependencies;
+  for (const auto& d : plan.extraDependencies) dependencies.push_back(d.string());
+  for (size_t i = 0; i < count; ++i) {
+    std::cerr << results[i].log;
+    errors += results[i].errors;
+    for (const auto& s : plan.jobs[i].stages) dependencies.push_back(s.string());
+    dependencies.insert(dependencies.end(), results[i].dependencies.begin(), results[i].dependencies.end());
+    for (auto& r : results[i].reports) {
+      bool ok = r.value("ok", false);
+      counts[ok ? r.value("classification", "?") : "failed"]++;
+      if (!ok) ++failed;
+      else if (!convertsShaders(plan.jobs[i].mode)) ++copied;
+      else if (upToDate[i]) ++cached;
+      else ++converted;
+      reports.push_back(std::move(r));
+    }
+  }
+  nlohmann::json summary;
+  summary["tool"] = std::string("stereoshift ") + version();
+  summary["source"] = build.source;
+  summary["summary"] = {{"pipelines", count}, {"shaders", reports.size()}, {"converted", converted},
+                        {"up_to_date", cached}, {"copied_by_pass", copied}, {"failed", failed},
+                        {"removed_stale_outputs", removed}};
+  summary["classification_counts"] = counts;
+  summary["shaders"] = reports;
+  const std::string reportPath = base.reportPath.empty() ? (outDir / "stereoshift-report.json").string() : base.reportPath;
+  if (!writeReport(reportPath, summary)) ++errors;
+
+  nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", next.jobs}};
+  std::string error;
+  if (!writeAtomically(cacheFile, cacheJson.dump(1) + "\n", &error)) {
+    std::cerr << cacheFile.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
+  }
+  if (!build.depfile.empty() && !writeAtomically(build.depfile, makeDepfile({reportPath}, dependencies), &error)) {
+    std::cerr << build.depfile << ": error: " << error << "\n";
+    ++errors;
+  }
+
+  std::cerr << "stereoshift: " << reports.size() << " shaders from " << build.source << " into " << build.output
+            << ": " << converted << " converted, " << cached << " up to date";
+  if (copied) std::cerr << ", " << copied << " copied (mono/post/UI passes)";
+  if (failed) std::cerr << ", " << failed << " failed";
+  if (removed) std::cerr << ", " << removed << " stale outputs removed";
+  std::cerr << "\n";
+  printErrorSummary(errors);
+  return errors ? 1 : 0;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,247 @@
+#include "cli/worker_pool.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <vector>
+
+namespace stereoshift {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool writeAll(int fd, const void* data, size_t size) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    ssize_t n = ::write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= static_cast<size_t>(n);
+  }
+  return true;
+}
+
+bool readAll(int fd, void* data, size_t size) {
+  char* p = static_cast<char*>(data);
+  while (size > 0) {
+    ssize_t n = ::read(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= static_cast<size_t>(n);
+  }
+  return true;
+}
+
+std::string describeStatus(int status) {
+  if (WIFSIGNALED(status)) {
+    int sig = WTERMSIG(status);
+    const char* name = sigabbrev_np(sig);
+    return "crashed (signal " + std::to_string(sig) + (name ? std::string(", SIG") + name : std::string()) + ")";
+  }
+  if (WIFEXITED(status)) return "exited unexpectedly with status " + std::to_string(WEXITSTATUS(status));
+  return "stopped unexpectedly";
+}
+
+// The child's side: reads task indices, answers with a size-prefixed payload, until EOF.
+[[noreturn]] void workerLoop(int requests, int results, const std::function<std::string(size_t)>& task) {
+  uint64_t index;
+  while (readAll(requests, &index, sizeof index)) {
+    std::string payload = task(static_cast<size_t>(index));
+    uint64_t size = payload.size();
+    if (!writeAll(results, &size, sizeof size) || !writeAll(results, payload.data(), payload.size())) break;
+  }
+  ::_exit(0);  // no atexit handlers or static destructors: they belong to the parent
+}
+
+struct Worker {
+  pid_t pid = -1;
+  int requests = -1;  // parent writes task indices
+  int results = -1;   // parent reads payloads
+  bool busy = false;
+  size_t task = 0;
+  Clock::time_point started;
+  std::string buffer;  // size prefix + payload as it arrives
+};
+
+// `others`: the pool, whose parent-side pipe ends a new child must not keep open (a child holding
+// another worker's request pipe would stop that worker from ever seeing EOF).
+bool startWorker(Worker& w, const std::vector<Worker>& others, const std::function<std::string(size_t)>& task) {
+  int toChild[2], fromChild[2];
+  if (::pipe(toChild) != 0) return false;
+  if (::pipe(fromChild) != 0) {
+    ::close(toChild[0]);
+    ::close(toChild[1]);
+    return false;
+  }
+  pid_t pid = ::fork();
+  if (pid < 0) {
+    for (int fd : {toChild[0], toChild[1], fromChild[0], fromChild[1]}) ::close(fd);
+    return false;
+  }
+  if (pid == 0) {
+    ::close(toChild[1]);
+    ::close(fromChild[0]);
+    for (const auto& other : others)
+      if (&other != &w)
+        for (int fd : {other.requests, other.results})
+          if (fd >= 0) ::close(fd);
+    workerLoop(toChild[0], fromChild[1], task);
+  }
+  ::close(toChild[0]);
+  ::close(fromChild[1]);
+  w = Worker{};
+  w.pid = pid;
+  w.requests = toChild[1];
+  w.results = fromChild[0];
+  return true;
+}
+
+void stopWorker(Worker& w, bool kill) {
+  if (w.requests >= 0) ::close(w.requests);
+  if (w.results >= 0) ::close(w.results);
+  w.requests = w.results = -1;
+  if (w.pid > 0) {
+    if (kill) ::kill(w.pid, SIGKILL);
+    int status;
+    while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+  w.pid = -1;
+  w.busy = false;
+}
+
+// Reaps a worker that closed its pipe mid-task and says why it died.
+std::string reapDead(Worker& w) {
+  ::close(w.requests);
+  ::close(w.results);
+  w.requests = w.results = -1;
+  int status = 0;
+  while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  w.pid = -1;
+  w.busy = false;
+  return describeStatus(status);
+}
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+}  // namespace
+
+void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
+                 const std::function<std::string(size_t)>& task,
+                 const std::function<void(size_t, TaskOutcome&&)>& onDone) {
+  if (count == 0) return;
+  // A dead worker's request pipe must not kill the parent.
+  struct sigaction ignore {}, previous{};
+  ignore.sa_handler = SIG_IGN;
+  ::sigaction(SIGPIPE, &ignore, &previous);
+
+  std::deque<size_t> pending;
+  for (size_t i = 0; i < count; ++i) pending.push_back(i);
+  std::vector<Worker> pool(std::max(1u, std::min<unsigned>(workers, static_cast<unsigned>(count))));
+
+  auto fail = [&](size_t index, std::string why, double seconds) {
+    TaskOutcome outcome;
+    outcome.failure = std::move(why);
+    outcome.seconds = seconds;
+    onDone(index, std::move(outcome));
+  };
+  // Hands the next task to `w`, starting it first when needed; false when nothing is left.
+  auto dispatch = [&](Worker& w) {
+    while (!pending.empty()) {
+      if (w.pid < 0 && !startWorker(w, pool, task)) {
+        fail(pending.front(), std::string("cannot start a worker process: ") + std::strerror(errno), 0);
+        pending.pop_front();
+        continue;
+      }
+      size_t index = pending.front();
+      pending.pop_front();
+      uint64_t wire = index;
+      w.busy = true;
+      w.task = index;
+      w.started = Clock::now();
+      w.buffer.clear();
+      if (writeAll(w.requests, &wire, sizeof wire)) return true;
+      fail(index, reapDead(w), 0);  // died between tasks
+    }
+    return false;
+  };
+
+  for (auto& w : pool)
+    if (!dispatch(w)) break;
+
+  while (true) {
+    std::vector<pollfd> fds;
+    std::vector<Worker*> owners;
+    for (auto& w : pool)
+      if (w.busy) {
+        fds.push_back({w.results, POLLIN, 0});
+        owners.push_back(&w);
+      }
+    if (fds.empty()) break;
+    int waitMs = timeoutSeconds > 0 ? 100 : -1;
+    int ready = ::poll(fds.data(), fds.size(), waitMs);
+    if (ready < 0 && errno != EINTR) break;
+    for (size_t k = 0; k < fds.size(); ++k) {
+      Worker& w = *owners[k];
+      if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
+        char chunk[65536];
+        ssize_t n = ::read(w.results, chunk, sizeof chunk);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {  // EOF mid-task: the worker died
+          size_t index = w.task;
+          double seconds = secondsSince(w.started);
+          fail(index, reapDead(w), seconds);
+          dispatch(w);
+          continue;
+        }
+        w.buffer.append(chunk, static_cast<size_t>(n));
+        uint64_t size = 0;
+        if (w.buffer.size() >= sizeof size) {
+          std::memcpy(&size, w.buffer.data(), sizeof size);
+          if (w.buffer.size() - sizeof size >= size) {
+            TaskOutcome outcome;
+            outcome.completed = true;
+            outcome.payload = w.buffer.substr(sizeof size, size);
+            outcome.seconds = secondsSince(w.started);
+            size_t index = w.task;
+            w.busy = false;
+            w.buffer.clear();
+            onDone(index, std::move(outcome));
+            if (!dispatch(w)) stopWorker(w, false);
+          }
+        }
+      } else if (timeoutSeconds > 0 && secondsSince(w.started) > timeoutSeconds) {
+        size_t index = w.task;
+        double seconds = secondsSince(w.started);
+        stopWorker(w, true);
+        char text[64];
+        std::snprintf(text, sizeof text, "timed out after %.0f s", timeoutSeconds);
+        fail(index, text, seconds);
+        dispatch(w);
+      }
+    }
+  }
+  for (auto& w : pool)
+    if (w.pid > 0) stopWorker(w, false);
+  ::sigaction(SIGPIPE, &previous, nullptr);
+}
+
+TaskOutcome runIsolatedOnce(const std::function<std::string()>& task, double timeoutSeconds) {
+  TaskOutcome result;
+  runIsolated(1, 1, timeoutSeconds, [&](size_t) { return task(); },
+              [&](size_t, TaskOutcome&& outcome) { result = std::move(outcome); });
+  return result;
+}
+
+}  // namespace stereoshift

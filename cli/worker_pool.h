@@ -1,0 +1,31 @@
+// A pool of forked worker processes for tree conversion. Each task runs in a worker process, so a
+// task that crashes (glslang 12 overflows its stack on some inputs) or hangs costs only that task:
+// the pool reports it, starts a fresh worker and goes on. Workers are forked after the parent has
+// initialised glslang, so each one starts with the initialised library (copy-on-write) and keeps
+// its own symbol tables warm across tasks; separate processes also share no locks.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace stereoshift {
+
+struct TaskOutcome {
+  bool completed = false;  // the task returned; `payload` is what it returned
+  std::string payload;
+  std::string failure;     // otherwise why not: "crashed (signal 11, SIGSEGV)", "timed out after 300 s"
+  double seconds = 0;      // wall time of the task
+};
+
+// Runs task(i) for every i in [0, count) on up to `workers` processes. `onDone` is called in the
+// parent, once per task, in completion order. `timeoutSeconds` <= 0 means no limit. The parent must
+// be single-threaded when this is called (it forks).
+void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
+                 const std::function<std::string(size_t)>& task,
+                 const std::function<void(size_t, TaskOutcome&&)>& onDone);
+
+// Runs one task in a forked child and waits for it: the same isolation for a single conversion.
+TaskOutcome runIsolatedOnce(const std::function<std::string()>& task, double timeoutSeconds);
+
+}  // namespace stereoshift

@@ -1,0 +1,228 @@
+# StereoshiftShaders.cmake: converts shaders to stereo as build steps.
+#
+#   stereoshift_add_shaders(<target>
+#     SOURCES <shader>...            | MANIFEST <scene.toml>
+#     OUTPUT_DIR <dir>
+#     [BASE_DIR <dir>]                 (default: CMAKE_CURRENT_SOURCE_DIR)
+#     [INCLUDE_DIRS <dir>...]          (-I)
+#     [DEFINES <NAME[=VALUE]>...]      (-D)
+#     [TARGET_LANGUAGE glsl|essl|hlsl|msl|spirv|spirv-asm]
+#     [OPTIONS <stereoshift option>...]
+#     [OUTPUTS_VAR <variable>])
+#
+# SOURCES: stages that share a directory and a base name (lit.vert + lit.frag, water.vert.hlsl +
+# water.frag.hlsl) form one pipeline, converted by one `stereoshift --pipeline` command, because only
+# the pipeline's last pre-rasterization stage is shifted and the eye-parameter binding is chosen for
+# the whole pipeline; a lone shader is a pipeline of one. Each output keeps its source's file name
+# and its path relative to BASE_DIR, under OUTPUT_DIR. Every command writes a depfile (the stages and
+# every #included file), so an edit to a header reruns exactly the pipelines that include it.
+#
+# MANIFEST: one `stereoshift build <manifest>` command (incremental on its own, with a content-hash
+# cache in OUTPUT_DIR) whose declared output is OUTPUT_DIR/stereoshift-report.json.
+#
+# <target> is an ALL custom target that depends on the outputs. The absolute output paths are in
+# <target>'s STEREOSHIFT_OUTPUTS property and, with OUTPUTS_VAR, in that variable of the caller;
+# STEREOSHIFT_OUTPUT_DIR holds the absolute OUTPUT_DIR. Relative paths: SOURCES, BASE_DIR,
+# INCLUDE_DIRS and MANIFEST against CMAKE_CURRENT_SOURCE_DIR, OUTPUT_DIR against
+# CMAKE_CURRENT_BINARY_DIR (as add_custom_command's OUTPUT).
+
+# DEPFILE with the Makefile generators and cmake_path() need 3.20.
+if(CMAKE_VERSION VERSION_LESS 3.20)
+  message(FATAL_ERROR "stereoshift_add_shaders needs CMake 3.20 or newer (this is ${CMAKE_VERSION})")
+endif()
+include_guard(GLOBAL)
+
+# CMP0116 NEW: the Ninja generators pass each depfile through `cmake -E cmake_transform_depfile`,
+# which rewrites its paths to the ones build.ninja uses. Under OLD, Ninja reads the depfile as it is:
+# stereoshift's absolute target paths ("/build/stereo/lit.vert") then never match the relative output
+# names ("stereo/lit.vert"), and Ninja reruns every step on every build. A function runs with the
+# policy settings of the place it is defined, so setting NEW here holds whatever the caller's
+# cmake_minimum_required() says (the Makefile generators read absolute paths alike either way).
+cmake_policy(PUSH)
+cmake_policy(SET CMP0116 NEW)
+
+function(stereoshift_add_shaders target)
+  # (Inside the function: the module is included once, and variables would not reach other directories.)
+  set(target_languages glsl essl hlsl msl spirv spirv-asm)
+  # Options the function decides itself: a caller's copy would name other outputs than the declared ones.
+  set(reserved_options -o --output --depfile --pipeline --report)
+  cmake_parse_arguments(PARSE_ARGV 1 arg
+    ""
+    "OUTPUT_DIR;BASE_DIR;MANIFEST;TARGET_LANGUAGE;OUTPUTS_VAR"
+    "SOURCES;INCLUDE_DIRS;DEFINES;OPTIONS")
+
+  # --- argument checks --------------------------------------------------------------------------
+  set(usage "stereoshift_add_shaders(<target> SOURCES <shader>... | MANIFEST <file> OUTPUT_DIR <dir> ...)")
+  if(arg_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): unknown arguments: ${arg_UNPARSED_ARGUMENTS}\n  usage: ${usage}")
+  endif()
+  # An empty list after a multi-value keyword (DEFINES ${none}) is fine; a one-value keyword needs its value.
+  foreach(keyword IN LISTS arg_KEYWORDS_MISSING_VALUES)
+    if(keyword MATCHES "^(OUTPUT_DIR|BASE_DIR|MANIFEST|TARGET_LANGUAGE|OUTPUTS_VAR)$")
+      message(FATAL_ERROR "stereoshift_add_shaders(${target}): ${keyword} needs a value")
+    endif()
+  endforeach()
+  if(TARGET "${target}")
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): a target named '${target}' already exists")
+  endif()
+  if(NOT TARGET stereoshift::stereoshift)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): the stereoshift::stereoshift executable target is not defined; call find_package(stereoshift REQUIRED) first")
+  endif()
+  if(NOT DEFINED arg_OUTPUT_DIR)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): OUTPUT_DIR is required\n  usage: ${usage}")
+  endif()
+  if(arg_SOURCES AND DEFINED arg_MANIFEST)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): give SOURCES or MANIFEST, not both (a manifest lists its own shaders)")
+  endif()
+  if(DEFINED arg_MANIFEST AND DEFINED arg_BASE_DIR)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): BASE_DIR applies to SOURCES only (a manifest's `source` sets its root)")
+  endif()
+  if(NOT arg_SOURCES AND NOT DEFINED arg_MANIFEST)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): no shaders: give SOURCES <shader>... or MANIFEST <file>\n  usage: ${usage}")
+  endif()
+  if(DEFINED arg_TARGET_LANGUAGE AND NOT arg_TARGET_LANGUAGE IN_LIST target_languages)
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): TARGET_LANGUAGE '${arg_TARGET_LANGUAGE}' is not one of: ${target_languages}")
+  endif()
+  foreach(option IN LISTS arg_OPTIONS)
+    string(REGEX REPLACE "=.*" "" option_name "${option}")
+    if(option_name IN_LIST reserved_options)
+      message(FATAL_ERROR "stereoshift_add_shaders(${target}): OPTIONS may not contain '${option_name}': the function sets the outputs, depfiles and pipelines itself")
+    endif()
+  endforeach()
+
+  cmake_path(ABSOLUTE_PATH arg_OUTPUT_DIR BASE_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}" NORMALIZE OUTPUT_VARIABLE output_dir)
+  string(REGEX REPLACE "(.)/+$" "\\1" output_dir "${output_dir}")  # "out/" -> "out": outputs are "out/x"
+
+  # --- the conversion options every command shares ----------------------------------------------
+  set(conversion_args "")
+  foreach(dir IN LISTS arg_INCLUDE_DIRS)
+    cmake_path(ABSOLUTE_PATH dir BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE OUTPUT_VARIABLE dir)
+    list(APPEND conversion_args "-I" "${dir}")
+  endforeach()
+  foreach(definition IN LISTS arg_DEFINES)
+    string(REGEX REPLACE "^-D" "" definition "${definition}")
+    list(APPEND conversion_args "-D${definition}")
+  endforeach()
+  if(DEFINED arg_TARGET_LANGUAGE)
+    list(APPEND conversion_args "--target" "${arg_TARGET_LANGUAGE}")
+  endif()
+  list(APPEND conversion_args ${arg_OPTIONS})
+
+  set(depfile_dir "${CMAKE_CURRENT_BINARY_DIR}/stereoshift_deps/${target}")
+  set(all_outputs "")
+
+  if(DEFINED arg_MANIFEST)
+    # --- MANIFEST: one incremental `stereoshift build`; the report stands for all its outputs -----
+    cmake_path(ABSOLUTE_PATH arg_MANIFEST BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE OUTPUT_VARIABLE manifest)
+    if(NOT EXISTS "${manifest}" OR IS_DIRECTORY "${manifest}")
+      message(FATAL_ERROR "stereoshift_add_shaders(${target}): MANIFEST '${manifest}' is not a file")
+    endif()
+    set(report "${output_dir}/stereoshift-report.json")
+    set(depfile "${depfile_dir}/stereoshift-report.json.d")
+    add_custom_command(
+      OUTPUT "${report}"
+      COMMAND stereoshift::stereoshift build ${conversion_args} "${manifest}" -o "${output_dir}" --depfile "${depfile}"
+      # Whether `build` rewrites a report whose content did not change is its own business; the
+      # touch keeps the declared output newer than the inputs that triggered this run, else make
+      # and Ninja would rerun the step on every build.
+      COMMAND "${CMAKE_COMMAND}" -E touch "${report}"
+      DEPENDS "${manifest}" stereoshift::stereoshift
+      DEPFILE "${depfile}"
+      COMMENT "stereoshift: ${target}: converting the shaders of ${arg_MANIFEST}"
+      VERBATIM)
+    list(APPEND all_outputs "${report}")
+  else()
+    # --- SOURCES: group the stages into pipelines -------------------------------------------------
+    if(DEFINED arg_BASE_DIR)
+      cmake_path(ABSOLUTE_PATH arg_BASE_DIR BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE OUTPUT_VARIABLE base_dir)
+    else()
+      set(base_dir "${CMAKE_CURRENT_SOURCE_DIR}")
+    endif()
+    set(sources "")
+    foreach(source IN LISTS arg_SOURCES)
+      cmake_path(ABSOLUTE_PATH source BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE OUTPUT_VARIABLE source)
+      get_source_file_property(generated "${source}" GENERATED)
+      if(NOT EXISTS "${source}" AND NOT generated)
+        message(FATAL_ERROR "stereoshift_add_shaders(${target}): source '${source}' does not exist")
+      endif()
+      cmake_path(IS_PREFIX base_dir "${source}" NORMALIZE inside_base_dir)
+      if(NOT inside_base_dir)
+        message(FATAL_ERROR "stereoshift_add_shaders(${target}): source '${source}' is not inside BASE_DIR '${base_dir}'; outputs mirror the sources' paths relative to BASE_DIR")
+      endif()
+      if(source MATCHES ",")
+        message(FATAL_ERROR "stereoshift_add_shaders(${target}): source '${source}' contains a comma, which `stereoshift --pipeline` uses as its separator")
+      endif()
+      list(APPEND sources "${source}")
+    endforeach()
+    list(REMOVE_DUPLICATES sources)
+    # Sorted, so the command lines do not depend on the order the caller listed the stages in.
+    list(SORT sources)
+
+    # The pipeline key is the CLI's own: the directory plus the file name up to its first dot.
+    set(pipeline_keys "")
+    foreach(source IN LISTS sources)
+      get_filename_component(source_dir "${source}" DIRECTORY)
+      get_filename_component(base_name "${source}" NAME_WE)
+      list(APPEND pipeline_keys "${source_dir}/${base_name}")
+    endforeach()
+    list(REMOVE_DUPLICATES pipeline_keys)
+
+    foreach(key IN LISTS pipeline_keys)
+      set(stages "")
+      set(stage_names "")
+      foreach(source IN LISTS sources)
+        get_filename_component(source_dir "${source}" DIRECTORY)
+        get_filename_component(base_name "${source}" NAME_WE)
+        if("${source_dir}/${base_name}" STREQUAL key)
+          list(APPEND stages "${source}")
+          get_filename_component(extensions "${source}" EXT)
+          string(REGEX REPLACE "^\\.([^.]*).*" "\\1" stage_name "${extensions}")
+          list(APPEND stage_names "${stage_name}")
+        endif()
+      endforeach()
+
+      file(RELATIVE_PATH relative_key "${base_dir}" "${key}")
+      get_filename_component(source_dir "${key}" DIRECTORY)
+      file(RELATIVE_PATH relative_dir "${base_dir}" "${source_dir}")
+      if(relative_dir STREQUAL "")
+        set(stage_output_dir "${output_dir}")
+      else()
+        set(stage_output_dir "${output_dir}/${relative_dir}")
+      endif()
+      set(outputs "")
+      foreach(stage IN LISTS stages)
+        get_filename_component(file_name "${stage}" NAME)
+        list(APPEND outputs "${stage_output_dir}/${file_name}")
+      endforeach()
+      set(depfile "${depfile_dir}/${relative_key}.d")
+
+      list(LENGTH stages stage_count)
+      if(stage_count EQUAL 1)
+        # A single shader names its output itself, whatever file name the CLI would pick for it.
+        set(io_args "${stages}" -o "${outputs}")
+      else()
+        list(JOIN stages "," stage_list)
+        set(io_args --pipeline "${stage_list}" -o "${stage_output_dir}")
+      endif()
+      list(JOIN stage_names ", " stage_names)
+      add_custom_command(
+        OUTPUT ${outputs}
+        COMMAND stereoshift::stereoshift ${conversion_args} ${io_args} --depfile "${depfile}"
+        DEPENDS ${stages} stereoshift::stereoshift
+        DEPFILE "${depfile}"
+        COMMENT "stereoshift: ${target}: ${relative_key} (${stage_names})"
+        VERBATIM)
+      list(APPEND all_outputs ${outputs})
+    endforeach()
+  endif()
+
+  add_custom_target("${target}" ALL DEPENDS ${all_outputs})
+  set_target_properties("${target}" PROPERTIES
+    STEREOSHIFT_OUTPUTS "${all_outputs}"
+    STEREOSHIFT_OUTPUT_DIR "${output_dir}")
+  if(DEFINED arg_OUTPUTS_VAR)
+    set(${arg_OUTPUTS_VAR} "${all_outputs}" PARENT_SCOPE)
+  endif()
+endfunction()
+
+cmake_policy(POP)
