@@ -413,6 +413,19 @@ bool writeIfChanged(const fs::path& path, const std::string& bytes, std::string*
   return writeAtomically(path, bytes, error);
 }
 
+// The dialect of a shader, for scheduling: HLSL, SPIR-V, or the GLSL `#version` line. Shaders of
+// one dialect share glslang's built-in symbol tables inside a worker.
+std::string dialectOf(const fs::path& path) {
+  std::string name = path.filename().string();
+  if (name.size() > 5 && name.ends_with(".hlsl")) return "hlsl";
+  if (name.size() > 4 && name.ends_with(".spv")) return "spirv";
+  std::string text;
+  if (!readFile(path.string(), &text)) return "";
+  size_t at = text.find("#version");
+  if (at == std::string::npos) return "glsl";
+  return text.substr(at, text.find('\n', at) - at);
+}
+
 void drawProgress(size_t done, size_t total, const std::string& what) {
   constexpr int width = 24;
   int filled = total ? static_cast<int>(width * done / total) : width;
@@ -568,9 +581,11 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   if (!toConvert.empty()) {
     ensureGlslangInitialized();  // once, before forking: every worker inherits it
     unsigned workers = build.jobs > 0 ? static_cast<unsigned>(build.jobs) : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::string> affinity;
+    for (size_t i : toConvert) affinity.push_back(dialectOf(plan.jobs[i].stages.front()));
     runIsolated(
         toConvert.size(), workers, build.jobTimeoutSeconds,
-        [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]])); }, record);
+        [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]])); }, record, affinity);
     if (tty) std::cerr << "\n";
   }
 
@@ -623,7 +638,8 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
 
   nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", next.jobs}};
   std::string error;
-  if (!writeAtomically(cacheFile, cacheJson.dump(1) + "\n", &error)) {
+  bool cacheUnchanged = !build.noCache && next.jobs == previous.jobs && fs::exists(cacheFile, ec);
+  if (!cacheUnchanged && !writeAtomically(cacheFile, cacheJson.dump(1) + "\n", &error)) {
     std::cerr << cacheFile.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
   }
   if (!build.depfile.empty() && !writeAtomically(build.depfile, makeDepfile({reportPath}, dependencies), &error)) {

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -71,6 +72,7 @@ struct Worker {
   size_t task = 0;
   Clock::time_point started;
   std::string buffer;  // size prefix + payload as it arrives
+  std::string group;   // affinity of its last task
 };
 
 // `others`: the pool, whose parent-side pipe ends a new child must not keep open (a child holding
@@ -139,7 +141,8 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 
 void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
                  const std::function<std::string(size_t)>& task,
-                 const std::function<void(size_t, TaskOutcome&&)>& onDone) {
+                 const std::function<void(size_t, TaskOutcome&&)>& onDone,
+                 const std::vector<std::string>& affinity) {
   if (count == 0) return;
   // A dead worker's request pipe must not kill the parent.
   struct sigaction ignore {}, previous{};
@@ -156,6 +159,18 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
     outcome.seconds = seconds;
     onDone(index, std::move(outcome));
   };
+  // Which pending task `w` should take next: one of its own group, else the first of a group no
+  // worker has worked on, else the first pending one.
+  std::vector<std::string> groupsStarted;
+  auto choose = [&](const Worker& w) -> std::deque<size_t>::iterator {
+    if (affinity.size() != count) return pending.begin();
+    auto same = std::find_if(pending.begin(), pending.end(), [&](size_t i) { return affinity[i] == w.group; });
+    if (same != pending.end()) return same;
+    auto fresh = std::find_if(pending.begin(), pending.end(), [&](size_t i) {
+      return std::find(groupsStarted.begin(), groupsStarted.end(), affinity[i]) == groupsStarted.end();
+    });
+    return fresh != pending.end() ? fresh : pending.begin();
+  };
   // Hands the next task to `w`, starting it first when needed; false when nothing is left.
   auto dispatch = [&](Worker& w) {
     while (!pending.empty()) {
@@ -164,8 +179,14 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
         pending.pop_front();
         continue;
       }
-      size_t index = pending.front();
-      pending.pop_front();
+      auto next = choose(w);
+      size_t index = *next;
+      pending.erase(next);
+      if (affinity.size() == count) {
+        w.group = affinity[index];
+        if (std::find(groupsStarted.begin(), groupsStarted.end(), w.group) == groupsStarted.end())
+          groupsStarted.push_back(w.group);
+      }
       uint64_t wire = index;
       w.busy = true;
       w.task = index;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace stereoshift {
 
@@ -21,9 +22,15 @@ struct TaskOutcome {
 // Runs task(i) for every i in [0, count) on up to `workers` processes. `onDone` is called in the
 // parent, once per task, in completion order. `timeoutSeconds` <= 0 means no limit. The parent must
 // be single-threaded when this is called (it forks).
+//
+// `affinity` (optional, one key per task) groups tasks that share an expensive per-process set-up
+// (glslang builds its built-in symbol tables once per dialect and stage, per process): a worker
+// keeps taking tasks of its last group, and a free worker starts a group no other worker has
+// touched, so each set-up happens in as few workers as possible.
 void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
                  const std::function<std::string(size_t)>& task,
-                 const std::function<void(size_t, TaskOutcome&&)>& onDone);
+                 const std::function<void(size_t, TaskOutcome&&)>& onDone,
+                 const std::vector<std::string>& affinity = {});
 
 // Runs one task in a forked child and waits for it: the same isolation for a single conversion.
 TaskOutcome runIsolatedOnce(const std::function<std::string()>& task, double timeoutSeconds);
