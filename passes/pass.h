@@ -3,6 +3,7 @@
 // by exactly the same instruction sequence, bit for bit).
 #pragma once
 
+#include "passes/per_eye_view_pass.h"
 #include "transpiler/front_end.h"
 #include "transpiler/spirv_module.h"
 
@@ -85,6 +86,9 @@ struct PassContext {
   // See foldedCopy().
   std::optional<spirv::Module> folded;
   bool foldTried = false;
+  // Set by transpilePipeline() for the last pre-rasterization stage: how the fragment stage uses
+  // each of its inputs (per-eye-view decides per output from it). Null in single-shader mode.
+  const NextStageFacts* nextStage = nullptr;
 };
 
 class Pass {

@@ -201,7 +201,12 @@ std::string defaultOutputExtension(const SourceFile& input, const TranspileOptio
   return dot == std::string::npos ? std::string() : input.path.substr(dot);
 }
 
-TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
+namespace {
+
+// One shader; `nextStage` (pipelines only) tells per-eye-view how the fragment stage uses the
+// outputs of the last pre-rasterization stage.
+TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& options,
+                               const NextStageFacts* nextStage) {
   auto started = std::chrono::steady_clock::now();
   TranspileResult result;
   Diagnostics& diags = result.diagnostics;
@@ -264,6 +269,7 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
   // ---- passes ----
   auto passesStarted = std::chrono::steady_clock::now();
   PassContext ctx{module, options, info, diags, file, result.report};
+  ctx.nextStage = nextStage;
   bool changed = false;
   if (!runPassPipeline(ctx, &changed, &result.passLog)) return result;
   result.changed = changed;
@@ -367,6 +373,32 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
   return result;
 }
 
+// How the fragment stage of a pipeline uses its inputs (for per-eye-view): analysed before the
+// last pre-rasterization stage is converted. Null when there is no fragment stage to read.
+std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& stages, const TranspileOptions& options) {
+  if (!options.perEyeView) return std::nullopt;
+  for (const auto& stage : stages) {
+    auto kind = options.stage ? options.stage : stageFromPath(stage.path);
+    if (kind != Stage::Fragment) continue;
+    Diagnostics ignored;  // the fragment stage reports its own errors when it is converted
+    FrontEndResult front = compileToSpirv(stage, options, ignored);
+    if (!front.ok) return std::nullopt;
+    std::string error;
+    auto module = spirv::Module::parse(front.spirv, &error);
+    if (!module) return std::nullopt;
+    nlohmann::json scratch;
+    PassContext ctx{*module, options, front.info, ignored, stage.path, scratch};
+    return analyseStageInputs(ctx);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
+  return transpileStage(input, options, nullptr);
+}
+
 std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages, const TranspileOptions& options) {
   // The last pre-rasterization stage (vertex, tessellation evaluation, geometry or mesh) gets the shift.
   auto rank = [](Stage s) {
@@ -408,11 +440,13 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       else pipelineOptions.eye.binding = *highest + 1;
     }
   }
+  std::optional<NextStageFacts> fragmentFacts = fragmentStageFacts(stages, options);
   std::vector<TranspileResult> results;
   for (size_t i = 0; i < stages.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
-    results.push_back(transpile(stages[i], stageOptions));
+    const NextStageFacts* facts = static_cast<int>(i) == last && fragmentFacts ? &*fragmentFacts : nullptr;
+    results.push_back(transpileStage(stages[i], stageOptions, facts));
   }
   return results;
 }

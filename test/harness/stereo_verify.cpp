@@ -367,6 +367,10 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     std::vector<std::string> halo;
     for (const auto& n : result.report["passes"]["halo"].value("shifted_outputs", nlohmann::json::array()))
       halo.push_back(n.get<std::string>());
+    // Outputs computed from the per-eye camera (per-eye-view: relief view vectors) differ between
+    // the eyes by design, like re-derived halo outputs; eyeSign = 0 still has to be bit for bit.
+    for (const auto& n : result.report["passes"]["per-eye-view"].value("per_eye_outputs", nlohmann::json::array()))
+      halo.push_back(n.get<std::string>());
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
                        original->entryPointName(), std::move(halo)});
   }

@@ -25,7 +25,7 @@ void main()
     vec3 t = normalize(mat3(uModel[0].xyz, uModel[1].xyz, uModel[2].xyz) * aTangent.xyz);
     vec3 b = cross(n, t) * aTangent.w;
     mat3 worldToTangent = transpose(mat3(vec3(t), vec3(b), vec3(n)));
-    vViewTS = worldToTangent * (uCameraPos - world.xyz);
+    vViewTS = worldToTangent * ((uCameraPos + (inverse(uViewProj) * vec4((eyeSign * separation) * convergence, 0.0, 0.0, 0.0)).xyz) - world.xyz);
     vLightTS = worldToTangent * (uLightPos - world.xyz);
     vTexCoord = aTexCoord;
     vec4 _118 = uViewProj * world;

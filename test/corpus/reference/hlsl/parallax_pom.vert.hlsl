@@ -80,7 +80,7 @@ VSOutput _main(VSInput _input)
     VSOutput _output;
     _output.Position = mul(ViewProj, world);
     _output.UV = _input.UV;
-    _output.ViewTS = mul(toTangent, CameraPosition - world.xyz);
+    _output.ViewTS = mul(toTangent, (CameraPosition + mul(InvViewProj, float4((eyeSign * separation) * convergence, 0.0f, 0.0f, 0.0f)).xyz) - world.xyz);
     _output.NormalWS = n;
     return _output;
 }

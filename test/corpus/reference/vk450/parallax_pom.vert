@@ -51,7 +51,7 @@ void main()
     mat3 worldToTangent = buildWorldToTangent(param, param_1, param_2);
     outUV = inUV;
     outWorldPos = world.xyz;
-    outViewTS = worldToTangent * (camera.cameraPosition.xyz - world.xyz);
+    outViewTS = worldToTangent * ((camera.cameraPosition + vec4((camera.invViewProj * vec4((stereo.eyeSign * stereo.separation) * stereo.convergence, 0.0, 0.0, 0.0)).xyz, 0.0)).xyz - world.xyz);
     outWorldToTangent = worldToTangent;
     vec4 _144 = camera.viewProj * world;
     gl_Position = _144;

@@ -1,0 +1,214 @@
+// stereoshift runtime helper: the per-eye values an application feeds to shaders that stereoshift
+// converted. Header-only, C++17, no dependencies beyond the standard library.
+//
+// The maths is STEREO.md sections 1 and 3 and NVIDIA's "stereo fundamentals" GDC talk:
+//   e = eye sign (-1 left, +1 right, 0 mono), S = separation (interaxial / virtual screen width,
+//   user scale applied), C = convergence (eye-space depth of the zero-parallax plane).
+//   - the converted vertex shaders shift the clip position: x' = x + e*S*(w - C), the same as
+//     rendering with the stereo projection matrix (stereoProjectionGL / stereoProjectionD3D);
+//   - view vectors (relief / parallax mapping) need the eye centre C_eye = C_mono + offset with
+//     offset = InvVP * (e*S*C, 0, 0, 0) = e*S*C/P00 along the camera's right axis
+//     (eyeOffsetFromInverseView / eyeOffsetFromInverseViewProjection).
+//
+// Matrix storage: `Mat4` is 16 scalars, element (row r, column c) of the column-vector matrix
+// (clip = P * v) at index 4*c + r: what glUniformMatrix4fv(..., GL_FALSE, ...) and a std140 / GLSL
+// `mat4` expect. A D3D row-vector matrix (clip = v * M, M = P^T) stored row-major is the very same
+// 16 scalars, so D3D code can pass its matrices as they are; the *D3D functions take them in that
+// reading and exist so call sites say which convention they mean.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace stereoshift::runtime {
+
+// The injected eye parameters, member i at byte offset 4*i (std140 / cbuffer packing of 7 floats).
+// A shader declares a prefix: the shift needs the first three, HUD-at-depth four, per-eye view
+// vectors without a matrix to derive them from all seven. Upload this struct to the `StereoParams`
+// block (or set the loose uniforms / specialization constants of the same names).
+struct StereoParams {
+  float eyeSign = 0.0f;      // -1 left, +1 right, 0 mono (the converted shaders are then the originals)
+  float separation = 0.0f;   // interaxial / virtual screen width, user scale applied
+  float convergence = 1.0f;  // eye-space depth of the zero-parallax plane
+  float hudDepth = 1.0f;     // eye depth at which a 2D element is placed (--hud-at-depth)
+  float eyeOffsetX = 0.0f;   // world-space offset of this eye's centre from the mono camera
+  float eyeOffsetY = 0.0f;
+  float eyeOffsetZ = 0.0f;
+};
+static_assert(sizeof(StereoParams) == 7 * sizeof(float), "StereoParams must be 7 tightly packed floats");
+
+template <class T>
+using Mat4 = std::array<T, 16>;
+template <class T>
+using Vec3 = std::array<T, 3>;
+template <class T>
+using Vec4 = std::array<T, 4>;
+
+// ---- small matrix helpers (for applications without a maths library, and the tests) ---------------
+
+template <class T>
+constexpr T element(const Mat4<T>& m, int row, int column) {
+  return m[4 * column + row];
+}
+
+template <class T>
+Mat4<T> multiply(const Mat4<T>& a, const Mat4<T>& b) {  // a * b, column vectors
+  Mat4<T> out{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      T sum = 0;
+      for (int k = 0; k < 4; ++k) sum += a[4 * k + r] * b[4 * c + k];
+      out[4 * c + r] = sum;
+    }
+  return out;
+}
+
+template <class T>
+Vec4<T> transform(const Mat4<T>& m, const Vec4<T>& v) {  // m * v
+  Vec4<T> out{};
+  for (int r = 0; r < 4; ++r) out[r] = m[r] * v[0] + m[4 + r] * v[1] + m[8 + r] * v[2] + m[12 + r] * v[3];
+  return out;
+}
+
+// General inverse by Gauss-Jordan elimination with partial pivoting. A singular matrix gives
+// non-finite elements.
+template <class T>
+Mat4<T> inverse(const Mat4<T>& m) {
+  T a[4][8];
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      a[r][c] = m[4 * c + r];
+      a[r][c + 4] = r == c ? T(1) : T(0);
+    }
+  for (int col = 0; col < 4; ++col) {
+    int pivot = col;
+    for (int r = col + 1; r < 4; ++r)
+      if (std::fabs(a[r][col]) > std::fabs(a[pivot][col])) pivot = r;
+    for (int c = 0; c < 8; ++c) std::swap(a[col][c], a[pivot][c]);
+    T scale = T(1) / a[col][col];
+    for (int c = 0; c < 8; ++c) a[col][c] *= scale;
+    for (int r = 0; r < 4; ++r) {
+      if (r == col) continue;
+      T factor = a[r][col];
+      for (int c = 0; c < 8; ++c) a[r][c] -= factor * a[col][c];
+    }
+  }
+  Mat4<T> out{};
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) out[4 * c + r] = a[r][c + 4];
+  return out;
+}
+
+// ---- the stereo projection (STEREO.md section 1) ---------------------------------------------------
+
+// The projection whose clip x is the shifted one, x' = x + e*S*(w - C), for every point:
+//   row 0  +=  e*S * row 3      (w is row 3: -z in GL, +z in a left-handed D3D projection)
+//   P[0][3] -= e*S*C
+// For the usual GL perspective (row 3 = [0, 0, -1, 0]) row 0 becomes [p00, 0, p02 - e*S, -e*S*C].
+template <class T>
+Mat4<T> stereoProjectionGL(Mat4<T> projection, T eyeSign, T separation, T convergence) {
+  const T shift = eyeSign * separation;
+  for (int c = 0; c < 4; ++c) projection[4 * c + 0] += shift * projection[4 * c + 3];
+  projection[12] -= shift * convergence;
+  return projection;
+}
+
+// The same for a D3D row-vector matrix M (clip = v * M) stored row-major, element (r, c) at 4*r + c:
+// column 0 += e*S * column 3, M[3][0] -= e*S*C. (The same 16 scalars change as in the GL function:
+// M is P transposed.) For a left-handed perspective (column 3 = [0, 0, 1, 0]) M[2][0] becomes
+// m20 + e*S.
+template <class T>
+Mat4<T> stereoProjectionD3D(Mat4<T> rowVectorMatrix, T eyeSign, T separation, T convergence) {
+  const T shift = eyeSign * separation;
+  for (int r = 0; r < 4; ++r) rowVectorMatrix[4 * r + 0] += shift * rowVectorMatrix[4 * r + 3];
+  rowVectorMatrix[4 * 3 + 0] -= shift * convergence;
+  return rowVectorMatrix;
+}
+
+// ---- the per-eye camera centre (STEREO.md section 3) -----------------------------------------------
+
+// World-space offset of this eye's centre from the mono camera, from the inverse view matrix and
+// P00 (the projection's horizontal scale, element (0, 0)): InvView * (e*S*C / P00, 0, 0, 0), i.e.
+// e*S*C/P00 along the camera's right axis. This is what the eyeOffsetX/Y/Z parameters hold.
+// D3D: pass the row-major inverse view of the row-vector convention as it is (same scalars).
+template <class T>
+Vec3<T> eyeOffsetFromInverseView(const Mat4<T>& inverseView, T p00, T eyeSign, T separation, T convergence) {
+  const T along = eyeSign * separation * convergence / p00;
+  return {inverseView[0] * along, inverseView[1] * along, inverseView[2] * along};
+}
+
+// The same from the inverse view-projection: InvVP * (e*S*C, 0, 0, 0) (a direction: w is 0).
+template <class T>
+Vec3<T> eyeOffsetFromInverseViewProjection(const Mat4<T>& inverseViewProjection, T eyeSign, T separation,
+                                           T convergence) {
+  const T k = eyeSign * separation * convergence;
+  return {inverseViewProjection[0] * k, inverseViewProjection[1] * k, inverseViewProjection[2] * k};
+}
+
+// Everything one eye's StereoParams hold, from the mono inverse view and P00.
+template <class T>
+StereoParams stereoParamsForEye(T eyeSign, T separation, T convergence, const Mat4<T>& inverseView, T p00,
+                                T hudDepth = T(1)) {
+  Vec3<T> offset = eyeOffsetFromInverseView(inverseView, p00, eyeSign, separation, convergence);
+  StereoParams params;
+  params.eyeSign = static_cast<float>(eyeSign);
+  params.separation = static_cast<float>(separation);
+  params.convergence = static_cast<float>(convergence);
+  params.hudDepth = static_cast<float>(hudDepth);
+  params.eyeOffsetX = static_cast<float>(offset[0]);
+  params.eyeOffsetY = static_cast<float>(offset[1]);
+  params.eyeOffsetZ = static_cast<float>(offset[2]);
+  return params;
+}
+
+// ---- culling (NVIDIA GDC talk "3D Objects Culling": compound frustum) ----------------------------
+
+// Culling against the mono frustum drops what one eye sees beyond the screen, and keeps what only
+// one eye sees in front of it. The frustum bounded by the right eye's left plane and the left eye's
+// right plane does both: it is the union of the eye frustums beyond the screen (w > C) and their
+// common part in front of it. Its apex lies on the mono view axis, in front of the mono eye, at
+//   Z = C / (1 + 1/S)        (the talk's formula; written C*S/(1+S) so that S = 0 gives 0)
+// Its left and right planes open by (1 + S) against the mono ones, P00_cull = P00 / (1 + S); the
+// top, bottom and far planes are the mono ones.
+template <class T>
+T cullingFrustumOriginDepth(T separation, T convergence) {
+  return convergence * separation / (T(1) + separation);
+}
+
+template <class T>
+T cullingFrustumP00(T p00, T separation) {
+  return p00 / (T(1) + separation);
+}
+
+// World-space apex of the compound frustum: the mono eye moved Z along the view direction.
+// `viewLooksDownNegativeZ`: true for GL right-handed views (forward = -z), false for D3D
+// left-handed ones (forward = +z).
+template <class T>
+Vec3<T> cullingFrustumOrigin(const Mat4<T>& inverseView, T separation, T convergence,
+                             bool viewLooksDownNegativeZ = true) {
+  const T depth = cullingFrustumOriginDepth(separation, convergence);
+  const T sign = viewLooksDownNegativeZ ? T(-1) : T(1);
+  Vec3<T> forward = {inverseView[8] * sign, inverseView[9] * sign, inverseView[10] * sign};
+  T length = std::sqrt(forward[0] * forward[0] + forward[1] * forward[1] + forward[2] * forward[2]);
+  return {inverseView[12] + forward[0] / length * depth, inverseView[13] + forward[1] / length * depth,
+          inverseView[14] + forward[2] / length * depth};
+}
+
+// ---- comfort ---------------------------------------------------------------------------------------
+
+// The eye depths that stay comfortable for a convergence C: [C/2, 100*C]. At C/2 the screen
+// parallax e*S*(1 - C/w) is -e*S, as large as the largest (at infinity) behind the screen;
+// at 100*C it is already 99% of that. Content nearer than C/2 pops out more than anything recedes.
+template <class T>
+std::array<T, 2> comfortableDepthRange(T convergence) {
+  return {convergence / T(2), T(100) * convergence};
+}
+
+// Screen parallax in NDC of a point at eye depth w: e*S*(1 - C/w).
+template <class T>
+T parallax(T eyeSign, T separation, T convergence, T w) {
+  return eyeSign * separation * (T(1) - convergence / w);
+}
+
+}  // namespace stereoshift::runtime
