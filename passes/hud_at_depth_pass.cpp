@@ -1,14 +1,116 @@
-// hud-at-depth: not implemented yet (placeholder while the pass is written; always Unchanged).
+// hud-at-depth: turns a proven-2D shader (every clip position written with the literal w = 1) into
+// one that places its element at the eye depth `hudDepth`: each store of the position `pos` becomes
+// a store of `pos * hudDepth`, i.e. vec4(pos.xy * d, pos.z * d, d) (STEREO.md section 2). The shader
+// then needs the shift like any perspective position, which gives the element the parallax
+// e*S*(1 - C/d). Opt-in (--hud-at-depth): without it 2D shaders stay mono and are copied through.
+//
+// Why z becomes z*d (and not z as in the plain formula): with w = d the rasterizer divides every
+// component by d, so z*d keeps the element's NDC depth (its depth-buffer value and clipping) exactly
+// what the mono shader wrote; the depth test keeps deciding the same way whatever d the application
+// picks. A z left as is would land at z/d: a HUD written at the near plane would slide into the
+// scene and be hidden by it. Because every vertex gets the same w = d, perspective-correct
+// interpolation of the varyings equals the original linear one, and x/w, y/w are the original x, y:
+// in mono the element covers the very same pixels.
 #include "passes/pass.h"
 
+#include <algorithm>
+#include <set>
+
 namespace stereoshift {
+
+using spirv::Instruction;
 
 namespace {
 
 class HudAtDepthPass final : public Pass {
  public:
   const char* name() const override { return "hud-at-depth"; }
-  PassResult run(PassContext&) override { return PassResult::Unchanged; }
+
+  PassResult run(PassContext& ctx) override {
+    if (!ctx.options.hudAtDepth || !ctx.options.shiftThisStage || ctx.classification != Classification::ConstantW1)
+      return PassResult::Unchanged;
+    auto& m = ctx.module;
+    auto& report = ctx.report["passes"][name()];
+
+    // Whole-vector stores of each position, and whether anything else writes it. The proof of
+    // w = 1 may come from the folded copy (helpers, HLSL structs); the real module's stores must
+    // still be whole vec4 stores so that `pos * d` gives w = d.
+    struct Site {
+      spirv::Block* block;
+      size_t index;
+    };
+    std::vector<Site> sites;
+    nlohmann::json placed = nlohmann::json::array();
+    for (const auto& position : ctx.positions) {
+      if (position.arrayed) return leaveAlone(ctx, "per-vertex position arrays");
+      std::set<uint32_t> wholePointers, partialPointers;
+      if (!position.isMember) wholePointers.insert(position.variable);
+      for (const auto& fn : m.functions)
+        for (const auto& block : fn.blocks)
+          for (const auto& inst : block.instructions) {
+            if ((inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain) ||
+                inst.operand(0) != position.variable)
+              continue;
+            const Instruction* index = m.definition(inst.operand(1));
+            bool toPosition = !position.isMember || (index && index->opcode == spv::OpConstant &&
+                                                     index->operand(0) == position.member);
+            if (!toPosition) continue;
+            (inst.operands.size() == (position.isMember ? 2u : 1u) ? wholePointers : partialPointers)
+                .insert(inst.resultId);
+          }
+      for (auto& fn : m.functions)
+        for (auto& block : fn.blocks)
+          for (size_t i = 0; i < block.instructions.size(); ++i) {
+            const Instruction& inst = block.instructions[i];
+            if (inst.opcode == spv::OpStore && partialPointers.count(inst.operand(0)))
+              return leaveAlone(ctx, "the position is written one component at a time");
+            if (inst.opcode == spv::OpCopyMemory && (wholePointers.count(inst.operand(0)) || partialPointers.count(inst.operand(0))))
+              return leaveAlone(ctx, "the position is written by a memory copy");
+            if (inst.opcode == spv::OpStore && wholePointers.count(inst.operand(0))) sites.push_back({&block, i});
+          }
+      placed.push_back(position.description);
+    }
+    if (sites.empty()) return leaveAlone(ctx, "no store of the position found");
+
+    if (!ensureEyeParams(ctx, kHudDepth + 1)) return PassResult::Failed;
+    uint32_t v4 = m.typeVector(m.typeFloat(32), 4);
+    // Back to front within a block so the recorded indices stay valid while code is inserted.
+    std::sort(sites.begin(), sites.end(), [](const Site& a, const Site& b) {
+      return a.block != b.block ? a.block < b.block : a.index < b.index;
+    });
+    for (size_t s = sites.size(); s-- > 0;) {
+      auto& instructions = sites[s].block->instructions;
+      size_t at = sites[s].index;
+      std::vector<Instruction> code;
+      uint32_t depth = emitLoadEyeParam(ctx, code, kHudDepth);
+      uint32_t placedValue = m.takeId();
+      // w is the literal 1, so one multiply gives (x*d, y*d, z*d, d) with w exactly d.
+      code.emplace_back(spv::OpVectorTimesScalar, v4, placedValue,
+                        std::vector<uint32_t>{instructions[at].operand(1), depth});
+      instructions[at].operands[1] = placedValue;
+      instructions.insert(instructions.begin() + static_cast<long>(at), code.begin(), code.end());
+    }
+    m.invalidateDefinitions();
+
+    // From here on the position is a perspective one: eye-params, halo and stereo-shift treat it so.
+    ctx.shiftPosition = true;
+    report["placed_at_depth"] = placed;
+    report["stores"] = sites.size();
+    report["position"] = "vec4(pos.xy * " + ctx.eye.names[kHudDepth] + ", pos.z * " + ctx.eye.names[kHudDepth] +
+                         ", " + ctx.eye.names[kHudDepth] + ")";
+    if (ctx.options.cutoff != CutoffMode::None)
+      report["note"] = "the w != 1 cutoff also applies here: a " + ctx.eye.names[kHudDepth] +
+                       " within the cutoff epsilon of 1 leaves the element unshifted (use --no-cutoff "
+                       "to give it parallax at depth 1 too)";
+    return PassResult::Changed;
+  }
+
+ private:
+  PassResult leaveAlone(PassContext& ctx, const std::string& why) {
+    ctx.diags.warning(ctx.file, "--hud-at-depth: not placed at depth: " + why);
+    ctx.report["passes"][name()]["left_alone"] = why;
+    return PassResult::Unchanged;
+  }
 };
 
 }  // namespace

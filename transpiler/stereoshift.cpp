@@ -205,8 +205,16 @@ namespace {
 
 // One shader; `nextStage` (pipelines only) tells per-eye-view how the fragment stage uses the
 // outputs of the last pre-rasterization stage.
+// The front end's result for one stage, kept so a pipeline parses each stage once.
+struct CompiledStage {
+  FrontEndResult front;
+  Diagnostics diags;
+  double ms = 0;  // front-end time, reported with the stage
+};
+
+// `compiled`: the stage already through the front end (pipelines), or null to run it here.
 TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& options,
-                               const NextStageFacts* nextStage) {
+                               const NextStageFacts* nextStage, CompiledStage* compiled = nullptr) {
   auto started = std::chrono::steady_clock::now();
   TranspileResult result;
   Diagnostics& diags = result.diagnostics;
@@ -235,14 +243,20 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
       diags.error(file, "binary content is not shader source (and not SPIR-V: bad magic number)");
       return result;
     }
-    FrontEndResult front = compileToSpirv(input, options, diags);
+    FrontEndResult front;
+    if (compiled) {
+      front = std::move(compiled->front);
+      diags.append(compiled->diags);
+    } else {
+      front = compileToSpirv(input, options, diags);
+    }
     if (!front.ok) return result;
     words = std::move(front.spirv);
     info = std::move(front.info);
     result.includedFiles = std::move(front.includedFiles);
     if (!result.includedFiles.empty()) result.report["included_files"] = result.includedFiles;
   }
-  result.report["timings_ms"]["front_end"] = msSince(started);
+  result.report["timings_ms"]["front_end"] = msSince(started) + (compiled ? compiled->ms : 0.0);
 
   result.originalSpirv = words;
   std::string parseError;
@@ -375,19 +389,21 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
 
 // How the fragment stage of a pipeline uses its inputs (for per-eye-view): analysed before the
 // last pre-rasterization stage is converted. Null when there is no fragment stage to read.
-std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& stages, const TranspileOptions& options) {
+std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& stages,
+                                                 const std::vector<CompiledStage>& compiled,
+                                                 const TranspileOptions& options) {
   if (!options.perEyeView) return std::nullopt;
-  for (const auto& stage : stages) {
-    auto kind = options.stage ? options.stage : stageFromPath(stage.path);
+  for (size_t i = 0; i < stages.size(); ++i) {
+    auto kind = options.stage ? options.stage : stageFromPath(stages[i].path);
     if (kind != Stage::Fragment) continue;
-    Diagnostics ignored;  // the fragment stage reports its own errors when it is converted
-    FrontEndResult front = compileToSpirv(stage, options, ignored);
-    if (!front.ok) return std::nullopt;
+    const FrontEndResult& front = compiled[i].front;
+    if (!front.ok) return std::nullopt;  // the fragment stage reports its own errors when converted
     std::string error;
     auto module = spirv::Module::parse(front.spirv, &error);
     if (!module) return std::nullopt;
     nlohmann::json scratch;
-    PassContext ctx{*module, options, front.info, ignored, stage.path, scratch};
+    Diagnostics ignored;
+    PassContext ctx{*module, options, front.info, ignored, stages[i].path, scratch};
     return analyseStageInputs(ctx);
   }
   return std::nullopt;
@@ -418,14 +434,26 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       lastRank = rank(*stage);
     }
   }
+  // Each source stage goes through the front end once; the analyses below and the conversion share it.
+  std::vector<CompiledStage> compiled(stages.size());
+  std::vector<bool> precompiled(stages.size(), false);
+  for (size_t i = 0; i < stages.size(); ++i) {
+    const SourceFile& stage = stages[i];
+    if (stage.contents.empty() || isSpirvBinary(stage.contents) || stage.path.ends_with(".spv") ||
+        std::memchr(stage.contents.data(), '\0', std::min<size_t>(stage.contents.size(), 4096)))
+      continue;  // transpileStage reports these itself
+    auto frontStarted = std::chrono::steady_clock::now();
+    compiled[i].front = compileToSpirv(stage, options, compiled[i].diags);
+    compiled[i].ms = msSince(frontStarted);
+    precompiled[i] = true;
+  }
   // The injected block must not take a binding another stage of the pipeline uses.
   TranspileOptions pipelineOptions = options;
   if (stages.size() > 1 && !options.eye.binding && !options.eye.hlslRegister) {
     std::optional<uint32_t> highest;
     bool hlsl = false;
-    for (const auto& stage : stages) {
-      Diagnostics ignored;
-      FrontEndResult front = compileToSpirv(stage, options, ignored);
+    for (const auto& c : compiled) {
+      const FrontEndResult& front = c.front;
       if (!front.ok) continue;
       hlsl |= front.info.language == SourceLanguage::Hlsl;
       std::string error;
@@ -440,13 +468,13 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       else pipelineOptions.eye.binding = *highest + 1;
     }
   }
-  std::optional<NextStageFacts> fragmentFacts = fragmentStageFacts(stages, options);
+  std::optional<NextStageFacts> fragmentFacts = fragmentStageFacts(stages, compiled, options);
   std::vector<TranspileResult> results;
   for (size_t i = 0; i < stages.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
     const NextStageFacts* facts = static_cast<int>(i) == last && fragmentFacts ? &*fragmentFacts : nullptr;
-    results.push_back(transpileStage(stages[i], stageOptions, facts));
+    results.push_back(transpileStage(stages[i], stageOptions, facts, precompiled[i] ? &compiled[i] : nullptr));
   }
   return results;
 }

@@ -1,0 +1,532 @@
+// Deferred lighting per eye against ground truth (deferred-unprojection pass, STEREO.md section 4).
+//
+// Per eye, on lavapipe: a G-buffer (albedo, normal, depth) of a small scene rendered with that eye's
+// stereo projection (mono P with row 0 = [p00, 0, p02 - e S, -e S C]), then a full-screen lighting
+// pass (a close copy of corpus/vk450/deferred_light.frag: NDC from gl_FragCoord, Vulkan [0,1] depth,
+// world position through the inverse view-projection; textures instead of subpass inputs, a point
+// light with attenuation and a smooth world-space pattern instead of the shadow map) three ways:
+//   truth:    the original lighting shader with the true per-eye inverse (P_stereo V)^-1;
+//   fix:      stereoshift's lighting shader with the mono inverse (P V)^-1 and the eye parameters;
+//   baseline: the original lighting shader with the mono inverse (what a mono engine does).
+// Two checks:
+//   1. the rebuilt world position itself, read back bit-exactly (the shader writes the float's bits
+//      as RGBA8), against the exact position computed in double: truth and fix must both be within
+//      a first-order rounding bound computed per pixel (see positionBound());
+//   2. the lit image: PSNR and max channel difference of fix and baseline against truth. The fix
+//      must match to the 8-bit rounding of the output (at most 1 level), the baseline must not.
+// PNGs of each eye (truth, fix, baseline) and a red/cyan anaglyph of the fix are written for a person.
+#include "test/harness/stereo_verify.h"
+#include "transpiler/front_end.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+#include <numbers>
+
+using namespace stereoshift;
+using namespace stereoshift::harness;
+
+namespace {
+
+const char* kGBufferVert = R"(#version 450
+layout(set = 0, binding = 0) uniform Camera { mat4 proj; mat4 view; } cam;
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec3 inAlbedo;
+layout(location = 0) out vec3 vNormal;
+layout(location = 1) out vec3 vAlbedo;
+void main() {
+  vNormal = inNormal;
+  vAlbedo = inAlbedo;
+  gl_Position = cam.proj * cam.view * vec4(inPosition, 1.0);
+}
+)";
+
+// One G-buffer target at a time (the harness renders into a single RGBA8 target).
+const char* kGBufferAlbedoFrag = R"(#version 450
+layout(location = 0) in vec3 vNormal;
+layout(location = 1) in vec3 vAlbedo;
+layout(location = 0) out vec4 outColor;
+void main() { outColor = vec4(vAlbedo, 1.0); }
+)";
+
+const char* kGBufferNormalFrag = R"(#version 450
+layout(location = 0) in vec3 vNormal;
+layout(location = 1) in vec3 vAlbedo;
+layout(location = 0) out vec4 outColor;
+void main() { outColor = vec4(normalize(vNormal) * 0.5 + 0.5, 1.0); }
+)";
+
+// corpus/vk450/deferred_light.vert
+const char* kFullScreenVert = R"(#version 450
+layout(location = 0) out vec2 outUV;
+out gl_PerVertex { vec4 gl_Position; };
+void main() {
+  const vec2 positions[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+  vec2 p = positions[gl_VertexIndex];
+  outUV = p * 0.5 + 0.5;
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
+const char* kLightingFrag = R"(#version 450
+layout(set = 0, binding = 0) uniform FrameUBO {
+    mat4 invViewProj;
+    vec4 viewportSize;   // xy = pixels, zw = 1 / pixels
+    vec4 lightPosition;  // xyz = world position, w = radius
+    vec4 lightColor;
+} frame;
+
+layout(set = 1, binding = 0) uniform sampler2D gAlbedo;
+layout(set = 1, binding = 1) uniform sampler2D gNormal;
+layout(set = 1, binding = 2) uniform sampler2D gDepth;
+
+layout(location = 0) in vec2 inUV;
+layout(location = 0) out vec4 outColor;
+
+void main()
+{
+    float depth = texture(gDepth, inUV).r;
+    vec2 ndc = gl_FragCoord.xy * frame.viewportSize.zw * 2.0 - 1.0;
+    vec4 q = frame.invViewProj * vec4(ndc, depth, 1.0);
+    vec3 p = q.xyz / q.w;
+#ifdef POSITION_COMPONENT
+    outColor = unpackUnorm4x8(floatBitsToUint(p[POSITION_COMPONENT]));
+#else
+    if (depth >= 1.0) {
+        outColor = vec4(0.0, 0.0, 0.0, 1.0);
+        return;
+    }
+    vec3 albedo = texture(gAlbedo, inUV).rgb;
+    vec3 n = normalize(texture(gNormal, inUV).xyz * 2.0 - 1.0);
+    vec3 toLight = frame.lightPosition.xyz - p;
+    float dist = length(toLight);
+    float atten = clamp(1.0 - dist / frame.lightPosition.w, 0.0, 1.0);
+    float ndl = max(dot(n, toLight / dist), 0.0);
+    // A smooth world-space pattern: a misplaced position shows on every surface, lit or not, and
+    // rounding-level position errors stay far below one 8-bit level.
+    float pattern = 0.7 + 0.3 * sin(4.0 * p.x) * sin(4.0 * p.y + 3.0 * p.z);
+    outColor = vec4(albedo * pattern * (0.3 + frame.lightColor.rgb * ndl * atten * atten), 1.0);
+#endif
+}
+)";
+
+constexpr uint32_t kSize = 256;
+constexpr float kSeparation = 0.06f, kConvergence = 4.0f;
+constexpr double kUnitRoundoff = 1.0 / (1 << 24);  // fp32, round to nearest
+
+using Mat4 = std::array<double, 16>;  // column-major: m[col * 4 + row]
+
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+  Mat4 r{};
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row)
+      for (int k = 0; k < 4; ++k) r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
+  return r;
+}
+
+// Gauss-Jordan with partial pivoting, in double.
+Mat4 inverse(const Mat4& m) {
+  double a[4][8];
+  for (int row = 0; row < 4; ++row)
+    for (int c = 0; c < 4; ++c) {
+      a[row][c] = m[c * 4 + row];
+      a[row][c + 4] = row == c ? 1.0 : 0.0;
+    }
+  for (int c = 0; c < 4; ++c) {
+    int pivot = c;
+    for (int row = c + 1; row < 4; ++row)
+      if (std::abs(a[row][c]) > std::abs(a[pivot][c])) pivot = row;
+    std::swap(a[c], a[pivot]);
+    double scale = a[c][c];
+    for (double& v : a[c]) v /= scale;
+    for (int row = 0; row < 4; ++row) {
+      if (row == c) continue;
+      double factor = a[row][c];
+      for (int k = 0; k < 8; ++k) a[row][k] -= factor * a[c][k];
+    }
+  }
+  Mat4 r;
+  for (int row = 0; row < 4; ++row)
+    for (int c = 0; c < 4; ++c) r[c * 4 + row] = a[row][c + 4];
+  return r;
+}
+
+// Vulkan clip space (y down, depth 0..1), w = -z_eye; eye != 0 gives the stereo projection.
+Mat4 projection(double eye) {
+  const double f = 1.0 / std::tan(0.5), n = 0.1, far = 1000.0;
+  Mat4 p{};
+  p[0] = f;
+  p[5] = -f;
+  p[10] = far / (n - far);
+  p[11] = -1.0;
+  p[14] = n * far / (n - far);
+  p[8] = -eye * kSeparation;                 // p02 - e S
+  p[12] = -eye * kSeparation * kConvergence;  // -e S C
+  return p;
+}
+
+// A camera a little off the origin, turned 8 degrees about y and 5 about x, so the inverse
+// view-projection has no zero pattern the fix could depend on.
+Mat4 view() {
+  const double yaw = 8.0 * std::numbers::pi / 180.0, pitch = -5.0 * std::numbers::pi / 180.0;
+  Mat4 rotateY{std::cos(yaw), 0, -std::sin(yaw), 0, 0, 1, 0, 0, std::sin(yaw), 0, std::cos(yaw), 0, 0, 0, 0, 1};
+  Mat4 rotateX{1, 0, 0, 0, 0, std::cos(pitch), std::sin(pitch), 0, 0, -std::sin(pitch), std::cos(pitch), 0, 0, 0, 0, 1};
+  Mat4 translate{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -0.4, -0.6, -0.2, 1};
+  return multiply(rotateX, multiply(rotateY, translate));
+}
+
+std::array<float, 16> toFloat(const Mat4& m) {
+  std::array<float, 16> r;
+  for (int i = 0; i < 16; ++i) r[i] = static_cast<float>(m[i]);
+  return r;
+}
+
+Mat4 toDouble(const std::array<float, 16>& m) {
+  Mat4 r;
+  for (int i = 0; i < 16; ++i) r[i] = m[i];
+  return r;
+}
+
+template <class T>
+void append(std::vector<uint8_t>& bytes, const T* data, size_t count) {
+  size_t at = bytes.size();
+  bytes.resize(at + sizeof(T) * count);
+  std::memcpy(bytes.data() + at, data, sizeof(T) * count);
+}
+
+// Quads: four corners (counter-clockwise seen from the normal side), a normal and an albedo.
+struct Quad {
+  std::array<std::array<float, 3>, 4> corners;
+  std::array<float, 3> normal, albedo;
+};
+
+VertexBuffer sceneVertices(const std::vector<Quad>& quads) {
+  VertexBuffer vb;
+  vb.stride = 36;
+  vb.attributes = {{0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, VK_FORMAT_R32G32B32_SFLOAT, 12},
+                   {2, VK_FORMAT_R32G32B32_SFLOAT, 24}};
+  for (const auto& q : quads)
+    for (int corner : {0, 1, 2, 0, 2, 3}) {
+      append(vb.bytes, q.corners[corner].data(), 3);
+      append(vb.bytes, q.normal.data(), 3);
+      append(vb.bytes, q.albedo.data(), 3);
+    }
+  return vb;
+}
+
+// Surfaces from 1.5 to 24 eye units, in front of, at and behind the convergence distance (4).
+std::vector<Quad> scene() {
+  return {
+      {{{{-12, -1.5f, -1}, {12, -1.5f, -1}, {12, -1.5f, -24}, {-12, -1.5f, -24}}}, {0, 1, 0}, {0.8f, 0.8f, 0.75f}},  // floor
+      {{{{-20, -1.5f, -24}, {20, -1.5f, -24}, {20, 16, -24}, {-20, 16, -24}}}, {0, 0, 1}, {0.6f, 0.7f, 0.9f}},        // back wall
+      {{{{-4, -1.5f, -6}, {-4, -1.5f, -16}, {-4, 3, -16}, {-4, 3, -6}}}, {1, 0, 0}, {0.9f, 0.5f, 0.4f}},       // left wall
+      {{{{0.2f, -0.8f, -4}, {1.4f, -0.8f, -4}, {1.4f, 0.6f, -4}, {0.2f, 0.6f, -4}}}, {0, 0, 1}, {0.4f, 0.9f, 0.4f}},  // at C
+      {{{{-0.5f, 0.1f, -1.6f}, {0.1f, 0.1f, -1.9f}, {0.1f, 0.7f, -1.9f}, {-0.5f, 0.7f, -1.6f}}},
+       {0.447f, 0, 0.894f}, {0.95f, 0.85f, 0.3f}},  // near, tilted
+      {{{{1.5f, -1.5f, -9}, {3.5f, -1.5f, -11}, {3.5f, 1.5f, -11}, {1.5f, 1.5f, -9}}}, {0.707f, 0, 0.707f}, {0.8f, 0.4f, 0.9f}},
+  };
+}
+
+std::vector<uint32_t> compileOriginal(const char* name, const char* text, const TranspileOptions& options) {
+  Diagnostics diags;
+  FrontEndResult front = compileToSpirv(SourceFile{name, text}, options, diags);
+  EXPECT_TRUE(front.ok) << diags.format();
+  return front.spirv;
+}
+
+struct Transpiled {
+  std::vector<uint32_t> spirv;
+  uint32_t eyeSet = 0, eyeBinding = 0;
+};
+
+Transpiled compileTranspiled(const char* name, const char* text, TranspileOptions options) {
+  options.target = TargetLanguage::Spirv;
+  TranspileResult r = transpile(SourceFile{name, text}, options);
+  EXPECT_TRUE(r.ok) << r.diagnostics.format();
+  EXPECT_TRUE(r.changed) << "the lighting shader was not fixed";
+  Transpiled t;
+  t.spirv.resize(r.output.size() / 4);
+  std::memcpy(t.spirv.data(), r.output.data(), t.spirv.size() * 4);
+  const auto& eye = r.report["passes"]["eye-params"];
+  t.eyeSet = eye.value("set", 0u);
+  t.eyeBinding = eye.value("binding", 0u);
+  return t;
+}
+
+struct GBuffer {
+  SampledTexture albedo, normal, depth;
+  std::vector<float> depthValues;
+};
+
+double psnr(double mse) { return mse == 0.0 ? INFINITY : 10.0 * std::log10(255.0 * 255.0 / mse); }
+
+struct ImageError {
+  double mse = 0;
+  int maxDifference = 0;
+  size_t differing = 0;
+};
+
+ImageError compare(const RenderResult& truth, const RenderResult& other) {
+  ImageError e;
+  for (size_t i = 0; i < size_t(kSize) * kSize; ++i)
+    for (int c = 0; c < 3; ++c) {
+      int d = int(truth.pixels[4 * i + c]) - int(other.pixels[4 * i + c]);
+      e.mse += double(d) * d;
+      e.maxDifference = std::max(e.maxDifference, std::abs(d));
+      if (d) ++e.differing;
+    }
+  e.mse /= 3.0 * kSize * kSize;
+  return e;
+}
+
+// First-order bound (unit roundoff u) on |p - p_exact| for the world position a lighting shader
+// rebuilds on the GPU, per component, from fp32 inputs:
+//   q = fl(A v): each component a 4-term dot product from entries A rounded once from the exact
+//     inverse: |dq_i| <= (gamma_4 + u) * sum_j |A_ij v_j|, gamma_4 = 4u/(1 - 4u) (any summation
+//     order, with or without fused multiply-adds);
+//   the fix adds k = fl(fl(e S) * fl(1 - fl(C q.w))), c = fl(col0 * k), q' = fl(q - c):
+//     |dk| <= |eS| (C |dq_w| + u C |q_w| + u |1 - C q_w|) + 2u |k|,
+//     |dq'_i| <= |dq_i| + |col0_i| |dk| + 2u |col0_i k| + u |q'_i|;
+//   p = fl(q.xyz / q.w): |dp_i| <= (|dq_i| + |p_i| |dq_w|) / |q_w| + u |p_i|.
+// v (pixel-centre NDC and the sampled depth) is exact in fp32. Second-order terms are below
+// 1e-6 of the bound and ignored.
+std::array<double, 3> positionBound(const Mat4& a, const std::array<double, 4>& v, bool fixed, double eye) {
+  const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
+  std::array<double, 4> q{}, dq{};
+  for (int i = 0; i < 4; ++i) {
+    double magnitude = 0;
+    for (int j = 0; j < 4; ++j) {
+      q[i] += a[j * 4 + i] * v[j];
+      magnitude += std::abs(a[j * 4 + i] * v[j]);
+    }
+    dq[i] = (gamma4 + u) * magnitude;
+  }
+  if (fixed) {
+    const double es = eye * kSeparation, c = kConvergence;
+    double k = es * (1 - c * q[3]);
+    double dk = std::abs(es) * (c * dq[3] + u * c * std::abs(q[3]) + u * std::abs(1 - c * q[3])) + 2 * u * std::abs(k);
+    double dw = dq[3];
+    for (int i = 0; i < 4; ++i) {
+      double column0 = a[i];
+      q[i] -= column0 * k;
+      dq[i] += std::abs(column0) * dk + 2 * u * std::abs(column0 * k) + u * std::abs(q[i]);
+    }
+    dq[3] = std::max(dq[3], dw);
+  }
+  std::array<double, 3> bound;
+  for (int i = 0; i < 3; ++i) {
+    double p = q[i] / q[3];
+    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + u * std::abs(p);
+  }
+  return bound;
+}
+
+class DeferredRender : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string error;
+    context_ = VulkanContext::create(&error);
+    ASSERT_TRUE(context_) << error;
+    TranspileOptions options;
+    gbufferVert_ = compileOriginal("gbuffer.vert", kGBufferVert, options);
+    albedoFrag_ = compileOriginal("gbuffer_albedo.frag", kGBufferAlbedoFrag, options);
+    normalFrag_ = compileOriginal("gbuffer_normal.frag", kGBufferNormalFrag, options);
+    fullScreenVert_ = compileOriginal("deferred_light.vert", kFullScreenVert, options);
+    vertices_ = sceneVertices(scene());
+    vertexCount_ = static_cast<uint32_t>(scene().size() * 6);
+  }
+
+  // The G-buffer of one eye, rendered with that eye's stereo projection.
+  GBuffer renderGBuffer(double eye) {
+    GBuffer g;
+    std::vector<uint8_t> camera;
+    auto proj = toFloat(projection(eye)), viewMatrix = toFloat(view());
+    append(camera, proj.data(), 16);
+    append(camera, viewMatrix.data(), 16);
+    auto pass = [&](const std::vector<uint32_t>& frag, bool readDepth) {
+      RenderRequest request;
+      request.width = request.height = kSize;
+      request.clearColor[0] = request.clearColor[1] = request.clearColor[2] = 0.5f;  // normal (0,0,0)
+      request.readDepth = readDepth;
+      Draw draw;
+      draw.pipeline.stages = {{VK_SHADER_STAGE_VERTEX_BIT, gbufferVert_, "main"},
+                              {VK_SHADER_STAGE_FRAGMENT_BIT, frag, "main"}};
+      draw.pipeline.vertices = vertices_;
+      draw.pipeline.vertexCount = vertexCount_;
+      draw.pipeline.uniformBuffers = {{0, 0, camera}};
+      request.draws = {draw};
+      RenderResult r = context_->render(request);
+      EXPECT_TRUE(r.ok()) << r.error;
+      return r;
+    };
+    RenderResult albedo = pass(albedoFrag_, true), normal = pass(normalFrag_, false);
+    auto texture = [&](uint32_t binding, const RenderResult& r) {
+      SampledTexture t{1, binding, kSize, kSize, std::vector<float>(size_t(kSize) * kSize * 4)};
+      for (size_t i = 0; i < t.rgba.size(); ++i) t.rgba[i] = r.pixels[i] / 255.0f;
+      return t;
+    };
+    g.albedo = texture(0, albedo);
+    g.normal = texture(1, normal);
+    g.depthValues = albedo.depth;
+    g.depth = SampledTexture{1, 2, kSize, kSize, std::vector<float>(size_t(kSize) * kSize * 4, 0.0f)};
+    for (size_t i = 0; i < g.depthValues.size(); ++i) g.depth.rgba[4 * i] = g.depthValues[i];
+    return g;
+  }
+
+  // The lighting pass with `inverseViewProj`; with `eyeParams` the shader is the transpiled one.
+  RenderResult renderLighting(const GBuffer& g, const std::vector<uint32_t>& frag, const Mat4& inverseViewProj,
+                              const Transpiled* eyeParams, double eye) {
+    std::vector<uint8_t> frame;
+    auto inv = toFloat(inverseViewProj);
+    const float viewport[4] = {float(kSize), float(kSize), 1.0f / kSize, 1.0f / kSize};
+    const float light[8] = {0.8f, 1.5f, -5.0f, 22.0f, 1.0f, 0.95f, 0.85f, 0.0f};
+    append(frame, inv.data(), 16);
+    append(frame, viewport, 4);
+    append(frame, light, 8);
+    RenderRequest request;
+    request.width = request.height = kSize;
+    Draw draw;
+    draw.pipeline.stages = {{VK_SHADER_STAGE_VERTEX_BIT, fullScreenVert_, "main"},
+                            {VK_SHADER_STAGE_FRAGMENT_BIT, frag, "main"}};
+    draw.pipeline.vertexCount = 3;
+    draw.pipeline.uniformBuffers = {{0, 0, frame}};
+    if (eyeParams) {
+      const float params[4] = {float(eye), kSeparation, kConvergence, 0.0f};
+      std::vector<uint8_t> bytes;
+      append(bytes, params, 4);
+      draw.pipeline.uniformBuffers.push_back({eyeParams->eyeSet, eyeParams->eyeBinding, bytes});
+    }
+    draw.pipeline.textures = {g.albedo, g.normal, g.depth};
+    draw.depthTest = false;
+    draw.depthWrite = false;
+    request.draws = {draw};
+    RenderResult r = context_->render(request);
+    EXPECT_TRUE(r.ok()) << r.error;
+    return r;
+  }
+
+  std::unique_ptr<VulkanContext> context_;
+  std::vector<uint32_t> gbufferVert_, albedoFrag_, normalFrag_, fullScreenVert_;
+  VertexBuffer vertices_;
+  uint32_t vertexCount_ = 0;
+};
+
+TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
+  const Mat4 viewMatrix = view();
+  const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    const Mat4 stereoInverse = inverse(multiply(projection(eye), viewMatrix));
+    // What the GPU multiplies with: the matrices as uploaded (rounded to fp32).
+    const Mat4 stereoInverseF = toDouble(toFloat(stereoInverse)), monoInverseF = toDouble(toFloat(monoInverse));
+    std::array<RenderResult, 3> truth, fixedPosition, baseline;
+    for (int component = 0; component < 3; ++component) {
+      TranspileOptions options;
+      options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
+      auto original = compileOriginal("deferred_light.frag", kLightingFrag, options);
+      Transpiled transpiled = compileTranspiled("deferred_light.frag", kLightingFrag, options);
+      truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye);
+      fixedPosition[component] = renderLighting(g, transpiled.spirv, monoInverse, &transpiled, eye);
+      baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye);
+      ASSERT_TRUE(truth[component].ok() && fixedPosition[component].ok() && baseline[component].ok());
+    }
+    auto bitsAt = [](const RenderResult& r, size_t pixel) {
+      uint32_t bits = 0;
+      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
+      float f;
+      std::memcpy(&f, &bits, 4);
+      return double(f);
+    };
+    double worstTruth = 0, worstFix = 0, maxFixVsTruth = 0, maxFixError = 0, maxBaselineError = 0;
+    size_t pixels = 0, outside = 0, baselineOutside = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        size_t i = size_t(y) * kSize + x;
+        if (g.depthValues[i] >= 1.0f) continue;  // background: nothing rebuilt
+        ++pixels;
+        std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
+        std::array<double, 4> exact{};
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
+        auto truthBound = positionBound(stereoInverseF, v, false, eye);
+        auto fixBound = positionBound(monoInverseF, v, true, eye);
+        bool baselineWrong = false;
+        for (int c = 0; c < 3; ++c) {
+          double p = exact[c] / exact[3];
+          double truthError = std::abs(bitsAt(truth[c], i) - p), fixError = std::abs(bitsAt(fixedPosition[c], i) - p);
+          worstTruth = std::max(worstTruth, truthError / truthBound[c]);
+          worstFix = std::max(worstFix, fixError / fixBound[c]);
+          maxFixVsTruth = std::max(maxFixVsTruth, std::abs(bitsAt(fixedPosition[c], i) - bitsAt(truth[c], i)));
+          maxFixError = std::max(maxFixError, fixError);
+          double baselineError = std::abs(bitsAt(baseline[c], i) - p);
+          maxBaselineError = std::max(maxBaselineError, baselineError);
+          baselineWrong |= baselineError > truthBound[c];
+          outside += truthError > truthBound[c] || fixError > fixBound[c];
+        }
+        baselineOutside += baselineWrong;
+      }
+    std::cout << std::setprecision(3) << "[deferred] eye " << eye << ": world position over " << pixels
+              << " pixels, error / first-order rounding bound: truth " << worstTruth << ", fix " << worstFix
+              << "; max |p - p_exact|: fix " << maxFixError << ", mono baseline " << maxBaselineError
+              << " world units; max |fix - truth| " << maxFixVsTruth << "; mono baseline beyond rounding at "
+              << baselineOutside << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2) << "the scene should cover most of the image";
+    EXPECT_EQ(outside, 0u) << "eye " << eye << ": a rebuilt position is further from the exact one than rounding allows";
+    // The mono inverse misplaces points by S*|w - C|/p00 along the camera's x axis: wrong beyond
+    // rounding wherever the surface is not at the convergence distance, i.e. almost everywhere.
+    EXPECT_GT(baselineOutside, pixels * 9 / 10) << "eye " << eye << ": the mono baseline should be wrong";
+  }
+}
+
+TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {
+  TranspileOptions options;
+  auto original = compileOriginal("deferred_light.frag", kLightingFrag, options);
+  Transpiled transpiled = compileTranspiled("deferred_light.frag", kLightingFrag, options);
+  const Mat4 viewMatrix = view();
+  const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
+
+  std::array<RenderResult, 2> fixedImages;
+  for (int e = 0; e < 2; ++e) {
+    double eye = e == 0 ? -1.0 : 1.0;
+    const char* side = e == 0 ? "left" : "right";
+    GBuffer g = renderGBuffer(eye);
+    RenderResult truth = renderLighting(g, original, inverse(multiply(projection(eye), viewMatrix)), nullptr, eye);
+    RenderResult fixed = renderLighting(g, transpiled.spirv, monoInverse, &transpiled, eye);
+    RenderResult baseline = renderLighting(g, original, monoInverse, nullptr, eye);
+    ASSERT_TRUE(truth.ok() && fixed.ok() && baseline.ok());
+    ImageError fixError = compare(truth, fixed), baselineError = compare(truth, baseline);
+    std::cout << std::setprecision(4) << "[deferred] eye " << eye << " (" << side << "): fix PSNR "
+              << psnr(fixError.mse) << " dB, max diff " << fixError.maxDifference << " (" << fixError.differing
+              << " channels differ); mono baseline PSNR " << psnr(baselineError.mse) << " dB, max diff "
+              << baselineError.maxDifference << " (" << baselineError.differing << " channels differ) of "
+              << 3 * kSize * kSize << "\n";
+    // The fix's position is within rounding of the truth (test above), far below what moves a colour
+    // by 1/255 here: only the final 8-bit rounding can tell them apart, by one level.
+    EXPECT_LE(fixError.maxDifference, 1) << side;
+    // The mono inverse puts every pixel's position off by up to S*|w - C|/p00 world units.
+    EXPECT_GT(baselineError.maxDifference, 8) << side;
+    EXPECT_LT(psnr(baselineError.mse), psnr(fixError.mse) - 20.0) << side;
+
+    std::string prefix = std::string(IMAGE_OUT_DIR) + "/deferred_" + side;
+    EXPECT_TRUE(writePng(prefix + "_truth.png", kSize, kSize, truth.pixels.data()));
+    EXPECT_TRUE(writePng(prefix + "_fix.png", kSize, kSize, fixed.pixels.data()));
+    EXPECT_TRUE(writePng(prefix + "_mono.png", kSize, kSize, baseline.pixels.data()));
+    fixedImages[e] = std::move(fixed);
+  }
+  std::vector<uint8_t> anaglyph(size_t(kSize) * kSize * 4);
+  for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
+    anaglyph[4 * i + 0] = fixedImages[0].pixels[4 * i + 0];
+    anaglyph[4 * i + 1] = fixedImages[1].pixels[4 * i + 1];
+    anaglyph[4 * i + 2] = fixedImages[1].pixels[4 * i + 2];
+    anaglyph[4 * i + 3] = 255;
+  }
+  EXPECT_TRUE(writePng(std::string(IMAGE_OUT_DIR) + "/deferred_anaglyph.png", kSize, kSize, anaglyph.data()));
+  std::cout << "[deferred] wrote " IMAGE_OUT_DIR "/deferred_{left,right}_{truth,fix,mono}.png, deferred_anaglyph.png\n";
+}
+
+}  // namespace
