@@ -101,19 +101,6 @@ bool isImageRead(spv::Op op) {
   }
 }
 
-bool isImageInstruction(spv::Op op) {
-  switch (op) {
-    case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
-    case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
-    case spv::OpImageDrefGather: case spv::OpImageSparseSampleDrefImplicitLod:
-    case spv::OpImageSparseSampleDrefExplicitLod: case spv::OpImageSparseDrefGather:
-    case spv::OpImageQueryLod: case spv::OpImageWrite:
-      return true;
-    default:
-      return isImageRead(op);
-  }
-}
-
 // GLSL.std.450 instructions that work component by component on vectors.
 bool isComponentwise(uint32_t glslInstruction) {
   switch (glslInstruction) {
@@ -128,31 +115,6 @@ bool isComponentwise(uint32_t glslInstruction) {
       return false;
     default:
       return true;
-  }
-}
-
-// Whether operand word k of an instruction in a function body may hold a value id (literals such
-// as extract indices, shuffle components, memory and image operand masks never do). Labels are
-// reported as ids or not at will: they are never the value being replaced.
-bool isValueOperand(const Instruction& inst, size_t k) {
-  switch (inst.opcode) {
-    case spv::OpLoad: return k == 0;
-    case spv::OpStore: case spv::OpCopyMemory: return k < 2;
-    case spv::OpCompositeExtract: return k == 0;
-    case spv::OpCompositeInsert: case spv::OpVectorShuffle: return k < 2;
-    case spv::OpExtInst: return k != 1;
-    case spv::OpSelectionMerge: case spv::OpLoopMerge: case spv::OpBranch: return false;
-    case spv::OpBranchConditional: case spv::OpSwitch: return k == 0;
-    case spv::OpVariable: return k == 1;
-    case spv::OpLine: case spv::OpNoLine: return false;
-    case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
-    case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
-    case spv::OpImageDrefGather: case spv::OpImageGather: case spv::OpImageWrite:
-    case spv::OpImageSparseSampleDrefImplicitLod: case spv::OpImageSparseSampleDrefExplicitLod:
-    case spv::OpImageSparseDrefGather: case spv::OpImageSparseGather:
-      return k != 3;  // image operands mask
-    default:
-      return isImageInstruction(inst.opcode) ? k != 2 : true;
   }
 }
 
@@ -747,7 +709,7 @@ class DeferredUnprojectionPass final : public Pass {
     for (auto& block : p.function->blocks)
       for (auto& inst : block.instructions)
         for (size_t k = 0; k < inst.operands.size(); ++k)
-          if (inst.operands[k] == p.result && isValueOperand(inst, k)) inst.operands[k] = chosen;
+          if (inst.operands[k] == p.result && spirv::isValueOperand(inst, k)) inst.operands[k] = chosen;
     for (auto& block : p.function->blocks)
       for (size_t i = 0; i < block.instructions.size(); ++i)
         if (block.instructions[i].resultId == p.result) {

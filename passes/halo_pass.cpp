@@ -93,7 +93,7 @@ class HaloPass final : public Pass {
         for (size_t i = 0; i < block.instructions.size(); ++i) {
           const Instruction store = block.instructions[i];
           if (store.opcode != spv::OpStore || pointers.count(store.operand(0))) continue;
-          uint32_t target = rootVariable(m, store.operand(0));
+          uint32_t target = m.rootVariable(store.operand(0));
           if (!target || positionOutputs.count(target) || builtinOutputs.count(target)) continue;
           if (m.storageClassOf(target) != spv::StorageClassOutput) continue;
           std::vector<Instruction> code;
@@ -157,16 +157,6 @@ class HaloPass final : public Pass {
     }
   }
 
-  static uint32_t rootVariable(const spirv::Module& m, uint32_t pointer) {
-    for (int depth = 0; depth < 16; ++depth) {
-      const Instruction* def = m.definition(pointer);
-      if (!def) return 0;
-      if (def->opcode == spv::OpVariable) return pointer;
-      if (def->opcode != spv::OpAccessChain && def->opcode != spv::OpInBoundsAccessChain) return 0;
-      pointer = def->operand(0);
-    }
-    return 0;
-  }
 
   // Returns `value` itself when it does not depend on the position, else the id of a clone computed
   // from the shifted position (instructions appended to `code`).

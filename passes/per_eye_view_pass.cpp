@@ -207,27 +207,7 @@ bool isImageSample(spv::Op op) {
   }
 }
 
-// Whether operand word k of `inst` is an id (not a literal) for the opcodes the flow follows.
-bool operandIsId(const Instruction& inst, size_t k) {
-  switch (inst.opcode) {
-    case spv::OpCompositeExtract: return k == 0;
-    case spv::OpCompositeInsert: case spv::OpVectorShuffle: return k < 2;
-    case spv::OpExtInst: return k >= 2;
-    case spv::OpPhi: return k % 2 == 0;  // value, parent block, value, ...
-    default: return true;
-  }
-}
 
-uint32_t rootVariable(const Module& m, uint32_t pointer) {
-  for (int depth = 0; depth < 16; ++depth) {
-    const Instruction* def = m.definition(pointer);
-    if (!def) return 0;
-    if (def->opcode == spv::OpVariable) return pointer;
-    if (def->opcode != spv::OpAccessChain && def->opcode != spv::OpInBoundsAccessChain) return 0;
-    pointer = def->operand(0);
-  }
-  return 0;
-}
 
 bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_list<GLSLstd450> which) {
   if (inst.opcode != spv::OpExtInst) return false;
@@ -244,7 +224,7 @@ class FlowAnalysis {
       for (const auto& block : fn.blocks)
         for (const auto& inst : block.instructions)
           if (inst.opcode == spv::OpStore)
-            if (uint32_t root = rootVariable(m, inst.operand(0))) storesTo_[root].push_back(inst.operand(1));
+            if (uint32_t root = m.rootVariable(inst.operand(0))) storesTo_[root].push_back(inst.operand(1));
   }
 
   const Module& module() const { return m_; }
@@ -256,14 +236,14 @@ class FlowAnalysis {
     const Instruction* def = m_.definition(id);
     bool result = false;
     if (def && def->opcode == spv::OpLoad) {
-      uint32_t root = rootVariable(m_, def->operand(0));
+      uint32_t root = m_.rootVariable(def->operand(0));
       auto storage = root ? m_.storageClassOf(root) : std::nullopt;
       if (storage == spv::StorageClassInput) result = true;
       else if (storage == spv::StorageClassFunction || storage == spv::StorageClassPrivate)
         for (uint32_t stored : storesTo_[root]) result = result || dependsOnInput(stored);
     } else if (def && def->resultId && def->opcode != spv::OpVariable && def->opcode != spv::OpFunction) {
       for (size_t k = 0; k < def->operands.size() && !result; ++k)
-        if (operandIsId(*def, k)) result = dependsOnInput(def->operands[k]);
+        if (spirv::isValueOperand(*def, k)) result = dependsOnInput(def->operands[k]);
     }
     inputMemo_[id] = result;
     return result;
@@ -280,7 +260,7 @@ class FlowAnalysis {
       return type && type->opcode == spv::OpTypeMatrix && dependsOnInput(matrix);
     }
     if (def->opcode == spv::OpLoad) {
-      uint32_t root = rootVariable(m_, def->operand(0));
+      uint32_t root = m_.rootVariable(def->operand(0));
       return root && m_.storageClassOf(root) == spv::StorageClassInput;
     }
     return false;
@@ -317,14 +297,14 @@ class FlowAnalysis {
             if (inst.opcode == spv::OpStore) {
               uint8_t f = flagsOf(inst.operand(1));
               if (!f) continue;
-              uint32_t root = rootVariable(m_, inst.operand(0));
+              uint32_t root = m_.rootVariable(inst.operand(0));
               if (!root) continue;
               if (m_.storageClassOf(root) == spv::StorageClassOutput) sinks.outputs[root] |= f;
               else raise(root, f);  // a local: its loads carry the value on
               continue;
             }
             if (inst.opcode == spv::OpLoad) {
-              if (uint8_t f = flagsOf(rootVariable(m_, inst.operand(0)))) raise(inst.resultId, f);
+              if (uint8_t f = flagsOf(m_.rootVariable(inst.operand(0)))) raise(inst.resultId, f);
               continue;
             }
             if (isImageSample(inst.opcode)) {
@@ -335,7 +315,7 @@ class FlowAnalysis {
             if (!inst.resultId) continue;
             uint8_t f = 0, tainted = 0;
             for (size_t k = 0; k < inst.operands.size(); ++k)
-              if (operandIsId(inst, k) && flagsOf(inst.operands[k])) {
+              if (spirv::isValueOperand(inst, k) && flagsOf(inst.operands[k])) {
                 f |= flagsOf(inst.operands[k]);
                 ++tainted;
               }
@@ -396,6 +376,17 @@ std::optional<Slot> cameraSide(const Module& m, uint32_t value) {
   const Instruction* component = m.definition(type->operand(0));
   if (!component || component->opcode != spv::OpTypeFloat) return std::nullopt;
   return slot;
+}
+
+bool hasVectorSubtraction(const Module& m) {
+  for (const auto& fn : m.functions)
+    for (const auto& block : fn.blocks)
+      for (const auto& inst : block.instructions)
+        if (inst.opcode == spv::OpFSub) {
+          const Instruction* type = m.definition(inst.typeId);
+          if (type && type->opcode == spv::OpTypeVector && type->operand(1) >= 3) return true;
+        }
+  return false;
 }
 
 std::map<Slot, std::vector<Subtraction>> findSubtractions(FlowAnalysis& flow) {
@@ -701,6 +692,10 @@ class PerEyeViewPass final : public Pass {
       report["skipped"] = "the shader already carries the eye parameters";
       return finish(PassResult::Unchanged);
     }
+    // Cheap first: a view vector needs a vec3/vec4 subtraction somewhere in the module (inlining
+    // and folding never create one), and most shaders have none; the folded copy costs an
+    // optimizer run.
+    if (ctx.options.cameraUniform.empty() && !hasVectorSubtraction(ctx.module)) return finish(PassResult::Unchanged);
     const Module* folded = foldedCopy(ctx);
     if (!folded) {
       report["skipped"] = "the optimizer could not inline and fold this module; nothing analysed";
@@ -943,7 +938,7 @@ class PerEyeViewPass final : public Pass {
         for (const auto& fn : f.functions)
           for (const auto& block : fn.blocks)
             for (const auto& inst : block.instructions)
-              read |= inst.opcode == spv::OpLoad && rootVariable(f, inst.operand(0)) == id;
+              read |= inst.opcode == spv::OpLoad && f.rootVariable(inst.operand(0)) == id;
         if (read)
           leftAlone.push_back({{"construct", "gl_FragCoord"}, {"use", "screen-position effect"},
                                {"reason", "pixel positions are already per eye; an effect that maps them back to the "

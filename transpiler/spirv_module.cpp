@@ -445,6 +445,61 @@ uint32_t Module::pointeeType(uint32_t pointerTypeId) const {
   return type && type->opcode == spv::OpTypePointer ? type->operand(1) : 0;
 }
 
+
+namespace {
+
+// Image instructions whose operand word 2 is the image-operands mask (3 for the Dref forms).
+bool hasImageOperandsAt2(spv::Op op) {
+  switch (op) {
+    case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod:
+    case spv::OpImageSampleProjImplicitLod: case spv::OpImageSampleProjExplicitLod:
+    case spv::OpImageFetch: case spv::OpImageRead: case spv::OpImageQueryLod:
+    case spv::OpImageSparseSampleImplicitLod: case spv::OpImageSparseSampleExplicitLod:
+    case spv::OpImageSparseFetch: case spv::OpImageSparseRead:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+// Whether operand word k of an instruction in a function body may hold a value id (literals such
+// as extract indices, shuffle components, memory and image operand masks never do). Labels are
+// reported as ids or not at will: they are never the value being replaced.
+bool isValueOperand(const Instruction& inst, size_t k) {
+  switch (inst.opcode) {
+    case spv::OpLoad: return k == 0;
+    case spv::OpStore: case spv::OpCopyMemory: return k < 2;
+    case spv::OpCompositeExtract: return k == 0;
+    case spv::OpCompositeInsert: case spv::OpVectorShuffle: return k < 2;
+    case spv::OpExtInst: return k != 1;
+    case spv::OpSelectionMerge: case spv::OpLoopMerge: case spv::OpBranch: return false;
+    case spv::OpBranchConditional: case spv::OpSwitch: return k == 0;
+    case spv::OpVariable: return k == 1;
+    case spv::OpLine: case spv::OpNoLine: return false;
+    case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
+    case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
+    case spv::OpImageDrefGather: case spv::OpImageGather: case spv::OpImageWrite:
+    case spv::OpImageSparseSampleDrefImplicitLod: case spv::OpImageSparseSampleDrefExplicitLod:
+    case spv::OpImageSparseDrefGather: case spv::OpImageSparseGather:
+      return k != 3;  // image operands mask
+    default:
+      return hasImageOperandsAt2(inst.opcode) ? k != 2 : true;
+  }
+}
+
+uint32_t Module::rootVariable(uint32_t pointer) const {
+  for (int depth = 0; depth < 16; ++depth) {
+    const Instruction* def = definition(pointer);
+    if (!def) return 0;
+    if (def->opcode == spv::OpVariable) return pointer;
+    if (def->opcode != spv::OpAccessChain && def->opcode != spv::OpInBoundsAccessChain) return 0;
+    pointer = def->operand(0);
+  }
+  return 0;
+}
+
 std::string disassemble(const std::vector<uint32_t>& words) {
   spvtools::SpirvTools tools(SPV_ENV_UNIVERSAL_1_6);
   std::string text;

@@ -88,6 +88,8 @@ class Module {
 
   // Definition of an id among global instructions and function bodies (rebuilt lazily after edits).
   const Instruction* definition(uint32_t id) const;
+  // The variable a pointer points into, through access chains; 0 when it is not one.
+  uint32_t rootVariable(uint32_t pointer) const;
   void invalidateDefinitions() { defsValid_ = false; }
 
   // --- names ---
@@ -157,6 +159,11 @@ class Module {
 };
 
 // Convenience: the disassembly of a module through SPIRV-Tools (friendly names, no header).
+// Whether operand word k of an instruction in a function body may hold a value id (literals such
+// as extract indices, shuffle components, memory and image operand masks never do). Labels are
+// reported as ids or not at will: they are never a value being traced or replaced.
+bool isValueOperand(const Instruction& inst, size_t k);
+
 std::string disassemble(const std::vector<uint32_t>& words);
 // Assembles SPIR-V text; returns empty and sets *error on failure.
 std::vector<uint32_t> assemble(const std::string& text, std::string* error);
