@@ -6,11 +6,11 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -99,18 +99,56 @@ struct VersionLine {
   size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
 };
 
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The first `#version N [profile]` directive at the start of a line (a hand-written scan: a
+// std::regex over the whole text cost more than the rest of reading the line structure).
 VersionLine findVersion(const std::string& text) {
-  static const std::regex re(R"((^|\n)[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]*(es|core|compatibility)?)");
   VersionLine v;
-  std::smatch m;
-  if (std::regex_search(text, m, re)) {
-    v.version = std::stoi(m[2]);
-    v.es = m[3] == "es";
-    v.begin = static_cast<size_t>(m.position(0)) + m[1].length();
-    v.end = static_cast<size_t>(m.position(0) + m.length(0));
+  auto skipBlanks = [&](size_t i) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    return i;
+  };
+  for (size_t line = 0; line < text.size(); line = text.find('\n', line), line = line == std::string::npos ? text.size() : line + 1) {
+    size_t i = skipBlanks(line);
+    if (i >= text.size() || text[i] != '#') continue;
+    size_t directive = i;
+    i = skipBlanks(i + 1);
+    if (text.compare(i, 7, "version") != 0) continue;
+    i += 7;
+    size_t digits = skipBlanks(i);
+    if (digits == i || digits >= text.size() || !std::isdigit(static_cast<unsigned char>(text[digits]))) continue;
+    size_t end = digits;
+    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+    v.version = std::stoi(text.substr(digits, end - digits));
+    size_t profile = skipBlanks(end);
+    for (const char* word : {"es", "core", "compatibility"}) {
+      size_t n = std::strlen(word);
+      if (text.compare(profile, n, word) == 0 && (profile + n == text.size() || !isIdentifierChar(text[profile + n]))) {
+        v.es = std::string(word) == "es";
+        end = profile + n;
+        break;
+      }
+    }
+    v.begin = directive;
+    v.end = end;
+    break;
   }
   if (v.version == 100) v.es = true;
   return v;
+}
+
+// Whether `text` contains `name` as a whole identifier followed by `(` (a function definition or
+// call): how the HLSL entry point is found.
+bool mentionsFunction(const std::string& text, const std::string& name) {
+  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    if (at > 0 && isIdentifierChar(text[at - 1])) continue;
+    size_t i = at + name.size();
+    if (i < text.size() && isIdentifierChar(text[i])) continue;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i < text.size() && text[i] == '(') return true;
+  }
+  return false;
 }
 
 std::string buildPreamble(const std::vector<std::string>& defines, bool glsl) {
@@ -246,7 +284,7 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
 std::string chooseHlslEntry(const std::string& text, Stage stage, const std::string& requested) {
   if (!requested.empty()) return requested;
   auto defines = [&](const std::string& name) {
-    return std::regex_search(text, std::regex("\\b" + name + "\\s*\\("));
+    return mentionsFunction(text, name);
   };
   if (defines("main")) return "main";
   const char* conventional = nullptr;
@@ -284,7 +322,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 
   if (language == SourceLanguage::Hlsl) {
     std::string entry = chooseHlslEntry(input.contents, *stage, options.entryPoint);
-    if (!std::regex_search(input.contents, std::regex("\\b" + entry + "\\s*\\("))) {
+    if (!mentionsFunction(input.contents, entry)) {
       diags.error(input.path, "entry point '" + entry + "' not found" +
                                   (options.entryPoint.empty() ? "; name it with -e <function>" : ""));
       return result;

@@ -210,6 +210,10 @@ struct CompiledStage {
   FrontEndResult front;
   Diagnostics diags;
   double ms = 0;  // front-end time, reported with the stage
+  // The folded copy an analysis of the untouched module already made (see foldedCopy()), handed
+  // on so the stage's own passes do not run the optimizer a second time.
+  std::optional<spirv::Module> folded;
+  bool foldTried = false;
 };
 
 // `compiled`: the stage already through the front end (pipelines), or null to run it here.
@@ -284,6 +288,10 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
   auto passesStarted = std::chrono::steady_clock::now();
   PassContext ctx{module, options, info, diags, file, result.report};
   ctx.nextStage = nextStage;
+  if (compiled && compiled->foldTried) {
+    ctx.folded = std::move(compiled->folded);
+    ctx.foldTried = true;
+  }
   bool changed = false;
   if (!runPassPipeline(ctx, &changed, &result.passLog)) return result;
   result.changed = changed;
@@ -390,7 +398,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
 // How the fragment stage of a pipeline uses its inputs (for per-eye-view): analysed before the
 // last pre-rasterization stage is converted. Null when there is no fragment stage to read.
 std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& stages,
-                                                 const std::vector<CompiledStage>& compiled,
+                                                 std::vector<CompiledStage>& compiled,
                                                  const TranspileOptions& options) {
   if (!options.perEyeView) return std::nullopt;
   for (size_t i = 0; i < stages.size(); ++i) {
@@ -404,7 +412,10 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
     nlohmann::json scratch;
     Diagnostics ignored;
     PassContext ctx{*module, options, front.info, ignored, stages[i].path, scratch};
-    return analyseStageInputs(ctx);
+    NextStageFacts facts = analyseStageInputs(ctx);
+    compiled[i].folded = std::move(ctx.folded);
+    compiled[i].foldTried = ctx.foldTried;
+    return facts;
   }
   return std::nullopt;
 }
