@@ -38,8 +38,9 @@ namespace stereoshift {
 
 namespace {
 
-constexpr const char* kCacheFile = ".stereoshift-cache.json";
-constexpr int kCacheFormat = 1;
+// MessagePack, not JSON text: a no-op rebuild of a large tree is mostly reading this file.
+constexpr const char* kCacheFile = ".stereoshift-cache.msgpack";
+constexpr int kCacheFormat = 2;
 
 std::string hex64(uint64_t value) {
   char text[17];
@@ -172,18 +173,34 @@ std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root,
   return pipelines;
 }
 
+// The options a pass converts with, and their description for the cache key (computed once per
+// pass: describing the options per pipeline cost a fifth of a no-op rebuild of a large tree).
+struct PassOptions {
+  CliOptions options;
+  std::string fingerprint;  // the options (before per-pipeline include roots) and the mode
+};
+
+PassOptions passOptions(const CliOptions& options, PassMode mode) {
+  PassOptions p{options, ""};
+  p.options.pipeline = "group";
+  if (mode == PassMode::Deferred) p.options.t.deferredUnprojection = true;
+  if (mode == PassMode::UiAtDepth) p.options.t.hudAtDepth = true;
+  nlohmann::json fingerprint = describeOptions(p.options.t);
+  fingerprint["mode"] = toString(mode);
+  p.fingerprint = fingerprint.dump();
+  return p;
+}
+
 void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const std::vector<fs::path>& stages,
-            const CliOptions& options, const std::string& pass, PassMode mode, bool variant) {
+            const PassOptions& options, const std::string& pass, PassMode mode, bool variant) {
   BuildJob job;
   job.id = variant ? key + "@" + pass : key;
   job.pipeline = key;
   job.stages = stages;
   job.pass = pass;
   job.mode = mode;
-  job.options = options;
-  job.options.pipeline = "group";
-  if (mode == PassMode::Deferred) job.options.t.deferredUnprojection = true;
-  if (mode == PassMode::UiAtDepth) job.options.t.hudAtDepth = true;
+  job.options = options.options;
+  job.fingerprint = options.fingerprint;
   // Each shader's directory and an `include` directory beside it are include roots.
   for (const auto& s : stages) {
     fs::path dir = s.parent_path();
@@ -191,23 +208,23 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
     std::error_code ec;
     if (fs::is_directory(dir / "include", ec)) job.options.t.includeDirs.push_back((dir / "include").string());
   }
+  for (size_t i = options.options.t.includeDirs.size(); i < job.options.t.includeDirs.size(); ++i)
+    job.fingerprint += "\n-I" + job.options.t.includeDirs[i];
   for (const auto& s : stages) {
     std::error_code ec;
     fs::path out = outDir / fs::relative(s, plan.root, ec);
     if (variant) out = variantPath(out, pass);
     job.outputs.push_back(out);
   }
-  nlohmann::json fingerprint = describeOptions(job.options.t);
-  fingerprint["mode"] = toString(mode);
-  job.fingerprint = fingerprint.dump();
   plan.jobs.push_back(std::move(job));
 }
 
 Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOptions& base) {
   Plan plan;
   plan.root = root;
+  PassOptions options = passOptions(base, PassMode::Stereo);
   for (const auto& [key, stages] : findPipelines(root, outDir))
-    addJob(plan, outDir, key, stages, base, "", PassMode::Stereo, false);
+    addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
   return plan;
 }
 
@@ -249,6 +266,12 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
                               std::to_string(where.column) + ": error: pass '" + pass.name + "': '" + pattern +
                               "' matches no pipeline under " + plan.root.string());
     }
+  std::map<const ScenePass*, PassOptions> optionsOf;
+  for (const auto& pass : manifest.passes) {
+    CliOptions options = defaults;
+    for (const auto& o : pass.options) applyOptionWords(options, o.words);
+    optionsOf.emplace(&pass, passOptions(options, pass.mode));
+  }
   std::vector<std::string> unused;
   for (const auto& [key, stages] : pipelines) {
     auto it = users.find(key);
@@ -257,11 +280,7 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
       continue;
     }
     bool variants = it->second.size() > 1;
-    for (const ScenePass* pass : it->second) {
-      CliOptions options = defaults;
-      for (const auto& o : pass->options) applyOptionWords(options, o.words);
-      addJob(plan, outDir, key, stages, options, pass->name, pass->mode, variants);
-    }
+    for (const ScenePass* pass : it->second) addJob(plan, outDir, key, stages, optionsOf.at(pass), pass->name, pass->mode, variants);
   }
   if (!unused.empty()) {
     std::string list;
@@ -370,11 +389,12 @@ struct Cache {
 
 Cache loadCache(const fs::path& file, const std::string& tool) {
   Cache cache;
-  std::string text;
-  if (!readFile(file.string(), &text)) return cache;
-  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_discarded() || j.value("format", 0) != kCacheFormat || j.value("tool", "") != tool) return cache;
-  if (j.contains("jobs") && j["jobs"].is_object()) cache.jobs = j["jobs"];
+  std::string bytes;
+  if (!readFile(file.string(), &bytes)) return cache;
+  nlohmann::json j = nlohmann::json::from_msgpack(bytes, true, false);  // a damaged cache is no cache
+  if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kCacheFormat || j.value("tool", "") != tool)
+    return cache;
+  if (j.contains("jobs") && j["jobs"].is_object()) cache.jobs = std::move(j["jobs"]);
   return cache;
 }
 
@@ -496,10 +516,10 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     std::vector<std::string> dependencies = entry->value("dependencies", std::vector<std::string>{});
     if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry)) {
       upToDate[i] = true;
-      results[i].dependencies = dependencies;
+      results[i].dependencies = std::move(dependencies);
       results[i].reports = entry->value("reports", nlohmann::json::array());
       for (auto& r : results[i].reports) r["cached"] = true;
-      next.jobs[job.id] = *entry;
+      next.jobs[job.id] = std::move(*entry);  // `previous` keeps only what did not carry over
     } else {
       toConvert.push_back(i);
     }
@@ -592,9 +612,10 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   // Outputs of pipelines that are gone from the source (or from the manifest): removed, but only
   // files this tool wrote and nobody changed since.
   int removed = 0;
+  std::set<std::string> planned;
+  for (const auto& job : plan.jobs) planned.insert(job.id);
   for (const auto& [id, entry] : previous.jobs.items()) {
-    if (next.jobs.contains(id) || std::any_of(plan.jobs.begin(), plan.jobs.end(), [&](const BuildJob& j) { return j.id == id; }))
-      continue;
+    if (next.jobs.contains(id) || planned.count(id)) continue;
     const nlohmann::json outputs = entry.value("outputs", nlohmann::json::object());
     for (const auto& [path, hash] : outputs.items()) {
       std::string bytes;
@@ -636,10 +657,13 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   const std::string reportPath = base.reportPath.empty() ? (outDir / "stereoshift-report.json").string() : base.reportPath;
   if (!writeReport(reportPath, summary)) ++errors;
 
-  nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", next.jobs}};
+  // The cache changes when something converted or an entry did not carry over.
   std::string error;
-  bool cacheUnchanged = !build.noCache && next.jobs == previous.jobs && fs::exists(cacheFile, ec);
-  if (!cacheUnchanged && !writeAtomically(cacheFile, cacheJson.dump(1) + "\n", &error)) {
+  bool cacheUnchanged = !build.noCache && toConvert.empty() && next.jobs.size() == previous.jobs.size() &&
+                        fs::exists(cacheFile, ec);
+  nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", std::move(next.jobs)}};
+  std::vector<std::uint8_t> packed = cacheUnchanged ? std::vector<std::uint8_t>{} : nlohmann::json::to_msgpack(cacheJson);
+  if (!cacheUnchanged && !writeAtomically(cacheFile, std::string(packed.begin(), packed.end()), &error)) {
     std::cerr << cacheFile.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
   }
   if (!build.depfile.empty() && !writeAtomically(build.depfile, makeDepfile({reportPath}, dependencies), &error)) {
