@@ -238,8 +238,10 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
             size_t index = w.task;
             w.busy = false;
             w.buffer.clear();
-            onDone(index, std::move(outcome));
+            // The worker gets its next task before the parent handles this result (writing files),
+            // so the two overlap.
             if (!dispatch(w)) stopWorker(w, false);
+            onDone(index, std::move(outcome));
           }
         }
       } else if (timeoutSeconds > 0 && secondsSince(w.started) > timeoutSeconds) {
