@@ -11,16 +11,7 @@ using spirv::Instruction;
 
 namespace {
 
-bool isFloatConstantOne(const spirv::Module& m, uint32_t id) {
-  const Instruction* def = m.definition(id);
-  if (!def || def->opcode != spv::OpConstant) return false;
-  const Instruction* type = m.definition(def->typeId);
-  if (!type || type->opcode != spv::OpTypeFloat || type->operand(0) != 32) return false;
-  float value;
-  uint32_t bits = def->operand(0);
-  std::memcpy(&value, &bits, 4);
-  return value == 1.0f;
-}
+bool isFloatConstantOne(const spirv::Module& m, uint32_t id) { return m.floatConstant(id) == 1.0f; }
 
 // Whether `value` (a vec4) provably has w == 1.0 at compile time.
 bool hasConstantW1(const spirv::Module& m, uint32_t value) {

@@ -118,15 +118,6 @@ bool isComponentwise(uint32_t glslInstruction) {
   }
 }
 
-bool isFloatConstant(const spirv::Module& m, const Instruction* def, float value) {
-  if (!def || def->opcode != spv::OpConstant) return false;
-  const Instruction* type = m.definition(def->typeId);
-  if (!type || type->opcode != spv::OpTypeFloat || type->operand(0) != 32) return false;
-  float f;
-  uint32_t bits = def->operand(0);
-  std::memcpy(&f, &bits, 4);
-  return f == value;
-}
 
 std::string lower(std::string text) {
   for (auto& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -312,7 +303,7 @@ class DataFlow {
     switch (def->opcode) {
       case spv::OpConstant: case spv::OpConstantTrue: case spv::OpConstantFalse: case spv::OpConstantNull:
         s.constant = true;
-        s.constantOtherThanOne = !isFloatConstant(m_, def, 1.0f);
+        s.constantOtherThanOne = m_.floatConstant(def->resultId) != 1.0f;
         return s;
       case spv::OpConstantComposite:
         if (!path.empty() && path[0] < def->operands.size()) return value(def->operands[path[0]], rest(path));

@@ -489,6 +489,17 @@ bool isValueOperand(const Instruction& inst, size_t k) {
   }
 }
 
+std::optional<float> Module::floatConstant(uint32_t id) const {
+  const Instruction* def = definition(id);
+  if (!def || def->opcode != spv::OpConstant) return std::nullopt;
+  const Instruction* type = definition(def->typeId);
+  if (!type || type->opcode != spv::OpTypeFloat || type->operand(0) != 32) return std::nullopt;
+  float value;
+  uint32_t bits = def->operand(0);
+  std::memcpy(&value, &bits, 4);
+  return value;
+}
+
 uint32_t Module::rootVariable(uint32_t pointer) const {
   for (int depth = 0; depth < 16; ++depth) {
     const Instruction* def = definition(pointer);

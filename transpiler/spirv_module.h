@@ -88,6 +88,8 @@ class Module {
 
   // Definition of an id among global instructions and function bodies (rebuilt lazily after edits).
   const Instruction* definition(uint32_t id) const;
+  // The value of a 32-bit float OpConstant; nullopt for anything else.
+  std::optional<float> floatConstant(uint32_t id) const;
   // The variable a pointer points into, through access chains; 0 when it is not one.
   uint32_t rootVariable(uint32_t pointer) const;
   void invalidateDefinitions() { defsValid_ = false; }

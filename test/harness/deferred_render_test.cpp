@@ -518,13 +518,7 @@ TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {
     EXPECT_TRUE(writePng(prefix + "_mono.png", kSize, kSize, baseline.pixels.data()));
     fixedImages[e] = std::move(fixed);
   }
-  std::vector<uint8_t> anaglyph(size_t(kSize) * kSize * 4);
-  for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
-    anaglyph[4 * i + 0] = fixedImages[0].pixels[4 * i + 0];
-    anaglyph[4 * i + 1] = fixedImages[1].pixels[4 * i + 1];
-    anaglyph[4 * i + 2] = fixedImages[1].pixels[4 * i + 2];
-    anaglyph[4 * i + 3] = 255;
-  }
+  std::vector<uint8_t> anaglyph = harness::anaglyph(fixedImages[0].pixels, fixedImages[1].pixels, size_t(kSize) * kSize);
   EXPECT_TRUE(writePng(std::string(IMAGE_OUT_DIR) + "/deferred_anaglyph.png", kSize, kSize, anaglyph.data()));
   std::cout << "[deferred] wrote " IMAGE_OUT_DIR "/deferred_{left,right}_{truth,fix,mono}.png, deferred_anaglyph.png\n";
 }

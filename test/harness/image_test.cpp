@@ -218,13 +218,7 @@ TEST(ImageGroundTruth, TranspiledMatchesStereoProjection) {
   EXPECT_NE(eyes[0].pixels, eyes[1].pixels);
   EXPECT_EQ(std::memcmp(eyes[0].pixel(30, 20), eyes[1].pixel(30, 20), 4), 0) << "HUD moved between eyes";
 
-  std::vector<uint8_t> anaglyph(kSize * kSize * 4);
-  for (size_t i = 0; i < kSize * kSize; ++i) {
-    anaglyph[4 * i + 0] = eyes[0].pixels[4 * i + 0];
-    anaglyph[4 * i + 1] = eyes[1].pixels[4 * i + 1];
-    anaglyph[4 * i + 2] = eyes[1].pixels[4 * i + 2];
-    anaglyph[4 * i + 3] = 255;
-  }
+  std::vector<uint8_t> anaglyph = harness::anaglyph(eyes[0].pixels, eyes[1].pixels, kSize * kSize);
   EXPECT_TRUE(writePng(IMAGE_OUT_DIR "/stereo_left.png", kSize, kSize, eyes[0].pixels.data()));
   EXPECT_TRUE(writePng(IMAGE_OUT_DIR "/stereo_right.png", kSize, kSize, eyes[1].pixels.data()));
   EXPECT_TRUE(writePng(IMAGE_OUT_DIR "/stereo_anaglyph.png", kSize, kSize, anaglyph.data()));

@@ -94,6 +94,17 @@ std::vector<uint8_t> encodePng(int width, int height, const uint8_t* rgba) {
   return png;
 }
 
+std::vector<uint8_t> anaglyph(const std::vector<uint8_t>& left, const std::vector<uint8_t>& right, size_t pixels) {
+  std::vector<uint8_t> out(pixels * 4);
+  for (size_t i = 0; i < pixels; ++i) {
+    out[4 * i + 0] = left[4 * i + 0];
+    out[4 * i + 1] = right[4 * i + 1];
+    out[4 * i + 2] = right[4 * i + 2];
+    out[4 * i + 3] = 255;
+  }
+  return out;
+}
+
 bool writePng(const std::string& path, int width, int height, const uint8_t* rgba) {
   std::vector<uint8_t> png = encodePng(width, height, rgba);
   if (png.empty()) return false;

@@ -279,13 +279,7 @@ TEST(ReliefRender, PerEyeCameraMatchesGroundTruth) {
                          kSize, baseline.pixels.data()));
   }
   EXPECT_NE(fixedEyes[0].pixels, fixedEyes[1].pixels);
-  std::vector<uint8_t> anaglyph(kSize * kSize * 4);
-  for (size_t i = 0; i < kSize * kSize; ++i) {
-    anaglyph[4 * i + 0] = fixedEyes[0].pixels[4 * i + 0];
-    anaglyph[4 * i + 1] = fixedEyes[1].pixels[4 * i + 1];
-    anaglyph[4 * i + 2] = fixedEyes[1].pixels[4 * i + 2];
-    anaglyph[4 * i + 3] = 255;
-  }
+  std::vector<uint8_t> anaglyph = harness::anaglyph(fixedEyes[0].pixels, fixedEyes[1].pixels, kSize * kSize);
   EXPECT_TRUE(writePng(IMAGE_OUT_DIR "/relief_left.png", kSize, kSize, fixedEyes[0].pixels.data()));
   EXPECT_TRUE(writePng(IMAGE_OUT_DIR "/relief_right.png", kSize, kSize, fixedEyes[1].pixels.data()));
   EXPECT_TRUE(writePng(IMAGE_OUT_DIR "/relief_left_truth.png", kSize, kSize, truthEyes[0].pixels.data()));

@@ -275,5 +275,8 @@ inline uint32_t floatBits(float f) {
 // PNG (8-bit RGBA, non-interlaced, zlib stream of stored deflate blocks).
 std::vector<uint8_t> encodePng(int width, int height, const uint8_t* rgba);
 bool writePng(const std::string& path, int width, int height, const uint8_t* rgba);
+// A red/cyan anaglyph of two RGBA8 images of `pixels` pixels: red from the left eye, green and
+// blue from the right, opaque.
+std::vector<uint8_t> anaglyph(const std::vector<uint8_t>& left, const std::vector<uint8_t>& right, size_t pixels);
 
 }  // namespace stereoshift::harness
