@@ -149,27 +149,36 @@ struct Plan {
   std::vector<BuildJob> jobs;
   std::vector<std::string> errors;    // file:line:col: error: ...
   std::vector<std::string> warnings;
-  std::vector<fs::path> extraDependencies;  // the manifest
+  // The manifest and every directory of the tree: a build system that compares timestamps sees a
+  // directory change when a shader is added or removed in it, so the step reruns.
+  std::vector<fs::path> extraDependencies;
   bool manifest = false;
 };
 
-// Shader files under `root`, grouped into pipelines keyed by their path relative to `root`.
-std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir) {
+// Shader files under `root`, grouped into pipelines keyed by their path relative to `root`; the
+// directories walked are appended to `directories`.
+std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir,
+                                                           std::vector<fs::path>* directories) {
   std::error_code ec;
   std::vector<fs::path> files;
+  directories->push_back(root);
   // An output directory inside the source tree is not part of the source.
   fs::path outCanonical = fs::weakly_canonical(outDir, ec);
   for (auto it = fs::recursive_directory_iterator(root, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (ec) break;
-    if (it->is_directory() && fs::weakly_canonical(it->path(), ec) == outCanonical) {
-      it.disable_recursion_pending();
-      continue;
+    if (it->is_directory()) {
+      if (fs::weakly_canonical(it->path(), ec) == outCanonical) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      directories->push_back(it->path());
     }
     if (it->is_regular_file() && stageFromPath(it->path().string())) files.push_back(it->path());
   }
   std::sort(files.begin(), files.end());
   std::map<std::string, std::vector<fs::path>> pipelines;
-  for (const auto& f : files) pipelines[pipelineKey(fs::relative(f, root, ec).generic_string())].push_back(f);
+  // Lexical: every file came from walking `root` (fs::relative would resolve both paths per file).
+  for (const auto& f : files) pipelines[pipelineKey(f.lexically_relative(root).generic_string())].push_back(f);
   return pipelines;
 }
 
@@ -211,8 +220,7 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
   for (size_t i = options.options.t.includeDirs.size(); i < job.options.t.includeDirs.size(); ++i)
     job.fingerprint += "\n-I" + job.options.t.includeDirs[i];
   for (const auto& s : stages) {
-    std::error_code ec;
-    fs::path out = outDir / fs::relative(s, plan.root, ec);
+    fs::path out = outDir / s.lexically_relative(plan.root);
     if (variant) out = variantPath(out, pass);
     job.outputs.push_back(out);
   }
@@ -223,7 +231,7 @@ Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOption
   Plan plan;
   plan.root = root;
   PassOptions options = passOptions(base, PassMode::Stereo);
-  for (const auto& [key, stages] : findPipelines(root, outDir))
+  for (const auto& [key, stages] : findPipelines(root, outDir, &plan.extraDependencies))
     addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
   return plan;
 }
@@ -245,7 +253,7 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
                           "' does not exist");
     return plan;
   }
-  auto pipelines = findPipelines(plan.root, outDir);
+  auto pipelines = findPipelines(plan.root, outDir, &plan.extraDependencies);
 
   CliOptions defaults = base;
   for (const auto& o : manifest.defaults) applyOptionWords(defaults, o.words);  // checked while loading
