@@ -249,7 +249,7 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
         double seconds = secondsSince(w.started);
         stopWorker(w, true);
         char text[64];
-        std::snprintf(text, sizeof text, "timed out after %.0f s", timeoutSeconds);
+        std::snprintf(text, sizeof text, "timed out after %g s", timeoutSeconds);
         fail(index, text, seconds);
         dispatch(w);
       }

@@ -40,7 +40,7 @@ const spirv::Module* foldedCopy(PassContext& context) {
     // need the last). Chosen by measurement: the shortest list tried that keeps every analysis result
     // of the corpus and the lit tests.
     optimizer.RegisterPassesFromFlags({"--merge-return", "--inline-entry-points-exhaustive", "--private-to-local",
-                                       "--scalar-replacement=100", "--eliminate-local-single-store",
+                                       "--scalar-replacement=100", "--eliminate-local-single-block", "--eliminate-local-single-store",
                                        "--eliminate-local-multi-store", "--ccp", "--simplify-instructions",
                                        "--redundancy-elimination"});
     spvtools::OptimizerOptions options;
