@@ -15,6 +15,8 @@
 //   2. the lit image: PSNR and max channel difference of fix and baseline against truth. The fix
 //      must match to the 8-bit rounding of the output (at most 1 level), the baseline must not.
 // PNGs of each eye (truth, fix, baseline) and a red/cyan anaglyph of the fix are written for a person.
+// Both checks run for the GLSL lighting shader and for its HLSL relative (kLightingHlsl, through
+// glslang's HLSL front end), with the same scene, matrices and bounds.
 #include "test/harness/stereo_verify.h"
 #include "transpiler/front_end.h"
 
@@ -111,6 +113,56 @@ void main()
     // rounding-level position errors stay far below one 8-bit level.
     float pattern = 0.7 + 0.3 * sin(4.0 * p.x) * sin(4.0 * p.y + 3.0 * p.z);
     outColor = vec4(albedo * pattern * (0.3 + frame.lightColor.rgb * ndl * atten * atten), 1.0);
+#endif
+}
+)";
+
+// The HLSL relative of kLightingFrag, a close copy of corpus/hlsl/point_light.frag.hlsl made to fit
+// the scene: the same cbuffer contents and bindings (explicit [[vk::binding(N, S)]]: set 0 binding 0
+// the frame constants, set 1 bindings 0-2 the G-buffer), NDC from SV_Position (Vulkan convention,
+// no y flip, as the scene's projection is Vulkan's), the depth by Texture2D::Load at the pixel,
+// world position through mul(InvViewProj, float4(ndc, depth, 1)). HLSL `column_major` (the default)
+// float4x4 has the same memory layout as GLSL's mat4, so both shaders get the same bytes.
+// POSITION_COMPONENT writes the float's bits as RGBA8 (k / 255 converts back to exactly k).
+const char* kLightingHlsl = R"(
+[[vk::binding(0, 0)]] cbuffer FrameUBO
+{
+    float4x4 InvViewProj;
+    float4   ViewportSize;   // xy = pixels, zw = 1 / pixels
+    float4   LightPosition;  // xyz = world position, w = radius
+    float4   LightColor;
+};
+
+[[vk::binding(0, 1)]] Texture2D<float4> GAlbedo;
+[[vk::binding(1, 1)]] Texture2D<float4> GNormal;
+[[vk::binding(2, 1)]] Texture2D<float>  GDepth;
+
+struct PSInput
+{
+    float4 Position : SV_Position;
+};
+
+float4 main(PSInput input) : SV_Target
+{
+    int3 pixel = int3(input.Position.xy, 0);
+    float depth = GDepth.Load(pixel);
+    float2 ndc = input.Position.xy * ViewportSize.zw * 2.0 - 1.0;
+    float4 q = mul(InvViewProj, float4(ndc, depth, 1.0));
+    float3 p = q.xyz / q.w;
+#ifdef POSITION_COMPONENT
+    uint bits = asuint(p[POSITION_COMPONENT]);
+    return float4(bits & 0xffu, (bits >> 8) & 0xffu, (bits >> 16) & 0xffu, bits >> 24) / 255.0;
+#else
+    if (depth >= 1.0)
+        return float4(0.0, 0.0, 0.0, 1.0);
+    float3 albedo = GAlbedo.Load(pixel).rgb;
+    float3 n = normalize(GNormal.Load(pixel).xyz * 2.0 - 1.0);
+    float3 toLight = LightPosition.xyz - p;
+    float dist = length(toLight);
+    float atten = saturate(1.0 - dist / LightPosition.w);
+    float ndl = max(dot(n, toLight / dist), 0.0);
+    float pattern = 0.7 + 0.3 * sin(4.0 * p.x) * sin(4.0 * p.y + 3.0 * p.z);
+    return float4(albedo * pattern * (0.3 + LightColor.rgb * ndl * atten * atten), 1.0);
 #endif
 }
 )";
@@ -242,6 +294,7 @@ std::vector<uint32_t> compileOriginal(const char* name, const char* text, const 
 struct Transpiled {
   std::vector<uint32_t> spirv;
   uint32_t eyeSet = 0, eyeBinding = 0;
+  nlohmann::json report;
 };
 
 Transpiled compileTranspiled(const char* name, const char* text, TranspileOptions options) {
@@ -255,6 +308,7 @@ Transpiled compileTranspiled(const char* name, const char* text, TranspileOption
   const auto& eye = r.report["passes"]["eye-params"];
   t.eyeSet = eye.value("set", 0u);
   t.eyeBinding = eye.value("binding", 0u);
+  t.report = r.report;
   return t;
 }
 
@@ -410,13 +464,17 @@ class DeferredRender : public ::testing::Test {
     return r;
   }
 
+  void checkRebuiltPositions(const char* name, const char* text, const char* tag);
+  void checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix);
+
   std::unique_ptr<VulkanContext> context_;
   std::vector<uint32_t> gbufferVert_, albedoFrag_, normalFrag_, fullScreenVert_;
   VertexBuffer vertices_;
   uint32_t vertexCount_ = 0;
 };
 
-TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
+// Check 1 for the lighting shader `text` (GLSL or HLSL, by the extension of `name`).
+void DeferredRender::checkRebuiltPositions(const char* name, const char* text, const char* tag) {
   const Mat4 viewMatrix = view();
   const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
   for (double eye : {-1.0, 1.0}) {
@@ -428,8 +486,8 @@ TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
     for (int component = 0; component < 3; ++component) {
       TranspileOptions options;
       options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
-      auto original = compileOriginal("deferred_light.frag", kLightingFrag, options);
-      Transpiled transpiled = compileTranspiled("deferred_light.frag", kLightingFrag, options);
+      auto original = compileOriginal(name, text, options);
+      Transpiled transpiled = compileTranspiled(name, text, options);
       truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye);
       fixedPosition[component] = renderLighting(g, transpiled.spirv, monoInverse, &transpiled, eye);
       baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye);
@@ -470,7 +528,7 @@ TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
         }
         baselineOutside += baselineWrong;
       }
-    std::cout << std::setprecision(3) << "[deferred] eye " << eye << ": world position over " << pixels
+    std::cout << std::setprecision(3) << "[" << tag << "] eye " << eye << ": world position over " << pixels
               << " pixels, error / first-order rounding bound: truth " << worstTruth << ", fix " << worstFix
               << "; max |p - p_exact|: fix " << maxFixError << ", mono baseline " << maxBaselineError
               << " world units; max |fix - truth| " << maxFixVsTruth << "; mono baseline beyond rounding at "
@@ -483,10 +541,11 @@ TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
   }
 }
 
-TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {
+// Check 2 for the lighting shader `text`; PNGs named `<pngPrefix>_{left,right}_{truth,fix,mono}.png`.
+void DeferredRender::checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix) {
   TranspileOptions options;
-  auto original = compileOriginal("deferred_light.frag", kLightingFrag, options);
-  Transpiled transpiled = compileTranspiled("deferred_light.frag", kLightingFrag, options);
+  auto original = compileOriginal(name, text, options);
+  Transpiled transpiled = compileTranspiled(name, text, options);
   const Mat4 viewMatrix = view();
   const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
 
@@ -500,7 +559,7 @@ TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {
     RenderResult baseline = renderLighting(g, original, monoInverse, nullptr, eye);
     ASSERT_TRUE(truth.ok() && fixed.ok() && baseline.ok());
     ImageError fixError = compare(truth, fixed), baselineError = compare(truth, baseline);
-    std::cout << std::setprecision(4) << "[deferred] eye " << eye << " (" << side << "): fix PSNR "
+    std::cout << std::setprecision(4) << "[" << tag << "] eye " << eye << " (" << side << "): fix PSNR "
               << psnr(fixError.mse) << " dB, max diff " << fixError.maxDifference << " (" << fixError.differing
               << " channels differ); mono baseline PSNR " << psnr(baselineError.mse) << " dB, max diff "
               << baselineError.maxDifference << " (" << baselineError.differing << " channels differ) of "
@@ -512,15 +571,41 @@ TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {
     EXPECT_GT(baselineError.maxDifference, 8) << side;
     EXPECT_LT(psnr(baselineError.mse), psnr(fixError.mse) - 20.0) << side;
 
-    std::string prefix = std::string(IMAGE_OUT_DIR) + "/deferred_" + side;
+    std::string prefix = std::string(IMAGE_OUT_DIR) + "/" + pngPrefix + "_" + side;
     EXPECT_TRUE(writePng(prefix + "_truth.png", kSize, kSize, truth.pixels.data()));
     EXPECT_TRUE(writePng(prefix + "_fix.png", kSize, kSize, fixed.pixels.data()));
     EXPECT_TRUE(writePng(prefix + "_mono.png", kSize, kSize, baseline.pixels.data()));
     fixedImages[e] = std::move(fixed);
   }
   std::vector<uint8_t> anaglyph = harness::anaglyph(fixedImages[0].pixels, fixedImages[1].pixels, size_t(kSize) * kSize);
-  EXPECT_TRUE(writePng(std::string(IMAGE_OUT_DIR) + "/deferred_anaglyph.png", kSize, kSize, anaglyph.data()));
-  std::cout << "[deferred] wrote " IMAGE_OUT_DIR "/deferred_{left,right}_{truth,fix,mono}.png, deferred_anaglyph.png\n";
+  EXPECT_TRUE(writePng(std::string(IMAGE_OUT_DIR) + "/" + pngPrefix + "_anaglyph.png", kSize, kSize, anaglyph.data()));
+  std::cout << "[" << tag << "] wrote " IMAGE_OUT_DIR "/" << pngPrefix << "_{left,right}_{truth,fix,mono}.png, "
+            << pngPrefix << "_anaglyph.png\n";
+}
+
+TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
+  checkRebuiltPositions("deferred_light.frag", kLightingFrag, "deferred");
+}
+
+TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {
+  checkLitImage("deferred_light.frag", kLightingFrag, "deferred", "deferred");
+}
+
+// The same two checks with the HLSL lighting shader: truth = the original HLSL (glslang's HLSL front
+// end, compileToSpirv) with the true per-eye inverse, fix = stereoshift's SPIR-V for it with the mono
+// inverse and the eye parameters, baseline = the original with the mono inverse. Same bounds as the
+// GLSL shader: positions of truth and fix within positionBound() of the exact position and the mono
+// baseline beyond it at > 90 % of the pixels; lit image: fix max diff <= 1 level, baseline max
+// diff > 8 levels and PSNR more than 20 dB below the fix's.
+TEST_F(DeferredRender, HlslLightingShaderFixedByExecution) {
+  // The fix is really in the transpiled module (not a copy of the original that happens to pass).
+  Transpiled transpiled = compileTranspiled("deferred_light.frag.hlsl", kLightingHlsl, TranspileOptions{});
+  const auto& pass = transpiled.report["passes"]["deferred-unprojection"];
+  EXPECT_EQ(pass.value("result", std::string()), "changed") << transpiled.report.dump(2);
+  EXPECT_TRUE(pass.contains("fixed") && !pass["fixed"].empty()) << pass.dump(2);
+  EXPECT_FALSE(pass.contains("left_alone")) << pass.dump(2);
+  checkRebuiltPositions("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl");
+  checkLitImage("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl", "deferred_hlsl");
 }
 
 }  // namespace
