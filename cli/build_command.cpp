@@ -79,12 +79,11 @@ std::string toolIdentity() {
 
 struct BuildJob {
   std::string id;                 // pipeline key relative to the root, `@pass` for a variant
-  std::string pipeline;           // pipeline key relative to the root
   std::vector<fs::path> stages;   // source files, in path order
   std::vector<fs::path> outputs;  // one per stage
   std::string pass;               // manifest pass ("" without a manifest)
   PassMode mode = PassMode::Stereo;
-  CliOptions options;
+  TranspileOptions options;
   std::string fingerprint;        // options + mode: part of the cache key
 };
 
@@ -152,7 +151,6 @@ struct Plan {
   // The manifest and every directory of the tree: a build system that compares timestamps sees a
   // directory change when a shader is added or removed in it, so the step reruns.
   std::vector<fs::path> extraDependencies;
-  bool manifest = false;
 };
 
 // Shader files under `root`, grouped into pipelines keyed by their path relative to `root`; the
@@ -185,16 +183,15 @@ std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root,
 // The options a pass converts with, and their description for the cache key (computed once per
 // pass: describing the options per pipeline cost a fifth of a no-op rebuild of a large tree).
 struct PassOptions {
-  CliOptions options;
+  TranspileOptions options;
   std::string fingerprint;  // the options (before per-pipeline include roots) and the mode
 };
 
 PassOptions passOptions(const CliOptions& options, PassMode mode) {
-  PassOptions p{options, ""};
-  p.options.pipeline = "group";
-  if (mode == PassMode::Deferred) p.options.t.deferredUnprojection = true;
-  if (mode == PassMode::UiAtDepth) p.options.t.hudAtDepth = true;
-  nlohmann::json fingerprint = describeOptions(p.options.t);
+  PassOptions p{options.t, ""};
+  if (mode == PassMode::Deferred) p.options.deferredUnprojection = true;
+  if (mode == PassMode::UiAtDepth) p.options.hudAtDepth = true;
+  nlohmann::json fingerprint = describeOptions(p.options);
   fingerprint["mode"] = toString(mode);
   p.fingerprint = fingerprint.dump();
   return p;
@@ -204,7 +201,6 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
             const PassOptions& options, const std::string& pass, PassMode mode, bool variant) {
   BuildJob job;
   job.id = variant ? key + "@" + pass : key;
-  job.pipeline = key;
   job.stages = stages;
   job.pass = pass;
   job.mode = mode;
@@ -213,12 +209,12 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
   // Each shader's directory and an `include` directory beside it are include roots.
   for (const auto& s : stages) {
     fs::path dir = s.parent_path();
-    job.options.t.includeDirs.push_back(dir.string());
+    job.options.includeDirs.push_back(dir.string());
     std::error_code ec;
-    if (fs::is_directory(dir / "include", ec)) job.options.t.includeDirs.push_back((dir / "include").string());
+    if (fs::is_directory(dir / "include", ec)) job.options.includeDirs.push_back((dir / "include").string());
   }
-  for (size_t i = options.options.t.includeDirs.size(); i < job.options.t.includeDirs.size(); ++i)
-    job.fingerprint += "\n-I" + job.options.t.includeDirs[i];
+  for (size_t i = options.options.includeDirs.size(); i < job.options.includeDirs.size(); ++i)
+    job.fingerprint += "\n-I" + job.options.includeDirs[i];
   for (const auto& s : stages) {
     fs::path out = outDir / s.lexically_relative(plan.root);
     if (variant) out = variantPath(out, pass);
@@ -238,7 +234,6 @@ Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOption
 
 Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const CliOptions& base) {
   Plan plan;
-  plan.manifest = true;
   plan.extraDependencies.push_back(manifestFile);
   SceneManifest manifest;
   auto check = [](const std::vector<std::string>& words) {
@@ -362,7 +357,7 @@ JobResult convertJob(const BuildJob& job) {
   for (const auto& p : job.stages) paths.push_back(p.string());
   result.errors += readSources(paths, &sources, log);
   if (!result.errors) {
-    std::vector<TranspileResult> converted = transpilePipeline(sources, job.options.t);
+    std::vector<TranspileResult> converted = transpilePipeline(sources, job.options);
     result.outputs.resize(converted.size());
     for (size_t i = 0; i < converted.size(); ++i) {
       auto& r = converted[i];
@@ -511,7 +506,6 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   const size_t count = plan.jobs.size();
   std::vector<JobResult> results(count);
   std::vector<bool> upToDate(count, false);
-  std::vector<double> seconds(count, 0);
   std::vector<size_t> toConvert;
   for (size_t i = 0; i < count; ++i) {
     const BuildJob& job = plan.jobs[i];
@@ -566,7 +560,6 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     size_t i = toConvert[slot];
     const BuildJob& job = plan.jobs[i];
     JobResult& result = results[i];
-    seconds[i] = outcome.seconds;
     if (!outcome.completed || !deserialize(outcome.payload, &result)) {
       std::string why = outcome.completed ? "sent back an unreadable result" : outcome.failure;
       std::string stages;

@@ -24,7 +24,7 @@ struct CliOptions {
   std::string pipeline;
   std::string reportPath;
   std::string depfile;  // single shader / pipeline: Makefile-style dependencies of the outputs
-  bool noCutoff = false, exactCutoff = false, noInvariant = false, noHalo = false;
+  bool noCutoff = false, noInvariant = false, noHalo = false;
   bool noPerEyeView = false, noDeferredUnprojection = false;
   std::optional<uint32_t> set, binding, hlslRegister, glBinding;
   std::optional<int> targetVersion;

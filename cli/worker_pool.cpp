@@ -108,32 +108,25 @@ bool startWorker(Worker& w, const std::vector<Worker>& others, const std::functi
   return true;
 }
 
-void stopWorker(Worker& w, bool kill) {
+// Closes the worker's pipes (it sees EOF and exits), kills it first when `kill`, and reaps it;
+// returns its wait status.
+int stopWorker(Worker& w, bool kill) {
   if (w.requests >= 0) ::close(w.requests);
   if (w.results >= 0) ::close(w.results);
   w.requests = w.results = -1;
+  int status = 0;
   if (w.pid > 0) {
     if (kill) ::kill(w.pid, SIGKILL);
-    int status;
     while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
     }
   }
   w.pid = -1;
   w.busy = false;
+  return status;
 }
 
 // Reaps a worker that closed its pipe mid-task and says why it died.
-std::string reapDead(Worker& w) {
-  ::close(w.requests);
-  ::close(w.results);
-  w.requests = w.results = -1;
-  int status = 0;
-  while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  w.pid = -1;
-  w.busy = false;
-  return describeStatus(status);
-}
+std::string reapDead(Worker& w) { return describeStatus(stopWorker(w, false)); }
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 

@@ -398,14 +398,14 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
 // How the fragment stage of a pipeline uses its inputs (for per-eye-view): analysed before the
 // last pre-rasterization stage is converted. Null when there is no fragment stage to read.
 std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& stages,
-                                                 std::vector<CompiledStage>& compiled,
+                                                 std::vector<std::optional<CompiledStage>>& compiled,
                                                  const TranspileOptions& options) {
   if (!options.perEyeView) return std::nullopt;
   for (size_t i = 0; i < stages.size(); ++i) {
     auto kind = options.stage ? options.stage : stageFromPath(stages[i].path);
     if (kind != Stage::Fragment) continue;
-    const FrontEndResult& front = compiled[i].front;
-    if (!front.ok) return std::nullopt;  // the fragment stage reports its own errors when converted
+    if (!compiled[i] || !compiled[i]->front.ok) return std::nullopt;  // reported when the stage converts
+    const FrontEndResult& front = compiled[i]->front;
     std::string error;
     auto module = spirv::Module::parse(front.spirv, &error);
     if (!module) return std::nullopt;
@@ -413,8 +413,8 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
     Diagnostics ignored;
     PassContext ctx{*module, options, front.info, ignored, stages[i].path, scratch};
     NextStageFacts facts = analyseStageInputs(ctx);
-    compiled[i].folded = std::move(ctx.folded);
-    compiled[i].foldTried = ctx.foldTried;
+    compiled[i]->folded = std::move(ctx.folded);
+    compiled[i]->foldTried = ctx.foldTried;
     return facts;
   }
   return std::nullopt;
@@ -446,17 +446,17 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     }
   }
   // Each source stage goes through the front end once; the analyses below and the conversion share it.
-  std::vector<CompiledStage> compiled(stages.size());
-  std::vector<bool> precompiled(stages.size(), false);
+  // Empty when the stage does not go through it (SPIR-V, unreadable input: transpileStage says why).
+  std::vector<std::optional<CompiledStage>> compiled(stages.size());
   for (size_t i = 0; i < stages.size(); ++i) {
     const SourceFile& stage = stages[i];
     if (stage.contents.empty() || isSpirvBinary(stage.contents) || stage.path.ends_with(".spv") ||
         std::memchr(stage.contents.data(), '\0', std::min<size_t>(stage.contents.size(), 4096)))
-      continue;  // transpileStage reports these itself
+      continue;
     auto frontStarted = std::chrono::steady_clock::now();
-    compiled[i].front = compileToSpirv(stage, options, compiled[i].diags);
-    compiled[i].ms = msSince(frontStarted);
-    precompiled[i] = true;
+    compiled[i].emplace();
+    compiled[i]->front = compileToSpirv(stage, options, compiled[i]->diags);
+    compiled[i]->ms = msSince(frontStarted);
   }
   // The injected block must not take a binding another stage of the pipeline uses.
   TranspileOptions pipelineOptions = options;
@@ -464,8 +464,8 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     std::optional<uint32_t> highest;
     bool hlsl = false;
     for (const auto& c : compiled) {
-      const FrontEndResult& front = c.front;
-      if (!front.ok) continue;
+      if (!c || !c->front.ok) continue;
+      const FrontEndResult& front = c->front;
       hlsl |= front.info.language == SourceLanguage::Hlsl;
       std::string error;
       auto m = spirv::Module::parse(front.spirv, &error);
@@ -485,7 +485,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
     const NextStageFacts* facts = static_cast<int>(i) == last && fragmentFacts ? &*fragmentFacts : nullptr;
-    results.push_back(transpileStage(stages[i], stageOptions, facts, precompiled[i] ? &compiled[i] : nullptr));
+    results.push_back(transpileStage(stages[i], stageOptions, facts, compiled[i] ? &*compiled[i] : nullptr));
   }
   return results;
 }
