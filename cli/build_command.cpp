@@ -295,6 +295,27 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
   return plan;
 }
 
+// The key of a job: this tool, its options, and the path and bytes of every input and dependency.
+// A file that cannot be read hashes as missing (its reappearance changes the key). `converted`:
+// the stages' bytes as the worker converted them (so an edit during the run is not cached as
+// converted); otherwise they are read here.
+std::string jobKey(const std::string& tool, const BuildJob& job, const std::vector<std::string>& dependencies,
+                   const std::vector<SourceFile>* converted = nullptr) {
+  KeyHasher h;
+  h.add(tool);
+  h.add(job.fingerprint);
+  auto addFile = [&](const std::string& path, const std::string* known) {
+    std::string bytes;
+    h.add(path);
+    h.add(known ? "=" + *known : readFile(path, &bytes) ? "=" + bytes : std::string("<missing>"));
+  };
+  for (size_t i = 0; i < job.stages.size(); ++i)
+    addFile(job.stages[i].string(), converted && i < converted->size() ? &(*converted)[i].contents : nullptr);
+  for (const auto& o : job.outputs) h.add(o.string());
+  for (const auto& d : dependencies) addFile(d, nullptr);
+  return h.digest();
+}
+
 // ---- what a worker sends back -------------------------------------------------------------------
 
 struct JobResult {
@@ -303,6 +324,7 @@ struct JobResult {
   nlohmann::json reports = nlohmann::json::array();
   std::vector<std::string> outputs;  // per stage; only for stages whose report says ok
   std::vector<std::string> dependencies;
+  std::string key;  // the cache key of what was converted
 };
 
 void putString(std::string& out, const std::string& s) {
@@ -324,7 +346,7 @@ bool getString(const std::string& in, size_t& at, std::string* s) {
 
 std::string serialize(const JobResult& r) {
   nlohmann::json head = {{"errors", r.errors}, {"log", r.log}, {"reports", r.reports},
-                         {"dependencies", r.dependencies}, {"outputs", r.outputs.size()}};
+                         {"dependencies", r.dependencies}, {"key", r.key}, {"outputs", r.outputs.size()}};
   std::string out;
   putString(out, head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   for (const auto& o : r.outputs) putString(out, o);
@@ -341,6 +363,7 @@ bool deserialize(const std::string& in, JobResult* r) {
   r->log = head.value("log", "");
   r->reports = head.value("reports", nlohmann::json::array());
   r->dependencies = head.value("dependencies", std::vector<std::string>{});
+  r->key = head.value("key", "");
   size_t count = head.value("outputs", size_t{0});
   r->outputs.resize(count);
   for (auto& o : r->outputs)
@@ -349,7 +372,7 @@ bool deserialize(const std::string& in, JobResult* r) {
 }
 
 // Runs in a worker: converts one pipeline, keeping everything in memory.
-JobResult convertJob(const BuildJob& job) {
+JobResult convertJob(const BuildJob& job, const std::string& tool) {
   JobResult result;
   std::ostringstream log;
   std::vector<SourceFile> sources;
@@ -381,6 +404,7 @@ JobResult convertJob(const BuildJob& job) {
   std::sort(result.dependencies.begin(), result.dependencies.end());
   result.dependencies.erase(std::unique(result.dependencies.begin(), result.dependencies.end()), result.dependencies.end());
   result.log = log.str();
+  result.key = jobKey(tool, job, result.dependencies, &sources);
   return result;
 }
 
@@ -401,22 +425,6 @@ Cache loadCache(const fs::path& file, const std::string& tool) {
   return cache;
 }
 
-// The key of a job: this tool, its options, and the path and bytes of every input and dependency.
-// A file that cannot be read hashes as missing (its reappearance changes the key).
-std::string jobKey(const std::string& tool, const BuildJob& job, const std::vector<std::string>& dependencies) {
-  KeyHasher h;
-  h.add(tool);
-  h.add(job.fingerprint);
-  auto addFile = [&](const std::string& path) {
-    std::string bytes;
-    h.add(path);
-    h.add(readFile(path, &bytes) ? "=" + bytes : std::string("<missing>"));
-  };
-  for (const auto& s : job.stages) addFile(s.string());
-  for (const auto& o : job.outputs) h.add(o.string());
-  for (const auto& d : dependencies) addFile(d);
-  return h.digest();
-}
 
 // Whether the cached entry still describes the outputs on disk, byte for byte.
 bool outputsIntact(const nlohmann::json& entry) {
@@ -590,7 +598,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
       if (!result.errors) {
         nlohmann::json stored = result.reports;
         for (auto& r : stored) r.erase("cached");
-        next.jobs[job.id] = {{"key", jobKey(tool, job, result.dependencies)},
+        next.jobs[job.id] = {{"key", result.key},
                              {"dependencies", result.dependencies},
                              {"outputs", outputs},
                              {"reports", stored}};
@@ -606,7 +614,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     for (size_t i : toConvert) affinity.push_back(dialectOf(plan.jobs[i].stages.front()));
     runIsolated(
         toConvert.size(), workers, build.jobTimeoutSeconds,
-        [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]])); }, record, affinity);
+        [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
     if (tty) std::cerr << "\n";
   }
 
