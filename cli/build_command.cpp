@@ -444,17 +444,16 @@ bool writeIfChanged(const fs::path& path, const std::string& bytes, std::string*
   return writeAtomically(path, bytes, error);
 }
 
-// The dialect of a shader, for scheduling: HLSL, SPIR-V, or the GLSL `#version` line. Shaders of
-// one dialect share glslang's built-in symbol tables inside a worker.
+// The dialect of a shader, for scheduling: HLSL, SPIR-V, or the GLSL version and profile. Shaders
+// of one dialect share glslang's built-in symbol tables inside a worker.
 std::string dialectOf(const fs::path& path) {
   std::string name = path.filename().string();
-  if (name.size() > 5 && name.ends_with(".hlsl")) return "hlsl";
-  if (name.size() > 4 && name.ends_with(".spv")) return "spirv";
+  if (name.ends_with(".hlsl")) return "hlsl";
+  if (name.ends_with(".spv")) return "spirv";
   std::string text;
   if (!readFile(path.string(), &text)) return "";
-  size_t at = text.find("#version");
-  if (at == std::string::npos) return "glsl";
-  return text.substr(at, text.find('\n', at) - at);
+  VersionLine v = findVersion(text);
+  return "glsl " + std::to_string(v.version) + (v.es ? " es" : "");
 }
 
 void drawProgress(size_t done, size_t total, const std::string& what) {

@@ -145,12 +145,10 @@ class Loader {
     return true;
   }
 
-  bool options(const toml::table& table, const std::set<std::string>& skip, const std::string& where,
-               std::vector<ManifestOption>* out) {
+  bool options(const toml::table& table, const std::set<std::string>& skip, std::vector<ManifestOption>* out) {
     bool ok = true;
     for (const auto& [key, value] : table)
       if (!skip.count(std::string(key.str()))) ok &= option(key, value, out);
-    (void)where;
     return ok;
   }
 
@@ -205,7 +203,7 @@ class Loader {
         pass->pipelines.emplace_back(*p.value<std::string>(), locationOf(p));
       }
     }
-    ok &= options(table, {"name", "mode", "pipelines"}, " in pass '" + pass->name + "'", &pass->options);
+    ok &= options(table, {"name", "mode", "pipelines"}, &pass->options);
     return ok;
   }
 
@@ -232,7 +230,7 @@ class Loader {
           manifest->sourceRoot = (file_.parent_path() / *s).lexically_normal();
         }
       } else if (k == "defaults") {
-        if (const toml::table* t = value.as_table()) ok &= options(*t, {}, " in [defaults]", &manifest->defaults);
+        if (const toml::table* t = value.as_table()) ok &= options(*t, {}, &manifest->defaults);
         else {
           error(locationOf(value), "`defaults` must be a table ([defaults])");
           ok = false;

@@ -93,23 +93,21 @@ class RestrictedIncluder : public glslang::TShader::Includer {
   std::vector<std::string> included_;
 };
 
-struct VersionLine {
-  int version = 110;  // GLSL's default without #version
-  bool es = false;
-  size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
-};
-
 bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// The first `#version N [profile]` directive at the start of a line (a hand-written scan: a
-// std::regex over the whole text cost more than the rest of reading the line structure).
+}  // namespace
+
+// A hand-written scan: a std::regex over the whole text cost more than the rest of the front end's
+// reading of the source.
 VersionLine findVersion(const std::string& text) {
   VersionLine v;
   auto skipBlanks = [&](size_t i) {
     while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
     return i;
   };
-  for (size_t line = 0; line < text.size(); line = text.find('\n', line), line = line == std::string::npos ? text.size() : line + 1) {
+  for (size_t line = 0, next = 0; line < text.size(); line = next) {
+    size_t newline = text.find('\n', line);
+    next = newline == std::string::npos ? text.size() : newline + 1;
     size_t i = skipBlanks(line);
     if (i >= text.size() || text[i] != '#') continue;
     size_t directive = i;
@@ -137,6 +135,8 @@ VersionLine findVersion(const std::string& text) {
   if (v.version == 100) v.es = true;
   return v;
 }
+
+namespace {
 
 // Whether `text` contains `name` as a whole identifier followed by `(` (a function definition or
 // call): how the HLSL entry point is found.

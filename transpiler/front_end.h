@@ -33,6 +33,14 @@ struct FrontEndResult {
   std::vector<std::string> includedFiles;
 };
 
+// The first `#version N [es|core|compatibility]` directive at the start of a line of GLSL `text`.
+struct VersionLine {
+  int version = 110;  // GLSL's default without #version
+  bool es = false;
+  size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
+};
+VersionLine findVersion(const std::string& text);
+
 // Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form.
 FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags);
 
