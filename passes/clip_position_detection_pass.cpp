@@ -87,16 +87,6 @@ class ClipPositionDetectionPass final : public Pass {
     return positions;
   }
 
-  // An earlier stereoshift run (or the application itself) already declares eyeSign next to
-  // separation: shifting again would double the parallax.
-  static bool carriesEyeParameters(const PassContext& ctx) {
-    bool eyeSign = false, separation = false;
-    for (const auto& n : ctx.module.allNames()) {
-      eyeSign |= n == ctx.options.eye.eyeSignName;
-      separation |= n == ctx.options.eye.separationName;
-    }
-    return eyeSign && separation;
-  }
 
   // The literal w = 1.0 may only show after inlining and folding (HLSL output structs, helper
   // functions): ask the shared folded copy.

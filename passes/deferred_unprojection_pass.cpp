@@ -526,16 +526,9 @@ class DeferredUnprojectionPass final : public Pass {
       return PassResult::Unchanged;
     // Already converted (the eye parameters were there before this run): fixing q again would
     // subtract the parallax twice.
-    if (!ctx.eyeDeclared) {
-      bool eyeSign = false, separation = false;
-      for (const auto& n : m.allNames()) {
-        eyeSign |= n == ctx.options.eye.eyeSignName;
-        separation |= n == ctx.options.eye.separationName;
-      }
-      if (eyeSign && separation) {
-        ctx.report["passes"][name()]["left_alone"] = "the shader already carries the eye parameters";
-        return PassResult::Unchanged;
-      }
+    if (!ctx.eyeDeclared && carriesEyeParameters(ctx)) {
+      ctx.report["passes"][name()]["left_alone"] = "the shader already carries the eye parameters";
+      return PassResult::Unchanged;
     }
     std::set<uint32_t> eyeParameters;
     if (ctx.eyeDeclared) {

@@ -53,6 +53,15 @@ const spirv::Module* foldedCopy(PassContext& context) {
   return context.folded ? &*context.folded : nullptr;
 }
 
+bool carriesEyeParameters(const PassContext& context) {
+  bool eyeSign = false, separation = false;
+  for (const auto& n : context.module.allNames()) {
+    eyeSign |= n == context.options.eye.eyeSignName;
+    separation |= n == context.options.eye.separationName;
+  }
+  return eyeSign && separation;
+}
+
 std::optional<uint32_t> highestBinding(const spirv::Module& m, uint32_t set, bool constantBuffersOnly) {
   std::optional<uint32_t> highest;
   for (const auto& inst : m.typesValues) {

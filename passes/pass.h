@@ -117,6 +117,11 @@ bool ensureEyeParams(PassContext& context, int count);
 // the module's own. Null when the optimizer cannot process the module.
 const spirv::Module* foldedCopy(PassContext& context);
 
+// Whether the module declares eyeSign next to separation (by the configured names): an earlier
+// stereoshift run or the application itself made it stereo already, and shifting or fixing it
+// again would double the parallax. Before this run injects anything, that is; see eyeDeclared.
+bool carriesEyeParameters(const PassContext& context);
+
 // The highest Binding among the variables of descriptor set `set`. With `constantBuffersOnly` only
 // Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
 // onto the same binding numbers.

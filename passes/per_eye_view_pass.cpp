@@ -208,7 +208,6 @@ bool isImageSample(spv::Op op) {
 }
 
 
-
 bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_list<GLSLstd450> which) {
   if (inst.opcode != spv::OpExtInst) return false;
   const Instruction* set = m.definition(inst.operand(0));
@@ -665,15 +664,6 @@ const StageInputUse* consumerOf(const PassContext& ctx, const Module& f, uint32_
   return nullptr;
 }
 
-bool declaresEyeParametersItself(const PassContext& ctx) {
-  bool eyeSign = false, separation = false;
-  for (const auto& n : ctx.module.allNames()) {
-    eyeSign |= n == ctx.options.eye.eyeSignName;
-    separation |= n == ctx.options.eye.separationName;
-  }
-  return eyeSign && separation;
-}
-
 class PerEyeViewPass final : public Pass {
  public:
   const char* name() const override { return "per-eye-view"; }
@@ -688,7 +678,7 @@ class PerEyeViewPass final : public Pass {
       return result;
     };
     // Already stereo (an earlier run, or the application's own parameters): never twice.
-    if (ctx.classification == Classification::AlreadyStereo || (!ctx.eyeDeclared && declaresEyeParametersItself(ctx))) {
+    if (ctx.classification == Classification::AlreadyStereo || (!ctx.eyeDeclared && carriesEyeParameters(ctx))) {
       report["skipped"] = "the shader already carries the eye parameters";
       return finish(PassResult::Unchanged);
     }
