@@ -207,7 +207,6 @@ bool isImageSample(spv::Op op) {
   }
 }
 
-
 bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_list<GLSLstd450> which) {
   if (inst.opcode != spv::OpExtInst) return false;
   const Instruction* set = m.definition(inst.operand(0));
