@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <map>
 #include <vector>
 
 namespace stereoshift {
@@ -73,6 +74,8 @@ struct Worker {
   Clock::time_point started;
   std::string buffer;  // size prefix + payload as it arrives
   std::string group;   // affinity of its last task
+  std::vector<std::string> warmGroups;  // groups this process has run a task of
+  bool firstOfGroup = false;            // its current task is its first of `group` (pays the set-up)
 };
 
 // `others`: the pool, whose parent-side pipe ends a new child must not keep open (a child holding
@@ -152,33 +155,77 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
     outcome.seconds = seconds;
     onDone(index, std::move(outcome));
   };
-  // Which pending task `w` should take next: one of its own group, else the first of a group no
-  // worker has worked on, else the first pending one.
+  // Scheduling by affinity group (glslang builds its built-in tables once per dialect per process):
+  // a worker keeps to its group; a free worker starts the untouched group with the most pending
+  // tasks (largest first balances the workers' loads); when every group has been started it joins
+  // another worker's group only when that pays for the group's set-up. The set-up cost is learnt
+  // while running: a worker's first task of a group takes set-up + t, its later ones t.
+  struct GroupTimes {
+    double firstSeconds = -1;  // quickest first task of the group in a worker
+    double restSeconds = 0;    // later tasks: total and count
+    size_t restCount = 0;
+  };
+  std::map<std::string, GroupTimes> groupTimes;
   std::vector<std::string> groupsStarted;
+  auto started = [&](const std::string& group) {
+    return std::find(groupsStarted.begin(), groupsStarted.end(), group) != groupsStarted.end();
+  };
+  std::map<std::string, size_t> pendingOf;  // pending tasks per group
+  if (affinity.size() == count)
+    for (const auto& group : affinity) ++pendingOf[group];
+  // Whether one more worker on `group` finishes it sooner: with w workers on it and p tasks of t
+  // seconds left, a newcomer paying set-up s finishes at (p·t + s)/(w + 1), against p·t/w without it.
+  auto worthJoining = [&](const std::string& group) {
+    const GroupTimes& times = groupTimes[group];
+    if (times.firstSeconds < 0 || times.restCount == 0) return true;  // nothing learnt yet: join
+    double t = times.restSeconds / static_cast<double>(times.restCount);
+    double setup = std::max(0.0, times.firstSeconds - t);
+    size_t onIt = static_cast<size_t>(std::count_if(pool.begin(), pool.end(), [&](const Worker& o) { return o.busy && o.group == group; }));
+    return onIt == 0 || static_cast<double>(pendingOf[group]) * t > static_cast<double>(onIt) * setup;
+  };
+  // The pending task `w` should take next, or pending.end() when it had better stay idle.
   auto choose = [&](const Worker& w) -> std::deque<size_t>::iterator {
     if (affinity.size() != count) return pending.begin();
     auto same = std::find_if(pending.begin(), pending.end(), [&](size_t i) { return affinity[i] == w.group; });
     if (same != pending.end()) return same;
-    auto fresh = std::find_if(pending.begin(), pending.end(), [&](size_t i) {
-      return std::find(groupsStarted.begin(), groupsStarted.end(), affinity[i]) == groupsStarted.end();
-    });
-    return fresh != pending.end() ? fresh : pending.begin();
+    auto firstOf = [&](const std::string& group) {
+      return std::find_if(pending.begin(), pending.end(), [&](size_t i) { return affinity[i] == group; });
+    };
+    const std::string* fresh = nullptr;
+    const std::string* largest = nullptr;
+    for (const auto& [group, n] : pendingOf) {
+      if (n == 0) continue;
+      if (!started(group) && (!fresh || n > pendingOf[*fresh])) fresh = &group;
+      if (!largest || n > pendingOf[*largest]) largest = &group;
+    }
+    if (fresh) return firstOf(*fresh);
+    if (!largest) return pending.end();
+    // Every group is started: join the one with the most pending tasks, if that pays (or if nobody
+    // else would run it).
+    bool anotherBusy = std::any_of(pool.begin(), pool.end(), [&](const Worker& o) { return &o != &w && o.busy; });
+    return !anotherBusy || worthJoining(*largest) ? firstOf(*largest) : pending.end();
   };
-  // Hands the next task to `w`, starting it first when needed; false when nothing is left.
+  // Hands the next task to `w`, starting it first when needed; false when it gets none.
   auto dispatch = [&](Worker& w) {
     while (!pending.empty()) {
       if (w.pid < 0 && !startWorker(w, pool, task)) {
-        fail(pending.front(), std::string("cannot start a worker process: ") + std::strerror(errno), 0);
+        size_t index = pending.front();
         pending.pop_front();
+        if (affinity.size() == count) --pendingOf[affinity[index]];
+        fail(index, std::string("cannot start a worker process: ") + std::strerror(errno), 0);
         continue;
       }
       auto next = choose(w);
+      if (next == pending.end()) return false;
       size_t index = *next;
       pending.erase(next);
+      w.firstOfGroup = false;
       if (affinity.size() == count) {
+        --pendingOf[affinity[index]];
         w.group = affinity[index];
-        if (std::find(groupsStarted.begin(), groupsStarted.end(), w.group) == groupsStarted.end())
-          groupsStarted.push_back(w.group);
+        w.firstOfGroup = std::find(w.warmGroups.begin(), w.warmGroups.end(), w.group) == w.warmGroups.end();
+        if (w.firstOfGroup) w.warmGroups.push_back(w.group);
+        if (!started(w.group)) groupsStarted.push_back(w.group);
       }
       uint64_t wire = index;
       w.busy = true;
@@ -189,6 +236,22 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
       fail(index, reapDead(w), 0);  // died between tasks
     }
     return false;
+  };
+  auto learn = [&](const Worker& w, double seconds) {
+    if (affinity.size() != count) return;
+    GroupTimes& times = groupTimes[w.group];
+    if (w.firstOfGroup) {
+      times.firstSeconds = times.firstSeconds < 0 ? seconds : std::min(times.firstSeconds, seconds);
+    } else {
+      times.restSeconds += seconds;
+      ++times.restCount;
+    }
+  };
+  // Workers left idle by choose() are offered work again whenever a task ends (estimates change,
+  // and the last busy worker may have died).
+  auto dispatchIdle = [&] {
+    for (auto& o : pool)
+      if (!o.busy && o.pid > 0 && !pending.empty()) dispatch(o);
   };
 
   for (auto& w : pool)
@@ -217,6 +280,7 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
           double seconds = secondsSince(w.started);
           fail(index, reapDead(w), seconds);
           dispatch(w);
+          dispatchIdle();
           continue;
         }
         w.buffer.append(chunk, static_cast<size_t>(n));
@@ -231,9 +295,11 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
             size_t index = w.task;
             w.busy = false;
             w.buffer.clear();
+            learn(w, outcome.seconds);
             // The worker gets its next task before the parent handles this result (writing files),
             // so the two overlap.
-            if (!dispatch(w)) stopWorker(w, false);
+            dispatch(w);
+            dispatchIdle();
             onDone(index, std::move(outcome));
           }
         }
@@ -245,6 +311,7 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
         std::snprintf(text, sizeof text, "timed out after %g s", timeoutSeconds);
         fail(index, text, seconds);
         dispatch(w);
+        dispatchIdle();
       }
     }
   }

@@ -4,7 +4,8 @@
 #include <spirv_cross/spirv_hlsl.hpp>
 #include <spirv_cross/spirv_msl.hpp>
 
-#include <regex>
+#include <cctype>
+#include <string_view>
 
 namespace stereoshift {
 
@@ -20,8 +21,11 @@ TargetLanguage resolveTarget(const SourceInfo& info, const TranspileOptions& opt
 
 namespace {
 
+bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
 // SPIRV-Cross gives every location-assigned varying the semantic TEXCOORD<location>; put back the
 // semantic strings of the source inside the SPIRV_Cross_Input / SPIRV_Cross_Output structs.
+// (Hand-written scans here and below: std::regex cost 6% of a whole tree conversion.)
 std::string restoreSemantics(const std::string& text, const std::string& structName,
                              const std::map<uint32_t, std::string>& semantics) {
   if (semantics.empty()) return text;
@@ -29,25 +33,60 @@ std::string restoreSemantics(const std::string& text, const std::string& structN
   if (begin == std::string::npos) return text;
   size_t end = text.find("};", begin);
   if (end == std::string::npos) return text;
-  std::string body = text.substr(begin, end - begin);
-  static const std::regex texcoord(R"(: TEXCOORD(\d+);)");
-  std::string rebuilt;
-  auto it = std::sregex_iterator(body.begin(), body.end(), texcoord);
-  size_t last = 0;
-  for (; it != std::sregex_iterator(); ++it) {
-    const auto& m = *it;
-    rebuilt += body.substr(last, static_cast<size_t>(m.position(0)) - last);
-    uint32_t location = static_cast<uint32_t>(std::stoul(m[1]));
-    auto found = semantics.find(location);
-    rebuilt += found != semantics.end() ? ": " + found->second + ";" : m.str(0);
-    last = static_cast<size_t>(m.position(0) + m.length(0));
+  static constexpr std::string_view kTexcoord = ": TEXCOORD";
+  std::string rebuilt = text.substr(0, begin);
+  size_t last = begin;
+  for (size_t at = text.find(kTexcoord, begin); at != std::string::npos && at < end;
+       at = text.find(kTexcoord, at + 1)) {
+    size_t digits = at + kTexcoord.size(), stop = digits;
+    while (stop < end && std::isdigit(static_cast<unsigned char>(text[stop]))) ++stop;
+    if (stop == digits || stop - digits > 9 || text[stop] != ';') continue;
+    auto found = semantics.find(static_cast<uint32_t>(std::stoul(text.substr(digits, stop - digits))));
+    if (found == semantics.end()) continue;
+    rebuilt.append(text, last, at - last);
+    rebuilt += ": " + found->second;
+    last = stop;  // keeps the ';'
   }
-  rebuilt += body.substr(last);
-  return text.substr(0, begin) + rebuilt + text.substr(end);
+  rebuilt.append(text, last, std::string::npos);
+  return rebuilt;
 }
 
-std::string replaceWord(const std::string& text, const std::string& from, const std::string& to) {
-  return std::regex_replace(text, std::regex("\\b" + from + "\\b"), to);
+// Renames every whole identifier (a maximal run of [A-Za-z0-9_]) that `names` maps, in one scan, so
+// a new name is never renamed again by a later entry.
+std::string renameIdentifiers(const std::string& text, const std::map<std::string, std::string, std::less<>>& names) {
+  if (names.empty()) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();) {
+    if (!isWordChar(text[i])) {
+      out += text[i++];
+      continue;
+    }
+    size_t j = i;
+    while (j < text.size() && isWordChar(text[j])) ++j;
+    std::string_view word(text.data() + i, j - i);
+    auto found = names.find(word);
+    if (found != names.end())
+      out += found->second;
+    else
+      out += word;
+    i = j;
+  }
+  return out;
+}
+
+// SPIRV-Cross always names the HLSL entry point `main`: `void main(` / `SPIRV_Cross_Output main(`.
+std::string renameEntryPoint(std::string text, const std::string& entryPoint) {
+  static constexpr std::string_view kMain = " main(";
+  for (size_t at = text.find(kMain); at != std::string::npos; at = text.find(kMain, at + 1)) {
+    std::string_view before(text.data(), at);
+    bool returnType = false;
+    for (std::string_view type : {"void", "SPIRV_Cross_Output"})
+      if (before.ends_with(type) && (before.size() == type.size() || !isWordChar(before[before.size() - type.size() - 1])))
+        returnType = true;
+    if (returnType) text.replace(at + 1, 4, entryPoint);
+  }
+  return text;
 }
 
 }  // namespace
@@ -92,11 +131,8 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         if (info.stage != Stage::Vertex) text = restoreSemantics(text, "SPIRV_Cross_Input", hints.inputSemantics);
         text = restoreSemantics(text, "SPIRV_Cross_Output", hints.outputSemantics);
         // cbuffer members keep the names the application looks up.
-        for (const auto& [mangled, plain] : hints.cbufferMemberNames) text = replaceWord(text, mangled, plain);
-        // SPIRV-Cross always calls the HLSL entry point `main`.
-        if (!info.entryPoint.empty() && info.entryPoint != "main")
-          text = std::regex_replace(text, std::regex(R"(\b(SPIRV_Cross_Output|void) main\()"),
-                                    "$1 " + info.entryPoint + "(");
+        text = renameIdentifiers(text, hints.cbufferMemberNames);
+        if (!info.entryPoint.empty() && info.entryPoint != "main") text = renameEntryPoint(std::move(text), info.entryPoint);
         result.text = std::move(text);
         result.version = static_cast<int>(h.shader_model);
         break;

@@ -15,7 +15,7 @@ struct EmitHints {
   // HLSL semantic strings (glslang's UserSemantic decorations) by interface location.
   std::map<uint32_t, std::string> inputSemantics, outputSemantics;
   // cbuffer member renames SPIRV-Cross applies: "<instance>_<member>" -> "<member>".
-  std::map<std::string, std::string> cbufferMemberNames;
+  std::map<std::string, std::string, std::less<>> cbufferMemberNames;
 };
 
 struct EmitResult {
