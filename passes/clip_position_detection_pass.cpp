@@ -50,7 +50,8 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::AlreadyStereo;
       ctx.diags.note(ctx.file, "shader already carries stereo eye parameters ('" + ctx.options.eye.eyeSignName +
                                    "'); left as it is, never shifted twice");
-    } else if (allWritesHaveConstantW1(ctx.module, ctx.positions) || constantW1AfterFolding(ctx)) {
+    } else if (allWritesHaveConstantW1(ctx.module, ctx.positions) ||
+               (!entryStoresRuntimeProduct(ctx.module, ctx.positions) && constantW1AfterFolding(ctx))) {
       ctx.classification = Classification::ConstantW1;
     } else {
       ctx.classification = Classification::Perspective;
@@ -87,6 +88,51 @@ class ClipPositionDetectionPass final : public Pass {
     return positions;
   }
 
+
+  // Cheap proof of a perspective position, which spares most vertex shaders the folded copy (an
+  // optimizer run): the entry function itself stores `M * v` (or `v * M`, M possibly `A * B`) to the
+  // position, with M loaded from a uniform, push-constant, storage or input variable. Inlining and
+  // folding keep that store, and no folding can turn a product with a matrix known only at run time
+  // into the constant 1, so the folded copy could never prove w = 1.
+  static bool entryStoresRuntimeProduct(const spirv::Module& m, const std::vector<ClipPosition>& positions) {
+    auto runtimeMatrix = [&](uint32_t id, auto& self) -> bool {
+      const Instruction* def = m.definition(id);
+      if (!def) return false;
+      if (def->opcode == spv::OpMatrixTimesMatrix)
+        return self(def->operand(0), self) && self(def->operand(1), self);
+      if (def->opcode != spv::OpLoad) return false;
+      auto storage = m.storageClassOf(def->operand(0));
+      return storage && (*storage == spv::StorageClassUniform || *storage == spv::StorageClassUniformConstant ||
+                         *storage == spv::StorageClassPushConstant || *storage == spv::StorageClassStorageBuffer ||
+                         *storage == spv::StorageClassInput);
+    };
+    auto isPosition = [&](uint32_t pointer) {
+      for (const auto& p : positions) {
+        if (p.arrayed) continue;
+        if (!p.isMember && pointer == p.variable) return true;
+        const Instruction* chain = m.definition(pointer);
+        if (p.isMember && chain &&
+            (chain->opcode == spv::OpAccessChain || chain->opcode == spv::OpInBoundsAccessChain) &&
+            chain->operand(0) == p.variable && chain->operands.size() == 2) {
+          const Instruction* index = m.definition(chain->operand(1));
+          if (index && index->opcode == spv::OpConstant && index->operand(0) == p.member) return true;
+        }
+      }
+      return false;
+    };
+    for (const auto& fn : m.functions) {
+      if (fn.id() != m.entryFunctionId()) continue;
+      for (const auto& block : fn.blocks)
+        for (const auto& inst : block.instructions) {
+          if (inst.opcode != spv::OpStore || !isPosition(inst.operand(0))) continue;
+          const Instruction* value = m.definition(inst.operand(1));
+          if (!value) continue;
+          if (value->opcode == spv::OpMatrixTimesVector && runtimeMatrix(value->operand(0), runtimeMatrix)) return true;
+          if (value->opcode == spv::OpVectorTimesMatrix && runtimeMatrix(value->operand(1), runtimeMatrix)) return true;
+        }
+    }
+    return false;
+  }
 
   // The literal w = 1.0 may only show after inlining and folding (HLSL output structs, helper
   // functions): ask the shared folded copy.

@@ -376,17 +376,6 @@ std::optional<Slot> cameraSide(const Module& m, uint32_t value) {
   return slot;
 }
 
-bool hasVectorSubtraction(const Module& m) {
-  for (const auto& fn : m.functions)
-    for (const auto& block : fn.blocks)
-      for (const auto& inst : block.instructions)
-        if (inst.opcode == spv::OpFSub) {
-          const Instruction* type = m.definition(inst.typeId);
-          if (type && type->opcode == spv::OpTypeVector && type->operand(1) >= 3) return true;
-        }
-  return false;
-}
-
 std::map<Slot, std::vector<Subtraction>> findSubtractions(FlowAnalysis& flow) {
   const Module& m = flow.module();
   std::map<Slot, std::vector<Subtraction>> found;
@@ -937,6 +926,17 @@ class PerEyeViewPass final : public Pass {
 };
 
 }  // namespace
+
+bool hasVectorSubtraction(const Module& m) {
+  for (const auto& fn : m.functions)
+    for (const auto& block : fn.blocks)
+      for (const auto& inst : block.instructions)
+        if (inst.opcode == spv::OpFSub) {
+          const Instruction* type = m.definition(inst.typeId);
+          if (type && type->opcode == spv::OpTypeVector && type->operand(1) >= 3) return true;
+        }
+  return false;
+}
 
 NextStageFacts analyseStageInputs(PassContext& ctx) {
   NextStageFacts facts;

@@ -12,6 +12,9 @@
 
 namespace stereoshift {
 
+namespace spirv {
+class Module;
+}
 struct PassContext;
 
 struct StageInputUse {
@@ -32,5 +35,9 @@ struct NextStageFacts {
 // Analyses the inputs of a (fragment) stage: which ones feed texture coordinates. Reads only the
 // shared folded copy of the context's module; changes nothing.
 NextStageFacts analyseStageInputs(PassContext& context);
+
+// Whether the module subtracts vec3/vec4 values anywhere: a view vector (`camera - P`) needs one, and
+// inlining and folding never create one, so without it per-eye-view has nothing to look at.
+bool hasVectorSubtraction(const spirv::Module& module);
 
 }  // namespace stereoshift

@@ -399,8 +399,17 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
 // last pre-rasterization stage is converted. Null when there is no fragment stage to read.
 std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& stages,
                                                  std::vector<std::optional<CompiledStage>>& compiled,
-                                                 const TranspileOptions& options) {
-  if (!options.perEyeView) return std::nullopt;
+                                                 const TranspileOptions& options, int last) {
+  if (!options.perEyeView || last < 0) return std::nullopt;  // no stage to hand them to
+  // The facts serve per-eye-view in the last pre-rasterization stage, which looks no further when that
+  // stage has no vector subtraction: then the fragment stage's folded copy (an optimizer run, most of
+  // a typical fragment shader's cost) is not worth making for them.
+  if (options.cameraUniform.empty()) {
+    const auto& shifted = compiled[static_cast<size_t>(last)];
+    std::string error;
+    auto module = shifted && shifted->front.ok ? spirv::Module::parse(shifted->front.spirv, &error) : std::nullopt;
+    if (module && !hasVectorSubtraction(*module)) return std::nullopt;
+  }
   for (size_t i = 0; i < stages.size(); ++i) {
     auto kind = options.stage ? options.stage : stageFromPath(stages[i].path);
     if (kind != Stage::Fragment) continue;
@@ -479,7 +488,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       else pipelineOptions.eye.binding = *highest + 1;
     }
   }
-  std::optional<NextStageFacts> fragmentFacts = fragmentStageFacts(stages, compiled, options);
+  std::optional<NextStageFacts> fragmentFacts = fragmentStageFacts(stages, compiled, options, last);
   std::vector<TranspileResult> results;
   for (size_t i = 0; i < stages.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
