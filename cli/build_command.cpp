@@ -40,7 +40,7 @@ namespace {
 
 // MessagePack, not JSON text: a no-op rebuild of a large tree is mostly reading this file.
 constexpr const char* kCacheFile = ".stereoshift-cache.msgpack";
-constexpr int kCacheFormat = 2;
+constexpr int kCacheFormat = 3;  // 3: reports kept as report text
 
 std::string hex64(uint64_t value) {
   char text[17];
@@ -322,6 +322,10 @@ struct JobResult {
   int errors = 0;
   std::string log;
   nlohmann::json reports = nlohmann::json::array();
+  // Up-to-date jobs: the reports as the run that converted them wrote them, in report text, with
+  // what the summary counts of each (ok, classification); `reports` stays empty.
+  std::vector<std::string> reportTexts;
+  std::vector<std::pair<bool, std::string>> reportFacts;
   std::vector<std::string> outputs;  // per stage; only for stages whose report says ok
   std::vector<std::string> dependencies;
   std::string key;  // the cache key of what was converted
@@ -408,6 +412,26 @@ JobResult convertJob(const BuildJob& job, const std::string& tool) {
   return result;
 }
 
+// ---- the report ------------------------------------------------------------------------------------
+
+// One shader's entry as it sits in the report's "shaders" array (pretty-printed, indented two levels),
+// so entries of up-to-date pipelines are copied from the cache as text instead of rebuilt (a no-op
+// rebuild of a tree was mostly reading and writing these).
+std::string reportEntryText(const nlohmann::json& report) {
+  std::string text = report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace), indented;
+  indented.reserve(text.size() + text.size() / 8);
+  for (char c : text) {
+    indented += c;
+    if (c == '\n') indented += "    ";
+  }
+  return indented;
+}
+
+// A converted entry starts with "cached": false ("cached" sorts before every other key); an
+// up-to-date one says true.
+constexpr std::string_view kConvertedPrefix = "{\n      \"cached\": false,";
+constexpr std::string_view kCachedPrefix = "{\n      \"cached\": true,";
+
 // ---- the cache ------------------------------------------------------------------------------------
 
 struct Cache {
@@ -433,6 +457,31 @@ bool outputsIntact(const nlohmann::json& entry) {
     std::string bytes;
     if (!readFile(path, &bytes) || hashBytes(bytes) != hash.get<std::string>()) return false;
   }
+  return true;
+}
+
+// The reports of a cached entry, as text marked up to date, and their facts; false when the entry
+// does not hold them in the expected form (then the pipeline converts again).
+bool cachedReports(const nlohmann::json& entry, JobResult* result) {
+  auto texts = entry.find("report_texts");
+  auto facts = entry.find("report_facts");
+  if (texts == entry.end() || facts == entry.end() || !texts->is_array() || !facts->is_array() ||
+      texts->size() != facts->size())
+    return false;
+  std::vector<std::string> marked;
+  std::vector<std::pair<bool, std::string>> counted;
+  for (size_t k = 0; k < texts->size(); ++k) {
+    const auto& text = (*texts)[k];
+    const auto& fact = (*facts)[k];
+    if (!text.is_string() || !fact.is_array() || fact.size() != 2 || !fact[0].is_boolean() || !fact[1].is_string())
+      return false;
+    const std::string& t = text.get_ref<const std::string&>();
+    if (!t.starts_with(kConvertedPrefix)) return false;
+    marked.push_back(std::string(kCachedPrefix) + t.substr(kConvertedPrefix.size()));
+    counted.emplace_back(fact[0].get<bool>(), fact[1].get<std::string>());
+  }
+  result->reportTexts = std::move(marked);
+  result->reportFacts = std::move(counted);
   return true;
 }
 
@@ -493,13 +542,21 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     printErrorSummary(static_cast<int>(plan.errors.size()));
     return 1;
   }
-  // Outputs go only under the output directory, and never onto an input.
+  // Outputs go only under the output directory, and never onto an input. Resolved paths: each
+  // directory once, then a file's own name unless the file itself is a symbolic link.
+  std::map<fs::path, fs::path> resolvedDirectories;
+  auto resolved = [&](const fs::path& file) {
+    if (fs::is_symlink(file, ec)) return fs::weakly_canonical(file, ec);
+    auto [at, fresh] = resolvedDirectories.try_emplace(file.parent_path());
+    if (fresh) at->second = fs::weakly_canonical(at->first.empty() ? fs::path(".") : at->first, ec);
+    return at->second / file.filename();
+  };
   std::set<fs::path> inputs;
   for (const auto& job : plan.jobs)
-    for (const auto& s : job.stages) inputs.insert(fs::weakly_canonical(s, ec));
+    for (const auto& s : job.stages) inputs.insert(resolved(s));
   for (const auto& job : plan.jobs)
     for (const auto& out : job.outputs)
-      if (!insideDirectory(out, outDir) || inputs.count(fs::weakly_canonical(out, ec))) {
+      if (!insideDirectory(out, outDir) || inputs.count(resolved(out))) {
         std::cerr << out.string() << ": error: output would be outside the output directory or overwrite an input\n";
         printErrorSummary(1);
         return 1;
@@ -523,11 +580,10 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
       continue;
     }
     std::vector<std::string> dependencies = entry->value("dependencies", std::vector<std::string>{});
-    if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry)) {
+    if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry) &&
+        cachedReports(*entry, &results[i])) {
       upToDate[i] = true;
       results[i].dependencies = std::move(dependencies);
-      results[i].reports = entry->value("reports", nlohmann::json::array());
-      for (auto& r : results[i].reports) r["cached"] = true;
       next.jobs[job.id] = std::move(*entry);  // `previous` keeps only what did not carry over
     } else {
       toConvert.push_back(i);
@@ -595,12 +651,16 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
         r["timings_ms"]["pipeline_wall"] = outcome.seconds * 1000.0;
       }
       if (!result.errors) {
-        nlohmann::json stored = result.reports;
-        for (auto& r : stored) r.erase("cached");
+        nlohmann::json texts = nlohmann::json::array(), facts = nlohmann::json::array();
+        for (const auto& r : result.reports) {
+          texts.push_back(reportEntryText(r));
+          facts.push_back({r.value("ok", false), r.value("classification", "?")});
+        }
         next.jobs[job.id] = {{"key", result.key},
                              {"dependencies", result.dependencies},
                              {"outputs", outputs},
-                             {"reports", stored}};
+                             {"report_texts", std::move(texts)},
+                             {"report_facts", std::move(facts)}};
       }
     }
     ++finished;
@@ -633,8 +693,12 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     }
   }
 
-  // Report, in path order.
-  nlohmann::json reports = nlohmann::json::array();
+  // Report, in path order; entries of up-to-date pipelines are the cached text.
+  std::string shaderEntries;
+  size_t shaderCount = 0;
+  auto addEntry = [&](const std::string& text) {
+    shaderEntries += (shaderCount++ ? ",\n    " : "\n    ") + text;
+  };
   std::map<std::string, int> counts;
   int converted = 0, cached = 0, copied = 0, failed = 0;
   std::vector<std::string> dependencies;
@@ -644,26 +708,41 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     errors += results[i].errors;
     for (const auto& s : plan.jobs[i].stages) dependencies.push_back(s.string());
     dependencies.insert(dependencies.end(), results[i].dependencies.begin(), results[i].dependencies.end());
-    for (auto& r : results[i].reports) {
+    if (upToDate[i]) {
+      for (size_t k = 0; k < results[i].reportTexts.size(); ++k) {
+        const auto& [ok, classification] = results[i].reportFacts[k];
+        counts[ok ? classification : "failed"]++;
+        if (!ok) ++failed;
+        else ++cached;
+        addEntry(results[i].reportTexts[k]);
+      }
+      continue;
+    }
+    for (const auto& r : results[i].reports) {
       bool ok = r.value("ok", false);
       counts[ok ? r.value("classification", "?") : "failed"]++;
       if (!ok) ++failed;
       else if (!convertsShaders(plan.jobs[i].mode)) ++copied;
-      else if (upToDate[i]) ++cached;
       else ++converted;
-      reports.push_back(std::move(r));
+      addEntry(reportEntryText(r));
     }
   }
   nlohmann::json summary;
   summary["tool"] = std::string("stereoshift ") + version();
   summary["source"] = build.source;
-  summary["summary"] = {{"pipelines", count}, {"shaders", reports.size()}, {"converted", converted},
+  summary["summary"] = {{"pipelines", count}, {"shaders", shaderCount}, {"converted", converted},
                         {"up_to_date", cached}, {"copied_by_pass", copied}, {"failed", failed},
                         {"removed_stale_outputs", removed}};
   summary["classification_counts"] = counts;
-  summary["shaders"] = reports;
+  summary["shaders"] = "";  // the entries go in as text
+  std::string reportText = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  static constexpr std::string_view kShadersSlot = "\n  \"shaders\": \"\"";  // unique: one top-level key
+  size_t slot = reportText.find(kShadersSlot);
+  if (slot != std::string::npos)
+    reportText.replace(slot, kShadersSlot.size(),
+                       "\n  \"shaders\": [" + shaderEntries + (shaderCount ? "\n  ]" : "]"));
   const std::string reportPath = base.reportPath.empty() ? (outDir / "stereoshift-report.json").string() : base.reportPath;
-  if (!writeReport(reportPath, summary)) ++errors;
+  if (!writeReportText(reportPath, reportText)) ++errors;
 
   // The cache changes when something converted or an entry did not carry over.
   std::string error;
@@ -679,7 +758,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     ++errors;
   }
 
-  std::cerr << "stereoshift: " << reports.size() << " shaders from " << build.source << " into " << build.output
+  std::cerr << "stereoshift: " << shaderCount << " shaders from " << build.source << " into " << build.output
             << ": " << converted << " converted, " << cached << " up to date";
   if (copied) std::cerr << ", " << copied << " copied (mono/post/UI passes)";
   if (failed) std::cerr << ", " << failed << " failed";

@@ -169,13 +169,19 @@ std::optional<std::string> finishOptions(CliOptions& o) {
 }
 
 bool writeReport(const std::string& path, const nlohmann::json& report) {
+  return writeReportText(path, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+}
+
+bool writeReportText(const std::string& path, const std::string& text) {
   if (path.empty()) return true;
   if (path == "-") {
-    std::cout << report.dump(2) << "\n";
+    std::cout << text;
     return true;
   }
-  std::string error;
-  if (!writeAtomically(path, report.dump(2) + "\n", &error)) {
+  // An identical report is left alone (a repeated no-op build rewrites nothing).
+  std::string existing, error;
+  if (readFile(path, &existing) && existing == text) return true;
+  if (!writeAtomically(path, text, &error)) {
     std::cerr << "stereoshift: error: " << error << "\n";
     return false;
   }

@@ -39,6 +39,8 @@ std::optional<std::string> finishOptions(CliOptions& o);
 bool writeAtomically(const std::filesystem::path& path, const std::string& bytes, std::string* error);
 // Writes the report as JSON to `path` ('-': standard output; empty: nowhere).
 bool writeReport(const std::string& path, const nlohmann::json& report);
+// The same for a report already in text form ("-": standard output); an identical file is not rewritten.
+bool writeReportText(const std::string& path, const std::string& text);
 // Prints the diagnostics; returns how many were errors.
 int printDiagnostics(const Diagnostics& diags, std::ostream& log);
 // Reads every path into `sources`; each one that cannot be read (or is a directory) is reported to
