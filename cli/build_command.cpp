@@ -544,14 +544,16 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   }
   // Outputs go only under the output directory, and never onto an input. Resolved paths: each
   // directory once, then a file's own name unless the file itself is a symbolic link.
-  std::map<fs::path, fs::path> resolvedDirectories;
+  // (Native strings as keys: std::filesystem::path compares component by component.)
+  std::map<std::string, fs::path> resolvedDirectories;
   auto resolved = [&](const fs::path& file) {
-    if (fs::is_symlink(file, ec)) return fs::weakly_canonical(file, ec);
-    auto [at, fresh] = resolvedDirectories.try_emplace(file.parent_path());
-    if (fresh) at->second = fs::weakly_canonical(at->first.empty() ? fs::path(".") : at->first, ec);
-    return at->second / file.filename();
+    if (fs::is_symlink(file, ec)) return fs::weakly_canonical(file, ec).native();
+    fs::path parent = file.parent_path();
+    auto [at, fresh] = resolvedDirectories.try_emplace(parent.native());
+    if (fresh) at->second = fs::weakly_canonical(parent.empty() ? fs::path(".") : parent, ec);
+    return (at->second / file.filename()).native();
   };
-  std::set<fs::path> inputs;
+  std::set<std::string> inputs;
   for (const auto& job : plan.jobs)
     for (const auto& s : job.stages) inputs.insert(resolved(s));
   for (const auto& job : plan.jobs)
