@@ -24,9 +24,11 @@ struct TaskOutcome {
 // be single-threaded when this is called (it forks).
 //
 // `affinity` (optional, one key per task) groups tasks that share an expensive per-process set-up
-// (glslang builds its built-in symbol tables once per dialect and stage, per process): a worker
-// keeps taking tasks of its last group, and a free worker starts a group no other worker has
-// touched, so each set-up happens in as few workers as possible.
+// (glslang builds its built-in symbol tables once per dialect, per process): a worker keeps taking
+// tasks of its last group; a free worker starts the untouched group with the most tasks; once every
+// group is started, a free worker joins another's group only if that group's remaining work, timed
+// in this run, pays for the set-up (otherwise it waits), so each set-up happens in as few workers
+// as possible.
 void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
                  const std::function<std::string(size_t)>& task,
                  const std::function<void(size_t, TaskOutcome&&)>& onDone,

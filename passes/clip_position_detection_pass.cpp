@@ -89,6 +89,14 @@ class ClipPositionDetectionPass final : public Pass {
   }
 
 
+  // `inst` is an access chain to the position member of its block (`gl_PerVertex.gl_Position`).
+  static bool chainsToMember(const spirv::Module& m, const Instruction& inst, const ClipPosition& position) {
+    if (inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain) return false;
+    if (inst.operand(0) != position.variable || inst.operands.size() != 2) return false;
+    const Instruction* index = m.definition(inst.operand(1));
+    return index && index->opcode == spv::OpConstant && index->operand(0) == position.member;
+  }
+
   // Cheap proof of a perspective position, which spares most vertex shaders the folded copy (an
   // optimizer run): the entry function itself stores `M * v` (or `v * M`, M possibly `A * B`) to the
   // position, with M loaded from a uniform, push-constant, storage or input variable. Inlining and
@@ -111,12 +119,7 @@ class ClipPositionDetectionPass final : public Pass {
         if (p.arrayed) continue;
         if (!p.isMember && pointer == p.variable) return true;
         const Instruction* chain = m.definition(pointer);
-        if (p.isMember && chain &&
-            (chain->opcode == spv::OpAccessChain || chain->opcode == spv::OpInBoundsAccessChain) &&
-            chain->operand(0) == p.variable && chain->operands.size() == 2) {
-          const Instruction* index = m.definition(chain->operand(1));
-          if (index && index->opcode == spv::OpConstant && index->operand(0) == p.member) return true;
-        }
+        if (p.isMember && chain && chainsToMember(m, *chain, p)) return true;
       }
       return false;
     };
@@ -149,12 +152,7 @@ class ClipPositionDetectionPass final : public Pass {
     for (const auto& position : positions) {
       if (position.arrayed) return false;
       // Pointers to the whole position: the variable itself, or chains to the position member.
-      auto isChainToPosition = [&](const Instruction& inst) {
-        if (inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain) return false;
-        if (inst.operand(0) != position.variable || inst.operands.size() != 2) return false;
-        const Instruction* index = m.definition(inst.operand(1));
-        return index && index->opcode == spv::OpConstant && index->operand(0) == position.member;
-      };
+      auto isChainToPosition = [&](const Instruction& inst) { return chainsToMember(m, inst, position); };
       std::vector<uint32_t> pointers;
       if (!position.isMember) pointers.push_back(position.variable);
       for (const auto& fn : m.functions)
