@@ -2,6 +2,7 @@
 // pre-rasterization stage gets the shift is run on lavapipe, original against transpiled, with
 // eyeSign = 0 (bit-exact mono identity), -1 and +1 (stereo error against the double reference).
 #include "test/harness/stereo_verify.h"
+#include "test/harness/vulkan_suite.h"
 #include "transpiler/stereoshift.h"
 
 #include <gtest/gtest.h>
@@ -44,19 +45,7 @@ std::vector<PipelineCase> corpusPipelines() {
   return cases;
 }
 
-class CorpusExecution : public ::testing::TestWithParam<PipelineCase> {
- protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = VulkanContext::create(&error);
-    if (!context_) setupError_ = error;
-  }
-  static void TearDownTestSuite() { context_.reset(); }
-  static std::unique_ptr<VulkanContext> context_;
-  static std::string setupError_;
-};
-std::unique_ptr<VulkanContext> CorpusExecution::context_;
-std::string CorpusExecution::setupError_;
+class CorpusExecution : public VulkanSuite<::testing::TestWithParam<PipelineCase>> {};
 
 TEST_P(CorpusExecution, StereoMatchesReference) {
   ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;

@@ -21,6 +21,7 @@
 // Without hudAtDepth the 2D shader is copied through: the SPIR-V is the original's, word for word.
 #include "test/harness/capture_instrument.h"
 #include "test/harness/stereo_verify.h"
+#include "test/harness/vulkan_suite.h"
 
 #include <gtest/gtest.h>
 
@@ -65,15 +66,8 @@ VertexBuffer hudVertices() {
   return vb;
 }
 
-class HudDepth : public ::testing::Test {
+class HudDepth : public VulkanSuite<> {
  protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = VulkanContext::create(&error);
-    setupError_ = error;
-  }
-  static void TearDownTestSuite() { context_.reset(); }
-
   void SetUp() override { ASSERT_TRUE(context_) << setupError_; }
 
   // Instruments a module for capture and runs it on the HUD vertices, with `eye` (4 floats) in the
@@ -97,12 +91,7 @@ class HudDepth : public ::testing::Test {
     EXPECT_EQ(r.vertexCount(), kVertexCount);
     return r;
   }
-
-  static std::unique_ptr<VulkanContext> context_;
-  static std::string setupError_;
 };
-std::unique_ptr<VulkanContext> HudDepth::context_;
-std::string HudDepth::setupError_;
 
 std::vector<uint32_t> words(const std::string& bytes) {
   std::vector<uint32_t> w(bytes.size() / 4);

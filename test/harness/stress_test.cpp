@@ -2,6 +2,7 @@
 // control of x and w, so the sweep reaches every regime of STEREO.md section 2 and 6. Each case states
 // its bound and checks it on lavapipe against the double-precision reference.
 #include "test/harness/stereo_verify.h"
+#include "test/harness/vulkan_suite.h"
 
 #include "transpiler/spirv_module.h"
 
@@ -65,19 +66,7 @@ std::vector<std::array<float, 4>> sweep() {
   return v;
 }
 
-class Stress : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = VulkanContext::create(&error);
-    setupError_ = error;
-  }
-  static void TearDownTestSuite() { context_.reset(); }
-  static std::unique_ptr<VulkanContext> context_;
-  static std::string setupError_;
-};
-std::unique_ptr<VulkanContext> Stress::context_;
-std::string Stress::setupError_;
+class Stress : public VulkanSuite<> {};
 
 // Runs the sweep over the 25 (separation, convergence) pairs and checks what every arithmetic form
 // must keep: bit-exact mono identity, unchanged other outputs, no new NaN, and the cutoff keeping
