@@ -427,6 +427,11 @@ std::string reportEntryText(const nlohmann::json& report) {
   return indented;
 }
 
+// What the summary counts of a report entry: whether it is ok, and its classification.
+std::pair<bool, std::string> reportFacts(const nlohmann::json& report) {
+  return {report.value("ok", false), report.value("classification", "?")};
+}
+
 // A converted entry starts with "cached": false ("cached" sorts before every other key); an
 // up-to-date one says true.
 constexpr std::string_view kConvertedPrefix = "{\n      \"cached\": false,";
@@ -571,7 +576,6 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
 
   const size_t count = plan.jobs.size();
   std::vector<JobResult> results(count);
-  std::vector<bool> upToDate(count, false);
   std::vector<size_t> toConvert;
   for (size_t i = 0; i < count; ++i) {
     const BuildJob& job = plan.jobs[i];
@@ -584,7 +588,6 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     std::vector<std::string> dependencies = entry->value("dependencies", std::vector<std::string>{});
     if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry) &&
         cachedReports(*entry, &results[i])) {
-      upToDate[i] = true;
       results[i].dependencies = std::move(dependencies);
       next.jobs[job.id] = std::move(*entry);  // `previous` keeps only what did not carry over
     } else {
@@ -656,7 +659,8 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
         nlohmann::json texts = nlohmann::json::array(), facts = nlohmann::json::array();
         for (const auto& r : result.reports) {
           texts.push_back(reportEntryText(r));
-          facts.push_back({r.value("ok", false), r.value("classification", "?")});
+          auto [ok, classification] = reportFacts(r);
+          facts.push_back({ok, classification});
         }
         next.jobs[job.id] = {{"key", result.key},
                              {"dependencies", result.dependencies},
@@ -698,11 +702,15 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   // Report, in path order; entries of up-to-date pipelines are the cached text.
   std::string shaderEntries;
   size_t shaderCount = 0;
-  auto addEntry = [&](const std::string& text) {
-    shaderEntries += (shaderCount++ ? ",\n    " : "\n    ") + text;
-  };
   std::map<std::string, int> counts;
   int converted = 0, cached = 0, copied = 0, failed = 0;
+  // One entry into the report and the summary; `total` is the count an ok entry joins.
+  auto addEntry = [&](const std::pair<bool, std::string>& facts, int& total, const std::string& text) {
+    const auto& [ok, classification] = facts;
+    counts[ok ? classification : "failed"]++;
+    ++(ok ? total : failed);
+    shaderEntries += (shaderCount++ ? ",\n    " : "\n    ") + text;
+  };
   std::vector<std::string> dependencies;
   for (const auto& d : plan.extraDependencies) dependencies.push_back(d.string());
   for (size_t i = 0; i < count; ++i) {
@@ -710,24 +718,10 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     errors += results[i].errors;
     for (const auto& s : plan.jobs[i].stages) dependencies.push_back(s.string());
     dependencies.insert(dependencies.end(), results[i].dependencies.begin(), results[i].dependencies.end());
-    if (upToDate[i]) {
-      for (size_t k = 0; k < results[i].reportTexts.size(); ++k) {
-        const auto& [ok, classification] = results[i].reportFacts[k];
-        counts[ok ? classification : "failed"]++;
-        if (!ok) ++failed;
-        else ++cached;
-        addEntry(results[i].reportTexts[k]);
-      }
-      continue;
-    }
-    for (const auto& r : results[i].reports) {
-      bool ok = r.value("ok", false);
-      counts[ok ? r.value("classification", "?") : "failed"]++;
-      if (!ok) ++failed;
-      else if (!convertsShaders(plan.jobs[i].mode)) ++copied;
-      else ++converted;
-      addEntry(reportEntryText(r));
-    }
+    for (size_t k = 0; k < results[i].reportTexts.size(); ++k)  // up to date
+      addEntry(results[i].reportFacts[k], cached, results[i].reportTexts[k]);
+    for (const auto& r : results[i].reports)
+      addEntry(reportFacts(r), convertsShaders(plan.jobs[i].mode) ? converted : copied, reportEntryText(r));
   }
   nlohmann::json summary;
   summary["tool"] = std::string("stereoshift ") + version();
@@ -750,10 +744,11 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   std::string error;
   bool cacheUnchanged = !build.noCache && toConvert.empty() && next.jobs.size() == previous.jobs.size() &&
                         fs::exists(cacheFile, ec);
-  nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", std::move(next.jobs)}};
-  std::vector<std::uint8_t> packed = cacheUnchanged ? std::vector<std::uint8_t>{} : nlohmann::json::to_msgpack(cacheJson);
-  if (!cacheUnchanged && !writeAtomically(cacheFile, std::string(packed.begin(), packed.end()), &error)) {
-    std::cerr << cacheFile.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
+  if (!cacheUnchanged) {
+    nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", std::move(next.jobs)}};
+    std::vector<std::uint8_t> packed = nlohmann::json::to_msgpack(cacheJson);
+    if (!writeAtomically(cacheFile, std::string(packed.begin(), packed.end()), &error))
+      std::cerr << cacheFile.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
   }
   if (!build.depfile.empty() && !writeAtomically(build.depfile, makeDepfile({reportPath}, dependencies), &error)) {
     std::cerr << build.depfile << ": error: " << error << "\n";
