@@ -214,7 +214,21 @@ struct CompiledStage {
   // on so the stage's own passes do not run the optimizer a second time.
   std::optional<spirv::Module> folded;
   bool foldTried = false;
+  // The front end's module in the IR, parsed once for the pipeline-wide analyses and the stage's own
+  // conversion (see parsedModule()).
+  std::optional<spirv::Module> module;
 };
+
+// The stage's module, parsed on first use; null when the front end failed or the SPIR-V does not
+// parse (the stage's conversion then says why).
+spirv::Module* parsedModule(CompiledStage& stage) {
+  if (!stage.front.ok) return nullptr;
+  if (!stage.module) {
+    std::string error;
+    stage.module = spirv::Module::parse(stage.front.spirv, &error);
+  }
+  return stage.module ? &*stage.module : nullptr;
+}
 
 // `compiled`: the stage already through the front end (pipelines), or null to run it here.
 TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& options,
@@ -264,7 +278,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
 
   result.originalSpirv = words;
   std::string parseError;
-  auto parsed = spirv::Module::parse(words, &parseError);
+  auto parsed = compiled && compiled->module ? std::move(compiled->module) : spirv::Module::parse(words, &parseError);
   if (!parsed) {
     diags.error(file, parseError);
     return result;
@@ -405,19 +419,16 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
   // stage has no vector subtraction: then the fragment stage's folded copy (an optimizer run, most of
   // a typical fragment shader's cost) is not worth making for them.
   if (options.cameraUniform.empty()) {
-    const auto& shifted = compiled[static_cast<size_t>(last)];
-    std::string error;
-    auto module = shifted && shifted->front.ok ? spirv::Module::parse(shifted->front.spirv, &error) : std::nullopt;
+    auto& shifted = compiled[static_cast<size_t>(last)];
+    const spirv::Module* module = shifted ? parsedModule(*shifted) : nullptr;
     if (module && !hasVectorSubtraction(*module)) return std::nullopt;
   }
   for (size_t i = 0; i < stages.size(); ++i) {
     auto kind = options.stage ? options.stage : stageFromPath(stages[i].path);
     if (kind != Stage::Fragment) continue;
-    if (!compiled[i] || !compiled[i]->front.ok) return std::nullopt;  // reported when the stage converts
+    spirv::Module* module = compiled[i] ? parsedModule(*compiled[i]) : nullptr;
+    if (!module) return std::nullopt;  // reported when the stage converts
     const FrontEndResult& front = compiled[i]->front;
-    std::string error;
-    auto module = spirv::Module::parse(front.spirv, &error);
-    if (!module) return std::nullopt;
     nlohmann::json scratch;
     Diagnostics ignored;
     PassContext ctx{*module, options, front.info, ignored, stages[i].path, scratch};
@@ -472,13 +483,11 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   if (stages.size() > 1 && !options.eye.binding && !options.eye.hlslRegister) {
     std::optional<uint32_t> highest;
     bool hlsl = false;
-    for (const auto& c : compiled) {
-      if (!c || !c->front.ok) continue;
+    for (auto& c : compiled) {
+      const spirv::Module* m = c ? parsedModule(*c) : nullptr;
+      if (!m) continue;
       const FrontEndResult& front = c->front;
       hlsl |= front.info.language == SourceLanguage::Hlsl;
-      std::string error;
-      auto m = spirv::Module::parse(front.spirv, &error);
-      if (!m) continue;
       auto stageHighest = highestBinding(*m, options.eye.descriptorSet.value_or(0),
                                          front.info.language == SourceLanguage::Hlsl);
       if (stageHighest) highest = std::max(highest.value_or(0), *stageHighest);
