@@ -1,4 +1,5 @@
 #include "transpiler/back_end.h"
+#include "transpiler/source_text.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
 #include <spirv_cross/spirv_hlsl.hpp>
@@ -20,8 +21,6 @@ TargetLanguage resolveTarget(const SourceInfo& info, const TranspileOptions& opt
 }
 
 namespace {
-
-bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // SPIRV-Cross gives every location-assigned varying the semantic TEXCOORD<location>; put back the
 // semantic strings of the source inside the SPIRV_Cross_Input / SPIRV_Cross_Output structs.
@@ -58,12 +57,12 @@ std::string renameIdentifiers(const std::string& text, const std::map<std::strin
   std::string out;
   out.reserve(text.size());
   for (size_t i = 0; i < text.size();) {
-    if (!isWordChar(text[i])) {
+    if (!isIdentifierChar(text[i])) {
       out += text[i++];
       continue;
     }
     size_t j = i;
-    while (j < text.size() && isWordChar(text[j])) ++j;
+    while (j < text.size() && isIdentifierChar(text[j])) ++j;
     std::string_view word(text.data() + i, j - i);
     auto found = names.find(word);
     if (found != names.end())
@@ -82,7 +81,7 @@ std::string renameEntryPoint(std::string text, const std::string& entryPoint) {
     std::string_view before(text.data(), at);
     bool returnType = false;
     for (std::string_view type : {"void", "SPIRV_Cross_Output"})
-      if (before.ends_with(type) && (before.size() == type.size() || !isWordChar(before[before.size() - type.size() - 1])))
+      if (before.ends_with(type) && (before.size() == type.size() || !isIdentifierChar(before[before.size() - type.size() - 1])))
         returnType = true;
     if (returnType) text.replace(at + 1, 4, entryPoint);
   }

@@ -1,4 +1,5 @@
 #include "transpiler/diagnostics.h"
+#include "transpiler/source_text.h"
 
 #include <algorithm>
 #include <regex>
@@ -55,20 +56,18 @@ std::string lineOf(const std::string& text, int line) {
   return {};
 }
 
-bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // 1-based column of `token` on `lineText` (as a whole word when it is an identifier), or 1.
 int columnOf(const std::string& lineText, const std::string& token) {
   if (token.empty()) {
     size_t first = lineText.find_first_not_of(" \t");
     return first == std::string::npos ? 1 : static_cast<int>(first) + 1;
   }
-  bool ident = std::all_of(token.begin(), token.end(), isIdentChar);
+  bool ident = std::all_of(token.begin(), token.end(), isIdentifierChar);
   for (size_t at = lineText.find(token); at != std::string::npos; at = lineText.find(token, at + 1)) {
     if (!ident) return static_cast<int>(at) + 1;
-    bool startOk = at == 0 || !isIdentChar(lineText[at - 1]);
+    bool startOk = at == 0 || !isIdentifierChar(lineText[at - 1]);
     size_t end = at + token.size();
-    bool endOk = end >= lineText.size() || !isIdentChar(lineText[end]);
+    bool endOk = end >= lineText.size() || !isIdentifierChar(lineText[end]);
     if (startOk && endOk) return static_cast<int>(at) + 1;
   }
   size_t first = lineText.find_first_not_of(" \t");

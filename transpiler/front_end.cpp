@@ -1,4 +1,5 @@
 #include "transpiler/front_end.h"
+#include "transpiler/source_text.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -92,8 +93,6 @@ class RestrictedIncluder : public glslang::TShader::Includer {
   std::vector<std::pair<std::string, std::string>> sources_;
   std::vector<std::string> included_;
 };
-
-bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 }  // namespace
 

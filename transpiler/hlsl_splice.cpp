@@ -1,5 +1,6 @@
 // HLSL source splice for geometry and domain shaders: see hlsl_splice.h.
 #include "transpiler/hlsl_splice.h"
+#include "transpiler/source_text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -49,7 +50,6 @@ struct SpliceError {
 };
 
 bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 std::string lower(std::string_view s) {
   std::string r(s);
@@ -59,7 +59,7 @@ std::string lower(std::string_view s) {
 
 bool isValidIdentifier(const std::string& s) {
   if (s.empty() || !isIdentStart(s[0])) return false;
-  return std::all_of(s.begin(), s.end(), isIdentChar);
+  return std::all_of(s.begin(), s.end(), isIdentifierChar);
 }
 
 class Scanner {
@@ -108,7 +108,7 @@ class Scanner {
       lineStart = false;
       size_t start = i;
       if (isIdentStart(c)) {
-        while (i < end_ && isIdentChar(s_[i])) ++i;
+        while (i < end_ && isIdentifierChar(s_[i])) ++i;
         tokens.push_back({TokKind::Ident, start, i});
       } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                  (c == '.' && std::isdigit(static_cast<unsigned char>(at(i + 1))))) {
@@ -117,7 +117,7 @@ class Scanner {
           char d = s_[i];
           if ((d == '+' || d == '-') && (s_[i - 1] == 'e' || s_[i - 1] == 'E')) {
             ++i;
-          } else if (isIdentChar(d) || d == '.') {
+          } else if (isIdentifierChar(d) || d == '.') {
             ++i;
           } else {
             break;
@@ -178,12 +178,12 @@ class Scanner {
     };
     skipBlanks();
     size_t nameBegin = i;
-    while (i < end_ && isIdentChar(s_[i])) ++i;
+    while (i < end_ && isIdentifierChar(s_[i])) ++i;
     d.name = s_.substr(nameBegin, i - nameBegin);
     if (d.name == "define") {
       skipBlanks();
       size_t mb = i;
-      while (i < end_ && isIdentChar(s_[i])) ++i;
+      while (i < end_ && isIdentifierChar(s_[i])) ++i;
       d.macroName = s_.substr(mb, i - mb);
       if (at(i) == '(') {
         while (i < end_ && s_[i] != ')' && s_[i] != '\n') ++i;
