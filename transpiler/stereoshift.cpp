@@ -203,8 +203,6 @@ std::string defaultOutputExtension(const SourceFile& input, const TranspileOptio
 
 namespace {
 
-// One shader; `nextStage` (pipelines only) tells per-eye-view how the fragment stage uses the
-// outputs of the last pre-rasterization stage.
 // The front end's result for one stage, kept so a pipeline parses each stage once.
 struct CompiledStage {
   FrontEndResult front;
@@ -230,7 +228,9 @@ spirv::Module* parsedModule(CompiledStage& stage) {
   return stage.module ? &*stage.module : nullptr;
 }
 
-// `compiled`: the stage already through the front end (pipelines), or null to run it here.
+// One shader; `nextStage` (pipelines only) tells per-eye-view how the fragment stage uses the
+// outputs of the last pre-rasterization stage. `compiled`: the stage already through the front end
+// (pipelines), or null to run it here.
 TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& options,
                                const NextStageFacts* nextStage, CompiledStage* compiled = nullptr) {
   auto started = std::chrono::steady_clock::now();
