@@ -3,8 +3,8 @@
 // measured on lavapipe (corpus pipelines + the stress sweep of test/harness/stress_test.cpp).
 //
 //   build/bench/stereoshift_bench [--reps N]
-#include "test/harness/stereo_verify.h"
-#include "transpiler/spirv_module.h"
+#include "transpiler/verify/stereo_verify.h"
+#include "passes/ir/module.h"
 
 #include <chrono>
 #include <cmath>

@@ -15,7 +15,7 @@
 
 #include "cli/scene_manifest.h"
 #include "cli/worker_pool.h"
-#include "transpiler/front_end.h"
+#include "transpiler/frontend/front_end.h"
 
 #define XXH_INLINE_ALL
 #include <xxhash.h>

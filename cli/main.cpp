@@ -7,7 +7,7 @@
 #include "cli/cli_support.h"
 #include "cli/verify_command.h"
 #include "cli/worker_pool.h"
-#include "transpiler/front_end.h"
+#include "transpiler/frontend/front_end.h"
 #include "transpiler/stereoshift.h"
 
 #include <CLI/CLI.hpp>

@@ -1,6 +1,6 @@
 #include "cli/verify_command.h"
 
-#include "test/harness/stereo_verify.h"
+#include "transpiler/verify/stereo_verify.h"
 
 #include <iostream>
 

@@ -3,9 +3,10 @@
 // by exactly the same instruction sequence, bit for bit).
 #pragma once
 
-#include "passes/per_eye_view_pass.h"
-#include "transpiler/front_end.h"
-#include "transpiler/spirv_module.h"
+#include "passes/diagnostics.h"
+#include "passes/ir/module.h"
+#include "passes/next_stage_facts.h"
+#include "passes/shader.h"
 
 #include <nlohmann/json.hpp>
 

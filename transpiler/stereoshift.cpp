@@ -1,10 +1,13 @@
 #include "transpiler/stereoshift.h"
 
-#include "transpiler/back_end.h"
-#include "transpiler/front_end.h"
-#include "transpiler/hlsl_splice.h"
-#include "transpiler/pipeline.h"
-#include "transpiler/spirv_module.h"
+#include "transpiler/backend/back_end.h"
+#include "transpiler/frontend/front_end.h"
+#include "transpiler/backend/emit_prep.h"
+#include "transpiler/backend/hlsl_splice.h"
+#include "passes/ir/validate.h"
+#include "passes/pass_manager.h"
+#include "passes/per_eye_view_pass.h"
+#include "passes/ir/module.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,68 +18,6 @@
 namespace stereoshift {
 
 const char* version() { return STEREOSHIFT_VERSION; }
-
-bool readFile(const std::string& path, std::string* contents) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream text;
-  text << in.rdbuf();
-  *contents = text.str();
-  return true;
-}
-
-std::string pipelineKey(const std::string& path) {
-  size_t slash = path.find_last_of('/');
-  size_t nameStart = slash == std::string::npos ? 0 : slash + 1;
-  return path.substr(0, path.find('.', nameStart));
-}
-
-std::optional<Stage> stageFromName(const std::string& raw) {
-  std::string n = raw;
-  std::transform(n.begin(), n.end(), n.begin(), ::tolower);
-  if (n == "vert" || n == "vertex" || n == "vs") return Stage::Vertex;
-  if (n == "tesc" || n == "tesscontrol" || n == "hs" || n == "hull") return Stage::TessControl;
-  if (n == "tese" || n == "tesseval" || n == "tessevaluation" || n == "ds" || n == "domain") return Stage::TessEvaluation;
-  if (n == "geom" || n == "geometry" || n == "gs") return Stage::Geometry;
-  if (n == "frag" || n == "fragment" || n == "ps" || n == "pixel") return Stage::Fragment;
-  if (n == "comp" || n == "compute" || n == "cs") return Stage::Compute;
-  if (n == "mesh" || n == "ms") return Stage::Mesh;
-  if (n == "task" || n == "as" || n == "amplification") return Stage::Task;
-  return std::nullopt;
-}
-
-std::optional<Stage> stageFromPath(const std::string& path) {
-  // name.vert, name.vert.glsl, name.vert.hlsl, name.vs.hlsl
-  std::string file = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
-  std::vector<std::string> parts;
-  for (size_t start = 0, dot; start <= file.size(); start = dot + 1) {
-    dot = file.find('.', start);
-    if (dot == std::string::npos) dot = file.size();
-    parts.push_back(file.substr(start, dot - start));
-  }
-  for (size_t i = parts.size(); i-- > 1;)
-    if (auto s = stageFromName(parts[i])) return s;
-  return std::nullopt;
-}
-
-const char* stageName(Stage stage) {
-  switch (stage) {
-    case Stage::Vertex: return "vert";
-    case Stage::TessControl: return "tesc";
-    case Stage::TessEvaluation: return "tese";
-    case Stage::Geometry: return "geom";
-    case Stage::Fragment: return "frag";
-    case Stage::Compute: return "comp";
-    case Stage::Task: return "task";
-    case Stage::Mesh: return "mesh";
-    default: return "unknown";
-  }
-}
-
-bool isPreRasterization(Stage stage) {
-  return stage == Stage::Vertex || stage == Stage::TessControl || stage == Stage::TessEvaluation ||
-         stage == Stage::Geometry || stage == Stage::Mesh;
-}
 
 namespace {
 
@@ -123,58 +64,6 @@ bool isSpirvBinary(const std::string& bytes) {
   uint32_t magic;
   std::memcpy(&magic, bytes.data(), 4);
   return magic == kSpirvMagic;
-}
-
-// OpenGL shaders that relied on glBindAttribLocation, glGetUniformLocation and glUniform1i must not
-// gain layout(location/binding) qualifiers they did not have: drop what glslang auto-assigned.
-void stripAutoAssignedQualifiers(spirv::Module& m, const SourceInfo& info) {
-  if (info.language != SourceLanguage::Glsl || info.vulkan) return;
-  auto keyOf = [&](uint32_t var) {
-    std::vector<std::string> keys = {m.name(var)};
-    if (const auto* def = m.definition(var)) keys.push_back(m.name(m.pointeeType(def->typeId)));
-    return keys;
-  };
-  auto explicitIn = [&](const std::set<std::string>& set, uint32_t var) {
-    for (const auto& k : keyOf(var))
-      if (!k.empty() && set.count(k)) return true;
-    return false;
-  };
-  for (const auto& inst : std::vector<spirv::Instruction>(m.typesValues)) {
-    if (inst.opcode != spv::OpVariable) continue;
-    uint32_t var = inst.resultId;
-    if (!explicitIn(info.explicitLocation, var)) m.removeDecorations(var, spv::DecorationLocation);
-    if (!explicitIn(info.explicitBinding, var)) m.removeDecorations(var, spv::DecorationBinding);
-    m.removeDecorations(var, spv::DecorationDescriptorSet);
-  }
-}
-
-EmitHints collectHints(const spirv::Module& m) {
-  EmitHints hints;
-  for (const auto& inst : m.annotations) {
-    if (inst.opcode != spv::OpDecorateString || inst.operand(1) != uint32_t(spv::DecorationUserSemantic)) continue;
-    uint32_t var = inst.operand(0);
-    auto location = m.decorationValue(var, spv::DecorationLocation);
-    auto storage = m.storageClassOf(var);
-    if (!location || !storage) continue;
-    std::string semantic = inst.stringOperand(2);
-    std::transform(semantic.begin(), semantic.end(), semantic.begin(), ::toupper);
-    if (*storage == spv::StorageClassInput) hints.inputSemantics[*location] = semantic;
-    if (*storage == spv::StorageClassOutput) hints.outputSemantics[*location] = semantic;
-  }
-  // SPIRV-Cross names HLSL cbuffer members "<instance>_<member>" (instance "_<id>" when unnamed).
-  for (const auto& inst : m.typesValues) {
-    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassUniform) continue;
-    uint32_t type = m.pointeeType(inst.typeId);
-    const auto* def = m.definition(type);
-    if (!def || def->opcode != spv::OpTypeStruct) continue;
-    std::string instance = m.name(inst.resultId);
-    if (instance.empty()) instance = "_" + std::to_string(inst.resultId);
-    for (uint32_t i = 0; i < def->operands.size(); ++i) {
-      std::string member = m.memberName(type, i);
-      if (!member.empty()) hints.cbufferMemberNames[instance + "_" + member] = member;
-    }
-  }
-  return hints;
 }
 
 std::string bytesOf(const std::vector<uint32_t>& words) {

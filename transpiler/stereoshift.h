@@ -1,7 +1,8 @@
 // stereoshift public API: turn one mono shader (or one pipeline of stages) into its stereo version.
 #pragma once
 
-#include "transpiler/diagnostics.h"
+#include "passes/diagnostics.h"
+#include "passes/shader.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,74 +12,6 @@
 #include <vector>
 
 namespace stereoshift {
-
-enum class Stage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute, Task, Mesh, Unknown };
-enum class SourceLanguage { Glsl, Hlsl, Spirv };
-
-// Which output language: `Auto` keeps the input's own language and version.
-enum class TargetLanguage { Auto, Glsl, Essl, Hlsl, Msl, Spirv, SpirvAsm };
-
-// Where the eye parameters (eyeSign, separation, convergence) come from.
-enum class EyeSource {
-  Auto,           // loose uniforms for OpenGL GLSL shaders that use loose uniforms, else UniformBlock
-  UniformBlock,   // uniform block / cbuffer `StereoParams`
-  PushConstant,   // members of the push-constant block (merged into an existing one)
-  SpecConstant,   // specialization constants: a build can bake left and right variants
-  LooseUniforms,  // OpenGL default-block uniforms
-};
-
-enum class CutoffMode { Epsilon, Exact, None };
-enum class ShiftForm { Branch, Select };
-
-struct EyeParamOptions {
-  EyeSource source = EyeSource::Auto;
-  std::string blockName = "StereoParams";
-  std::string instanceName = "stereo";
-  std::string eyeSignName = "eyeSign";
-  std::string separationName = "separation";
-  std::string convergenceName = "convergence";
-  std::string hudDepthName = "hudDepth";        // declared only with --hud-at-depth
-  std::string eyeOffsetXName = "eyeOffsetX";    // declared only for per-eye view vectors that have
-  std::string eyeOffsetYName = "eyeOffsetY";    // no matrix to derive the eye centre from
-  std::string eyeOffsetZName = "eyeOffsetZ";
-  std::optional<uint32_t> descriptorSet;  // default 0
-  std::optional<uint32_t> binding;        // default: first binding unused in the set
-  std::optional<uint32_t> hlslRegister;   // cbuffer register b<N>; default: first unused
-  std::optional<uint32_t> glBinding;      // OpenGL uniform-block binding; default: none (by name)
-  uint32_t specIdBase = 100;              // SpecId of eyeSign; separation and convergence follow
-};
-
-struct TranspileOptions {
-  // Front end
-  std::optional<Stage> stage;        // default: from the file extension
-  std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
-  std::vector<std::string> defines;  // NAME or NAME=VALUE
-  std::vector<std::string> includeDirs;
-  // Passes
-  EyeParamOptions eye;
-  CutoffMode cutoff = CutoffMode::Epsilon;
-  float cutoffEpsilon = 1e-5f;
-  ShiftForm shiftForm = ShiftForm::Branch;
-  bool invariantPosition = true;  // mark the position invariant + NoContraction on the shift
-  bool fusedShift = false;        // x' = fma(eyeSign*separation, w - convergence, x): one rounding less
-  bool compensatedShift = false;  // error-free transformations: x' within ~0.5 ULP of the exact shift
-  bool haloFix = true;
-  bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
-  // Per-eye pixel maths (STEREO.md sections 2-4)
-  bool perEyeView = true;             // per-eye camera position where a view vector offsets texture coordinates
-  bool perEyeSpecular = false;        // also where it only feeds lighting (specular looks fine mono)
-  std::string cameraUniform;          // --camera-uniform: this uniform (or block member) is the camera position
-  bool deferredUnprojection = true;   // stereo-correct `InvM * vec4(ndc, depth, 1)` in deferred passes
-  bool hudAtDepth = false;            // place proven-2D shaders at the eye depth `hudDepth`
-  std::vector<std::string> onlyPasses;  // --pass: run only these (by name()); empty: all
-  bool validateEach = false;
-  bool printAll = false;          // dump SPIR-V after every pass to the report log
-  // Back end
-  TargetLanguage target = TargetLanguage::Auto;
-  std::optional<int> targetVersion;  // GLSL/ESSL version or HLSL shader model (50, 51, 60, ...)
-  bool verify = false;               // recompile emitted GLSL/HLSL with glslang
-  bool forceReemit = false;          // re-emit even when nothing changed
-};
 
 struct TranspileResult {
   bool ok = false;
@@ -93,11 +26,6 @@ struct TranspileResult {
   std::vector<uint32_t> originalSpirv;  // the input as the front end made it, before any pass
 };
 
-struct SourceFile {
-  std::string path;      // as given; used in diagnostics and for the extension
-  std::string contents;  // raw bytes
-};
-
 // Converts one shader.
 TranspileResult transpile(const SourceFile& input, const TranspileOptions& options);
 
@@ -105,15 +33,7 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
 std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages,
                                                const TranspileOptions& options);
 
-// Helpers shared by the CLI, the tests and the benchmark.
-bool readFile(const std::string& path, std::string* contents);  // false when it cannot be read
-// The pipeline a shader belongs to: its directory and file name without the stage and language
-// extensions (shaders/terrain.vert.hlsl -> shaders/terrain).
-std::string pipelineKey(const std::string& path);
-std::optional<Stage> stageFromPath(const std::string& path);
-std::optional<Stage> stageFromName(const std::string& name);  // vert, frag, vertex, ...
-const char* stageName(Stage stage);
-bool isPreRasterization(Stage stage);
+// The output file extension a conversion writes by default (the input's, or the target language's).
 std::string defaultOutputExtension(const SourceFile& input, const TranspileOptions& options);
 
 const char* version();

@@ -1,7 +1,7 @@
 // Accuracy by execution on the corpus: every GLSL (330, ES 300, Vulkan 450) and HLSL pipeline whose last
 // pre-rasterization stage gets the shift is run on lavapipe, original against transpiled, with
 // eyeSign = 0 (bit-exact mono identity), -1 and +1 (stereo error against the double reference).
-#include "test/harness/stereo_verify.h"
+#include "transpiler/verify/stereo_verify.h"
 #include "test/harness/vulkan_suite.h"
 #include "transpiler/stereoshift.h"
 

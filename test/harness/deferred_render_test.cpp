@@ -17,8 +17,8 @@
 // PNGs of each eye (truth, fix, baseline) and a red/cyan anaglyph of the fix are written for a person.
 // Both checks run for the GLSL lighting shader and for its HLSL relative (kLightingHlsl, through
 // glslang's HLSL front end), with the same scene, matrices and bounds.
-#include "test/harness/stereo_verify.h"
-#include "transpiler/front_end.h"
+#include "transpiler/verify/stereo_verify.h"
+#include "transpiler/frontend/front_end.h"
 
 #include <gtest/gtest.h>
 

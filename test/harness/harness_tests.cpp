@@ -9,7 +9,7 @@
 #include <map>
 #include <set>
 
-#include "vk_harness.h"
+#include "transpiler/verify/vk_harness.h"
 
 using namespace stereoshift::harness;
 

@@ -19,8 +19,8 @@
 //     the original's;
 //   * the non-position output (a varying) bit for bit the original's in every case.
 // Without hudAtDepth the 2D shader is copied through: the SPIR-V is the original's, word for word.
-#include "test/harness/capture_instrument.h"
-#include "test/harness/stereo_verify.h"
+#include "transpiler/verify/capture_instrument.h"
+#include "transpiler/verify/stereo_verify.h"
 #include "test/harness/vulkan_suite.h"
 
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 //   transpiled: stereoshift's shaders with the eye parameters, every matrix mono.
 // Differences may only be rasterization ties: every differing pixel must lie on an edge of the
 // truth image. Left, right and a red/cyan anaglyph are written as PNG for a person to look at.
-#include "test/harness/stereo_verify.h"
-#include "transpiler/front_end.h"
+#include "transpiler/verify/stereo_verify.h"
+#include "transpiler/frontend/front_end.h"
 
 #include <gtest/gtest.h>
 

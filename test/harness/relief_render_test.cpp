@@ -9,8 +9,8 @@
 //             tool that only shifts positions gives (the relief is seen from between the eyes).
 // PSNR and the largest channel difference of fix and baseline against the truth are printed; the fix
 // must match the truth to rounding, the baseline must be measurably worse. Images are written as PNG.
-#include "test/harness/stereo_verify.h"
-#include "transpiler/front_end.h"
+#include "transpiler/verify/stereo_verify.h"
+#include "transpiler/frontend/front_end.h"
 
 #include <stereoshift/stereo_runtime.h>
 

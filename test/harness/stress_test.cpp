@@ -1,10 +1,10 @@
 // Numerical stress suite: a pass-through vertex shader (gl_Position = the attribute) gives full
 // control of x and w, so the sweep reaches every regime of STEREO.md section 2 and 6. Each case states
 // its bound and checks it on lavapipe against the double-precision reference.
-#include "test/harness/stereo_verify.h"
+#include "transpiler/verify/stereo_verify.h"
 #include "test/harness/vulkan_suite.h"
 
-#include "transpiler/spirv_module.h"
+#include "passes/ir/module.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // it checks that.
 #pragma once
 
-#include "test/harness/vk_harness.h"
+#include "transpiler/verify/vk_harness.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 //
 // Compile definitions: GLSLANG_VALIDATOR (path of glslangValidator; compile checks are skipped
 // without it) and CORPUS_DIR (the repository's corpus/ folder; corpus tests skipped without it).
-#include "transpiler/hlsl_splice.h"
+#include "transpiler/backend/hlsl_splice.h"
 
 #include <gtest/gtest.h>
 

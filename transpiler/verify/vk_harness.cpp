@@ -1,5 +1,5 @@
 // Headless Vulkan execution harness: see vk_harness.h.
-#include "vk_harness.h"
+#include "transpiler/verify/vk_harness.h"
 
 #include <algorithm>
 #include <cstdio>

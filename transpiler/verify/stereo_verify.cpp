@@ -1,7 +1,7 @@
-#include "test/harness/stereo_verify.h"
+#include "transpiler/verify/stereo_verify.h"
 
-#include "test/harness/capture_instrument.h"
-#include "transpiler/spirv_module.h"
+#include "transpiler/verify/capture_instrument.h"
+#include "passes/ir/module.h"
 
 #include <algorithm>
 #include <cfloat>

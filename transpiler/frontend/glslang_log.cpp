@@ -1,50 +1,11 @@
-#include "transpiler/diagnostics.h"
-#include "transpiler/source_text.h"
+#include "transpiler/frontend/glslang_log.h"
+#include "passes/source_text.h"
 
 #include <algorithm>
 #include <regex>
 #include <sstream>
 
 namespace stereoshift {
-
-std::string Diagnostic::format() const {
-  std::string out;
-  if (!file.empty()) {
-    out += file;
-    if (line > 0) {
-      out += ":" + std::to_string(line);
-      if (column > 0) out += ":" + std::to_string(column);
-    }
-    out += ": ";
-  }
-  switch (severity) {
-    case Severity::Error: out += "error: "; break;
-    case Severity::Warning: out += "warning: "; break;
-    case Severity::Note: out += "note: "; break;
-  }
-  return out + message;
-}
-
-void Diagnostics::error(std::string file, int line, int column, std::string message) {
-  list_.push_back({Severity::Error, std::move(file), line, column, std::move(message)});
-}
-void Diagnostics::warning(std::string file, std::string message) {
-  list_.push_back({Severity::Warning, std::move(file), 0, 0, std::move(message)});
-}
-void Diagnostics::note(std::string file, std::string message) {
-  list_.push_back({Severity::Note, std::move(file), 0, 0, std::move(message)});
-}
-
-int Diagnostics::errorCount() const {
-  return static_cast<int>(std::count_if(list_.begin(), list_.end(),
-                                        [](const Diagnostic& d) { return d.severity == Severity::Error; }));
-}
-
-std::string Diagnostics::format() const {
-  std::string out;
-  for (const auto& d : list_) out += d.format() + "\n";
-  return out;
-}
 
 namespace {
 

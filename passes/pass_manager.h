@@ -9,8 +9,4 @@ namespace stereoshift {
 // `changed` reports whether any pass changed the module.
 bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog);
 
-// Validates a module with SPIRV-Tools for the environment the source implies.
-bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, const std::string& file,
-                   const std::string& when, Diagnostics& diags);
-
 }  // namespace stereoshift

@@ -1,4 +1,4 @@
-#include "transpiler/spirv_module.h"
+#include "passes/ir/module.h"
 
 #include <spirv-tools/libspirv.hpp>
 

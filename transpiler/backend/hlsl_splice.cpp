@@ -1,6 +1,6 @@
 // HLSL source splice for geometry and domain shaders: see hlsl_splice.h.
-#include "transpiler/hlsl_splice.h"
-#include "transpiler/source_text.h"
+#include "transpiler/backend/hlsl_splice.h"
+#include "passes/source_text.h"
 
 #include <algorithm>
 #include <cctype>

@@ -3,7 +3,7 @@
 // so the harness can read back each output of each vertex. The shader's own code is not touched.
 #pragma once
 
-#include "transpiler/spirv_module.h"
+#include "passes/ir/module.h"
 
 #include <string>
 #include <vector>

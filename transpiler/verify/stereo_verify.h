@@ -3,7 +3,7 @@
 // exact stereo reference `x + e*S*(w - C)` computed in double from the original's outputs.
 #pragma once
 
-#include "test/harness/vk_harness.h"
+#include "transpiler/verify/vk_harness.h"
 #include "transpiler/stereoshift.h"
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "test/harness/capture_instrument.h"
+#include "transpiler/verify/capture_instrument.h"
 
 #include <algorithm>
 #include <climits>

@@ -1,30 +1,14 @@
 // Front end: GLSL (desktop, ES, Vulkan) and HLSL through glslang to SPIR-V; SPIR-V binaries as is.
 #pragma once
 
-#include "transpiler/stereoshift.h"
+#include "passes/diagnostics.h"
+#include "passes/shader.h"
 
 #include <set>
 #include <string>
 #include <vector>
 
 namespace stereoshift {
-
-// What the back end must know about the original source to emit a drop-in replacement.
-struct SourceInfo {
-  SourceLanguage language = SourceLanguage::Glsl;
-  Stage stage = Stage::Unknown;
-  int version = 0;         // GLSL #version; 0 for HLSL and SPIR-V
-  bool es = false;         // ESSL
-  bool vulkan = false;     // Vulkan GLSL semantics (sets, push constants)
-  bool versionRaised = false;  // glslang needed a higher version to make SPIR-V
-  std::string entryPoint;  // the source's entry-point name
-  // Names (variable names, and block type names) that carried explicit qualifiers in the source.
-  // glslang must auto-assign locations and bindings to make SPIR-V; the back end strips the ones
-  // the source did not have, so OpenGL shaders keep relying on glBindAttribLocation & co.
-  std::set<std::string> explicitLocation;
-  std::set<std::string> explicitBinding;
-  std::set<std::string> explicitSet;
-};
 
 struct FrontEndResult {
   bool ok = false;

@@ -2,7 +2,8 @@
 // output a drop-in replacement for the input (see README "Back-end routes").
 #pragma once
 
-#include "transpiler/front_end.h"
+#include "passes/diagnostics.h"
+#include "passes/shader.h"
 
 #include <map>
 #include <string>

@@ -1,5 +1,5 @@
 // The SPIR-V module IR: parse/encode round trips, find-or-create, decorations.
-#include "transpiler/spirv_module.h"
+#include "passes/ir/module.h"
 
 #include <gtest/gtest.h>
 

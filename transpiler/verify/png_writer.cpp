@@ -4,7 +4,7 @@
 #include <array>
 #include <cstdio>
 
-#include "vk_harness.h"
+#include "transpiler/verify/vk_harness.h"
 
 namespace stereoshift::harness {
 namespace {

@@ -1,5 +1,6 @@
-#include "transpiler/front_end.h"
-#include "transpiler/source_text.h"
+#include "transpiler/frontend/front_end.h"
+#include "transpiler/frontend/glslang_log.h"
+#include "passes/source_text.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>

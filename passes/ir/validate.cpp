@@ -1,0 +1,43 @@
+#include "passes/ir/validate.h"
+
+#include <spirv-tools/libspirv.hpp>
+
+namespace stereoshift {
+
+namespace {
+
+spv_target_env environmentFor(const SourceInfo& info, uint32_t version) {
+  if (info.language == SourceLanguage::Glsl && !info.vulkan) return SPV_ENV_OPENGL_4_5;
+  if (info.language == SourceLanguage::Spirv) {
+    switch (version) {
+      case 0x00010000: return SPV_ENV_UNIVERSAL_1_0;
+      case 0x00010100: return SPV_ENV_UNIVERSAL_1_1;
+      case 0x00010200: return SPV_ENV_UNIVERSAL_1_2;
+      case 0x00010300: return SPV_ENV_UNIVERSAL_1_3;
+      case 0x00010400: return SPV_ENV_UNIVERSAL_1_4;
+      case 0x00010500: return SPV_ENV_UNIVERSAL_1_5;
+      default: return SPV_ENV_UNIVERSAL_1_6;
+    }
+  }
+  return SPV_ENV_VULKAN_1_0;
+}
+
+}  // namespace
+
+bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, const std::string& file,
+                   const std::string& when, Diagnostics& diags) {
+  uint32_t version = words.size() > 1 ? words[1] : 0;
+  spvtools::SpirvTools tools(environmentFor(info, version));
+  std::string messages;
+  tools.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* message) {
+    if (level <= SPV_MSG_ERROR) messages += std::string(message) + "\n";
+  });
+  spvtools::ValidatorOptions options;
+  options.SetRelaxBlockLayout(true);  // HLSL offsets (glslang's EShMsgHlslOffsets)
+  if (tools.Validate(words.data(), words.size(), options)) return true;
+  while (!messages.empty() && messages.back() == '\n') messages.pop_back();
+  diags.error(file, "invalid SPIR-V " + when + ": " + messages);
+  return false;
+}
+
+}  // namespace stereoshift
