@@ -680,11 +680,12 @@ class DeferredUnprojectionPass final : public Pass {
     uint32_t inverseDepth = emit(spv::OpCompositeExtract, f, {p.result, 3});
     uint32_t scaled = emit(spv::OpFMul, f, {convergence, inverseDepth});
     uint32_t parallax = emit(spv::OpFSub, f, {m.constantFloat(1.0f), scaled});
-    uint32_t scale = emit(spv::OpFMul, f, {eyeSign, separation});
+    uint32_t scale = emitEyeScale(ctx, code, eyeSign, separation);
     uint32_t offset = emit(spv::OpFMul, f, {scale, parallax});
     uint32_t correction = emit(spv::OpVectorTimesScalar, v4, {column0, offset});
     uint32_t corrected = emit(spv::OpFSub, v4, {p.result, correction});
-    uint32_t stereo = emit(spv::OpFUnordNotEqual, m.typeBool(), {eyeSign, m.constantFloat(0.0f)});
+    m.constantFloat(0.0f);  // before the guard's own id, the order these ids have always had
+    uint32_t stereo = emitStereoGuard(ctx, code, eyeSign);
     // A vector condition: OpSelect takes a scalar one only from SPIR-V 1.4 on.
     uint32_t stereo4 = emit(spv::OpCompositeConstruct, bool4, {stereo, stereo, stereo, stereo});
     uint32_t chosen = emit(spv::OpSelect, v4, {stereo4, corrected, p.result});

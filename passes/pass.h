@@ -7,6 +7,7 @@
 #include "passes/ir/module.h"
 #include "passes/next_stage_facts.h"
 #include "passes/shader.h"
+#include "passes/shift_emitter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -127,25 +128,5 @@ bool carriesEyeParameters(const PassContext& context);
 // Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
 // onto the same binding numbers.
 std::optional<uint32_t> highestBinding(const spirv::Module& module, uint32_t set, bool constantBuffersOnly);
-
-// ---- shared emission helpers -------------------------------------------------------------------
-
-// Appends instructions to `out` that load eye parameter `which` (an EyeParam, declared through
-// ensureEyeParams) and returns the id of the loaded float.
-uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>& out, int which);
-
-// Appends `x + eyeSign*separation*(w - convergence)` for the float ids `x` and `w`; returns its id.
-// Marked NoContraction when the options ask for an invariant position, so every copy rounds alike.
-uint32_t emitShiftedX(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t x, uint32_t w);
-
-// Appends the condition under which `w` is shifted (a bool id): eyeSign != 0, and unless the cutoff
-// is off, |w - 1| > epsilon (or w != 1) and w finite.
-uint32_t emitCutoffCondition(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t w);
-
-// Returns a vec4 id: `value` with x shifted, selected by the cutoff (branch-free; used for halo copies).
-uint32_t emitShiftedVec4Select(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t value);
-
-// Whether the emitted language can express NoContraction (`precise`).
-bool targetSupportsPrecise(const PassContext& context);
 
 }  // namespace stereoshift

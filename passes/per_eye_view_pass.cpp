@@ -571,7 +571,7 @@ uint32_t emitEyeOffset(PassContext& ctx, std::vector<Instruction>& out, const Of
   uint32_t eyeSign = emitLoadEyeParam(ctx, out, kEyeSign);
   uint32_t separation = emitLoadEyeParam(ctx, out, kSeparation);
   uint32_t convergence = emitLoadEyeParam(ctx, out, kConvergence);
-  uint32_t shift = op(spv::OpFMul, f, {op(spv::OpFMul, f, {eyeSign, separation}), convergence});
+  uint32_t shift = op(spv::OpFMul, f, {emitEyeScale(ctx, out, eyeSign, separation), convergence});
   uint32_t zero = m.constantFloat(0.0f);
   uint32_t direction = op(spv::OpCompositeConstruct, v4, {shift, zero, zero, zero});
   uint32_t matrixType = slotType(m, source.matrices.front());  // every factor is a mat4

@@ -3,7 +3,7 @@
 #include "transpiler/backend/back_end.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/backend/emit_prep.h"
-#include "transpiler/backend/hlsl_splice.h"
+#include "transpiler/backend/splice_route.h"
 #include "passes/ir/validate.h"
 #include "passes/pass_manager.h"
 #include "passes/per_eye_view_pass.h"
@@ -229,36 +229,10 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     result.binaryOutput = true;
   } else if (target == TargetLanguage::SpirvAsm) {
     result.output = spirv::disassemble(finalWords);
-  } else if (info.language == SourceLanguage::Hlsl && target == TargetLanguage::Hlsl &&
-             (info.stage == Stage::Geometry || info.stage == Stage::TessEvaluation)) {
+  } else if (takesSourceSpliceRoute(info, target)) {
     // SPIRV-Cross 2021 cannot emit HLSL geometry or domain shaders: splice the shift into the
     // original text instead (the passes above still classified it and chose the register).
-    if (ctx.eye.source != EyeSource::UniformBlock) {
-      diags.error(file, "HLSL geometry and domain shaders take the source-splice route, which supports only "
-                        "--eye-source=uniform-block");
-      return result;
-    }
-    HlslSpliceOptions splice;
-    splice.entryPoint = info.entryPoint;
-    splice.geometry = info.stage == Stage::Geometry;
-    splice.cbufferName = module.name(module.pointeeType(module.definition(ctx.eye.variable)->typeId));
-    splice.cbufferRegister = module.decorationValue(ctx.eye.variable, spv::DecorationBinding).value_or(0);
-    splice.eyeSignName = ctx.eye.names[0];
-    splice.separationName = ctx.eye.names[1];
-    splice.convergenceName = ctx.eye.names[2];
-    splice.cutoff = options.cutoff == CutoffMode::None ? HlslSpliceOptions::Cutoff::None
-                    : options.cutoff == CutoffMode::Exact || options.cutoffEpsilon <= 0 ? HlslSpliceOptions::Cutoff::Exact
-                                                                                        : HlslSpliceOptions::Cutoff::Epsilon;
-    splice.epsilon = options.cutoffEpsilon;
-    splice.precise = options.invariantPosition;
-    HlslSpliceResult spliced = spliceHlslStereo(input.contents, splice);
-    if (!spliced.ok) {
-      diags.error(file, spliced.line, spliced.column, "cannot splice the stereo shift: " + spliced.error);
-      return result;
-    }
-    result.output = std::move(spliced.text);
-    result.report["route"] = "hlsl-source-splice";
-    result.report["passes"]["stereo-shift"]["sites"] = spliced.sites;
+    if (!spliceSourceStereo(input, ctx, result.output, result.report, diags)) return result;
     if (options.verify) {
       Diagnostics verifyDiags;
       if (!verifyCompiles(result.output, SourceLanguage::Hlsl, info.stage, info.entryPoint, true, file + " (emitted)",

@@ -12,33 +12,37 @@
 //             function and shifts the SV_Position output (return value, struct member or `out`
 //             parameter).
 //
-// The shift is `x' = x + (eyeSign * separation) * (w - convergence)`, skipped when `w` is 1 (see
-// HlslSpliceOptions::cutoff). Everything outside the inserted text and the rewritten tokens is
-// preserved byte for byte; inserted text starts on its own line and uses the file's line endings.
+// The shift is the ShiftSpec's (passes/shift_emitter.h), the same description the SPIR-V route
+// emits: `x' = x + (eyeSign * separation) * (w - convergence)` under its cutoff, as a branch or a
+// select, plain, fused (`mad`) or compensated, `precise` or not. Everything outside the inserted
+// text and the rewritten tokens is preserved byte for byte; inserted text starts on its own line
+// and uses the file's line endings.
 //
-// Only the C++20 standard library is used. The scanner understands comments, string literals,
-// preprocessor lines (not macro expansion, except `#define`s whose body calls `.Append(`),
-// balanced brackets and template argument lists; it is not a full HLSL parser.
+// The pieces (transpiler/backend/hlsl_splice/): the scanner (tokens, comments, strings,
+// directives), the top-level parser (functions, structs, attributes), the edit buffer (insertions
+// by offset), the shift's text rendering and the geometry and domain rewriters. The scanner
+// understands comments, string literals, preprocessor lines (not macro expansion, except
+// `#define`s whose body calls `.Append(`), balanced brackets and template argument lists; it is
+// not a full HLSL parser.
 #pragma once
+
+#include "passes/shift_emitter.h"
 
 #include <cstdint>
 #include <string>
 
 namespace stereoshift {
 
-struct HlslSpliceOptions {
+// Where the shift goes, and the shift itself (the ShiftSpec it extends: cutoff, epsilon, form,
+// fused, compensated, precise and the eye parameter names).
+struct HlslSpliceOptions : ShiftSpec {
+  using Cutoff = CutoffMode;  // Epsilon: abs(p.w - 1.0f) > epsilon; Exact: p.w != 1.0f; None: always
   std::string entryPoint;  // e.g. "GSMain", "DSMain", "main"
   bool geometry = true;    // true: geometry shader; false: domain shader (tessellation evaluation)
   std::string cbufferName = "StereoParams";
   uint32_t cbufferRegister = 0;  // register(b<N>); an error if the source already uses b<N> in space0
-  std::string eyeSignName = "eyeSign", separationName = "separation", convergenceName = "convergence";
-  enum class Cutoff {
-    Epsilon,  // if (abs(p.w - 1.0f) > epsilon) shift
-    Exact,    // if (p.w != 1.0f) shift
-    None      // always shift
-  } cutoff = Cutoff::Epsilon;
-  float epsilon = 1e-5f;  // printed with 9 significant digits (round-trips a float)
-  bool precise = true;    // compute the shifted x into a `precise float` temporary
+  // The epsilon is printed with 9 significant digits (round-trips a float); `precise` computes the
+  // shifted x into a `precise float` temporary.
 };
 
 struct HlslSpliceResult {

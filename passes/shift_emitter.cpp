@@ -1,0 +1,238 @@
+// This turns a ShiftSpec into SPIR-V: the loads of the eye parameters, the shifted x in its plain,
+// fused or compensated form, and the cutoff condition around it (see shift_emitter.h).
+#include "passes/shift_emitter.h"
+
+#include "passes/pass.h"
+
+#include <glslang/SPIRV/GLSL.std.450.h>
+
+namespace stereoshift {
+
+using spirv::Instruction;
+
+ShiftSpec makeShiftSpec(const TranspileOptions& options, bool preciseSupported) {
+  ShiftSpec spec;
+  // A zero (or negative) epsilon is the driver's rule, w != 1: one name for one behaviour.
+  spec.cutoff = options.cutoff == CutoffMode::Epsilon && options.cutoffEpsilon <= 0.0f ? CutoffMode::Exact
+                                                                                        : options.cutoff;
+  spec.epsilon = options.cutoffEpsilon;
+  spec.form = options.shiftForm;
+  spec.fused = options.fusedShift;
+  spec.compensated = options.compensatedShift;
+  spec.precise = options.invariantPosition && preciseSupported;
+  spec.eyeSignName = options.eye.eyeSignName;
+  spec.separationName = options.eye.separationName;
+  spec.convergenceName = options.eye.convergenceName;
+  return spec;
+}
+
+ShiftSpec shiftSpec(const PassContext& context) {
+  ShiftSpec spec = makeShiftSpec(context.options, targetSupportsPrecise(context));
+  // eye-params may have renamed them to avoid a clash with the shader's own names.
+  if (context.eye.declared > kConvergence) {
+    spec.eyeSignName = context.eye.names[kEyeSign];
+    spec.separationName = context.eye.names[kSeparation];
+    spec.convergenceName = context.eye.names[kConvergence];
+  }
+  return spec;
+}
+
+bool targetSupportsPrecise(const PassContext& context) {
+  TargetLanguage target = context.options.target;
+  if (target == TargetLanguage::Auto) {
+    switch (context.source.language) {
+      case SourceLanguage::Hlsl: return true;
+      case SourceLanguage::Spirv: return true;
+      case SourceLanguage::Glsl: break;
+    }
+    int version = context.options.targetVersion.value_or(context.source.version);
+    if (context.source.vulkan) return true;
+    return context.source.es ? version >= 320 : version >= 400;
+  }
+  switch (target) {
+    case TargetLanguage::Spirv: case TargetLanguage::SpirvAsm: case TargetLanguage::Hlsl: return true;
+    case TargetLanguage::Glsl: return context.options.targetVersion.value_or(450) >= 400;
+    case TargetLanguage::Essl: return context.options.targetVersion.value_or(310) >= 320;
+    default: return false;
+  }
+}
+
+uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
+  auto& m = context.module;
+  const EyeParams& eye = context.eye;
+  uint32_t floatType = m.typeFloat(32);
+  switch (eye.source) {
+    case EyeSource::SpecConstant:
+      return eye.specConstants[which];
+    case EyeSource::LooseUniforms: {
+      uint32_t value = m.takeId();
+      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{eye.looseVariables[which]});
+      return value;
+    }
+    case EyeSource::UniformBlock:
+    case EyeSource::PushConstant:
+    case EyeSource::Auto: {
+      auto storage = eye.source == EyeSource::PushConstant ? spv::StorageClassPushConstant
+                                                           : spv::StorageClassUniform;
+      uint32_t pointerType = m.typePointer(storage, floatType);
+      uint32_t index = m.constantInt(static_cast<int32_t>(eye.firstMember + which));
+      uint32_t pointer = m.takeId();
+      out.emplace_back(spv::OpAccessChain, pointerType, pointer, std::vector<uint32_t>{eye.variable, index});
+      uint32_t value = m.takeId();
+      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{pointer});
+      return value;
+    }
+  }
+  return 0;
+}
+
+uint32_t emitStereoGuard(PassContext& context, std::vector<Instruction>& out, uint32_t eyeSign) {
+  auto& m = context.module;
+  uint32_t stereo = m.takeId();
+  out.emplace_back(spv::OpFUnordNotEqual, m.typeBool(), stereo, std::vector<uint32_t>{eyeSign, m.constantFloat(0.0f)});
+  return stereo;
+}
+
+uint32_t emitEyeScale(PassContext& context, std::vector<Instruction>& out, uint32_t eyeSign, uint32_t separation,
+                      bool noContraction) {
+  auto& m = context.module;
+  uint32_t scale = m.takeId();
+  out.emplace_back(spv::OpFMul, m.typeFloat(32), scale, std::vector<uint32_t>{eyeSign, separation});
+  if (noContraction) m.decorate(scale, spv::DecorationNoContraction);
+  return scale;
+}
+
+uint32_t emitShiftedX(PassContext& context, std::vector<Instruction>& out, uint32_t x, uint32_t w) {
+  return emitShiftedX(context, shiftSpec(context), out, x, w);
+}
+
+uint32_t emitShiftedX(PassContext& context, const ShiftSpec& spec, std::vector<Instruction>& out, uint32_t x,
+                      uint32_t w) {
+  auto& m = context.module;
+  uint32_t f = m.typeFloat(32);
+  uint32_t eyeSign = emitLoadEyeParam(context, out, 0);
+  uint32_t separation = emitLoadEyeParam(context, out, 1);
+  uint32_t convergence = emitLoadEyeParam(context, out, 2);
+  bool precise = spec.precise;
+  auto op = [&](spv::Op code, uint32_t a, uint32_t b) {
+    uint32_t id = m.takeId();
+    out.emplace_back(code, f, id, std::vector<uint32_t>{a, b});
+    if (precise) m.decorate(id, spv::DecorationNoContraction);
+    return id;
+  };
+  // x + (eyeSign * separation) * (w - convergence): the order of STEREO.md section 1.
+  uint32_t depth = op(spv::OpFSub, w, convergence);
+  uint32_t scale = emitEyeScale(context, out, eyeSign, separation, precise);
+  if (spec.compensated) {
+    // x + a*(w - C) correctly rounded up to a hair: w - C exactly as dh + dl (TwoSum), a*dh exactly
+    // as ph + pl (TwoProduct), x + ph exactly as sh + sl (TwoSum), then one final rounding of
+    // sh + (sl + pl + a*dl). Needs NoContraction honoured (no re-association), so `precise`.
+    auto always = [&](spv::Op code, uint32_t a, uint32_t b) {
+      uint32_t id = m.takeId();
+      out.emplace_back(code, f, id, std::vector<uint32_t>{a, b});
+      m.decorate(id, spv::DecorationNoContraction);
+      return id;
+    };
+    uint32_t dh = always(spv::OpFSub, w, convergence);
+    uint32_t bb = always(spv::OpFSub, dh, w);
+    uint32_t dl = always(spv::OpFSub, always(spv::OpFSub, w, always(spv::OpFSub, dh, bb)),
+                         always(spv::OpFAdd, convergence, bb));
+    uint32_t a = emitEyeScale(context, out, eyeSign, separation, true);
+    uint32_t ph = always(spv::OpFMul, a, dh);
+    // The product's rounding error by Dekker's TwoProduct (Veltkamp split, 2^12 + 1): exact without
+    // relying on a fused fma, which some drivers (lavapipe among them) evaluate as mul + add.
+    uint32_t splitter = m.constantFloat(4097.0f);
+    auto split = [&](uint32_t v, uint32_t* hi, uint32_t* lo) {
+      uint32_t c = always(spv::OpFMul, splitter, v);
+      *hi = always(spv::OpFSub, c, always(spv::OpFSub, c, v));
+      *lo = always(spv::OpFSub, v, *hi);
+    };
+    uint32_t ahi, alo, dhi, dlo;
+    split(a, &ahi, &alo);
+    split(dh, &dhi, &dlo);
+    uint32_t pl = always(spv::OpFAdd,
+                         always(spv::OpFAdd, always(spv::OpFAdd, always(spv::OpFSub, always(spv::OpFMul, ahi, dhi), ph),
+                                                    always(spv::OpFMul, ahi, dlo)),
+                                always(spv::OpFMul, alo, dhi)),
+                         always(spv::OpFMul, alo, dlo));
+    uint32_t sh = always(spv::OpFAdd, x, ph);
+    uint32_t bb2 = always(spv::OpFSub, sh, x);
+    uint32_t sl = always(spv::OpFAdd, always(spv::OpFSub, x, always(spv::OpFSub, sh, bb2)),
+                         always(spv::OpFSub, ph, bb2));
+    uint32_t tail = always(spv::OpFAdd, sl, always(spv::OpFAdd, pl, always(spv::OpFMul, a, dl)));
+    return always(spv::OpFAdd, sh, tail);
+  }
+  if (spec.fused) {
+    // One rounding less: fma(eyeSign * separation, w - convergence, x).
+    uint32_t glsl = m.extInstImport("GLSL.std.450");
+    uint32_t id = m.takeId();
+    out.emplace_back(spv::OpExtInst, f, id, std::vector<uint32_t>{glsl, GLSLstd450Fma, scale, depth, x});
+    if (precise) m.decorate(id, spv::DecorationNoContraction);
+    return id;
+  }
+  uint32_t offset = op(spv::OpFMul, scale, depth);
+  return op(spv::OpFAdd, x, offset);
+}
+
+uint32_t emitCutoffCondition(PassContext& context, std::vector<Instruction>& out, uint32_t w) {
+  return emitCutoffCondition(context, shiftSpec(context), out, w);
+}
+
+uint32_t emitCutoffCondition(PassContext& context, const ShiftSpec& spec, std::vector<Instruction>& out, uint32_t w) {
+  auto& m = context.module;
+  uint32_t boolType = m.typeBool();
+  uint32_t f = m.typeFloat(32);
+  // eyeSign != 0 first: a mono draw runs none of the shift, so it is the original bit for bit
+  // (x + 0 would turn a -0 x into +0).
+  uint32_t eyeSign = emitLoadEyeParam(context, out, 0);
+  uint32_t stereo = emitStereoGuard(context, out, eyeSign);
+  if (spec.cutoff == CutoffMode::None) return stereo;
+
+  uint32_t one = m.constantFloat(1.0f);
+  // Ordered comparisons: a NaN w is never shifted (no new NaN in x).
+  uint32_t far = m.takeId();
+  if (spec.cutoff == CutoffMode::Exact) {
+    // The driver's rule: w != 1.
+    out.emplace_back(spv::OpFOrdNotEqual, boolType, far, std::vector<uint32_t>{w, one});
+  } else {
+    uint32_t glsl = m.extInstImport("GLSL.std.450");
+    uint32_t diff = m.takeId();
+    out.emplace_back(spv::OpFSub, f, diff, std::vector<uint32_t>{w, one});
+    uint32_t absDiff = m.takeId();
+    out.emplace_back(spv::OpExtInst, f, absDiff, std::vector<uint32_t>{glsl, GLSLstd450FAbs, diff});
+    out.emplace_back(spv::OpFOrdGreaterThan, boolType, far,
+                     std::vector<uint32_t>{absDiff, m.constantFloat(spec.epsilon)});
+  }
+  // An infinite w is not shifted either: separation 0 times infinity would be NaN.
+  uint32_t infinite = m.takeId();
+  out.emplace_back(spv::OpIsInf, boolType, infinite, std::vector<uint32_t>{w});
+  uint32_t finite = m.takeId();
+  out.emplace_back(spv::OpLogicalNot, boolType, finite, std::vector<uint32_t>{infinite});
+  uint32_t farAndFinite = m.takeId();
+  out.emplace_back(spv::OpLogicalAnd, boolType, farAndFinite, std::vector<uint32_t>{far, finite});
+  uint32_t cond = m.takeId();
+  out.emplace_back(spv::OpLogicalAnd, boolType, cond, std::vector<uint32_t>{stereo, farAndFinite});
+  return cond;
+}
+
+uint32_t emitShiftedVec4Select(PassContext& context, std::vector<Instruction>& out, uint32_t value) {
+  auto& m = context.module;
+  uint32_t f = m.typeFloat(32);
+  uint32_t v4 = m.typeVector(f, 4);
+  uint32_t x = m.takeId();
+  out.emplace_back(spv::OpCompositeExtract, f, x, std::vector<uint32_t>{value, 0});
+  uint32_t w = m.takeId();
+  out.emplace_back(spv::OpCompositeExtract, f, w, std::vector<uint32_t>{value, 3});
+  ShiftSpec spec = shiftSpec(context);
+  uint32_t shifted = emitShiftedX(context, spec, out, x, w);
+  if (uint32_t cond = emitCutoffCondition(context, spec, out, w)) {
+    uint32_t chosen = m.takeId();
+    out.emplace_back(spv::OpSelect, f, chosen, std::vector<uint32_t>{cond, shifted, x});
+    shifted = chosen;
+  }
+  uint32_t result = m.takeId();
+  out.emplace_back(spv::OpCompositeInsert, v4, result, std::vector<uint32_t>{shifted, value, 0});
+  return result;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,71 @@
+// The one description of the stereo shift, `x' = x + (eyeSign*separation)*(w - convergence)` under
+// its cutoff, and its rendering as SPIR-V. A ShiftSpec is made once from the options; the IR
+// emitters below render it as instructions (the stereo-shift and halo passes, so the position and
+// its halo copies are shifted by exactly the same sequence, bit for bit), and the HLSL source
+// splice renders the same spec as text (transpiler/backend/hlsl_splice/shift_text.h).
+#pragma once
+
+#include "passes/ir/module.h"
+#include "passes/shader.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct PassContext;
+
+// Everything that decides which arithmetic the shift is and how it is guarded.
+struct ShiftSpec {
+  // Epsilon: shift when |w - 1| > epsilon; Exact: when w != 1; None: always (still never in a mono
+  // draw, eyeSign 0). Normalised: Epsilon only with a positive epsilon (a zero one is Exact).
+  CutoffMode cutoff = CutoffMode::Epsilon;
+  float epsilon = 1e-5f;
+  ShiftForm form = ShiftForm::Branch;  // if around the shift, or a branch-free select
+  bool fused = false;        // fma(eyeSign*separation, w - convergence, x): one rounding less
+  bool compensated = false;  // error-free transformations, every operation NoContraction / precise
+  bool precise = true;       // NoContraction (`precise`) on the shift, so every copy rounds alike
+  std::string eyeSignName = "eyeSign";
+  std::string separationName = "separation";
+  std::string convergenceName = "convergence";
+};
+
+// The spec the options ask for. `preciseSupported`: whether the output language can express
+// NoContraction (see targetSupportsPrecise); names are the configured ones.
+ShiftSpec makeShiftSpec(const TranspileOptions& options, bool preciseSupported);
+
+// The spec of this conversion: the options, the target's `precise`, and the eye parameter names as
+// declared (after clash resolution) once eye-params has run.
+ShiftSpec shiftSpec(const PassContext& context);
+
+// Whether the emitted language can express NoContraction (`precise`).
+bool targetSupportsPrecise(const PassContext& context);
+
+// Appends instructions to `out` that load eye parameter `which` (an EyeParam, declared through
+// ensureEyeParams) and returns the id of the loaded float.
+uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>& out, int which);
+
+// The two pieces every stereo fix is built from, for already loaded eye parameters.
+// `eyeSign != 0` (unordered: only an exact zero is mono); the zero constant is made after the id.
+uint32_t emitStereoGuard(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t eyeSign);
+// `eyeSign * separation`, NoContraction when `noContraction`.
+uint32_t emitEyeScale(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t eyeSign,
+                      uint32_t separation, bool noContraction = false);
+
+// Appends `x + eyeSign*separation*(w - convergence)` for the float ids `x` and `w` in the form the
+// spec asks for (plain, fused or compensated); returns its id.
+uint32_t emitShiftedX(PassContext& context, const ShiftSpec& spec, std::vector<spirv::Instruction>& out, uint32_t x,
+                      uint32_t w);
+uint32_t emitShiftedX(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t x, uint32_t w);
+
+// Appends the condition under which `w` is shifted (a bool id): eyeSign != 0, and unless the cutoff
+// is off, |w - 1| > epsilon (or w != 1) and w finite.
+uint32_t emitCutoffCondition(PassContext& context, const ShiftSpec& spec, std::vector<spirv::Instruction>& out,
+                             uint32_t w);
+uint32_t emitCutoffCondition(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t w);
+
+// Returns a vec4 id: `value` with x shifted, selected by the cutoff (branch-free; used for halo copies).
+uint32_t emitShiftedVec4Select(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t value);
+
+}  // namespace stereoshift
