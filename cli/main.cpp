@@ -95,10 +95,12 @@ int main(int argc, char** argv) {
   if (!o.pipeline.empty()) paths.insert(paths.end(), o.inputs.begin(), o.inputs.end());
   if (paths.empty()) {
     std::cerr << "stereoshift: error: no input file (see --help)\n";
+    printErrorSummary(1);
     return 2;
   }
   if (paths.size() > 1 && o.pipeline.empty()) {
     std::cerr << "stereoshift: error: several inputs need --pipeline (or use 'stereoshift build')\n";
+    printErrorSummary(1);
     return 2;
   }
   return runConvertCommand(o, paths);
