@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
   app.add_option("--pipeline", o.pipeline, "Comma-separated stages of one pipeline; only its last pre-rasterization stage is shifted");
   app.add_option("--depfile", o.depfile,
                  "Write the outputs' dependencies (the inputs and every #included file) as a Makefile-style depfile");
+  app.add_option("--timeout", o.timeoutSeconds, "Seconds the conversion may take before it is stopped and reported (0: no limit)")
+      ->capture_default_str();
 
   CliOptions b;
   BuildCommandOptions buildOptions;
@@ -53,7 +55,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return reportParseError(app, e, std::cerr);
   }
 
   if (*verify) {
@@ -93,63 +95,13 @@ int main(int argc, char** argv) {
   if (!o.pipeline.empty()) paths.insert(paths.end(), o.inputs.begin(), o.inputs.end());
   if (paths.empty()) {
     std::cerr << "stereoshift: error: no input file (see --help)\n";
+    printErrorSummary(1);
     return 2;
   }
   if (paths.size() > 1 && o.pipeline.empty()) {
     std::cerr << "stereoshift: error: several inputs need --pipeline (or use 'stereoshift build')\n";
+    printErrorSummary(1);
     return 2;
   }
-  // The conversion runs in a forked child: a crash in the front end (glslang overflows its stack on
-  // some inputs) becomes a clear error instead of a core dump. STEREOSHIFT_NO_FORK=1 keeps it in
-  // process, for a debugger.
-  auto run = [&]() -> int {
-    std::vector<SourceFile> sources;
-    int readErrors = readSources(paths, &sources, std::cerr);
-    if (readErrors) {
-      printErrorSummary(readErrors);
-      return 1;
-    }
-    nlohmann::json reports = nlohmann::json::array();
-    int errors = convert(sources, o,
-                         [&](size_t i, const TranspileResult&) {
-                           if (sources.size() == 1) return o.output;
-                           if (o.output.empty() || o.output == "-") return std::string("-");
-                           return (fs::path(o.output) / fs::path(sources[i].path).filename()).string();
-                         },
-                         reports, std::cerr);
-    writeReport(o.reportPath, sources.size() == 1 && !reports.empty() ? reports[0] : reports);
-    if (!errors && !o.depfile.empty()) {
-      std::vector<std::string> targets, dependencies;
-      for (const auto& r : reports)
-        if (r.contains("output_file")) targets.push_back(r["output_file"].get<std::string>());
-      for (const auto& s : sources) dependencies.push_back(s.path);
-      for (const auto& r : reports)
-        for (const auto& inc : r.value("included_files", nlohmann::json::array())) dependencies.push_back(inc.get<std::string>());
-      std::string error;
-      if (targets.empty()) {
-        std::cerr << "stereoshift: error: --depfile needs an output file (-o)\n";
-        ++errors;
-      } else if (!writeAtomically(o.depfile, makeDepfile(targets, dependencies), &error)) {
-        std::cerr << o.depfile << ": error: " << error << "\n";
-        ++errors;
-      }
-    }
-    printErrorSummary(errors);
-    return errors ? 1 : 0;
-  };
-  if (const char* noFork = std::getenv("STEREOSHIFT_NO_FORK"); noFork && *noFork && std::string(noFork) != "0") return run();
-  TaskOutcome outcome = runIsolatedOnce(
-      [&] {
-        int status = run();
-        std::cout.flush();
-        std::cerr.flush();
-        std::fflush(nullptr);
-        return std::to_string(status);
-      },
-      0);
-  if (outcome.completed) return std::atoi(outcome.payload.c_str());
-  std::cerr << paths.front() << ": error: stereoshift " << outcome.failure
-            << " while converting this shader; no output was written\n";
-  printErrorSummary(1);
-  return 1;
+  return runConvertCommand(o, paths);
 }
