@@ -1,5 +1,7 @@
 #include "cli/cli_support.h"
 
+#include "passes/pass_registry.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -115,10 +117,7 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                "Leave `InvM * vec4(ndc, depth, 1)` position reconstruction (deferred lighting) mono");
   app.add_flag("--hud-at-depth", o.t.hudAtDepth,
                "Place shaders proven 2D (w = 1) at the eye depth given by the injected `hudDepth` uniform");
-  app.add_option("--pass", o.t.onlyPasses,
-                 "Run only this pass (repeatable): clip-position-detection, hud-at-depth, eye-params, halo, "
-                 "stereo-shift, per-eye-view, deferred-unprojection")
-      ->allow_extra_args(false);
+  app.add_option("--pass", o.t.onlyPasses, passHelpText())->allow_extra_args(false);
   app.add_flag("--print-all", o.t.printAll, "Print the SPIR-V after every pass to stderr");
   app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
   app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
@@ -161,10 +160,7 @@ std::optional<std::string> finishOptions(CliOptions& o) {
   o.t.eye.hlslRegister = o.hlslRegister;
   o.t.eye.glBinding = o.glBinding;
   o.t.targetVersion = o.targetVersion;
-  static const std::vector<std::string> passNames = {"clip-position-detection", "hud-at-depth", "eye-params", "halo",
-                                                     "stereo-shift", "per-eye-view", "deferred-unprojection"};
-  for (const auto& p : o.t.onlyPasses)
-    if (std::find(passNames.begin(), passNames.end(), p) == passNames.end()) return "unknown --pass '" + p + "'";
+  if (auto error = checkPassNames(o.t.onlyPasses)) return error;
   return std::nullopt;
 }
 
