@@ -1,6 +1,7 @@
 #include "cli/cli_support.h"
 
 #include "cli/worker_pool.h"
+#include "passes/pass_registry.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -188,10 +189,7 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                "Leave `InvM * vec4(ndc, depth, 1)` position reconstruction (deferred lighting) mono");
   app.add_flag("--hud-at-depth", o.t.hudAtDepth,
                "Place shaders proven 2D (w = 1) at the eye depth given by the injected `hudDepth` uniform");
-  app.add_option("--pass", o.t.onlyPasses,
-                 "Run only this pass (repeatable): clip-position-detection, hud-at-depth, eye-params, halo, "
-                 "stereo-shift, per-eye-view, deferred-unprojection")
-      ->allow_extra_args(false);
+  app.add_option("--pass", o.t.onlyPasses, passHelpText())->allow_extra_args(false);
   app.add_flag("--print-all", o.t.printAll, "Print the SPIR-V after every pass to stderr");
   app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
   app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
@@ -201,6 +199,13 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
 
 namespace {
 
+// The --pass names, from the pass registry (in pipeline order).
+std::vector<std::string> registeredPassNames() {
+  std::vector<std::string> names;
+  for (const auto& pass : passRegistry()) names.emplace_back(pass.name);
+  return names;
+}
+
 // The options whose values come from a fixed set, and the set: for the messages about a bad or a
 // missing value.
 const std::map<std::string, std::vector<std::string>>& enumeratedOptions() {
@@ -209,9 +214,7 @@ const std::map<std::string, std::vector<std::string>>& enumeratedOptions() {
       {"--target", {"glsl", "essl", "hlsl", "msl", "spirv", "spirv-asm"}},
       {"--eye-source", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms"}},
       {"--shift-form", {"branch", "select"}},
-      {"--pass",
-       {"clip-position-detection", "hud-at-depth", "eye-params", "halo", "stereo-shift", "per-eye-view",
-        "deferred-unprojection"}},
+      {"--pass", registeredPassNames()},
   };
   return options;
 }

@@ -1,9 +1,9 @@
 // clip-position-detection: turns a module into a classification and the list of its clip-position
-// outputs (BuiltIn Position variables, members of gl_PerVertex-style blocks, per-vertex arrays).
-// It changes nothing; later passes act on what it found.
+// outputs (BuiltIn Position variables, members of gl_PerVertex-style blocks, per-vertex arrays;
+// found by the shared clip-position analysis). It changes nothing; later passes act on what it found.
 #include "passes/pass.h"
 
-#include <cstring>
+#include <set>
 
 namespace stereoshift {
 
@@ -32,9 +32,9 @@ class ClipPositionDetectionPass final : public Pass {
     auto& m = ctx.module;
     auto& report = ctx.report["passes"][name()];
     spv::ExecutionModel model = m.executionModel();
-    ctx.positions = findPositions(ctx.module);
+    const ClipPositionAnalysis& positions = clipPositions(ctx);
     nlohmann::json found = nlohmann::json::array();
-    for (const auto& p : ctx.positions) found.push_back(p.description);
+    for (const auto& p : positions.outputs()) found.push_back(p.description);
     report["positions"] = found;
 
     bool preRaster = model == spv::ExecutionModelVertex || model == spv::ExecutionModelTessellationEvaluation ||
@@ -44,14 +44,14 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::NoPositionStage;
     } else if (!ctx.options.shiftThisStage) {
       ctx.classification = Classification::Intermediate;
-    } else if (ctx.positions.empty()) {
+    } else if (positions.outputs().empty()) {
       ctx.classification = Classification::NoPositionOutput;
     } else if (carriesEyeParameters(ctx)) {
       ctx.classification = Classification::AlreadyStereo;
       ctx.diags.note(ctx.file, "shader already carries stereo eye parameters ('" + ctx.options.eye.eyeSignName +
                                    "'); left as it is, never shifted twice");
-    } else if (allWritesHaveConstantW1(ctx.module, ctx.positions) ||
-               (!entryStoresRuntimeProduct(ctx.module, ctx.positions) && constantW1AfterFolding(ctx))) {
+    } else if (allWritesHaveConstantW1(ctx.module, positions) ||
+               (!entryStoresRuntimeProduct(ctx.module, positions) && constantW1AfterFolding(ctx))) {
       ctx.classification = Classification::ConstantW1;
     } else {
       ctx.classification = Classification::Perspective;
@@ -62,47 +62,12 @@ class ClipPositionDetectionPass final : public Pass {
   }
 
  private:
-  static std::vector<ClipPosition> findPositions(const spirv::Module& m) {
-    std::vector<ClipPosition> positions;
-    for (uint32_t id : m.entryInterface()) {
-      const Instruction* var = m.definition(id);
-      if (!var || var->opcode != spv::OpVariable || var->operand(0) != spv::StorageClassOutput) continue;
-      uint32_t type = m.pointeeType(var->typeId);
-      bool arrayed = false;
-      const Instruction* typeDef = m.definition(type);
-      if (typeDef && typeDef->opcode == spv::OpTypeArray) {
-        arrayed = true;
-        type = typeDef->operand(0);
-        typeDef = m.definition(type);
-      }
-      std::string varName = m.name(id);
-      if (m.decorationValue(id, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInPosition)) {
-        positions.push_back({id, false, 0, arrayed, varName.empty() ? "position" : varName});
-        continue;
-      }
-      if (!typeDef || typeDef->opcode != spv::OpTypeStruct) continue;
-      for (uint32_t member = 0; member < typeDef->operands.size(); ++member)
-        if (m.memberDecorationValue(type, member, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInPosition))
-          positions.push_back({id, true, member, arrayed, m.name(type) + "." + m.memberName(type, member)});
-    }
-    return positions;
-  }
-
-
-  // `inst` is an access chain to the position member of its block (`gl_PerVertex.gl_Position`).
-  static bool chainsToMember(const spirv::Module& m, const Instruction& inst, const ClipPosition& position) {
-    if (inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain) return false;
-    if (inst.operand(0) != position.variable || inst.operands.size() != 2) return false;
-    const Instruction* index = m.definition(inst.operand(1));
-    return index && index->opcode == spv::OpConstant && index->operand(0) == position.member;
-  }
-
   // Cheap proof of a perspective position, which spares most vertex shaders the folded copy (an
   // optimizer run): the entry function itself stores `M * v` (or `v * M`, M possibly `A * B`) to the
   // position, with M loaded from a uniform, push-constant, storage or input variable. Inlining and
   // folding keep that store, and no folding can turn a product with a matrix known only at run time
   // into the constant 1, so the folded copy could never prove w = 1.
-  static bool entryStoresRuntimeProduct(const spirv::Module& m, const std::vector<ClipPosition>& positions) {
+  static bool entryStoresRuntimeProduct(const spirv::Module& m, const ClipPositionAnalysis& positions) {
     auto runtimeMatrix = [&](uint32_t id, auto& self) -> bool {
       const Instruction* def = m.definition(id);
       if (!def) return false;
@@ -115,12 +80,8 @@ class ClipPositionDetectionPass final : public Pass {
                          *storage == spv::StorageClassInput);
     };
     auto isPosition = [&](uint32_t pointer) {
-      for (const auto& p : positions) {
-        if (p.arrayed) continue;
-        if (!p.isMember && pointer == p.variable) return true;
-        const Instruction* chain = m.definition(pointer);
-        if (p.isMember && chain && chainsToMember(m, *chain, p)) return true;
-      }
+      for (size_t i = 0; i < positions.outputs().size(); ++i)
+        if (!positions.outputs()[i].arrayed && positions.wholePointers(i).count(pointer)) return true;
       return false;
     };
     for (const auto& fn : m.functions) {
@@ -142,36 +103,30 @@ class ClipPositionDetectionPass final : public Pass {
   static bool constantW1AfterFolding(PassContext& ctx) {
     const spirv::Module* folded = foldedCopy(ctx);
     if (!folded) return false;
-    auto positions = findPositions(*folded);
-    return !positions.empty() && allWritesHaveConstantW1(*folded, positions);
+    ClipPositionAnalysis positions(*folded);
+    return !positions.outputs().empty() && allWritesHaveConstantW1(*folded, positions);
   }
 
   // True when every write of every clip position stores a vector whose w is the literal 1.0.
-  static bool allWritesHaveConstantW1(const spirv::Module& m, const std::vector<ClipPosition>& positions) {
+  static bool allWritesHaveConstantW1(const spirv::Module& m, const ClipPositionAnalysis& analysis) {
     bool sawStore = false;
-    for (const auto& position : positions) {
+    for (size_t output = 0; output < analysis.outputs().size(); ++output) {
+      const ClipPosition& position = analysis.outputs()[output];
       if (position.arrayed) return false;
       // Pointers to the whole position: the variable itself, or chains to the position member.
-      auto isChainToPosition = [&](const Instruction& inst) { return chainsToMember(m, inst, position); };
-      std::vector<uint32_t> pointers;
-      if (!position.isMember) pointers.push_back(position.variable);
-      for (const auto& fn : m.functions)
-        for (const auto& block : fn.blocks)
-          for (const auto& inst : block.instructions)
-            if (position.isMember && isChainToPosition(inst)) pointers.push_back(inst.resultId);
+      const std::set<uint32_t>& pointers = analysis.wholePointers(output);
       for (const auto& fn : m.functions)
         for (const auto& block : fn.blocks)
           for (const auto& inst : block.instructions) {
             if (inst.opcode == spv::OpLoad) continue;
-            if (position.isMember && isChainToPosition(inst)) continue;
+            if (position.isMember && pointers.count(inst.resultId)) continue;
             if (position.isMember && (inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) &&
                 inst.operand(0) == position.variable && inst.operands.size() > 2) {
               const Instruction* index = m.definition(inst.operand(1));
               if (!index || index->opcode != spv::OpConstant || index->operand(0) == position.member) return false;
             }
             bool usesPointer = false;
-            for (uint32_t operand : inst.operands)
-              for (uint32_t p : pointers) usesPointer |= operand == p;
+            for (uint32_t operand : inst.operands) usesPointer |= pointers.count(operand) > 0;
             // The whole block written at once (e.g. a struct copy) is not provable either.
             if (position.isMember && inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain)
               for (uint32_t operand : inst.operands) usesPointer |= operand == position.variable;

@@ -2,8 +2,8 @@
 // UVs derived from it) into ones computed from the shifted position, so they move with the geometry
 // instead of leaving a mono "halo" behind (a known 3Dmigoto artifact).
 //
-// Data flow tracked: values stored to the position, loads of the position, and function-local
-// variables whose every store is such a value. Each other output whose stored value is computed
+// Data flow tracked (the clip-position analysis's mono values): values stored to the position,
+// loads of the position, and function-local variables whose every store is such a value. Each other output whose stored value is computed
 // from one of those, through pure arithmetic in the same function, gets that computation cloned
 // with the position replaced by its shifted value (the same instruction sequence as the shift).
 #include "passes/pass.h"
@@ -41,73 +41,38 @@ class HaloPass final : public Pass {
     auto& m = ctx.module;
     auto& report = ctx.report["passes"][name()];
 
-    std::set<uint32_t> positionPointers, positionOutputs;
-    for (const auto& p : ctx.positions) positionOutputs.insert(p.variable);
+    // Which values are the mono position, and through which pointers it is written: the shared
+    // clip-position analysis (its mono values follow copies kept in function-local variables).
+    const ClipPositionAnalysis& positions = clipPositions(ctx);
+    const std::set<uint32_t>& positionValues = positions.monoValues();
+    std::set<uint32_t> positionOutputs;
+    for (const auto& p : positions.outputs()) positionOutputs.insert(p.variable);
     std::set<uint32_t> builtinOutputs;
     for (uint32_t id : m.entryInterface())
       if (m.hasDecoration(id, spv::DecorationBuiltIn)) builtinOutputs.insert(id);
 
     nlohmann::json fixed = nlohmann::json::array();
-    for (auto& fn : m.functions) {
-      // Pointers to the position: the variable, or its chain to the position member.
-      std::set<uint32_t> pointers;
-      for (const auto& p : ctx.positions) {
-        if (!p.isMember) pointers.insert(p.variable);
-        for (const auto& block : fn.blocks)
-          for (const auto& inst : block.instructions)
-            if (p.isMember && inst.opcode == spv::OpAccessChain && inst.operand(0) == p.variable &&
-                inst.operands.size() == 2) {
-              const Instruction* index = m.definition(inst.operand(1));
-              if (index && index->operand(0) == p.member) pointers.insert(inst.resultId);
-            }
-      }
-      // Values equal to the (mono) position.
-      std::set<uint32_t> positionValues;
-      std::map<uint32_t, std::vector<uint32_t>> storesToLocal;
-      std::set<uint32_t> locals;
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions) {
-          if (inst.opcode == spv::OpStore && pointers.count(inst.operand(0))) positionValues.insert(inst.operand(1));
-          if (inst.opcode == spv::OpVariable) locals.insert(inst.resultId);
-          if (inst.opcode == spv::OpStore) storesToLocal[inst.operand(0)].push_back(inst.operand(1));
-        }
-      for (bool grew = true; grew;) {
-        grew = false;
-        for (const auto& block : fn.blocks)
-          for (const auto& inst : block.instructions) {
-            if (inst.opcode != spv::OpLoad || positionValues.count(inst.resultId)) continue;
-            uint32_t from = inst.operand(0);
-            bool fromLocalCopy = locals.count(from) && !storesToLocal[from].empty() &&
-                                 std::all_of(storesToLocal[from].begin(), storesToLocal[from].end(),
-                                             [&](uint32_t v) { return positionValues.count(v) > 0; });
-            if (pointers.count(from) || fromLocalCopy) {
-              positionValues.insert(inst.resultId);
-              grew = true;
-            }
+    if (!positionValues.empty())
+      for (auto& fn : m.functions) {
+        for (auto& block : fn.blocks) {
+          for (size_t i = 0; i < block.instructions.size(); ++i) {
+            const Instruction store = block.instructions[i];
+            if (store.opcode != spv::OpStore || positions.addressesWholePosition(store.operand(0))) continue;
+            uint32_t target = m.rootVariable(store.operand(0));
+            if (!target || positionOutputs.count(target) || builtinOutputs.count(target)) continue;
+            if (m.storageClassOf(target) != spv::StorageClassOutput) continue;
+            std::vector<Instruction> code;
+            std::map<uint32_t, uint32_t> cloned;
+            uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
+            if (newValue == store.operand(1)) continue;  // not derived from the position
+            block.instructions[i].operands[1] = newValue;
+            block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
+            i += code.size();
+            m.invalidateDefinitions();
+            fixed.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
           }
-        // Stores into locals from position values make those locals' loads position values next round.
-      }
-      if (positionValues.empty()) continue;
-
-      for (auto& block : fn.blocks) {
-        for (size_t i = 0; i < block.instructions.size(); ++i) {
-          const Instruction store = block.instructions[i];
-          if (store.opcode != spv::OpStore || pointers.count(store.operand(0))) continue;
-          uint32_t target = m.rootVariable(store.operand(0));
-          if (!target || positionOutputs.count(target) || builtinOutputs.count(target)) continue;
-          if (m.storageClassOf(target) != spv::StorageClassOutput) continue;
-          std::vector<Instruction> code;
-          std::map<uint32_t, uint32_t> cloned;
-          uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
-          if (newValue == store.operand(1)) continue;  // not derived from the position
-          block.instructions[i].operands[1] = newValue;
-          block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
-          i += code.size();
-          m.invalidateDefinitions();
-          fixed.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
         }
       }
-    }
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
     report["shifted_outputs"] = fixed;
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
@@ -121,17 +86,18 @@ class HaloPass final : public Pass {
   // same shift applied to their own value.
   void shiftExactCopiesSeenAfterInlining(PassContext& ctx, nlohmann::json& fixed) {
     auto& m = ctx.module;
-    if (ctx.positions.size() != 1 || ctx.positions.front().isMember) return;
-    uint32_t position = ctx.positions.front().variable;
+    const auto& outputs = clipPositions(ctx).outputs();
+    if (outputs.size() != 1 || outputs.front().isMember) return;
     const spirv::Module* optimized = foldedCopy(ctx);
     if (!optimized) return;
+    ClipPositionAnalysis foldedPositions(*optimized);  // global ids are the module's own
     std::set<uint32_t> positionValues;
     std::map<uint32_t, std::set<uint32_t>> storedTo;
     for (const auto& fn : optimized->functions)
       for (const auto& block : fn.blocks)
         for (const auto& inst : block.instructions)
           if (inst.opcode == spv::OpStore) {
-            if (inst.operand(0) == position) positionValues.insert(inst.operand(1));
+            if (foldedPositions.addressesWholePosition(inst.operand(0))) positionValues.insert(inst.operand(1));
             else storedTo[inst.operand(0)].insert(inst.operand(1));
           }
     if (positionValues.empty()) return;

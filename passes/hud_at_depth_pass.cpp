@@ -41,23 +41,12 @@ class HudAtDepthPass final : public Pass {
     };
     std::vector<Site> sites;
     nlohmann::json placed = nlohmann::json::array();
-    for (const auto& position : ctx.positions) {
+    const ClipPositionAnalysis& positions = clipPositions(ctx);
+    for (size_t output = 0; output < positions.outputs().size(); ++output) {
+      const ClipPosition& position = positions.outputs()[output];
       if (position.arrayed) return leaveAlone(ctx, "per-vertex position arrays");
-      std::set<uint32_t> wholePointers, partialPointers;
-      if (!position.isMember) wholePointers.insert(position.variable);
-      for (const auto& fn : m.functions)
-        for (const auto& block : fn.blocks)
-          for (const auto& inst : block.instructions) {
-            if ((inst.opcode != spv::OpAccessChain && inst.opcode != spv::OpInBoundsAccessChain) ||
-                inst.operand(0) != position.variable)
-              continue;
-            const Instruction* index = m.definition(inst.operand(1));
-            bool toPosition = !position.isMember || (index && index->opcode == spv::OpConstant &&
-                                                     index->operand(0) == position.member);
-            if (!toPosition) continue;
-            (inst.operands.size() == (position.isMember ? 2u : 1u) ? wholePointers : partialPointers)
-                .insert(inst.resultId);
-          }
+      const std::set<uint32_t>& wholePointers = positions.wholePointers(output);
+      const std::set<uint32_t>& partialPointers = positions.componentPointers(output);
       for (auto& fn : m.functions)
         for (auto& block : fn.blocks)
           for (size_t i = 0; i < block.instructions.size(); ++i) {

@@ -28,6 +28,34 @@ const char* toString(Classification c) {
   return "?";
 }
 
+const char* analysisName(Analysis analysis) {
+  switch (analysis) {
+    case kClipPositionAnalysis: return "clip-positions";
+    case kFoldedCopyAnalysis: return "folded-copy";
+  }
+  return "?";
+}
+
+void PassContext::invalidateAnalyses(AnalysisSet kept) {
+  if (!(kept & kClipPositionAnalysis)) clipPositionCache.reset();
+  if (!(kept & kFoldedCopyAnalysis)) {
+    folded.reset();
+    foldTried = false;
+  }
+}
+
+AnalysisSet PassContext::cachedAnalyses() const {
+  return (clipPositionCache ? kClipPositionAnalysis : kNoAnalyses) | (foldTried ? kFoldedCopyAnalysis : kNoAnalyses);
+}
+
+const ClipPositionAnalysis& clipPositions(PassContext& context) {
+  if (!context.clipPositionCache) {
+    context.clipPositionCache.emplace(context.module);
+    context.positions = context.clipPositionCache->outputs();
+  }
+  return *context.clipPositionCache;
+}
+
 const spirv::Module* foldedCopy(PassContext& context) {
   if (!context.foldTried) {
     context.foldTried = true;

@@ -1,8 +1,9 @@
-// The pass interface and what passes share: the clip-position analysis, the eye parameters, and
-// the one piece of code that emits the stereo shift (so the position and its halo copies are shifted
+// The pass interface and what passes share: the context with its cached analyses (clip positions,
+// the folded copy), the eye parameters, and the one piece of code that emits the stereo shift (so the position and its halo copies are shifted
 // by exactly the same instruction sequence, bit for bit).
 #pragma once
 
+#include "passes/analysis/clip_positions.h"
 #include "passes/diagnostics.h"
 #include "passes/ir/module.h"
 #include "passes/next_stage_facts.h"
@@ -20,15 +21,6 @@ namespace stereoshift {
 
 enum class PassResult { Unchanged, Changed, Failed };
 const char* toString(PassResult result);
-
-// Where the clip position lives: an Output variable, or a member of an Output block.
-struct ClipPosition {
-  uint32_t variable = 0;
-  bool isMember = false;
-  uint32_t member = 0;        // member index in the block, when isMember
-  bool arrayed = false;       // per-vertex arrays (tessellation control, mesh): not shifted here
-  std::string description;    // e.g. "gl_PerVertex.gl_Position"
-};
 
 // Why a shader gets (or does not get) the shift; reported per shader.
 enum class Classification {
@@ -68,7 +60,24 @@ struct EyeParams {
   std::string names[kEyeParamCount];            // final names after clash resolution
 };
 
+// The analyses a context computes on first request and keeps while they hold (SPIRV-Tools'
+// IRContext analyses, LLVM's analysis manager in miniature). A pass's registry entry declares which
+// it needs and which survive it; after a pass that changed the module the pass manager drops the
+// others, so the next request recomputes them on the module as it is then.
+enum Analysis : unsigned {
+  kClipPositionAnalysis = 1u << 0,  // clipPositions(): the position outputs, their pointers, mono values
+  kFoldedCopyAnalysis = 1u << 1,    // foldedCopy(): the inlined, constant-folded copy
+};
+using AnalysisSet = unsigned;
+constexpr AnalysisSet kNoAnalyses = 0;
+constexpr AnalysisSet kAllAnalyses = kClipPositionAnalysis | kFoldedCopyAnalysis;
+const char* analysisName(Analysis analysis);
+
 struct PassContext {
+  PassContext(spirv::Module& module, const TranspileOptions& options, const SourceInfo& source, Diagnostics& diags,
+              std::string file, nlohmann::json& report)
+      : module(module), options(options), source(source), diags(diags), file(std::move(file)), report(report) {}
+
   spirv::Module& module;
   const TranspileOptions& options;
   const SourceInfo& source;
@@ -76,8 +85,10 @@ struct PassContext {
   std::string file;
   nlohmann::json& report;  // passes add what they did under report["passes"][name()]
 
-  // Filled by clip-position-detection.
+  // The clip-position outputs: clipPositions(*this).outputs(), kept here each time the analysis is
+  // computed for the passes that read them from the context (no pass adds or removes an output).
   std::vector<ClipPosition> positions;
+  // Filled by clip-position-detection.
   Classification classification = Classification::NoPositionOutput;
   // Whether the stereo-shift (and halo) passes shift the clip position: set by detection for a
   // perspective last stage, and by hud-at-depth for a 2D shader it places at depth.
@@ -85,12 +96,21 @@ struct PassContext {
   // Filled by eye-params.
   EyeParams eye;
   bool eyeDeclared = false;
-  // See foldedCopy().
-  std::optional<spirv::Module> folded;
-  bool foldTried = false;
   // Set by transpilePipeline() for the last pre-rasterization stage: how the fragment stage uses
   // each of its inputs (per-eye-view decides per output from it). Null in single-shader mode.
   const NextStageFacts* nextStage = nullptr;
+
+  // ---- the analysis cache (read through clipPositions() and foldedCopy()) ----
+  std::optional<ClipPositionAnalysis> clipPositionCache;
+  // See foldedCopy(): the copy, and whether making it was tried (it stays null when the optimizer
+  // cannot process the module). A pipeline hands both on from an earlier analysis of the stage.
+  std::optional<spirv::Module> folded;
+  bool foldTried = false;
+
+  // Drops every cached analysis not in `kept` (after a pass changed the module).
+  void invalidateAnalyses(AnalysisSet kept);
+  // The analyses cached right now (for the tests and the pass manager's checks).
+  AnalysisSet cachedAnalyses() const;
 };
 
 class Pass {
@@ -118,6 +138,10 @@ bool ensureEyeParams(PassContext& context, int count);
 // functions and structs. Only used to answer questions, never emitted; global ids (variables) are
 // the module's own. Null when the optimizer cannot process the module.
 const spirv::Module* foldedCopy(PassContext& context);
+
+// The clip-position analysis of the module as it is now: computed on first request, cached until a
+// pass that changed the module does not preserve it (see Analysis).
+const ClipPositionAnalysis& clipPositions(PassContext& context);
 
 // Whether the module declares eyeSign next to separation (by the configured names): an earlier
 // stereoshift run or the application itself made it stereo already, and shifting or fixing it

@@ -1,59 +1,71 @@
+// See pass_manager.h. The pipeline's order and each pass's requirements live in the registry
+// (pass_registry.cpp); this file only runs them and looks after the analyses in between.
 #include "passes/pass_manager.h"
-#include "passes/ir/validate.h"
 
-#include <algorithm>
+#include "passes/ir/validate.h"
+#include "passes/pass_registry.h"
+#include "passes/per_eye_view_pass.h"
 
 namespace stereoshift {
 
 namespace {
 
-struct PipelineEntry {
-  std::unique_ptr<Pass> (*create)();
-};
-
-// The order matters:
-//  1. clip-position-detection is analysis only: it classifies the shader; the geometry passes
-//     below do nothing unless it found a perspective last stage.
-//  2. hud-at-depth (opt-in) turns a proven-2D position into one at an eye depth, which then needs
-//     the shift like any perspective position: it must come before eye-params, halo and the shift.
-//  3. eye-params declares eyeSign / separation / convergence; the shift and halo code load them.
-//  4. halo runs before the shift, while the only loads of the position are the application's own,
-//     so it sees exactly the values the application derived its outputs from.
-//  5. stereo-shift guards and shifts the final position at every return / emit.
-//  6. per-eye-view and deferred-unprojection fix pixel maths that sees the mono eye; they are
-//     independent of the shift (they also run on fragment shaders, which get no shift) and declare
-//     the eye parameters they need themselves.
-const PipelineEntry kPipeline[] = {
-    {createClipPositionDetectionPass},
-    {createHudAtDepthPass},
-    {createEyeParamsPass},
-    {createHaloPass},
-    {createStereoShiftPass},
-    {createPerEyeViewPass},
-    {createDeferredUnprojectionPass},
-};
+// With --validate-each: a pass that changed the module must not have changed what a cached analysis
+// it declares preserved would say now; a wrong declaration would feed stale answers to later passes.
+bool preservedAnalysesHold(PassContext& ctx, const PassInfo& info) {
+  if ((info.preservedAnalyses & kClipPositionAnalysis) && ctx.clipPositionCache &&
+      !(*ctx.clipPositionCache == ClipPositionAnalysis(ctx.module))) {
+    ctx.diags.error(ctx.file, std::string("internal error: pass ") + info.name + " changed the " +
+                                  analysisName(kClipPositionAnalysis) + " analysis it declares preserved");
+    return false;
+  }
+  return true;
+}
 
 }  // namespace
 
 bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
   *changed = false;
-  for (const auto& entry : kPipeline) {
-    auto pass = entry.create();
-    const auto& only = ctx.options.onlyPasses;
-    if (!only.empty() && std::find(only.begin(), only.end(), pass->name()) == only.end()) continue;
+  std::vector<const PassInfo*> passes;
+  std::vector<std::string> requiredBy;
+  if (ctx.options.onlyPasses.empty()) {
+    for (const auto& info : passRegistry()) passes.push_back(&info);
+    requiredBy.resize(passes.size());
+  } else {
+    passes = selectPasses(ctx.options.onlyPasses, &requiredBy);
+  }
+  for (size_t i = 0; i < passes.size(); ++i) {
+    const PassInfo& info = *passes[i];
+    auto pass = info.create();
+    if (!requiredBy[i].empty()) ctx.report["passes"][info.name]["required_by"] = requiredBy[i];
+    // The cheap analyses are made before the pass; the folded copy (an optimizer run, which most
+    // passes never need on most shaders) on the pass's first request.
+    if (info.requiredAnalyses & kClipPositionAnalysis) clipPositions(ctx);
     PassResult result = pass->run(ctx);
-    ctx.report["passes"][pass->name()]["result"] = toString(result);
+    ctx.report["passes"][info.name]["result"] = toString(result);
     if (result == PassResult::Failed) return false;
-    if (result == PassResult::Changed) *changed = true;
+    if (result == PassResult::Changed) {
+      *changed = true;
+      if (ctx.options.validateEach && !preservedAnalysesHold(ctx, info)) return false;
+      ctx.invalidateAnalyses(info.preservedAnalyses);
+    }
     if (ctx.options.printAll && passLog)
-      *passLog += "; IR after " + std::string(pass->name()) + " (" + toString(result) + ")\n" +
+      *passLog += "; IR after " + std::string(info.name) + " (" + toString(result) + ")\n" +
                   spirv::disassemble(ctx.module.encode());
     if (ctx.options.validateEach && result == PassResult::Changed &&
-        !validateSpirv(ctx.module.encode(), ctx.source, ctx.file, std::string("after pass ") + pass->name(),
-                       ctx.diags))
+        !validateSpirv(ctx.module.encode(), ctx.source, ctx.file, std::string("after pass ") + info.name, ctx.diags))
       return false;
   }
   return true;
 }
+
+bool nextStageFactsMatter(const spirv::Module& shiftedStage, const TranspileOptions& options) {
+  if (!options.perEyeView) return false;
+  // per-eye-view looks no further than a module without a vector subtraction, unless it is told
+  // the camera uniform (then it looks for that uniform's uses).
+  return !options.cameraUniform.empty() || hasVectorSubtraction(shiftedStage);
+}
+
+NextStageFacts analyseNextStage(PassContext& consumer) { return analyseStageInputs(consumer); }
 
 }  // namespace stereoshift

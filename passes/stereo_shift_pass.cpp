@@ -19,6 +19,7 @@ class StereoShiftPass final : public Pass {
     if (!ctx.shiftPosition) return PassResult::Unchanged;
     auto& m = ctx.module;
     auto& report = ctx.report["passes"][name()];
+    const std::vector<ClipPosition>& positions = clipPositions(ctx).outputs();
     if (!ctx.eyeDeclared) {
       ctx.diags.error(ctx.file, "stereo-shift needs the eye-params pass to run first");
       return PassResult::Failed;
@@ -29,7 +30,7 @@ class StereoShiftPass final : public Pass {
                                 "(SetMeshOutputs + per-vertex gl_Position writes) is not implemented");
       return PassResult::Failed;
     }
-    for (const auto& p : ctx.positions)
+    for (const auto& p : positions)
       if (p.arrayed) {
         ctx.diags.error(ctx.file, "per-vertex clip-position arrays are not supported in this stage");
         return PassResult::Failed;
@@ -57,7 +58,7 @@ class StereoShiftPass final : public Pass {
       }
     }
     if (ctx.options.invariantPosition)
-      for (const auto& p : ctx.positions) {
+      for (const auto& p : positions) {
         if (p.isMember)
           m.decorateMember(m.pointeeType(m.definition(p.variable)->typeId), p.member, spv::DecorationInvariant);
         else
@@ -89,6 +90,7 @@ class StereoShiftPass final : public Pass {
   // into [head | then | rest]; false when the code went inline (select form, loop header).
   bool insertShift(PassContext& ctx, spirv::Function& fn, size_t bi, size_t at) {
     auto& m = ctx.module;
+    const std::vector<ClipPosition>& positions = clipPositions(ctx).outputs();
     uint32_t f = m.typeFloat(32);
     uint32_t v4 = m.typeVector(f, 4);
     bool loopHeader = fn.blocks[bi].mergeInstruction() &&
@@ -98,7 +100,7 @@ class StereoShiftPass final : public Pass {
 
     if (!branch) {
       std::vector<Instruction> code;
-      for (const auto& p : ctx.positions) {
+      for (const auto& p : positions) {
         uint32_t pointer = positionPointer(ctx, code, p, v4);
         uint32_t value = m.takeId();
         code.emplace_back(spv::OpLoad, v4, value, std::vector<uint32_t>{pointer});
@@ -122,7 +124,7 @@ class StereoShiftPass final : public Pass {
 
     // Several clip positions are exotic; each gets its own guard inside the single then-block.
     std::vector<Instruction>& headCode = head.instructions;
-    const auto& p = ctx.positions.front();
+    const auto& p = positions.front();
     uint32_t pointer = positionPointer(ctx, headCode, p, v4);
     uint32_t value = m.takeId();
     headCode.emplace_back(spv::OpLoad, v4, value, std::vector<uint32_t>{pointer});
@@ -141,8 +143,8 @@ class StereoShiftPass final : public Pass {
     chain.push_back(m.constantInt(0));
     then.instructions.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, f), xPointer, chain);
     then.instructions.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{xPointer, shiftedX});
-    for (size_t i = 1; i < ctx.positions.size(); ++i) {  // further positions: branch-free
-      const auto& extra = ctx.positions[i];
+    for (size_t i = 1; i < positions.size(); ++i) {  // further positions: branch-free
+      const auto& extra = positions[i];
       uint32_t extraPointer = positionPointer(ctx, then.instructions, extra, v4);
       uint32_t extraValue = m.takeId();
       then.instructions.emplace_back(spv::OpLoad, v4, extraValue, std::vector<uint32_t>{extraPointer});

@@ -6,7 +6,6 @@
 #include "transpiler/backend/splice_route.h"
 #include "passes/ir/validate.h"
 #include "passes/pass_manager.h"
-#include "passes/per_eye_view_pass.h"
 #include "passes/ir/module.h"
 
 #include <algorithm>
@@ -281,10 +280,10 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
   // The facts serve per-eye-view in the last pre-rasterization stage, which looks no further when that
   // stage has no vector subtraction: then the fragment stage's folded copy (an optimizer run, most of
   // a typical fragment shader's cost) is not worth making for them.
-  if (options.cameraUniform.empty()) {
+  {
     auto& shifted = compiled[static_cast<size_t>(last)];
     const spirv::Module* module = shifted ? parsedModule(*shifted) : nullptr;
-    if (module && !hasVectorSubtraction(*module)) return std::nullopt;
+    if (module && !nextStageFactsMatter(*module, options)) return std::nullopt;
   }
   for (size_t i = 0; i < stages.size(); ++i) {
     auto kind = options.stage ? options.stage : stageFromPath(stages[i].path);
@@ -295,7 +294,7 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
     nlohmann::json scratch;
     Diagnostics ignored;
     PassContext ctx{*module, options, front.info, ignored, stages[i].path, scratch};
-    NextStageFacts facts = analyseStageInputs(ctx);
+    NextStageFacts facts = analyseNextStage(ctx);
     compiled[i]->folded = std::move(ctx.folded);
     compiled[i]->foldTried = ctx.foldTried;
     return facts;

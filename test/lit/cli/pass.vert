@@ -1,4 +1,4 @@
-// --pass runs only the named passes (repeatable), in the pipeline's own order.
+// --pass runs only the named passes (repeatable) and the passes they require, in the pipeline's own order.
 // Detection alone changes nothing, so the GLSL input is copied byte for byte:
 // RUN: %stereoshift %s --pass clip-position-detection -o %t.detect.vert
 // RUN: cmp %s %t.detect.vert
@@ -7,9 +7,10 @@
 // RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
 // The order on the command line does not matter:
 // RUN: %stereoshift %s --verify --pass stereo-shift --pass eye-params --pass clip-position-detection -o - | %rmchecks | FileCheck %s --check-prefix=ALL
-// stereo-shift without eye-params has nothing to read the parameters from:
-// RUN: %not %stereoshift %s --pass clip-position-detection --pass stereo-shift -o %t.out 2>&1 | FileCheck %s --check-prefix=NEEDS
-// RUN: test ! -e %t.out
+// stereo-shift alone pulls in the passes it requires (detection, eye-params) and shifts; the report
+// says why they ran. It used to return the original shader:
+// RUN: %stereoshift %s --verify --pass stereo-shift -o - --report %t.required.json | %rmchecks | FileCheck %s --check-prefix=ALL
+// RUN: FileCheck %s --check-prefix=REQUIRED --input-file %t.required.json
 #version 450
 layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
 layout(location = 0) in vec3 inPosition;
@@ -32,5 +33,14 @@ void main() {
 // REPORT-NOT: "stereo-shift"
 // ALL: uniform StereoParams
 // ALL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
-// NEEDS: error: stereo-shift needs the eye-params pass to run first
-// NEEDS: {{^}}1 error generated.
+// REQUIRED: "passes": {
+// REQUIRED-NEXT: "clip-position-detection": {
+// REQUIRED: "required_by": "stereo-shift",
+// REQUIRED-NEXT: "result": "unchanged"
+// REQUIRED: "eye-params": {
+// REQUIRED: "required_by": "stereo-shift",
+// REQUIRED-NEXT: "result": "changed"
+// REQUIRED-NOT: "halo"
+// REQUIRED: "stereo-shift": {
+// REQUIRED-NOT: "required_by"
+// REQUIRED: "result": "changed"

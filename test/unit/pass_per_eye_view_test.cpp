@@ -1,0 +1,96 @@
+// per-eye-view alone (with detection, whose classification it reads): a view vector `camera - P`
+// that steps texture coordinates gets the per-eye camera; one that only feeds shading stays mono.
+#include "test/unit/pass_fixture.h"
+
+namespace stereoshift::test {
+namespace {
+
+// uv = normalize(camera.position - inWorldPos).xy; outColor = texture(heightMap, uv) * camera.position.x
+const std::string kReliefMapping = R"(
+               OpCapability Shader
+          %1 = OpExtInstImport "GLSL.std.450"
+               OpMemoryModel Logical GLSL450
+               OpEntryPoint Fragment %main "main" %inWorldPos %outColor
+               OpExecutionMode %main OriginUpperLeft
+               OpName %main "main"
+               OpName %Camera "Camera"
+               OpMemberName %Camera 0 "position"
+               OpName %camera "camera"
+               OpName %camPtr "camPtr"
+               OpName %camXPtr "camXPtr"
+               OpName %inWorldPos "inWorldPos"
+               OpName %outColor "outColor"
+               OpName %heightMap "heightMap"
+               OpMemberDecorate %Camera 0 Offset 0
+               OpDecorate %Camera Block
+               OpDecorate %camera DescriptorSet 0
+               OpDecorate %camera Binding 0
+               OpDecorate %heightMap DescriptorSet 0
+               OpDecorate %heightMap Binding 1
+               OpDecorate %inWorldPos Location 0
+               OpDecorate %outColor Location 0
+       %void = OpTypeVoid
+     %fnvoid = OpTypeFunction %void
+      %float = OpTypeFloat 32
+    %v2float = OpTypeVector %float 2
+    %v3float = OpTypeVector %float 3
+    %v4float = OpTypeVector %float 4
+        %int = OpTypeInt 32 1
+      %int_0 = OpConstant %int 0
+     %Camera = OpTypeStruct %v3float
+%_ptr_Uniform_Camera = OpTypePointer Uniform %Camera
+     %camera = OpVariable %_ptr_Uniform_Camera Uniform
+%_ptr_Uniform_v3float = OpTypePointer Uniform %v3float
+%_ptr_Uniform_float = OpTypePointer Uniform %float
+%_ptr_Input_v3float = OpTypePointer Input %v3float
+ %inWorldPos = OpVariable %_ptr_Input_v3float Input
+%_ptr_Output_v4float = OpTypePointer Output %v4float
+   %outColor = OpVariable %_ptr_Output_v4float Output
+      %image = OpTypeImage %float 2D 0 0 0 1 Unknown
+    %sampled = OpTypeSampledImage %image
+%_ptr_UniformConstant_sampled = OpTypePointer UniformConstant %sampled
+  %heightMap = OpVariable %_ptr_UniformConstant_sampled UniformConstant
+       %main = OpFunction %void None %fnvoid
+      %entry = OpLabel
+     %camPtr = OpAccessChain %_ptr_Uniform_v3float %camera %int_0
+        %cam = OpLoad %v3float %camPtr
+      %world = OpLoad %v3float %inWorldPos
+       %view = OpFSub %v3float %cam %world
+        %dir = OpExtInst %v3float %1 Normalize %view
+         %uv = OpVectorShuffle %v2float %dir %dir 0 1
+        %tex = OpLoad %sampled %heightMap
+      %texel = OpImageSampleImplicitLod %v4float %tex %uv
+    %camXPtr = OpAccessChain %_ptr_Uniform_float %camera %int_0 %int_0
+       %camX = OpLoad %float %camXPtr
+     %scaled = OpVectorTimesScalar %v4float %texel %camX
+               OpStore %outColor %scaled
+               OpReturn
+               OpFunctionEnd
+)";
+
+TEST(PerEyeViewPass, UsesThePerEyeCameraWhereTheViewVectorOffsetsTextureCoordinates) {
+  SinglePassRun run = runSinglePass(kReliefMapping, "per-eye-view");
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Changed);
+  EXPECT_EQ(run.ran, (std::vector<std::string>{"clip-position-detection", "per-eye-view"}));
+  EXPECT_TRUE(containsInOrder(run.disassembly, {
+      "OpMemberName %StereoParams 4 \"eyeOffsetX\"", "OpMemberName %StereoParams 6 \"eyeOffsetZ\"",
+      "OpLoad %v3float %camPtr", "OpAccessChain %_ptr_Uniform_float %stereo %int_4",
+      "OpAccessChain %_ptr_Uniform_float %stereo %int_6", "OpCompositeConstruct %v3float",
+      "OpFAdd %v3float", "OpFSub %v3float", "Normalize"}));
+}
+
+TEST(PerEyeViewPass, LeavesAViewVectorThatOnlyFeedsShading) {
+  // The same shader with the texture lookup at a fixed coordinate: the view vector is only shading.
+  std::string shading = kReliefMapping;
+  shading.replace(shading.find("%texel = OpImageSampleImplicitLod %v4float %tex %uv"),
+                  std::string("%texel = OpImageSampleImplicitLod %v4float %tex %uv").size(),
+                  "%texel = OpVectorShuffle %v4float %dir %dir 0 1 2 2");
+  SinglePassRun run = runSinglePass(shading, "per-eye-view");
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Unchanged);
+  EXPECT_EQ(run.disassembly.find("eyeOffsetX"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace stereoshift::test
