@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # One entry point for people and CI.
 #   scripts/dev.sh run    install what is missing, build, convert the bundled corpus/ into out/corpus
-#   scripts/dev.sh test   install what is missing, build, run every test (unit, harness, lit, corpus)
+#   scripts/dev.sh test   install what is missing, build, run every test (unit, harness, lit, corpus),
+#                         then the sanitizer tree: unit, lit and corpus tests under ASan + UBSan, each
+#                         fuzz target for STEREOSHIFT_FUZZ_SECONDS (default 45) and the fuzz regressions
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -12,6 +14,8 @@ packages=(cmake ninja-build g++ python3 glslang-dev glslang-tools spirv-tools
           libspirv-cross-c-shared-dev spirv-cross libcli11-dev llvm-14-tools
           mesa-vulkan-drivers libvulkan-dev nlohmann-json3-dev libxxhash-dev libtomlplusplus-dev
           googletest libgtest-dev)
+# The sanitizer tree (test mode only): clang and its runtimes (ASan, UBSan, libFuzzer).
+if [ "$mode" = test ]; then packages+=(clang-14 libclang-rt-14-dev); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -33,6 +37,20 @@ case "$mode" in
     ;;
   test)
     ctest --test-dir "$build_dir" --output-on-failure --parallel "$(nproc)"
+
+    # The same tool under AddressSanitizer + UndefinedBehaviorSanitizer (cmake/Sanitizers.cmake), in a
+    # tree of its own; only what its tests need (no execution harness, no benchmarks).
+    sanitize_dir="${STEREOSHIFT_SANITIZE_BUILD_DIR:-build-sanitize}"
+    cmake -S . -B "$sanitize_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
+          -DCMAKE_CXX_COMPILER=clang++-14 -DSTEREOSHIFT_SANITIZE=ON >/dev/null
+    cmake --build "$sanitize_dir" --parallel "$(nproc)" --target stereoshift stereoshift_unit_tests \
+          worker_pool_tests stereo_runtime_tests stereoshift_fuzz_targets fuzz_seeds
+    ctest --test-dir "$sanitize_dir" --output-on-failure --parallel "$(nproc)" \
+          -R '^(unit|unit[.].*|lit|corpus|fuzz[.]regressions[.].*)$'
+    # Each fuzz target for a bounded time from the seeds (corpus/, the lit tests) and what earlier runs
+    # in this tree found; a crash fails.
+    python3 test/fuzz/run_fuzz.py fuzz --bin-dir "$sanitize_dir/test/fuzz" --seeds "$sanitize_dir/test/fuzz/seeds" \
+            --work "$sanitize_dir/test/fuzz/work" --seconds "${STEREOSHIFT_FUZZ_SECONDS:-45}"
     ;;
   *)
     echo "usage: scripts/dev.sh [run|test]" >&2; exit 2 ;;
