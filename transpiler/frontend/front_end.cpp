@@ -1,5 +1,6 @@
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/glslang_log.h"
+#include "transpiler/frontend/source_limits.h"
 #include "passes/source_text.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -40,24 +41,75 @@ EShLanguage toGlslang(Stage stage) {
   }
 }
 
+// Why an #include was refused: the error to report in place of glslang's "Could not process
+// include directive" at the directive, or (`ownLocation`) a located error inside the included file.
+struct IncludeRefusal {
+  std::string includer, header;  // the directive: the file it is in (as glslang names it) and its header
+  Diagnostic replacement;
+  bool ownLocation = false;
+};
+
+// Whether `text` opens (after blank lines and comments) with `#pragma once` or with
+// `#ifndef NAME` then `#define NAME`: an include guard, so a nested re-inclusion adds nothing.
+bool hasIncludeGuard(const std::string& text) {
+  std::vector<std::string> directives;  // the first two lines that are not blank or comments
+  bool inComment = false;
+  for (size_t line = 0; line < text.size() && directives.size() < 2;) {
+    size_t newline = text.find('\n', line);
+    size_t end = newline == std::string::npos ? text.size() : newline;
+    std::string code;
+    for (size_t i = line; i < end; ++i) {
+      if (inComment) {
+        if (text.compare(i, 2, "*/") == 0) inComment = false, ++i;
+      } else if (text.compare(i, 2, "/*") == 0) {
+        inComment = true, ++i;
+      } else if (text.compare(i, 2, "//") == 0) {
+        break;
+      } else {
+        code += text[i];
+      }
+    }
+    std::istringstream words(code);
+    std::string word, joined;
+    while (words >> word) joined += (joined.empty() ? "" : " ") + word;
+    if (!joined.empty()) directives.push_back(joined);
+    line = end + 1;
+  }
+  if (!directives.empty() && (directives[0] == "#pragma once" || directives[0] == "# pragma once")) return true;
+  if (directives.size() < 2 || !directives[0].starts_with("#ifndef ") || !directives[1].starts_with("#define ")) return false;
+  std::string guard = directives[0].substr(8);
+  return directives[1] == "#define " + guard || directives[1].starts_with("#define " + guard + " ");
+}
+
 // Resolves #include only inside the including file's directory and the -I directories, so a
-// shader tree conversion never reads outside what the user named.
+// shader tree conversion never reads outside what the user named. It also refuses what would make
+// glslang run away: an include cycle without include guards (glslang would include forever),
+// nesting deeper than kMaxIncludeDepth, more than kMaxSourceBytes of source in all, and an
+// included file past the bracket limit (source_limits.h).
 class RestrictedIncluder : public glslang::TShader::Includer {
  public:
-  RestrictedIncluder(std::string mainFile, std::vector<std::string> includeDirs)
-      : mainFile_(std::move(mainFile)), includeDirs_(std::move(includeDirs)) {}
+  RestrictedIncluder(std::string mainFile, std::vector<std::string> includeDirs, size_t mainBytes)
+      : mainFile_(std::move(mainFile)), includeDirs_(std::move(includeDirs)), totalBytes_(mainBytes) {
+    std::error_code ec;
+    chain_.push_back({mainFile_, fs::weakly_canonical(mainFile_, ec)});
+  }
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
+    if (!beginDirective(header, includer, depth)) return nullptr;
     fs::path base = (depth <= 1 || !includer || !*includer) ? fs::path(mainFile_).parent_path()
                                                             : fs::path(includer).parent_path();
     if (auto* r = tryOpen(base, header)) return r;
-    return includeSystem(header, includer, depth);
+    if (refusedThisDirective_) return nullptr;
+    return searchIncludeDirs(header);
   }
 
-  IncludeResult* includeSystem(const char* header, const char*, size_t) override {
-    for (const auto& dir : includeDirs_)
-      if (auto* r = tryOpen(dir, header)) return r;
-    return nullptr;
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
+    // glslang asks here too after includeLocal found nothing; a refusal there stands.
+    if (refusedThisDirective_ && currentHeader_ == header && currentIncluder_ == (includer ? includer : "") &&
+        currentDepth_ == depth)
+      return nullptr;
+    if (!beginDirective(header, includer, depth)) return nullptr;
+    return searchIncludeDirs(header);
   }
 
   void releaseInclude(IncludeResult* result) override {
@@ -68,8 +120,47 @@ class RestrictedIncluder : public glslang::TShader::Includer {
 
   const std::vector<std::pair<std::string, std::string>>& sources() const { return sources_; }
   const std::vector<std::string>& includedFiles() const { return included_; }
+  const std::vector<IncludeRefusal>& refusals() const { return refusals_; }
 
  private:
+  struct OpenFile {
+    std::string name;  // as diagnostics name it
+    fs::path identity;
+    bool guarded = false;  // opens with an include guard or #pragma once
+  };
+
+  // Starts resolving one directive: `depth` files are open once it succeeds (glslang counts the
+  // shader itself as 0), so the include stack is the first `depth` entries of chain_.
+  bool beginDirective(const char* header, const char* includer, size_t depth) {
+    currentHeader_ = header;
+    currentIncluder_ = includer ? includer : "";
+    currentDepth_ = depth;
+    refusedThisDirective_ = false;
+    if (chain_.size() > depth) chain_.resize(depth);
+    if (depth > kMaxIncludeDepth) {
+      refuse("#include nests deeper than " + std::to_string(kMaxIncludeDepth) + " files (the front end's limit)");
+      return false;
+    }
+    return true;
+  }
+
+  IncludeResult* searchIncludeDirs(const char* header) {
+    for (const auto& dir : includeDirs_) {
+      if (auto* r = tryOpen(dir, header)) return r;
+      if (refusedThisDirective_) return nullptr;
+    }
+    return nullptr;
+  }
+
+  void refuse(std::string message) {
+    IncludeRefusal r;
+    r.includer = currentIncluder_;
+    r.header = currentHeader_;
+    r.replacement.message = std::move(message);
+    refusals_.push_back(std::move(r));
+    refusedThisDirective_ = true;
+  }
+
   IncludeResult* tryOpen(const fs::path& dir, const char* header) {
     fs::path candidate = (dir.empty() ? fs::path(".") : dir) / header;
     std::error_code ec;
@@ -78,27 +169,111 @@ class RestrictedIncluder : public glslang::TShader::Includer {
     fs::path resolved = fs::weakly_canonical(candidate, ec);
     auto rel = resolved.lexically_relative(root);
     if (rel.empty() || *rel.begin() == "..") return nullptr;  // escapes the allowed directory
+    std::string name = candidate.lexically_normal().string();
+
+    // A file that is already open: with an include guard (or #pragma once) its inner copy would
+    // be skipped anyway, so it is included as empty text; without one nothing ends the recursion.
+    auto open = std::find_if(chain_.begin(), chain_.end(), [&](const OpenFile& f) { return f.identity == resolved; });
+    if (open != chain_.end()) {
+      if (!open->guarded) {
+        refuse("#include cycle: " + describeCycle(resolved, name));
+        return nullptr;
+      }
+      chain_.push_back({name, resolved, true});
+      return new IncludeResult(name, "", 0, new std::string);
+    }
+    uintmax_t bytes = fs::file_size(candidate, ec);
+    if (ec || bytes > kMaxSourceBytes - std::min(totalBytes_, kMaxSourceBytes)) {
+      refuse("including " + name + " takes the shader's source past " + describeBytes(kMaxSourceBytes) +
+             " (the front end's limit)");
+      return nullptr;
+    }
     auto* text = new std::string;
     if (!readFile(candidate.string(), text)) {
       delete text;
       return nullptr;
     }
-    std::string name = candidate.lexically_normal().string();
+    totalBytes_ += text->size();
+    if (auto violation = findNestingViolation(*text)) {
+      refuse(violation->message);
+      refusals_.back().replacement.file = name;
+      refusals_.back().replacement.line = violation->line;
+      refusals_.back().replacement.column = violation->column;
+      refusals_.back().ownLocation = true;
+      delete text;
+      return nullptr;
+    }
     sources_.emplace_back(name, *text);
     if (std::find(included_.begin(), included_.end(), name) == included_.end()) included_.push_back(name);
+    chain_.push_back({name, resolved, hasIncludeGuard(*text)});
     return new IncludeResult(name, text->data(), text->size(), text);
+  }
+
+  // "a.vert -> x.glsl -> x.glsl": the include stack from the shader up to the first file that
+  // repeats, with `next` (about to be opened) last.
+  std::string describeCycle(const fs::path& nextIdentity, const std::string& nextName) const {
+    std::vector<OpenFile> path = chain_;
+    path.push_back({nextName, nextIdentity});
+    std::string text;
+    for (size_t k = 0; k < path.size(); ++k) {
+      text += (k ? " -> " : "") + path[k].name;
+      bool repeats = std::any_of(path.begin(), path.begin() + static_cast<long>(k),
+                                 [&](const OpenFile& f) { return f.identity == path[k].identity; });
+      if (repeats) break;
+    }
+    return text;
   }
 
   std::string mainFile_;
   std::vector<std::string> includeDirs_;
+  size_t totalBytes_ = 0;
+  std::vector<OpenFile> chain_;  // the shader, then the include stack
+  std::string currentHeader_, currentIncluder_;
+  size_t currentDepth_ = 0;
+  bool refusedThisDirective_ = false;
+  std::vector<IncludeRefusal> refusals_;
   std::vector<std::pair<std::string, std::string>> sources_;
   std::vector<std::string> included_;
 };
 
+// glslang's errors with each refused #include's "Could not process include directive" replaced by
+// the reason it was refused.
+Diagnostics explainRefusedIncludes(const Diagnostics& raw, const std::vector<IncludeRefusal>& refusals) {
+  static constexpr std::string_view kCouldNotInclude = "'#include' : Could not process include directive for header name: ";
+  Diagnostics out;
+  for (Diagnostic d : raw.all()) {
+    if (d.message.starts_with(kCouldNotInclude)) {
+      std::string header = d.message.substr(kCouldNotInclude.size());
+      for (const auto& r : refusals) {
+        if (r.header != header || (!r.includer.empty() && r.includer != d.file)) continue;
+        if (r.ownLocation) {
+          d = r.replacement;
+        } else {
+          d.message = r.replacement.message;
+        }
+        break;
+      }
+    }
+    out.add(std::move(d));
+  }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The versions a `#version` line may name (GLSL 1.10-4.60, ESSL 1.00-3.20).
+bool isGlslVersion(long long n) {
+  for (int known : {100, 110, 120, 130, 140, 150, 300, 310, 320, 330, 400, 410, 420, 430, 440, 450, 460})
+    if (n == known) return true;
+  return false;
+}
+
 }  // namespace
 
 // A hand-written scan: a std::regex over the whole text cost more than the rest of the front end's
-// reading of the source.
+// reading of the source. It never throws: the build parent runs it on every shader of a tree.
 VersionLine findVersion(const std::string& text) {
   VersionLine v;
   auto skipBlanks = [&](size_t i) {
@@ -112,24 +287,46 @@ VersionLine findVersion(const std::string& text) {
     if (i >= text.size() || text[i] != '#') continue;
     size_t directive = i;
     i = skipBlanks(i + 1);
-    if (text.compare(i, 7, "version") != 0) continue;
+    if (text.compare(i, 7, "version") != 0 || (i + 7 < text.size() && isIdentifierChar(text[i + 7]))) continue;
     i += 7;
     size_t digits = skipBlanks(i);
-    if (digits == i || digits >= text.size() || !std::isdigit(static_cast<unsigned char>(text[digits]))) continue;
     size_t end = digits;
     while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
-    v.version = std::stoi(text.substr(digits, end - digits));
+    v.begin = directive;
+    v.end = end;
+    if (end == digits || (end < text.size() && isIdentifierChar(text[end]))) {
+      // `#version 3x0`, `#version es`, a bare `#version`: quote the directive as written.
+      size_t quoteEnd = digits;
+      while (quoteEnd < text.size() && !std::isspace(static_cast<unsigned char>(text[quoteEnd])) &&
+             text.compare(quoteEnd, 2, "//") != 0 && text.compare(quoteEnd, 2, "/*") != 0)
+        ++quoteEnd;
+      std::string quoted = text.substr(directive, std::min<size_t>(quoteEnd - directive, 48));
+      v.version = 0;
+      v.problem = "'" + quoted + "': not a GLSL version";
+      v.problemAt = directive;
+      break;
+    }
+    // At most 9 digits are read as a number, so the conversion cannot overflow an int.
+    long long number = 0;
+    for (size_t k = digits; k < end && k - digits < 10; ++k) number = number * 10 + (text[k] - '0');
+    if (end - digits > 9 || !isGlslVersion(number)) {
+      std::string written = text.substr(digits, std::min<size_t>(end - digits, 24));
+      if (end - digits > 24) written += "...";
+      v.version = 0;
+      v.problem = "#version " + written + " is not a GLSL version";
+      v.problemAt = digits;
+      break;
+    }
+    v.version = static_cast<int>(number);
     size_t profile = skipBlanks(end);
     for (const char* word : {"es", "core", "compatibility"}) {
       size_t n = std::strlen(word);
       if (text.compare(profile, n, word) == 0 && (profile + n == text.size() || !isIdentifierChar(text[profile + n]))) {
         v.es = std::string(word) == "es";
-        end = profile + n;
+        v.end = profile + n;
         break;
       }
     }
-    v.begin = directive;
-    v.end = end;
     break;
   }
   if (v.version == 100) v.es = true;
@@ -184,6 +381,68 @@ void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, Source
       }
     }
   }
+}
+
+// The first node of glslang's tree past kMaxSyntaxTreeDepth levels or kMaxControlFlowNesting
+// nested if / ?: / loop / switch, as a located error. The walk keeps its own stack: the tree is
+// exactly what may be too deep for recursion.
+std::optional<Diagnostic> findTreeLimitViolation(TIntermNode* root, const std::string& mainFile) {
+  struct Pending {
+    TIntermNode* node;
+    int depth, controlNesting;
+    TIntermNode* statement;  // the statement the node is part of: where a too deep tree is reported
+  };
+  std::vector<Pending> stack;
+  if (root) stack.push_back({root, 1, 0, root});
+  while (!stack.empty()) {
+    auto [node, depth, controlNesting, statement] = stack.back();
+    stack.pop_back();
+    bool control = node->getAsSelectionNode() || node->getAsLoopNode() || node->getAsSwitchNode();
+    controlNesting += control ? 1 : 0;
+    std::string message;
+    TIntermNode* reported = node;
+    if (control && controlNesting > kMaxControlFlowNesting) {
+      message = "control flow (if, ?:, loops, switch) nests deeper than " + std::to_string(kMaxControlFlowNesting) +
+                " levels here (the front end's limit: SPIR-V validation time grows with the cube of it)";
+    } else if (depth > kMaxSyntaxTreeDepth) {
+      message = "this statement nests deeper than " + std::to_string(kMaxSyntaxTreeDepth) +
+                " levels of syntax tree (the front end's limit: glslang walks the tree by recursion)";
+      reported = statement;
+    }
+    if (!message.empty()) {
+      const glslang::TSourceLoc& loc = reported->getLoc();
+      const char* file = loc.getFilename();
+      return Diagnostic{Severity::Error, file && *file ? file : mainFile, std::max(loc.line, 1),
+                        std::max(loc.column, 1), message};
+    }
+    auto push = [&](TIntermNode* child) {
+      if (child) stack.push_back({child, depth + 1, controlNesting, statement});
+    };
+    if (auto* aggregate = node->getAsAggregate()) {
+      bool statements = aggregate->getOp() == glslang::EOpSequence;
+      for (auto* child : aggregate->getSequence())
+        if (child) stack.push_back({child, depth + 1, controlNesting, statements ? child : statement});
+    } else if (auto* binary = node->getAsBinaryNode()) {
+      push(binary->getLeft());
+      push(binary->getRight());
+    } else if (auto* unary = node->getAsUnaryNode()) {
+      push(unary->getOperand());
+    } else if (auto* selection = node->getAsSelectionNode()) {
+      push(selection->getCondition());
+      push(selection->getTrueBlock());
+      push(selection->getFalseBlock());
+    } else if (auto* loop = node->getAsLoopNode()) {
+      push(loop->getTest());
+      push(loop->getTerminal());
+      push(loop->getBody());
+    } else if (auto* switchNode = node->getAsSwitchNode()) {
+      push(switchNode->getCondition());
+      push(switchNode->getBody());
+    } else if (auto* branch = node->getAsBranchNode()) {
+      push(branch->getExpression());
+    }
+  }
+  return std::nullopt;
 }
 
 struct Attempt {
@@ -246,14 +505,20 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   shader.setPreamble(preamble.c_str());
   int messages = configureEnvironment(shader, stage, language, client, entry);
 
-  RestrictedIncluder includer(input.path, options.includeDirs);
+  RestrictedIncluder includer(input.path, options.includeDirs, text.size());
   bool parsed = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includer);
   std::vector<std::pair<std::string, std::string>> sources = {{input.path, input.contents}};
   for (const auto& s : includer.sources()) sources.push_back(s);
   attempt.included = includer.includedFiles();
   if (!parsed) {
-    parseGlslangLog(shader.getInfoLog(), input.path, sources, attempt.diags);
+    Diagnostics raw;
+    parseGlslangLog(shader.getInfoLog(), input.path, sources, raw);
+    attempt.diags = explainRefusedIncludes(raw, includer.refusals());
     if (!attempt.diags.hasErrors()) attempt.diags.error(input.path, "glslang could not parse the shader");
+    return attempt;
+  }
+  if (auto violation = findTreeLimitViolation(shader.getIntermediate()->getTreeRoot(), input.path)) {
+    attempt.diags.add(*violation);
     return attempt;
   }
   recordExplicitQualifiers(*shader.getIntermediate(), attempt.info);
@@ -303,11 +568,50 @@ std::string chooseHlslEntry(const std::string& text, Stage stage, const std::str
   return "main";
 }
 
+// 1-based line and column of byte `offset` of `text`.
+std::pair<int, int> lineAndColumn(const std::string& text, size_t offset) {
+  offset = std::min(offset, text.size());
+  int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(offset), '\n'));
+  size_t lineStart = text.rfind('\n', offset == 0 ? 0 : offset - 1);
+  lineStart = (lineStart == std::string::npos || offset == 0) ? 0 : lineStart + 1;
+  return {line, static_cast<int>(offset - lineStart) + 1};
+}
+
+// Refuses, before glslang sees it, a source past kMaxSourceBytes or past the nesting limits, each
+// with where and why (glslang would take minutes or overflow its stack on such input).
+bool withinSourceLimits(const SourceFile& input, Diagnostics& diags) {
+  if (input.contents.size() > kMaxSourceBytes) {
+    diags.error(input.path, "shader source is " + describeBytes(input.contents.size()) + "; the front end's limit is " +
+                                describeBytes(kMaxSourceBytes));
+    return false;
+  }
+  if (auto violation = findNestingViolation(input.contents)) {
+    diags.error(input.path, violation->line, violation->column, violation->message);
+    return false;
+  }
+  return true;
+}
+
+// A garbled or missing #version, said as such: glslang itself would fall back to ESSL 100 and
+// complain that ES shaders for SPIR-V need version 310, which points the wrong way.
+void reportVersionProblem(const SourceFile& input, const VersionLine& v, Diagnostics& diags) {
+  if (!v.problem.empty()) {
+    auto [line, column] = lineAndColumn(input.contents, v.problemAt);
+    diags.error(input.path, line, column, v.problem);
+    return;
+  }
+  diags.error(input.path, 1, 1,
+              "no #version directive: GLSL without one is version 110, which stereoshift cannot convert "
+              "(glslang makes SPIR-V from GLSL 330 or later and ESSL 300 or later); start the shader with "
+              "a #version line such as `#version 330` or `#version 450`");
+}
+
 }  // namespace
 
 FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags) {
   FrontEndResult result;
   ensureGlslangInitialized();
+  if (!withinSourceLimits(input, diags)) return result;
 
   std::optional<Stage> stage = options.stage ? options.stage : stageFromPath(input.path);
   if (!stage) {
@@ -344,6 +648,10 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   // GLSL: decide the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL
   // (tried first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
   VersionLine v = findVersion(input.contents);
+  if (!v.problem.empty() || v.begin == std::string::npos) {
+    reportVersionProblem(input, v, diags);
+    return result;
+  }
   std::string text = input.contents;
   bool raised = false;
   if (v.es && v.version < 310) {

@@ -18,10 +18,14 @@ struct FrontEndResult {
 };
 
 // The first `#version N [es|core|compatibility]` directive at the start of a line of GLSL `text`.
+// Total: any text gives an answer. A directive whose number is garbled (`3x0`), missing, too large
+// for an int or not a GLSL version gives version 0 and says so in `problem`.
 struct VersionLine {
   int version = 110;  // GLSL's default without #version
   bool es = false;
   size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
+  std::string problem;                        // empty: the directive (or its absence) is fine
+  size_t problemAt = std::string::npos;       // offset in `text` the problem is reported at
 };
 VersionLine findVersion(const std::string& text);
 

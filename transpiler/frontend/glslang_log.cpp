@@ -2,6 +2,7 @@
 #include "passes/source_text.h"
 
 #include <algorithm>
+#include <charconv>
 #include <regex>
 #include <sstream>
 
@@ -54,7 +55,10 @@ void parseGlslangLog(const std::string& log, const std::string& mainFile,
     std::smatch m;
     if (std::regex_match(line, m, located)) {
       std::string file = m[2];
-      int lineNo = std::stoi(m[3]);
+      // Total: a line number past int (glslang's own type) reads as 0, "whole file", never throws.
+      int lineNo = 0;
+      const std::string digits = m[3];
+      if (std::from_chars(digits.data(), digits.data() + digits.size(), lineNo).ec != std::errc()) lineNo = 0;
       std::string token = m[4];
       std::string message = trim(m[5]);
       if (message == "compilation terminated") continue;  // glslang's follow-up to the real error

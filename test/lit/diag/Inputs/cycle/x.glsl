@@ -1,0 +1,3 @@
+// Includes itself with no include guard: the include never ends.
+float helper(float v) { return v; }
+#include "x.glsl"
