@@ -16,9 +16,10 @@
 // the shader is needed. The ndc source does not matter: in each eye's image gl_FragCoord, a
 // full-screen UV and an interpolated clip position all give that eye's (stereo) NDC.
 //
-// Recognition runs on the real module, through the unoptimised code glslang emits: function-local
-// variables (every store that may reach a load), helper functions (pointer parameters followed to
-// each call site, return values to each return) and structs (access paths), so the rewrite can
+// Recognition runs on the real module (the backward engine of passes/analysis/value_flow.h),
+// through the unoptimised code glslang emits: function-local variables (every store that may reach
+// a load), helper functions (pointer parameters followed to each call site, return values to each
+// return) and structs (access paths), so the rewrite can
 // replace the product's own result id, whose every use then sees q'. Component by component:
 //   w: only moves from the literal 1.0 (a point, not a direction);
 //   z: computed from a texel (sample, fetch or subpass read; a depth comparison is not a depth),

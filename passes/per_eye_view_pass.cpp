@@ -3,7 +3,8 @@
 // wherever a view vector offsets texture coordinates (relief / parallax occlusion / steep / cone
 // mapping, reflection lookups), so each eye sees the surface relief from its own position.
 //
-// Detection is by data flow on the shared folded copy (helpers inlined, loops in SSA form):
+// Detection is by data flow (the forward engine of passes/analysis/value_flow.h) on the shared
+// folded copy (helpers inlined, loops in SSA form):
 //   1. a candidate is `C - P` or `P - C` where C is a vec3/vec4 uniform or push-constant value (a
 //      "slot": variable plus constant member indices) and P varies per vertex/pixel (it depends on
 //      a stage input);
