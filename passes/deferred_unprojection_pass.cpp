@@ -16,9 +16,10 @@
 // the shader is needed. The ndc source does not matter: in each eye's image gl_FragCoord, a
 // full-screen UV and an interpolated clip position all give that eye's (stereo) NDC.
 //
-// Recognition runs on the real module, through the unoptimised code glslang emits: function-local
-// variables (every store that may reach a load), helper functions (pointer parameters followed to
-// each call site, return values to each return) and structs (access paths), so the rewrite can
+// Recognition runs on the real module (the backward engine of passes/analysis/value_flow.h),
+// through the unoptimised code glslang emits: function-local variables (every store that may reach
+// a load), helper functions (pointer parameters followed to each call site, return values to each
+// return) and structs (access paths), so the rewrite can
 // replace the product's own result id, whose every use then sees q'. Component by component:
 //   w: only moves from the literal 1.0 (a point, not a direction);
 //   z: computed from a texel (sample, fetch or subpass read; a depth comparison is not a depth),
@@ -27,6 +28,11 @@
 //      no texel;
 //   the matrix: computed from uniform data only.
 #include "passes/pass.h"
+
+#include "passes/analysis/value_flow.h"
+#include "passes/ir/image_instructions.h"
+#include "passes/ir/replace_uses.h"
+#include "passes/ir/walker.h"
 
 #include <glslang/SPIRV/GLSL.std.450.h>
 
@@ -39,20 +45,12 @@
 
 namespace stereoshift {
 
+using analysis::AccessPath;
+using analysis::kAnyIndex;
+using analysis::ValueFlow;
 using spirv::Instruction;
 
 namespace {
-
-// An index of an access chain that is not a compile-time constant: it may address any element.
-constexpr uint32_t kAnyIndex = 0xFFFFFFFFu;
-using Path = std::vector<uint32_t>;
-
-bool prefixOf(const Path& prefix, const Path& full) {
-  if (prefix.size() > full.size()) return false;
-  for (size_t i = 0; i < prefix.size(); ++i)
-    if (prefix[i] != full[i] && prefix[i] != kAnyIndex && full[i] != kAnyIndex) return false;
-  return true;
-}
 
 // What a value is computed from.
 struct Sources {
@@ -64,7 +62,6 @@ struct Sources {
   bool other = false;      // anything the analysis does not see through
   bool arithmetic = false;            // computed, not only moved
   bool constantOtherThanOne = false;  // some constant leaf is not the float 1.0
-  bool cycleCut = false;              // part of the answer was cut at a loop (not cached)
   bool eyeParameter = false;          // stereoshift's own eye parameters: injected code
   std::set<std::string> inputs, textures, uniforms;
   std::set<uint32_t> products;  // matrix x vector products the value went through
@@ -78,7 +75,6 @@ struct Sources {
     other |= o.other;
     arithmetic |= o.arithmetic;
     constantOtherThanOne |= o.constantOtherThanOne;
-    cycleCut |= o.cycleCut;
     eyeParameter |= o.eyeParameter;
     inputs.insert(o.inputs.begin(), o.inputs.end());
     textures.insert(o.textures.begin(), o.textures.end());
@@ -87,37 +83,6 @@ struct Sources {
     return *this;
   }
 };
-
-bool isImageRead(spv::Op op) {
-  switch (op) {
-    case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod:
-    case spv::OpImageSampleProjImplicitLod: case spv::OpImageSampleProjExplicitLod:
-    case spv::OpImageFetch: case spv::OpImageRead: case spv::OpImageGather:
-    case spv::OpImageSparseSampleImplicitLod: case spv::OpImageSparseSampleExplicitLod:
-    case spv::OpImageSparseFetch: case spv::OpImageSparseRead: case spv::OpImageSparseGather:
-      return true;
-    default:
-      return false;
-  }
-}
-
-// GLSL.std.450 instructions that work component by component on vectors.
-bool isComponentwise(uint32_t glslInstruction) {
-  switch (glslInstruction) {
-    case GLSLstd450Length: case GLSLstd450Distance: case GLSLstd450Cross: case GLSLstd450Normalize:
-    case GLSLstd450FaceForward: case GLSLstd450Reflect: case GLSLstd450Refract:
-    case GLSLstd450Determinant: case GLSLstd450MatrixInverse:
-    case GLSLstd450PackSnorm4x8: case GLSLstd450PackUnorm4x8: case GLSLstd450PackSnorm2x16:
-    case GLSLstd450PackUnorm2x16: case GLSLstd450PackHalf2x16: case GLSLstd450PackDouble2x32:
-    case GLSLstd450UnpackSnorm2x16: case GLSLstd450UnpackUnorm2x16: case GLSLstd450UnpackHalf2x16:
-    case GLSLstd450UnpackSnorm4x8: case GLSLstd450UnpackUnorm4x8: case GLSLstd450UnpackDouble2x32:
-    case GLSLstd450Modf: case GLSLstd450ModfStruct: case GLSLstd450FrexpStruct:
-      return false;
-    default:
-      return true;
-  }
-}
-
 
 std::string lower(std::string text) {
   for (auto& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -130,378 +95,148 @@ std::string joined(const std::set<std::string>& names) {
   return out.empty() ? "?" : out;
 }
 
-// Backward data flow over the real module: what a value (or one element of it, by access path) is
-// computed from. Loads look at every store that may reach them, whatever the control flow (an
-// over-approximation: a value counts as computed from every source it may come from).
-class DataFlow {
+bool isFragCoord(const spirv::Module& m, uint32_t root, const AccessPath& path) {
+  if (m.decorationValue(root, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInFragCoord)) return true;
+  const Instruction* var = m.definition(root);
+  if (!var || path.empty() || path[0] == kAnyIndex) return false;
+  return m.memberDecorationValue(m.pointeeType(var->typeId), path[0], spv::DecorationBuiltIn) ==
+         uint32_t(spv::BuiltInFragCoord);
+}
+
+// A variable (and the member a path starts with) as the source names it.
+std::string describe(const spirv::Module& m, uint32_t root, const AccessPath& path) {
+  const Instruction* var = m.definition(root);
+  std::string name = m.name(root);
+  if (var && !path.empty() && path[0] != kAnyIndex) {
+    uint32_t type = m.pointeeType(var->typeId);
+    const Instruction* typeDef = m.definition(type);
+    if (typeDef && typeDef->opcode == spv::OpTypeStruct) {
+      std::string member = m.memberName(type, path[0]);
+      // HLSL cbuffers and globals are anonymous instances: their members are what the source names.
+      if (name.empty() || name == "$Global") return member;
+      return name + "." + member;
+    }
+  }
+  return name.empty() ? "%" + std::to_string(root) : name;
+}
+
+// The leaves of "what is this computed from" for this pass, on the shared backward value flow
+// (analysis/value_flow.h): constants, uniforms, inputs, texels, the eye parameters.
+class SourceRules {
  public:
   // `eyeParameters`: the injected eye-parameter variables / constants. `opaqueProducts`: products
   // whose result counts as computed from nothing (the fixed unprojections, when asking what else
   // a value depends on).
-  DataFlow(const spirv::Module& m, bool hlsl, std::set<uint32_t> eyeParameters, std::set<uint32_t> opaqueProducts = {})
-      : m_(m), hlsl_(hlsl), eyeParameters_(std::move(eyeParameters)), opaqueProducts_(std::move(opaqueProducts)) {
-    for (const auto& fn : m.functions)
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions) {
-          if (inst.opcode == spv::OpStore || inst.opcode == spv::OpCopyMemory) writes_.push_back(&inst);
-          if (inst.opcode == spv::OpFunctionCall) callsTo_[inst.operand(0)].push_back(&inst);
-          if (inst.opcode == spv::OpReturnValue) returnsOf_[fn.id()].push_back(inst.operand(0));
-        }
-    for (const auto& fn : m.functions)
-      for (size_t i = 0; i < fn.parameters.size(); ++i) parameterOf_[fn.parameters[i].resultId] = {fn.id(), i};
-    // Writes and pointer arguments by root, resolved once: loads ask for them again and again.
-    for (const Instruction* write : writes_) {
-      uint32_t root;
-      Path path;
-      if (resolvePointer(write->operand(0), &root, &path)) writesTo_[root].push_back({write, path});
-    }
-    for (const auto& [function, calls] : callsTo_)
-      for (const Instruction* call : calls)
-        for (size_t k = 1; k < call->operands.size(); ++k) {
-          uint32_t root;
-          Path path;
-          if (resolvePointer(call->operands[k], &root, &path)) pointerArguments_[root].push_back({function, k - 1});
-        }
-  }
+  SourceRules(const ValueFlow& flow, bool hlsl, std::set<uint32_t> eyeParameters, std::set<uint32_t> opaqueProducts)
+      : flow_(flow), hlsl_(hlsl), eyeParameters_(std::move(eyeParameters)), opaqueProducts_(std::move(opaqueProducts)) {}
 
-  Sources value(uint32_t id, Path path = {}) {
-    // A dynamic index selects any element: the whole value answers for it.
-    if (auto any = std::find(path.begin(), path.end(), kAnyIndex); any != path.end()) path.erase(any, path.end());
-    auto key = std::make_pair(id, path);
-    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
-    if (visiting_.count(key)) {
-      Sources cut;
-      cut.cycleCut = true;
-      return cut;
-    }
-    if (++steps_ > kStepBudget) return otherSource();
-    visiting_.insert(key);
-    Sources result = compute(id, path);
-    visiting_.erase(key);
-    if (!result.cycleCut) cache_[key] = result;
-    if (visiting_.empty()) result.cycleCut = false;
-    return result;
-  }
-
-  // The root variable (or pointer parameter) of a pointer and the access path into it.
-  bool resolvePointer(uint32_t pointer, uint32_t* root, Path* path) const {
-    Path reversed;
-    for (int depth = 0; depth < 64; ++depth) {
-      const Instruction* def = m_.definition(pointer);
-      if (!def) return false;
-      switch (def->opcode) {
-        case spv::OpVariable: case spv::OpFunctionParameter:
-          *root = pointer;
-          path->assign(reversed.rbegin(), reversed.rend());
-          return true;
-        case spv::OpAccessChain: case spv::OpInBoundsAccessChain:
-          for (size_t k = def->operands.size(); k-- > 1;) {
-            const Instruction* index = m_.definition(def->operands[k]);
-            reversed.push_back(index && index->opcode == spv::OpConstant ? index->operand(0) : kAnyIndex);
-          }
-          pointer = def->operand(0);
-          break;
-        case spv::OpCopyObject:
-          pointer = def->operand(0);
-          break;
-        default:
-          return false;
-      }
-    }
-    return false;
-  }
-
-  bool isFragCoord(uint32_t root, const Path& path) const {
-    if (m_.decorationValue(root, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInFragCoord)) return true;
-    const Instruction* var = m_.definition(root);
-    if (!var || path.empty() || path[0] == kAnyIndex) return false;
-    return m_.memberDecorationValue(m_.pointeeType(var->typeId), path[0], spv::DecorationBuiltIn) ==
-           uint32_t(spv::BuiltInFragCoord);
-  }
-
-  std::string describe(uint32_t root, const Path& path) const {
-    const Instruction* var = m_.definition(root);
-    std::string name = m_.name(root);
-    if (var && !path.empty() && path[0] != kAnyIndex) {
-      uint32_t type = m_.pointeeType(var->typeId);
-      const Instruction* typeDef = m_.definition(type);
-      if (typeDef && typeDef->opcode == spv::OpTypeStruct) {
-        std::string member = m_.memberName(type, path[0]);
-        // HLSL cbuffers and globals are anonymous instances: their members are what the source names.
-        if (name.empty() || name == "$Global") return member;
-        return name + "." + member;
-      }
-    }
-    return name.empty() ? "%" + std::to_string(root) : name;
-  }
-
- private:
-  static constexpr int kStepBudget = 200000;
-  const spirv::Module& m_;
-  bool hlsl_;
-  std::set<uint32_t> eyeParameters_, opaqueProducts_;
-  std::vector<const Instruction*> writes_;
-  std::map<uint32_t, std::vector<const Instruction*>> callsTo_;
-  std::map<uint32_t, std::vector<uint32_t>> returnsOf_;
-  std::map<uint32_t, std::pair<uint32_t, size_t>> parameterOf_;  // parameter -> function, index
-  std::map<uint32_t, std::vector<std::pair<const Instruction*, Path>>> writesTo_;  // root -> writes, paths
-  std::map<uint32_t, std::vector<std::pair<uint32_t, size_t>>> pointerArguments_;  // root -> callee, parameter
-  std::map<std::pair<uint32_t, Path>, Sources> cache_;
-  std::set<std::pair<uint32_t, Path>> visiting_;
-  int steps_ = 0;
-
-  static Sources otherSource() {
+  Sources unknown() const {
     Sources s;
     s.other = true;
     return s;
   }
 
-  bool isVector(uint32_t id) const {
-    const Instruction* def = m_.definition(id);
-    const Instruction* type = def ? m_.definition(def->typeId) : nullptr;
-    return type && type->opcode == spv::OpTypeVector;
-  }
-
-  uint32_t componentCount(uint32_t id) const {
-    const Instruction* def = m_.definition(id);
-    const Instruction* type = def ? m_.definition(def->typeId) : nullptr;
-    return type && type->opcode == spv::OpTypeVector ? type->operand(1) : 1;
-  }
-
-  Path rest(const Path& path) const { return Path(path.begin() + 1, path.end()); }
-
-  std::string imageName(uint32_t image) const {
-    for (int depth = 0; depth < 16; ++depth) {
-      const Instruction* def = m_.definition(image);
-      if (!def) break;
-      if (def->opcode == spv::OpSampledImage || def->opcode == spv::OpImage || def->opcode == spv::OpCopyObject) {
-        image = def->operand(0);
-        continue;
-      }
-      if (def->opcode == spv::OpLoad) {
-        uint32_t root;
-        Path path;
-        if (resolvePointer(def->operand(0), &root, &path)) return describe(root, path);
-      }
-      break;
-    }
-    return "?";
-  }
-
-  Sources compute(uint32_t id, const Path& path) {
-    const Instruction* def = m_.definition(id);
-    if (!def) return otherSource();
+  std::optional<Sources> leaf(const Instruction& def, const AccessPath&) const {
+    const spirv::Module& m = flow_.module();
     Sources s;
-    if (eyeParameters_.count(id)) {  // a specialization constant
+    if (eyeParameters_.count(def.resultId)) {  // a specialization constant
       s.uniform = s.eyeParameter = true;
       return s;
     }
-    if (opaqueProducts_.count(id)) {
-      s.products.insert(id);
+    if (opaqueProducts_.count(def.resultId)) {
+      s.products.insert(def.resultId);
       return s;
     }
-    switch (def->opcode) {
+    switch (def.opcode) {
       case spv::OpConstant: case spv::OpConstantTrue: case spv::OpConstantFalse: case spv::OpConstantNull:
         s.constant = true;
-        s.constantOtherThanOne = m_.floatConstant(def->resultId) != 1.0f;
-        return s;
-      case spv::OpConstantComposite:
-        if (!path.empty() && path[0] < def->operands.size()) return value(def->operands[path[0]], rest(path));
-        for (uint32_t element : def->operands) s |= value(element);
+        s.constantOtherThanOne = m.floatConstant(def.resultId) != 1.0f;
         return s;
       case spv::OpSpecConstant: case spv::OpSpecConstantTrue: case spv::OpSpecConstantFalse:
       case spv::OpSpecConstantComposite: case spv::OpSpecConstantOp:
         s.uniform = true;  // chosen by the application, like a uniform
         return s;
-      case spv::OpUndef:
-        return otherSource();
-      case spv::OpCopyObject:
-        return value(def->operand(0), path);
-      case spv::OpLoad: {
-        uint32_t root;
-        Path pointerPath;
-        if (!resolvePointer(def->operand(0), &root, &pointerPath)) return otherSource();
-        pointerPath.insert(pointerPath.end(), path.begin(), path.end());
-        return load(root, pointerPath);
-      }
-      case spv::OpCompositeExtract: {
-        Path inner(def->operands.begin() + 1, def->operands.end());
-        inner.insert(inner.end(), path.begin(), path.end());
-        return value(def->operand(0), inner);
-      }
-      case spv::OpCompositeConstruct: {
-        const Instruction* type = m_.definition(def->typeId);
-        bool vector = type && type->opcode == spv::OpTypeVector;
-        if (path.empty()) {
-          for (uint32_t part : def->operands) s |= value(part);
+      default:
+        // A texel; a depth comparison is not a depth, and stays unknown.
+        if (spirv::isTexelRead(def.opcode)) {
+          s.texel = true;
+          s.textures.insert(imageName(def.operand(0)));
           return s;
         }
-        if (!vector) return path[0] < def->operands.size() ? value(def->operands[path[0]], rest(path)) : otherSource();
-        uint32_t first = 0;  // vector constituents are flattened: find the one holding the component
-        for (uint32_t part : def->operands) {
-          uint32_t count = componentCount(part);
-          if (path[0] < first + count) return value(part, isVector(part) ? Path{path[0] - first} : Path{});
-          first += count;
+        return std::nullopt;
+    }
+  }
+
+  Sources moduleVariable(const Instruction& variable, const AccessPath& path) const {
+    const spirv::Module& m = flow_.module();
+    uint32_t root = variable.resultId;
+    Sources s;
+    switch (static_cast<spv::StorageClass>(variable.operand(0))) {
+      case spv::StorageClassInput:
+        if (isFragCoord(m, root, path)) {
+          // Only x, y are the pixel position; z (the fragment's depth) and w are the same per eye.
+          size_t component = m.hasDecoration(root, spv::DecorationBuiltIn) ? 0 : 1;
+          if (path.size() > component && (path[component] == 2 || path[component] == 3)) return unknown();
+          s.fragCoord = true;
+          s.inputs.insert(hlsl_ ? "SV_Position" : "gl_FragCoord");
+        } else if (m.hasDecoration(root, spv::DecorationBuiltIn)) {
+          s.other = true;  // gl_FrontFacing, gl_SampleID, ...: not a screen position
+        } else {
+          s.varying = true;
+          s.inputs.insert(describe(m, root, path));
         }
-        return otherSource();
-      }
-      case spv::OpCompositeInsert: {
-        Path at(def->operands.begin() + 2, def->operands.end());
-        if (prefixOf(at, path)) return value(def->operand(0), Path(path.begin() + static_cast<long>(at.size()), path.end()));
-        if (prefixOf(path, at)) {
-          s |= value(def->operand(0));
-          s |= value(def->operand(1), path);
-          return s;
-        }
-        return value(def->operand(1), path);
-      }
-      case spv::OpVectorShuffle: {
-        uint32_t firstCount = componentCount(def->operand(0));
-        auto pick = [&](uint32_t component) {
-          if (component == 0xFFFFFFFFu) return Sources{};  // undefined lane
-          return component < firstCount ? value(def->operand(0), {component})
-                                        : value(def->operand(1), {component - firstCount});
-        };
-        if (!path.empty()) return 2 + path[0] < def->operands.size() ? pick(def->operands[2 + path[0]]) : otherSource();
-        for (size_t k = 2; k < def->operands.size(); ++k) s |= pick(def->operands[k]);
         return s;
-      }
-      case spv::OpPhi:
-        for (size_t k = 0; k < def->operands.size(); k += 2) s |= value(def->operands[k], path);
-        return s;
-      case spv::OpSelect:
-        for (uint32_t operand : def->operands) s |= value(operand, isVector(operand) ? path : Path{});
-        return s;
-      case spv::OpFAdd: case spv::OpFSub: case spv::OpFMul: case spv::OpFDiv: case spv::OpFMod:
-      case spv::OpFRem: case spv::OpFNegate: case spv::OpIAdd: case spv::OpISub: case spv::OpIMul:
-      case spv::OpSNegate: case spv::OpConvertFToS: case spv::OpConvertFToU: case spv::OpConvertSToF:
-      case spv::OpConvertUToF: case spv::OpFConvert: case spv::OpBitcast: case spv::OpVectorTimesScalar:
-      case spv::OpSDiv: case spv::OpUDiv: case spv::OpSMod: case spv::OpUMod: case spv::OpSRem:
-      case spv::OpBitwiseAnd: case spv::OpBitwiseOr: case spv::OpBitwiseXor: case spv::OpNot:
-      case spv::OpShiftLeftLogical: case spv::OpShiftRightLogical: case spv::OpShiftRightArithmetic:
-      case spv::OpFOrdEqual: case spv::OpFOrdNotEqual: case spv::OpFOrdLessThan: case spv::OpFOrdGreaterThan:
-      case spv::OpFOrdLessThanEqual: case spv::OpFOrdGreaterThanEqual: case spv::OpFUnordEqual:
-      case spv::OpFUnordNotEqual: case spv::OpFUnordLessThan: case spv::OpFUnordGreaterThan:
-      case spv::OpFUnordLessThanEqual: case spv::OpFUnordGreaterThanEqual: case spv::OpIEqual:
-      case spv::OpINotEqual: case spv::OpSLessThan: case spv::OpSGreaterThan: case spv::OpSLessThanEqual:
-      case spv::OpSGreaterThanEqual: case spv::OpULessThan: case spv::OpUGreaterThan:
-      case spv::OpULessThanEqual: case spv::OpUGreaterThanEqual: case spv::OpLogicalAnd: case spv::OpLogicalOr:
-      case spv::OpLogicalNot: case spv::OpLogicalEqual: case spv::OpLogicalNotEqual: case spv::OpIsNan:
-      case spv::OpIsInf: case spv::OpDPdx: case spv::OpDPdy: case spv::OpFwidth: case spv::OpDPdxFine:
-      case spv::OpDPdyFine: case spv::OpFwidthFine: case spv::OpDPdxCoarse: case spv::OpDPdyCoarse:
-      case spv::OpFwidthCoarse:
-        for (uint32_t operand : def->operands) s |= value(operand, isVector(operand) ? path : Path{});
-        s.arithmetic = true;
-        return s;
-      case spv::OpExtInst: {
-        bool componentwise = isComponentwise(def->operand(1));
-        for (size_t k = 2; k < def->operands.size(); ++k)
-          s |= value(def->operands[k], componentwise && isVector(def->operands[k]) ? path : Path{});
-        s.arithmetic = true;
-        return s;
-      }
-      case spv::OpMatrixTimesVector: case spv::OpVectorTimesMatrix:
-        s.products.insert(id);
-        [[fallthrough]];
-      case spv::OpMatrixTimesMatrix: case spv::OpMatrixTimesScalar: case spv::OpDot: case spv::OpTranspose:
-      case spv::OpOuterProduct: case spv::OpAny: case spv::OpAll: case spv::OpVectorExtractDynamic:
-      case spv::OpVectorInsertDynamic:
-        for (uint32_t operand : def->operands) s |= value(operand);
-        s.arithmetic = true;
-        return s;
-      case spv::OpFunctionParameter: {  // a value parameter: whatever each call passes
-        auto [function, index] = parameterOf_[id];
-        for (const Instruction* call : callsTo_[function]) s |= value(call->operand(1 + index), path);
-        if (callsTo_[function].empty()) s.other = true;
-        return s;
-      }
-      case spv::OpFunctionCall:
-        for (uint32_t returned : returnsOf_[def->operand(0)]) s |= value(returned, path);
-        if (returnsOf_[def->operand(0)].empty()) s.other = true;
+      case spv::StorageClassUniform: case spv::StorageClassUniformConstant:
+      case spv::StorageClassPushConstant: case spv::StorageClassStorageBuffer:
+        s.uniform = true;
+        s.eyeParameter = eyeParameters_.count(root) > 0;
+        s.uniforms.insert(describe(m, root, path));
         return s;
       default:
-        if (isImageRead(def->opcode)) {
-          s.texel = true;
-          s.textures.insert(imageName(def->operand(0)));
-          return s;
-        }
-        return otherSource();  // depth comparisons, queries, atomics, derivatives, ...
+        return unknown();
     }
   }
 
-  Sources load(uint32_t root, const Path& path) {
-    const Instruction* def = m_.definition(root);
-    if (!def) return otherSource();
-    Sources s;
-    if (def->opcode == spv::OpVariable) {
-      switch (static_cast<spv::StorageClass>(def->operand(0))) {
-        case spv::StorageClassInput:
-          if (isFragCoord(root, path)) {
-            // Only x, y are the pixel position; z (the fragment's depth) and w are the same per eye.
-            size_t component = m_.hasDecoration(root, spv::DecorationBuiltIn) ? 0 : 1;
-            if (path.size() > component && (path[component] == 2 || path[component] == 3)) return otherSource();
-            s.fragCoord = true;
-            s.inputs.insert(hlsl_ ? "SV_Position" : "gl_FragCoord");
-          } else if (m_.hasDecoration(root, spv::DecorationBuiltIn)) {
-            s.other = true;  // gl_FrontFacing, gl_SampleID, ...: not a screen position
-          } else {
-            s.varying = true;
-            s.inputs.insert(describe(root, path));
-          }
-          return s;
-        case spv::StorageClassUniform: case spv::StorageClassUniformConstant:
-        case spv::StorageClassPushConstant: case spv::StorageClassStorageBuffer:
-          s.uniform = true;
-          s.eyeParameter = eyeParameters_.count(root) > 0;
-          s.uniforms.insert(describe(root, path));
-          return s;
-        case spv::StorageClassFunction: case spv::StorageClassPrivate: case spv::StorageClassOutput:
-          if (def->operands.size() > 1) s |= value(def->operand(1), path);  // initializer
-          s |= stores(root, path);
-          return s;
-        default:
-          return otherSource();
-      }
-    }
-    if (def->opcode == spv::OpFunctionParameter) {  // a pointer parameter: the caller's memory
-      s |= stores(root, path);
-      auto [function, index] = parameterOf_[root];
-      for (const Instruction* call : callsTo_[function]) {
-        uint32_t argumentRoot;
-        Path argumentPath;
-        if (!resolvePointer(call->operand(1 + index), &argumentRoot, &argumentPath)) {
-          s.other = true;
-          continue;
-        }
-        argumentPath.insert(argumentPath.end(), path.begin(), path.end());
-        s |= load(argumentRoot, argumentPath);
-      }
-      return s;
-    }
-    return otherSource();
+  void computed(const Instruction& def, Sources& s) const {
+    s.arithmetic = true;
+    if (def.opcode == spv::OpMatrixTimesVector || def.opcode == spv::OpVectorTimesMatrix) s.products.insert(def.resultId);
   }
 
-  // Every write that may reach a load of (root, path): stores to it, to a part of it or to a whole
-  // that contains it; memory copies and writes by a callee through a pointer argument are opaque.
-  Sources stores(uint32_t root, const Path& path) {
-    Sources s;
-    for (const auto& [write, targetPath] : writesTo_[root]) {
-      if (write->opcode == spv::OpCopyMemory) {
-        if (prefixOf(targetPath, path) || prefixOf(path, targetPath)) s.other = true;
+ private:
+  const ValueFlow& flow_;
+  bool hlsl_;
+  std::set<uint32_t> eyeParameters_, opaqueProducts_;
+
+  std::string imageName(uint32_t image) const {
+    for (int depth = 0; depth < 16; ++depth) {
+      const Instruction* def = flow_.definition(image);
+      if (!def) break;
+      if (def->opcode == spv::OpSampledImage || def->opcode == spv::OpImage || def->opcode == spv::OpCopyObject) {
+        image = def->operand(0);
         continue;
       }
-      if (prefixOf(targetPath, path))
-        s |= value(write->operand(1), Path(path.begin() + static_cast<long>(targetPath.size()), path.end()));
-      else if (prefixOf(path, targetPath))
-        s |= value(write->operand(1));
+      if (def->opcode == spv::OpLoad)
+        if (auto target = flow_.resolvePointer(def->operand(0))) return describe(flow_.module(), target->root, target->path);
+      break;
     }
-    for (const auto& [function, index] : pointerArguments_[root]) {
-      const spirv::Function* callee = m_.function(function);
-      if (callee && index < callee->parameters.size() && !writesTo_[callee->parameters[index].resultId].empty())
-        s.other = true;
-    }
-    return s;
+    return "?";
   }
+};
+
+// What a value (or one element of it, by access path) of the real module is computed from: the
+// backward engine of the shared value flow with this pass's leaves. Loads look at every store that
+// may reach them, whatever the control flow (an over-approximation: a value counts as computed
+// from every source it may come from).
+class SourceAnalysis {
+ public:
+  SourceAnalysis(const ValueFlow& flow, bool hlsl, std::set<uint32_t> eyeParameters,
+                 std::set<uint32_t> opaqueProducts = {})
+      : rules_(flow, hlsl, std::move(eyeParameters), std::move(opaqueProducts)), engine_(flow, rules_) {}
+  Sources value(uint32_t id, AccessPath path = {}) { return engine_.value(id, std::move(path)); }
+
+ private:
+  SourceRules rules_;
+  analysis::BackwardFlow<Sources, SourceRules> engine_;
 };
 
 // One recognised unprojection, or the reason a matrix product is not one.
@@ -540,7 +275,10 @@ class DeferredUnprojectionPass final : public Pass {
       eyeParameters.erase(0);
     }
     bool hlsl = ctx.source.language == SourceLanguage::Hlsl;
-    DataFlow flow(m, hlsl, eyeParameters);
+    // One index of the module's memory and calls for both questions below; the module does not
+    // change until the rewrite at the end.
+    ValueFlow index(m);
+    SourceAnalysis flow(index, hlsl, eyeParameters);
     // Looked up, not created: an analysis that finds nothing must leave the module as it was.
     auto isFloat4 = [&](uint32_t type) {
       const Instruction* vector = m.definition(type);
@@ -550,21 +288,19 @@ class DeferredUnprojectionPass final : public Pass {
     };
 
     std::vector<Product> products;
-    for (auto& fn : m.functions)
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions) {
-          if (inst.opcode != spv::OpMatrixTimesVector && inst.opcode != spv::OpVectorTimesMatrix) continue;
-          if (!isFloat4(inst.typeId)) continue;  // a 4-component float point, or nothing to do here
-          Product p;
-          p.function = &fn;
-          p.result = inst.resultId;
-          p.vectorTimesMatrix = inst.opcode == spv::OpVectorTimesMatrix;
-          p.matrix = p.vectorTimesMatrix ? inst.operand(1) : inst.operand(0);
-          p.vector = p.vectorTimesMatrix ? inst.operand(0) : inst.operand(1);
-          const Instruction* matrixType = m.definition(m.definition(p.matrix)->typeId);
-          if (!matrixType || matrixType->operand(1) != 4) continue;  // only a mat4 maps NDC points
-          products.push_back(std::move(p));
-        }
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, spirv::Function& fn, const spirv::Block&) {
+      if (inst.opcode != spv::OpMatrixTimesVector && inst.opcode != spv::OpVectorTimesMatrix) return;
+      if (!isFloat4(inst.typeId)) return;  // a 4-component float point, or nothing to do here
+      Product p;
+      p.function = &fn;
+      p.result = inst.resultId;
+      p.vectorTimesMatrix = inst.opcode == spv::OpVectorTimesMatrix;
+      p.matrix = p.vectorTimesMatrix ? inst.operand(1) : inst.operand(0);
+      p.vector = p.vectorTimesMatrix ? inst.operand(0) : inst.operand(1);
+      const Instruction* matrixType = m.definition(m.definition(p.matrix)->typeId);
+      if (!matrixType || matrixType->operand(1) != 4) return;  // only a mat4 maps NDC points
+      products.push_back(std::move(p));
+    });
     for (auto& p : products) classify(flow, p);
     // Products computed from the eye parameters were injected by an earlier pass (per-eye-view's
     // eye centre): stereo already, neither fixed nor reported.
@@ -591,8 +327,8 @@ class DeferredUnprojectionPass final : public Pass {
       entry["reason"] = followsFix ? "computed from a corrected unprojection: per-eye through it" : p.reason;
       leftAlone.push_back(entry);
     }
-    DataFlow besidesFixes(m, hlsl, eyeParameters, fixedResults);
-    reportFragCoordUses(ctx, besidesFixes, leftAlone);
+    SourceAnalysis besidesFixes(index, hlsl, eyeParameters, fixedResults);
+    reportFragCoordUses(ctx, index, besidesFixes, leftAlone);
     reportReflections(ctx, leftAlone);
     if (!fixed.empty()) report["fixed"] = fixed;
     if (!leftAlone.empty()) report["left_alone"] = leftAlone;
@@ -606,7 +342,7 @@ class DeferredUnprojectionPass final : public Pass {
   }
 
  private:
-  static void classify(DataFlow& flow, Product& p) {
+  static void classify(SourceAnalysis& flow, Product& p) {
     p.matrixSources = flow.value(p.matrix);
     p.vectorSources = flow.value(p.vector);
     p.x = flow.value(p.vector, {0});
@@ -691,10 +427,7 @@ class DeferredUnprojectionPass final : public Pass {
     uint32_t chosen = emit(spv::OpSelect, v4, {stereo4, corrected, p.result});
 
     // Every use of q now reads q' (the fix code itself, inserted below, still reads q).
-    for (auto& block : p.function->blocks)
-      for (auto& inst : block.instructions)
-        for (size_t k = 0; k < inst.operands.size(); ++k)
-          if (inst.operands[k] == p.result && spirv::isValueOperand(inst, k)) inst.operands[k] = chosen;
+    spirv::replaceAllUses(m, p.result, chosen);
     for (auto& block : p.function->blocks)
       for (size_t i = 0; i < block.instructions.size(); ++i)
         if (block.instructions[i].resultId == p.result) {
@@ -708,23 +441,19 @@ class DeferredUnprojectionPass final : public Pass {
   // or a texture lookup (reading this eye's G-buffer at this eye's pixel is per-eye already):
   // screen-space effects computed from the pixel position, left as they are. `flow` treats the
   // fixed unprojections as opaque and never looks through an image coordinate.
-  static void reportFragCoordUses(PassContext& ctx, DataFlow& flow, nlohmann::json& leftAlone) {
+  static void reportFragCoordUses(PassContext& ctx, const ValueFlow& index, SourceAnalysis& flow,
+                                  nlohmann::json& leftAlone) {
     auto& m = ctx.module;
     std::set<std::string> reaches;
-    for (const auto& fn : m.functions)
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions) {
-          if (inst.opcode == spv::OpStore) {
-            uint32_t root;
-            Path path;
-            if (!flow.resolvePointer(inst.operand(0), &root, &path) ||
-                m.storageClassOf(root) != spv::StorageClassOutput)
-              continue;
-            if (flow.value(inst.operand(1)).fragCoord) reaches.insert(flow.describe(root, path));
-          } else if (inst.opcode == spv::OpBranchConditional || inst.opcode == spv::OpSwitch) {
-            if (flow.value(inst.operand(0)).fragCoord) reaches.insert("a branch (e.g. a discard)");
-          }
-        }
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+      if (inst.opcode == spv::OpStore) {
+        auto target = index.resolvePointer(inst.operand(0));
+        if (!target || m.storageClassOf(target->root) != spv::StorageClassOutput) return;
+        if (flow.value(inst.operand(1)).fragCoord) reaches.insert(describe(m, target->root, target->path));
+      } else if (inst.opcode == spv::OpBranchConditional || inst.opcode == spv::OpSwitch) {
+        if (flow.value(inst.operand(0)).fragCoord) reaches.insert("a branch (e.g. a discard)");
+      }
+    });
     for (const auto& target : reaches) {
       nlohmann::json entry;
       entry["construct"] = ctx.source.language == SourceLanguage::Hlsl ? "SV_Position" : "gl_FragCoord";
@@ -741,13 +470,12 @@ class DeferredUnprojectionPass final : public Pass {
       if (inst.stringOperand(0) == "GLSL.std.450") glsl = inst.resultId;
     if (!glsl) return;
     int reflections = 0, refractions = 0;
-    for (const auto& fn : m.functions)
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions)
-          if (inst.opcode == spv::OpExtInst && inst.operand(0) == glsl) {
-            reflections += inst.operand(1) == GLSLstd450Reflect;
-            refractions += inst.operand(1) == GLSLstd450Refract;
-          }
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+      if (inst.opcode == spv::OpExtInst && inst.operand(0) == glsl) {
+        reflections += inst.operand(1) == GLSLstd450Reflect;
+        refractions += inst.operand(1) == GLSLstd450Refract;
+      }
+    });
     auto add = [&](int count, const char* what) {
       if (!count) return;
       nlohmann::json entry;

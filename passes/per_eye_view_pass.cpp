@@ -3,7 +3,8 @@
 // wherever a view vector offsets texture coordinates (relief / parallax occlusion / steep / cone
 // mapping, reflection lookups), so each eye sees the surface relief from its own position.
 //
-// Detection is by data flow on the shared folded copy (helpers inlined, loops in SSA form):
+// Detection is by data flow (the forward engine of passes/analysis/value_flow.h) on the shared
+// folded copy (helpers inlined, loops in SSA form):
 //   1. a candidate is `C - P` or `P - C` where C is a vec3/vec4 uniform or push-constant value (a
 //      "slot": variable plus constant member indices) and P varies per vertex/pixel (it depends on
 //      a stage input);
@@ -28,6 +29,10 @@
 
 #include "passes/pass.h"
 
+#include "passes/analysis/value_flow.h"
+#include "passes/ir/image_instructions.h"
+#include "passes/ir/walker.h"
+
 #include <glslang/SPIRV/GLSL.std.450.h>
 
 #include <algorithm>
@@ -42,6 +47,7 @@ namespace stereoshift {
 
 using spirv::Instruction;
 using spirv::Module;
+using analysis::ValueFlow;
 
 namespace {
 
@@ -191,22 +197,6 @@ enum Flow : uint8_t {
   kTangent = 4,    // ... after it was multiplied by a tangent frame
 };
 
-bool isImageSample(spv::Op op) {
-  switch (op) {
-    case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod:
-    case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
-    case spv::OpImageSampleProjImplicitLod: case spv::OpImageSampleProjExplicitLod:
-    case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
-    case spv::OpImageFetch: case spv::OpImageGather: case spv::OpImageDrefGather: case spv::OpImageRead:
-    case spv::OpImageSparseSampleImplicitLod: case spv::OpImageSparseSampleExplicitLod:
-    case spv::OpImageSparseSampleDrefImplicitLod: case spv::OpImageSparseSampleDrefExplicitLod:
-    case spv::OpImageSparseFetch: case spv::OpImageSparseGather:
-      return true;
-    default:
-      return false;
-  }
-}
-
 bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_list<GLSLstd450> which) {
   if (inst.opcode != spv::OpExtInst) return false;
   const Instruction* set = m.definition(inst.operand(0));
@@ -214,37 +204,31 @@ bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_li
   return std::find(which.begin(), which.end(), GLSLstd450(inst.operand(1))) != which.end();
 }
 
-// Questions about one (folded) module, with memoised answers.
-class FlowAnalysis {
+bool isVariable(const Module& m, uint32_t id) {
+  const Instruction* def = m.definition(id);
+  return def && def->opcode == spv::OpVariable;
+}
+
+// This pass's questions about one (folded) module, as thin queries on the forward engine of the
+// shared value flow (analysis/value_flow.h): what varies per vertex / pixel, and where a value
+// derived from some seeds goes.
+class FlowQueries {
  public:
-  explicit FlowAnalysis(const Module& m) : m_(m) {
-    for (const auto& fn : m.functions)
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions)
-          if (inst.opcode == spv::OpStore)
-            if (uint32_t root = m.rootVariable(inst.operand(0))) storesTo_[root].push_back(inst.operand(1));
-  }
+  explicit FlowQueries(const Module& m) : m_(m), flow_(m) {}
 
   const Module& module() const { return m_; }
 
-  // Whether `id` varies per vertex / pixel: it is computed from a stage input.
+  // Whether `id` varies per vertex / pixel: it is computed from a stage input (through arithmetic,
+  // phis and function-local or private variables).
   bool dependsOnInput(uint32_t id) {
-    if (auto it = inputMemo_.find(id); it != inputMemo_.end()) return it->second;
-    inputMemo_[id] = false;  // cycles through phis: decided by the other incoming values
-    const Instruction* def = m_.definition(id);
-    bool result = false;
-    if (def && def->opcode == spv::OpLoad) {
-      uint32_t root = m_.rootVariable(def->operand(0));
-      auto storage = root ? m_.storageClassOf(root) : std::nullopt;
-      if (storage == spv::StorageClassInput) result = true;
-      else if (storage == spv::StorageClassFunction || storage == spv::StorageClassPrivate)
-        for (uint32_t stored : storesTo_[root]) result = result || dependsOnInput(stored);
-    } else if (def && def->resultId && def->opcode != spv::OpVariable && def->opcode != spv::OpFunction) {
-      for (size_t k = 0; k < def->operands.size() && !result; ++k)
-        if (spirv::isValueOperand(*def, k)) result = dependsOnInput(def->operands[k]);
+    if (!inputDependent_) {
+      ValueFlow::FlagMap seeds;
+      for (const auto& inst : m_.typesValues)
+        if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassInput) seeds[inst.resultId] = kDerived;
+      InputRules rules(m_);
+      inputDependent_ = flow_.propagate(seeds, rules);
     }
-    inputMemo_[id] = result;
-    return result;
+    return !isVariable(m_, id) && ValueFlow::flagsOf(*inputDependent_, id) != 0;
   }
 
   // A tangent frame: a matrix built in the shader from per-vertex vectors (`mat3(t, b, n)`,
@@ -274,84 +258,82 @@ class FlowAnalysis {
   // `throughSamples`: a texel fetched at a derived coordinate counts as derived too (for "what
   // changes", not for "what is a view vector").
   Sinks follow(const std::map<uint32_t, uint8_t>& seeds, bool throughSamples = false) {
-    std::unordered_map<uint32_t, uint8_t> flags(seeds.begin(), seeds.end());
-    Sinks sinks;
-    auto flagsOf = [&](uint32_t id) -> uint8_t {
-      auto it = flags.find(id);
-      return it == flags.end() ? 0 : it->second;
-    };
-    for (bool grew = true; grew;) {
-      grew = false;
-      auto raise = [&](uint32_t id, uint8_t f) {
-        uint8_t& slot = flags[id];
-        if ((slot | f) != slot) {
-          slot |= f;
-          grew = true;
-        }
-      };
-      for (const auto& fn : m_.functions)
-        for (const auto& block : fn.blocks)
-          for (const auto& inst : block.instructions) {
-            if (inst.opcode == spv::OpStore) {
-              uint8_t f = flagsOf(inst.operand(1));
-              if (!f) continue;
-              uint32_t root = m_.rootVariable(inst.operand(0));
-              if (!root) continue;
-              if (m_.storageClassOf(root) == spv::StorageClassOutput) sinks.outputs[root] |= f;
-              else raise(root, f);  // a local: its loads carry the value on
-              continue;
-            }
-            if (inst.opcode == spv::OpLoad) {
-              if (uint8_t f = flagsOf(m_.rootVariable(inst.operand(0)))) raise(inst.resultId, f);
-              continue;
-            }
-            if (isImageSample(inst.opcode)) {
-              sinks.texcoord |= flagsOf(inst.operand(1));
-              if (throughSamples && flagsOf(inst.operand(1))) raise(inst.resultId, kDerived);
-              continue;  // a sampled value is not the view vector any more
-            }
-            if (!inst.resultId) continue;
-            uint8_t f = 0, tainted = 0;
-            for (size_t k = 0; k < inst.operands.size(); ++k)
-              if (spirv::isValueOperand(inst, k) && flagsOf(inst.operands[k])) {
-                f |= flagsOf(inst.operands[k]);
-                ++tainted;
-              }
-            if (!f) continue;
-            if (isGlslExtInst(m_, inst, {GLSLstd450Normalize, GLSLstd450Reflect, GLSLstd450Refract}))
-              f |= kDirection;
-            // v.xy / v.z: a ratio of two parts of the same vector is a direction's slope.
-            if (inst.opcode == spv::OpFDiv && tainted == 2) f |= kDirection;
-            if (inst.opcode == spv::OpMatrixTimesVector && flagsOf(inst.operand(1)) && isTangentFrame(inst.operand(0)))
-              f |= kTangent;
-            if (inst.opcode == spv::OpVectorTimesMatrix && flagsOf(inst.operand(0)) && isTangentFrame(inst.operand(1)))
-              f |= kTangent;
-            if (inst.opcode == spv::OpCompositeConstruct && isTangentDots(inst, flagsOf)) f |= kTangent;
-            raise(inst.resultId, f);
-          }
-    }
+    ViewVectorRules rules(*this, throughSamples);
+    ValueFlow::FlagMap flags = flow_.propagate(ValueFlow::FlagMap(seeds.begin(), seeds.end()), rules);
     for (const auto& [id, f] : flags)
-      if (!seeds.count(id)) sinks.anyUse = true;
-    return sinks;
+      if (!seeds.count(id)) rules.sinks.anyUse = true;
+    return rules.sinks;
   }
 
  private:
-  // vec3(dot(v, t), dot(v, b), dot(v, n)) with per-vertex t, b, n: tangent space by hand.
-  template <class FlagsOf>
-  bool isTangentDots(const Instruction& construct, FlagsOf flagsOf) {
-    int dots = 0;
-    for (uint32_t part : construct.operands) {
-      const Instruction* def = m_.definition(part);
-      if (!def || def->opcode != spv::OpDot) continue;
-      uint32_t a = def->operand(0), b = def->operand(1);
-      if ((flagsOf(a) && dependsOnInput(b)) || (flagsOf(b) && dependsOnInput(a))) ++dots;
+  // "Varies per vertex / pixel": every value computed from a flagged one is flagged; stores carry
+  // the flag through function-local and private variables.
+  struct InputRules final : ValueFlow::ForwardRules {
+    explicit InputRules(const Module& m) : m(m) {}
+    const Module& m;
+    bool storeCarries(const Instruction&, uint32_t root, ValueFlow::Flags) override {
+      auto storage = isVariable(m, root) ? m.storageClassOf(root) : std::nullopt;
+      return storage == spv::StorageClassFunction || storage == spv::StorageClassPrivate;
     }
-    return dots >= 2;
-  }
+    ValueFlow::Flags resultFlags(const Instruction& inst, const ValueFlow::FlagMap& flags) override {
+      return inst.opcode == spv::OpVariable ? 0 : ValueFlow::operandFlags(inst, flags);
+    }
+  };
+
+  // The view-vector flags: a derived value becomes a direction (normalize, reflect/refract,
+  // v.xy / v.z) and a tangent-space vector (times a tangent frame); texture coordinates and
+  // outputs are where it ends.
+  struct ViewVectorRules final : ValueFlow::ForwardRules {
+    ViewVectorRules(FlowQueries& queries, bool throughSamples) : q(queries), throughSamples(throughSamples) {}
+    FlowQueries& q;
+    bool throughSamples;
+    Sinks sinks;
+
+    bool storeCarries(const Instruction&, uint32_t root, ValueFlow::Flags f) override {
+      if (!isVariable(q.m_, root)) return false;
+      if (q.m_.storageClassOf(root) != spv::StorageClassOutput) return true;  // a local: its loads carry the value on
+      sinks.outputs[root] |= static_cast<uint8_t>(f);
+      return false;
+    }
+
+    ValueFlow::Flags resultFlags(const Instruction& inst, const ValueFlow::FlagMap& flags) override {
+      auto flagsOf = [&](uint32_t id) { return static_cast<uint8_t>(ValueFlow::flagsOf(flags, id)); };
+      if (spirv::isImageSampleOrFetch(inst.opcode)) {
+        uint8_t coordinate = flagsOf(spirv::imageCoordinateOperand(inst));
+        sinks.texcoord |= coordinate;
+        return throughSamples && coordinate ? kDerived : 0;  // a sampled value is not the view vector any more
+      }
+      int tainted = 0;
+      auto f = static_cast<uint8_t>(ValueFlow::operandFlags(inst, flags, &tainted));
+      if (!f) return 0;
+      if (isGlslExtInst(q.m_, inst, {GLSLstd450Normalize, GLSLstd450Reflect, GLSLstd450Refract})) f |= kDirection;
+      // v.xy / v.z: a ratio of two parts of the same vector is a direction's slope.
+      if (inst.opcode == spv::OpFDiv && tainted == 2) f |= kDirection;
+      if (inst.opcode == spv::OpMatrixTimesVector && flagsOf(inst.operand(1)) && q.isTangentFrame(inst.operand(0)))
+        f |= kTangent;
+      if (inst.opcode == spv::OpVectorTimesMatrix && flagsOf(inst.operand(0)) && q.isTangentFrame(inst.operand(1)))
+        f |= kTangent;
+      if (inst.opcode == spv::OpCompositeConstruct && isTangentDots(inst, flagsOf)) f |= kTangent;
+      return f;
+    }
+
+    // vec3(dot(v, t), dot(v, b), dot(v, n)) with per-vertex t, b, n: tangent space by hand.
+    template <class FlagsOf>
+    bool isTangentDots(const Instruction& construct, FlagsOf flagsOf) {
+      int dots = 0;
+      for (uint32_t part : construct.operands) {
+        const Instruction* def = q.m_.definition(part);
+        if (!def || def->opcode != spv::OpDot) continue;
+        uint32_t a = def->operand(0), b = def->operand(1);
+        if ((flagsOf(a) && q.dependsOnInput(b)) || (flagsOf(b) && q.dependsOnInput(a))) ++dots;
+      }
+      return dots >= 2;
+    }
+  };
 
   const Module& m_;
-  std::unordered_map<uint32_t, std::vector<uint32_t>> storesTo_;
-  std::unordered_map<uint32_t, bool> inputMemo_;
+  ValueFlow flow_;
+  std::optional<ValueFlow::FlagMap> inputDependent_;
 };
 
 // ---- candidates -----------------------------------------------------------------------------------
@@ -376,21 +358,19 @@ std::optional<Slot> cameraSide(const Module& m, uint32_t value) {
   return slot;
 }
 
-std::map<Slot, std::vector<Subtraction>> findSubtractions(FlowAnalysis& flow) {
+std::map<Slot, std::vector<Subtraction>> findSubtractions(FlowQueries& flow) {
   const Module& m = flow.module();
   std::map<Slot, std::vector<Subtraction>> found;
-  for (const auto& fn : m.functions)
-    for (const auto& block : fn.blocks)
-      for (const auto& inst : block.instructions) {
-        if (inst.opcode != spv::OpFSub) continue;
-        const Instruction* type = m.definition(inst.typeId);
-        if (!type || type->opcode != spv::OpTypeVector || type->operand(1) < 3) continue;
-        for (int side = 0; side < 2; ++side) {
-          auto slot = cameraSide(m, inst.operand(side));
-          uint32_t other = inst.operand(1 - side);
-          if (slot && !cameraSide(m, other) && flow.dependsOnInput(other)) found[*slot].push_back({inst.resultId, other});
-        }
-      }
+  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpFSub) return;
+    const Instruction* type = m.definition(inst.typeId);
+    if (!type || type->opcode != spv::OpTypeVector || type->operand(1) < 3) return;
+    for (int side = 0; side < 2; ++side) {
+      auto slot = cameraSide(m, inst.operand(side));
+      uint32_t other = inst.operand(1 - side);
+      if (slot && !cameraSide(m, other) && flow.dependsOnInput(other)) found[*slot].push_back({inst.resultId, other});
+    }
+  });
   return found;
 }
 
@@ -474,22 +454,20 @@ bool samePoint(const Module& m, uint32_t point, uint32_t w) {
 // Clip chains of every store to the clip position in the folded module.
 std::vector<ClipChain> clipChains(const PassContext& ctx, const Module& f) {
   std::vector<ClipChain> chains;
-  for (const auto& fn : f.functions)
-    for (const auto& block : fn.blocks)
-      for (const auto& inst : block.instructions) {
-        if (inst.opcode != spv::OpStore) continue;
-        uint32_t pointer = inst.operand(0);
-        for (const auto& p : ctx.positions) {
-          if (p.arrayed) continue;
-          bool hit = !p.isMember && pointer == p.variable;
-          if (const Instruction* chain = f.definition(pointer);
-              p.isMember && chain && chain->opcode == spv::OpAccessChain && chain->operand(0) == p.variable &&
-              chain->operands.size() == 2 && constantValue(f, chain->operand(1)) == p.member)
-            hit = true;
-          if (hit)
-            if (auto c = clipChainFrom(f, inst.operand(1))) chains.push_back(*c);
-        }
-      }
+  spirv::forEachFunctionInstruction(f, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpStore) return;
+    uint32_t pointer = inst.operand(0);
+    for (const auto& p : ctx.positions) {
+      if (p.arrayed) continue;
+      bool hit = !p.isMember && pointer == p.variable;
+      if (const Instruction* chain = f.definition(pointer);
+          p.isMember && chain && chain->opcode == spv::OpAccessChain && chain->operand(0) == p.variable &&
+          chain->operands.size() == 2 && constantValue(f, chain->operand(1)) == p.member)
+        hit = true;
+      if (hit)
+        if (auto c = clipChainFrom(f, inst.operand(1))) chains.push_back(*c);
+    }
+  });
   return chains;
 }
 
@@ -525,12 +503,10 @@ std::optional<Slot> namedInverseViewProjection(const Module& m, const Slot& came
 // HLSL mul(M, v) into v * M).
 bool shaderUsesColumnVectors(const PassContext& ctx, const Module& f) {
   int column = 0, row = 0;
-  for (const auto& fn : f.functions)
-    for (const auto& block : fn.blocks)
-      for (const auto& inst : block.instructions) {
-        if (inst.opcode == spv::OpMatrixTimesVector && loadedSlot(f, inst.operand(0)) && isMat4(f, f.definition(inst.operand(0))->typeId)) ++column;
-        if (inst.opcode == spv::OpVectorTimesMatrix && loadedSlot(f, inst.operand(1)) && isMat4(f, f.definition(inst.operand(1))->typeId)) ++row;
-      }
+  spirv::forEachFunctionInstruction(f, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode == spv::OpMatrixTimesVector && loadedSlot(f, inst.operand(0)) && isMat4(f, f.definition(inst.operand(0))->typeId)) ++column;
+    if (inst.opcode == spv::OpVectorTimesMatrix && loadedSlot(f, inst.operand(1)) && isMat4(f, f.definition(inst.operand(1))->typeId)) ++row;
+  });
   if (column != row) return column > row;
   return ctx.source.language != SourceLanguage::Hlsl;
 }
@@ -588,7 +564,8 @@ uint32_t emitEyeOffset(PassContext& ctx, std::vector<Instruction>& out, const Of
 }
 
 // Rewrites every load of `camera` (the whole vector or one component) into `loaded + offset`.
-// Returns how many loads were rewritten.
+// Returns how many loads were rewritten. A loop of its own rather than the walker: it inserts the
+// offset code after each load while it goes.
 int rewriteCameraLoads(PassContext& ctx, const Slot& camera, const OffsetSource& source) {
   auto& m = ctx.module;
   uint32_t f = m.typeFloat(32);
@@ -679,7 +656,7 @@ class PerEyeViewPass final : public Pass {
       report["skipped"] = "the optimizer could not inline and fold this module; nothing analysed";
       return finish(PassResult::Unchanged);
     }
-    FlowAnalysis flow(*folded);
+    FlowQueries flow(*folded);
     auto subtractions = findSubtractions(flow);
     const std::string& forcedName = ctx.options.cameraUniform;
 
@@ -780,14 +757,13 @@ class PerEyeViewPass final : public Pass {
       bool found = false;
       for (const auto& [slot, why] : cameras) found |= slotMatchesName(*folded, slot, forcedName);
       if (!found)
-        for (const auto& fn : folded->functions)
-          for (const auto& block : fn.blocks)
-            for (const auto& inst : block.instructions)
-              if (inst.opcode == spv::OpLoad)
-                if (auto slot = cameraSide(*folded, inst.resultId); slot && slotMatchesName(*folded, *slot, forcedName)) {
-                  cameras[*slot] = "forced by --camera-uniform";
-                  found = true;
-                }
+        spirv::forEachFunctionInstruction(*folded, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+          if (inst.opcode != spv::OpLoad) return;
+          if (auto slot = cameraSide(*folded, inst.resultId); slot && slotMatchesName(*folded, *slot, forcedName)) {
+            cameras[*slot] = "forced by --camera-uniform";
+            found = true;
+          }
+        });
       if (!found) {
         ctx.diags.warning(ctx.file, "--camera-uniform '" + forcedName + "': no vec3/vec4 uniform of that name is read in this shader");
         report["forced_camera_not_found"] = forcedName;
@@ -814,13 +790,12 @@ class PerEyeViewPass final : public Pass {
     std::set<std::string> perEyeOutputs;
     for (const auto& [slot, why] : cameras) {
       std::map<uint32_t, uint8_t> loads;
-      for (const auto& fn : folded->functions)
-        for (const auto& block : fn.blocks)
-          for (const auto& inst : block.instructions)
-            if (auto loaded = inst.opcode == spv::OpLoad ? slotOfPointer(*folded, inst.operand(0)) : std::nullopt;
-                loaded && loaded->variable == slot.variable && loaded->indices.size() >= slot.indices.size() &&
-                std::equal(slot.indices.begin(), slot.indices.end(), loaded->indices.begin()))
-              loads[inst.resultId] = kDerived;
+      spirv::forEachFunctionInstruction(*folded, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+        if (auto loaded = inst.opcode == spv::OpLoad ? slotOfPointer(*folded, inst.operand(0)) : std::nullopt;
+            loaded && loaded->variable == slot.variable && loaded->indices.size() >= slot.indices.size() &&
+            std::equal(slot.indices.begin(), slot.indices.end(), loaded->indices.begin()))
+          loads[inst.resultId] = kDerived;
+      });
       for (const auto& [output, f] : flow.follow(loads, /*throughSamples=*/true).outputs)
         if (!folded->hasDecoration(output, spv::DecorationBuiltIn) && !folded->name(output).empty())
           perEyeOutputs.insert(folded->name(output));
@@ -898,25 +873,21 @@ class PerEyeViewPass final : public Pass {
                                          const std::map<Slot, std::string>& cameras, nlohmann::json& leftAlone) {
     (void)ctx;
     std::set<Slot> noted;
-    for (const auto& fn : f.functions)
-      for (const auto& block : fn.blocks)
-        for (const auto& inst : block.instructions) {
-          if (inst.opcode != spv::OpLoad) continue;
-          auto slot = cameraSide(f, inst.resultId);
-          if (!slot || subtractions.count(*slot) || cameras.count(*slot) || noted.count(*slot)) continue;
-          std::string name = slotName(f, *slot);
-          if (nameHint(name) != NameHint::Camera) continue;
-          noted.insert(*slot);
-          leftAlone.push_back({{"uniform", name}, {"use", "distance or other maths, no view vector (fog, level of detail)"},
-                               {"reason", "the eyes differ by a fraction of the interaxial: mono keeps both eyes alike"}});
-        }
+    spirv::forEachFunctionInstruction(f, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+      if (inst.opcode != spv::OpLoad) return;
+      auto slot = cameraSide(f, inst.resultId);
+      if (!slot || subtractions.count(*slot) || cameras.count(*slot) || noted.count(*slot)) return;
+      std::string name = slotName(f, *slot);
+      if (nameHint(name) != NameHint::Camera) return;
+      noted.insert(*slot);
+      leftAlone.push_back({{"uniform", name}, {"use", "distance or other maths, no view vector (fog, level of detail)"},
+                           {"reason", "the eyes differ by a fraction of the interaxial: mono keeps both eyes alike"}});
+    });
     for (uint32_t id : f.entryInterface())
       if (f.decorationValue(id, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInFragCoord)) {
-        bool read = false;
-        for (const auto& fn : f.functions)
-          for (const auto& block : fn.blocks)
-            for (const auto& inst : block.instructions)
-              read |= inst.opcode == spv::OpLoad && f.rootVariable(inst.operand(0)) == id;
+        bool read = spirv::anyFunctionInstruction(f, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+          return inst.opcode == spv::OpLoad && f.rootVariable(inst.operand(0)) == id;
+        });
         if (read)
           leftAlone.push_back({{"construct", "gl_FragCoord"}, {"use", "screen-position effect"},
                                {"reason", "pixel positions are already per eye; an effect that maps them back to the "
@@ -928,14 +899,11 @@ class PerEyeViewPass final : public Pass {
 }  // namespace
 
 bool hasVectorSubtraction(const Module& m) {
-  for (const auto& fn : m.functions)
-    for (const auto& block : fn.blocks)
-      for (const auto& inst : block.instructions)
-        if (inst.opcode == spv::OpFSub) {
-          const Instruction* type = m.definition(inst.typeId);
-          if (type && type->opcode == spv::OpTypeVector && type->operand(1) >= 3) return true;
-        }
-  return false;
+  return spirv::anyFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpFSub) return false;
+    const Instruction* type = m.definition(inst.typeId);
+    return type && type->opcode == spv::OpTypeVector && type->operand(1) >= 3;
+  });
 }
 
 NextStageFacts analyseStageInputs(PassContext& ctx) {
@@ -944,7 +912,7 @@ NextStageFacts analyseStageInputs(PassContext& ctx) {
   facts.linkByName = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
   const Module* folded = foldedCopy(ctx);
   const Module& m = ctx.module;
-  std::optional<FlowAnalysis> flow;
+  std::optional<FlowQueries> flow;
   if (folded) flow.emplace(*folded);
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassInput) continue;

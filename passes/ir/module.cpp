@@ -1,7 +1,8 @@
 #include "passes/ir/module.h"
 
-#include <spirv-tools/libspirv.hpp>
+#include "passes/ir/image_instructions.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace stereoshift::spirv {
@@ -9,19 +10,6 @@ namespace stereoshift::spirv {
 namespace {
 
 constexpr uint32_t kMagic = 0x07230203;
-
-bool isTypeDeclaration(spv::Op op) {
-  switch (op) {
-    case spv::OpTypeVoid: case spv::OpTypeBool: case spv::OpTypeInt: case spv::OpTypeFloat:
-    case spv::OpTypeVector: case spv::OpTypeMatrix: case spv::OpTypeImage: case spv::OpTypeSampler:
-    case spv::OpTypeSampledImage: case spv::OpTypeArray: case spv::OpTypeRuntimeArray:
-    case spv::OpTypeStruct: case spv::OpTypeOpaque: case spv::OpTypePointer:
-    case spv::OpTypeFunction: case spv::OpTypeForwardPointer:
-      return true;
-    default:
-      return false;
-  }
-}
 
 }  // namespace
 
@@ -303,7 +291,6 @@ uint32_t Module::findConstant(uint32_t type, spv::Op op, const std::vector<uint3
     return id;                                                          \
   } while (0)
 
-uint32_t Module::typeVoid() { STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeVoid); }
 uint32_t Module::typeBool() { STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeBool); }
 uint32_t Module::typeInt(uint32_t width, bool isSigned) {
   STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeInt, width, isSigned ? 1u : 0u);
@@ -316,16 +303,6 @@ uint32_t Module::typePointer(spv::StorageClass storage, uint32_t pointee) {
   STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypePointer, uint32_t(storage), pointee);
 }
 #undef STEREOSHIFT_FIND_OR_ADD_TYPE
-
-uint32_t Module::typeFunction(uint32_t returnType, const std::vector<uint32_t>& params) {
-  std::vector<uint32_t> operands = {returnType};
-  operands.insert(operands.end(), params.begin(), params.end());
-  if (uint32_t found = findType(spv::OpTypeFunction, operands)) return found;
-  uint32_t id = takeId();
-  typesValues.emplace_back(spv::OpTypeFunction, 0, id, std::move(operands));
-  invalidateDefinitions();
-  return id;
-}
 
 uint32_t Module::newStruct(const std::vector<uint32_t>& memberTypes) {
   uint32_t id = takeId();
@@ -349,8 +326,6 @@ uint32_t Module::constantFloat(float value) {
 }
 
 uint32_t Module::constantInt(int32_t value) { return scalarConstant(typeInt(32, true), static_cast<uint32_t>(value)); }
-
-uint32_t Module::constantUint(uint32_t value) { return scalarConstant(typeInt(32, false), value); }
 
 uint32_t Module::specConstantFloat(float value) {
   uint32_t bits;
@@ -446,24 +421,6 @@ uint32_t Module::pointeeType(uint32_t pointerTypeId) const {
 }
 
 
-namespace {
-
-// Image instructions whose operand word 2 is the image-operands mask (3 for the Dref forms).
-bool hasImageOperandsAt2(spv::Op op) {
-  switch (op) {
-    case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod:
-    case spv::OpImageSampleProjImplicitLod: case spv::OpImageSampleProjExplicitLod:
-    case spv::OpImageFetch: case spv::OpImageRead: case spv::OpImageQueryLod:
-    case spv::OpImageSparseSampleImplicitLod: case spv::OpImageSparseSampleExplicitLod:
-    case spv::OpImageSparseFetch: case spv::OpImageSparseRead:
-      return true;
-    default:
-      return false;
-  }
-}
-
-}  // namespace
-
 // Whether operand word k of an instruction in a function body may hold a value id (literals such
 // as extract indices, shuffle components, memory and image operand masks never do). Labels are
 // reported as ids or not at will: they are never the value being replaced.
@@ -478,14 +435,9 @@ bool isValueOperand(const Instruction& inst, size_t k) {
     case spv::OpBranchConditional: case spv::OpSwitch: return k == 0;
     case spv::OpVariable: return k == 1;
     case spv::OpLine: case spv::OpNoLine: return false;
-    case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
-    case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
-    case spv::OpImageDrefGather: case spv::OpImageGather: case spv::OpImageWrite:
-    case spv::OpImageSparseSampleDrefImplicitLod: case spv::OpImageSparseSampleDrefExplicitLod:
-    case spv::OpImageSparseDrefGather: case spv::OpImageSparseGather:
-      return k != 3;  // image operands mask
     default:
-      return hasImageOperandsAt2(inst.opcode) ? k != 2 : true;
+      if (auto image = imageAccess(inst.opcode)) return static_cast<int>(k) != image->imageOperandsMask;
+      return true;
   }
 }
 
@@ -509,30 +461,6 @@ uint32_t Module::rootVariable(uint32_t pointer) const {
     pointer = def->operand(0);
   }
   return 0;
-}
-
-std::string disassemble(const std::vector<uint32_t>& words) {
-  spvtools::SpirvTools tools(SPV_ENV_UNIVERSAL_1_6);
-  std::string text;
-  tools.Disassemble(words, &text,
-                    SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES | SPV_BINARY_TO_TEXT_OPTION_INDENT);
-  return text;
-}
-
-std::vector<uint32_t> assemble(const std::string& text, std::string* error) {
-  spvtools::SpirvTools tools(SPV_ENV_UNIVERSAL_1_6);
-  std::string messages;
-  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& position,
-                               const char* message) {
-    messages += std::to_string(position.line + 1) + ":" + std::to_string(position.column + 1) +
-                ": error: " + message + "\n";
-  });
-  std::vector<uint32_t> words;
-  if (!tools.Assemble(text, &words, SPV_TEXT_TO_BINARY_OPTION_PRESERVE_NUMERIC_IDS)) {
-    if (error) *error = messages.empty() ? "invalid SPIR-V assembly" : messages;
-    return {};
-  }
-  return words;
 }
 
 }  // namespace stereoshift::spirv

@@ -17,6 +17,9 @@
 #include <unordered_map>
 #include <vector>
 
+// disassemble() / assemble() used to live here; callers that include module.h keep them.
+#include "passes/ir/disassemble.h"
+
 namespace stereoshift::spirv {
 
 // One instruction. `operands` holds every word after the (optional) result type and result id.
@@ -114,17 +117,14 @@ class Module {
   void removeDecorations(uint32_t id, spv::Decoration decoration);
 
   // --- find-or-create types and constants (never duplicates a type the module has) ---
-  uint32_t typeVoid();
   uint32_t typeBool();
   uint32_t typeInt(uint32_t width, bool isSigned);
   uint32_t typeFloat(uint32_t width);
   uint32_t typeVector(uint32_t componentType, uint32_t count);
   uint32_t typePointer(spv::StorageClass storage, uint32_t pointee);
-  uint32_t typeFunction(uint32_t returnType, const std::vector<uint32_t>& params);
   uint32_t newStruct(const std::vector<uint32_t>& memberTypes);  // structs are always distinct
   uint32_t constantFloat(float value);
   uint32_t constantInt(int32_t value);
-  uint32_t constantUint(uint32_t value);
   uint32_t specConstantFloat(float value);  // a new OpSpecConstant each call
   uint32_t extInstImport(std::string_view setName);  // find-or-create, e.g. "GLSL.std.450"
 
@@ -160,14 +160,9 @@ class Module {
   uint32_t scalarConstant(uint32_t type, uint32_t bits);  // find-or-create a 32-bit OpConstant
 };
 
-// Convenience: the disassembly of a module through SPIRV-Tools (friendly names, no header).
 // Whether operand word k of an instruction in a function body may hold a value id (literals such
 // as extract indices, shuffle components, memory and image operand masks never do). Labels are
 // reported as ids or not at will: they are never a value being traced or replaced.
 bool isValueOperand(const Instruction& inst, size_t k);
-
-std::string disassemble(const std::vector<uint32_t>& words);
-// Assembles SPIR-V text; returns empty and sets *error on failure.
-std::vector<uint32_t> assemble(const std::string& text, std::string* error);
 
 }  // namespace stereoshift::spirv
