@@ -1,0 +1,191 @@
+// The incremental cache of `stereoshift build`: job keys, loading and saving the cache, the
+// integrity of the outputs it lists, and the removal of stale outputs.
+#include "cli/build_cache.h"
+
+#include "cli/build_report.h"
+#include "cli/cli_support.h"
+
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <iostream>
+#include <set>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+namespace {
+
+constexpr int kCacheFormat = 3;  // 3: reports kept as report text
+
+std::string hex64(uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+// Feeds length-prefixed strings into one hash, so ("ab","c") and ("a","bc") differ.
+class KeyHasher {
+ public:
+  KeyHasher() { XXH3_64bits_reset(&state_); }
+  void add(const std::string& s) {
+    uint64_t size = s.size();
+    XXH3_64bits_update(&state_, &size, sizeof size);
+    XXH3_64bits_update(&state_, s.data(), s.size());
+  }
+  std::string digest() { return hex64(XXH3_64bits_digest(&state_)); }
+
+ private:
+  XXH3_state_t state_;
+};
+
+// Whether the cached entry still describes the outputs on disk, byte for byte.
+bool outputsIntact(const nlohmann::json& entry) {
+  if (!entry.contains("outputs") || !entry["outputs"].is_object()) return false;
+  for (const auto& [path, hash] : entry["outputs"].items()) {
+    std::string bytes;
+    if (!readFile(path, &bytes) || hashBytes(bytes) != hash.get<std::string>()) return false;
+  }
+  return true;
+}
+
+// The reports of a cached entry, as text marked up to date, and their facts; false when the entry
+// does not hold them in the expected form (then the pipeline converts again).
+bool cachedReports(const nlohmann::json& entry, JobResult* result) {
+  auto texts = entry.find("report_texts");
+  auto facts = entry.find("report_facts");
+  if (texts == entry.end() || facts == entry.end() || !texts->is_array() || !facts->is_array() ||
+      texts->size() != facts->size())
+    return false;
+  std::vector<std::string> marked;
+  std::vector<std::pair<bool, std::string>> counted;
+  for (size_t k = 0; k < texts->size(); ++k) {
+    const auto& text = (*texts)[k];
+    const auto& fact = (*facts)[k];
+    if (!text.is_string() || !fact.is_array() || fact.size() != 2 || !fact[0].is_boolean() || !fact[1].is_string())
+      return false;
+    std::string cachedText;
+    if (!markEntryCached(text.get_ref<const std::string&>(), &cachedText)) return false;
+    marked.push_back(std::move(cachedText));
+    counted.emplace_back(fact[0].get<bool>(), fact[1].get<std::string>());
+  }
+  result->reportTexts = std::move(marked);
+  result->reportFacts = std::move(counted);
+  return true;
+}
+
+}  // namespace
+
+std::string hashBytes(const std::string& bytes) { return hex64(XXH3_64bits(bytes.data(), bytes.size())); }
+
+std::string toolIdentity() {
+  std::string id = std::string("stereoshift ") + version();
+  struct stat info {};
+  if (::stat("/proc/self/exe", &info) == 0)
+    id += " " + std::to_string(info.st_size) + " " + std::to_string(info.st_mtim.tv_sec) + "." +
+          std::to_string(info.st_mtim.tv_nsec);
+  return id;
+}
+
+std::string jobKey(const std::string& tool, const BuildJob& job, const std::vector<std::string>& dependencies,
+                   const std::vector<SourceFile>* converted) {
+  KeyHasher h;
+  h.add(tool);
+  h.add(job.fingerprint);
+  auto addFile = [&](const std::string& path, const std::string* known) {
+    std::string bytes;
+    h.add(path);
+    h.add(known ? "=" + *known : readFile(path, &bytes) ? "=" + bytes : std::string("<missing>"));
+  };
+  for (size_t i = 0; i < job.stages.size(); ++i)
+    addFile(job.stages[i].string(), converted && i < converted->size() ? &(*converted)[i].contents : nullptr);
+  for (const auto& o : job.outputs) h.add(o.string());
+  for (const auto& d : dependencies) addFile(d, nullptr);
+  return h.digest();
+}
+
+Cache loadCache(const fs::path& file, const std::string& tool) {
+  Cache cache;
+  std::string bytes;
+  if (!readFile(file.string(), &bytes)) return cache;
+  nlohmann::json j = nlohmann::json::from_msgpack(bytes, true, false);  // a damaged cache is no cache
+  if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kCacheFormat || j.value("tool", "") != tool)
+    return cache;
+  if (j.contains("jobs") && j["jobs"].is_object()) cache.jobs = std::move(j["jobs"]);
+  return cache;
+}
+
+void saveCache(const fs::path& file, const std::string& tool, Cache&& next) {
+  nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", std::move(next.jobs)}};
+  std::vector<std::uint8_t> packed = nlohmann::json::to_msgpack(cacheJson);
+  std::string error;
+  if (!writeAtomically(file, std::string(packed.begin(), packed.end()), &error))
+    std::cerr << file.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
+}
+
+std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, Cache& previous, Cache& next,
+                                  std::vector<JobResult>& results) {
+  std::vector<size_t> toConvert;
+  for (size_t i = 0; i < plan.jobs.size(); ++i) {
+    const BuildJob& job = plan.jobs[i];
+    if (!convertsShaders(job.mode)) continue;  // copied through, never cached
+    auto entry = previous.jobs.find(job.id);
+    if (entry == previous.jobs.end()) {
+      toConvert.push_back(i);
+      continue;
+    }
+    std::vector<std::string> dependencies = entry->value("dependencies", std::vector<std::string>{});
+    if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry) &&
+        cachedReports(*entry, &results[i])) {
+      results[i].dependencies = std::move(dependencies);
+      next.jobs[job.id] = std::move(*entry);  // `previous` keeps only what did not carry over
+    } else {
+      toConvert.push_back(i);
+    }
+  }
+  return toConvert;
+}
+
+void recordConverted(Cache& next, const BuildJob& job, const JobResult& result, nlohmann::json outputs) {
+  nlohmann::json texts = nlohmann::json::array(), facts = nlohmann::json::array();
+  for (const auto& r : result.reports) {
+    texts.push_back(reportEntryText(r));
+    auto [ok, classification] = reportFacts(r);
+    facts.push_back({ok, classification});
+  }
+  next.jobs[job.id] = {{"key", result.key},
+                       {"dependencies", result.dependencies},
+                       {"outputs", std::move(outputs)},
+                       {"report_texts", std::move(texts)},
+                       {"report_facts", std::move(facts)}};
+}
+
+int removeStaleOutputs(const Plan& plan, const Cache& previous, const Cache& next, const fs::path& outDir) {
+  int removed = 0;
+  std::set<std::string> planned;
+  for (const auto& job : plan.jobs) planned.insert(job.id);
+  std::error_code ec;
+  for (const auto& [id, entry] : previous.jobs.items()) {
+    if (next.jobs.contains(id) || planned.count(id)) continue;
+    const nlohmann::json outputs = entry.value("outputs", nlohmann::json::object());
+    for (const auto& [path, hash] : outputs.items()) {
+      std::string bytes;
+      if (insideDirectory(path, outDir) && readFile(path, &bytes) && hashBytes(bytes) == hash.get<std::string>() &&
+          fs::remove(path, ec))
+        ++removed;
+    }
+  }
+  return removed;
+}
+
+bool writeIfChanged(const fs::path& path, const std::string& bytes, std::string* error) {
+  std::string existing;
+  if (readFile(path.string(), &existing) && existing == bytes) return true;
+  return writeAtomically(path, bytes, error);
+}
+
+}  // namespace stereoshift
