@@ -10,8 +10,10 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <set>
 
 namespace fs = std::filesystem;
@@ -42,6 +44,41 @@ class KeyHasher {
  private:
   XXH3_state_t state_;
 };
+
+// The names of every file under the include roots of a job, as one hash: a failure for want of an
+// #include resolves once the file appears, so a cached failure must notice new files there. One
+// listing per root and run (the parent runs one build); the output directory is not listed.
+std::string includeRootsDigest(const BuildJob& job, const fs::path& outDir) {
+  static std::map<std::string, std::string> digestOfRoot;
+  std::error_code ec;
+  const fs::path outCanonical = fs::weakly_canonical(outDir, ec);
+  KeyHasher h;
+  for (const auto& root : job.options.includeDirs) {
+    auto [at, fresh] = digestOfRoot.try_emplace(root);
+    if (fresh) {
+      std::vector<std::string> names;
+      std::vector<fs::path> pending = {root};
+      while (!pending.empty()) {
+        fs::path dir = std::move(pending.back());
+        pending.pop_back();
+        for (fs::directory_iterator it(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+          std::error_code entryError;
+          names.push_back(it->path().lexically_relative(root).generic_string());
+          if (it->is_directory(entryError) && !it->is_symlink(entryError) &&
+              fs::weakly_canonical(it->path(), entryError) != outCanonical)
+            pending.push_back(it->path());
+        }
+      }
+      std::sort(names.begin(), names.end());
+      KeyHasher listing;
+      for (const auto& name : names) listing.add(name);
+      at->second = listing.digest();
+    }
+    h.add(root);
+    h.add(at->second);
+  }
+  return h.digest();
+}
 
 // Whether the cached entry still describes the outputs on disk, byte for byte.
 bool outputsIntact(const nlohmann::json& entry) {
@@ -108,13 +145,12 @@ std::string jobKey(const std::string& tool, const BuildJob& job, const std::vect
   return h.digest();
 }
 
-Cache loadCache(const fs::path& file, const std::string& tool) {
+Cache loadCache(const fs::path& file) {
   Cache cache;
   std::string bytes;
   if (!readFile(file.string(), &bytes)) return cache;
   nlohmann::json j = nlohmann::json::from_msgpack(bytes, true, false);  // a damaged cache is no cache
-  if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kCacheFormat || j.value("tool", "") != tool)
-    return cache;
+  if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kCacheFormat) return cache;
   if (j.contains("jobs") && j["jobs"].is_object()) cache.jobs = std::move(j["jobs"]);
   return cache;
 }
@@ -127,21 +163,29 @@ void saveCache(const fs::path& file, const std::string& tool, Cache&& next) {
     std::cerr << file.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
 }
 
-std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, Cache& previous, Cache& next,
-                                  std::vector<JobResult>& results) {
+std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, bool trusted, Cache& previous,
+                                  Cache& next, std::vector<JobResult>& results) {
   std::vector<size_t> toConvert;
   for (size_t i = 0; i < plan.jobs.size(); ++i) {
     const BuildJob& job = plan.jobs[i];
     if (!convertsShaders(job.mode)) continue;  // copied through, never cached
-    auto entry = previous.jobs.find(job.id);
-    if (entry == previous.jobs.end()) {
+    auto entry = trusted ? previous.jobs.find(job.id) : previous.jobs.end();
+    if (entry == previous.jobs.end() || !entry->is_object()) {
       toConvert.push_back(i);
       continue;
     }
     std::vector<std::string> dependencies = entry->value("dependencies", std::vector<std::string>{});
+    // A failure also depends on what is missing: the files its include roots do not hold yet.
+    const auto failed = entry->find("errors");
+    const bool isFailure = failed != entry->end() && failed->is_number_integer() && failed->get<int>() > 0;
     if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry) &&
+        (!isFailure || entry->value("include_roots", "") == includeRootsDigest(job, plan.outputDir)) &&
         cachedReports(*entry, &results[i])) {
       results[i].dependencies = std::move(dependencies);
+      if (isFailure) {
+        results[i].errors = failed->get<int>();
+        results[i].log = entry->value("log", "");
+      }
       next.jobs[job.id] = std::move(*entry);  // `previous` keeps only what did not carry over
     } else {
       toConvert.push_back(i);
@@ -150,7 +194,8 @@ std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, Cac
   return toConvert;
 }
 
-void recordConverted(Cache& next, const BuildJob& job, const JobResult& result, nlohmann::json outputs) {
+void recordFinished(Cache& next, const Plan& plan, const BuildJob& job, const JobResult& result,
+                    nlohmann::json outputs) {
   nlohmann::json texts = nlohmann::json::array(), facts = nlohmann::json::array();
   for (const auto& r : result.reports) {
     texts.push_back(reportEntryText(r));
@@ -162,27 +207,40 @@ void recordConverted(Cache& next, const BuildJob& job, const JobResult& result, 
                        {"outputs", std::move(outputs)},
                        {"report_texts", std::move(texts)},
                        {"report_facts", std::move(facts)}};
+  if (result.errors) {
+    auto& entry = next.jobs[job.id];
+    entry["errors"] = result.errors;
+    entry["log"] = result.log;
+    entry["include_roots"] = includeRootsDigest(job, plan.outputDir);
+  }
 }
 
-int removeStaleOutputs(const Plan& plan, const Cache& previous, const Cache& next, const fs::path& outDir) {
+int removeStaleOutputs(const Plan& plan, const Cache& previous, const fs::path& outDir) {
   int removed = 0;
-  std::set<std::string> planned;
-  for (const auto& job : plan.jobs) planned.insert(job.id);
+  std::set<std::string> planned;  // native strings: paths compare component by component
+  for (const auto& job : plan.jobs)
+    for (const auto& out : job.outputs) planned.insert(out.string());
   std::error_code ec;
   for (const auto& [id, entry] : previous.jobs.items()) {
-    if (next.jobs.contains(id) || planned.count(id)) continue;
+    if (!entry.is_object()) continue;  // carried over into this run's cache
     const nlohmann::json outputs = entry.value("outputs", nlohmann::json::object());
+    if (!outputs.is_object()) continue;
     for (const auto& [path, hash] : outputs.items()) {
       std::string bytes;
-      if (insideDirectory(path, outDir) && readFile(path, &bytes) && hashBytes(bytes) == hash.get<std::string>() &&
-          fs::remove(path, ec))
+      if (!planned.count(path) && hash.is_string() && insideDirectory(path, outDir) &&
+          linkOutOfOutputDirectory(fs::path(path).parent_path(), outDir).empty() && readFile(path, &bytes) &&
+          hashBytes(bytes) == hash.get<std::string>() && fs::remove(path, ec))
         ++removed;
     }
   }
   return removed;
 }
 
-bool writeIfChanged(const fs::path& path, const std::string& bytes, std::string* error) {
+bool writeIfChanged(const fs::path& outDir, const fs::path& path, const std::string& bytes, std::string* error) {
+  if (std::string escape = linkOutOfOutputDirectory(path, outDir); !escape.empty()) {
+    *error = escape;
+    return false;
+  }
   std::string existing;
   if (readFile(path.string(), &existing) && existing == bytes) return true;
   return writeAtomically(path, bytes, error);

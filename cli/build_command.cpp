@@ -29,6 +29,7 @@ namespace {
 // Prints the plan's warnings and errors; false when it has errors (then nothing runs).
 bool reportPlanProblems(const Plan& plan) {
   for (const auto& w : plan.warnings) std::cerr << w << "\n";
+  for (const auto& e : plan.skippedEntries) std::cerr << e << "\n";
   for (const auto& e : plan.errors) std::cerr << e << "\n";
   return plan.errors.empty();
 }
@@ -71,19 +72,20 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   // 2. cache
   const std::string tool = toolIdentity();
   const fs::path cacheFile = outDir / kCacheFile;
-  Cache previous = build.noCache ? Cache{} : loadCache(cacheFile, tool);
+  // Read even with --no-cache: it says which outputs this tool wrote, for removing stale ones.
+  Cache previous = loadCache(cacheFile);
   const size_t previousCount = previous.jobs.size();
   Cache next;
   std::vector<JobResult> results(plan.jobs.size());
-  const std::vector<size_t> toConvert = reuseUpToDate(plan, tool, previous, next, results);
+  const std::vector<size_t> toConvert = reuseUpToDate(plan, tool, !build.noCache, previous, next, results);
 
   // 3. schedule
   copyThroughPasses(plan, results);
   convertInWorkers(plan, toConvert, tool, {build.jobs, build.jobTimeoutSeconds}, results, next);
-  const int removed = removeStaleOutputs(plan, previous, next, outDir);
+  const int removed = removeStaleOutputs(plan, previous, outDir);
 
   // 4. report
-  int errors = 0;
+  int errors = static_cast<int>(plan.skippedEntries.size());
   for (const auto& result : results) {
     std::cerr << result.log;
     errors += result.errors;

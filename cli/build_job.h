@@ -35,6 +35,9 @@ struct JobResult {
   std::vector<std::string> outputs;  // per stage; only for stages whose report says ok
   std::vector<std::string> dependencies;
   std::string key;  // the cache key of what was converted
+  // Whether the same tool, options and input bytes would fail the same way (diagnostics): such a
+  // failure is cached like a success. Not when an input could not be read.
+  bool replayable = true;
 };
 
 }  // namespace stereoshift

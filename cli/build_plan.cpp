@@ -63,26 +63,67 @@ std::string applyOptionWords(CliOptions& o, const std::vector<std::string>& word
   return "";
 }
 
-// Shader files under `root`, grouped into pipelines keyed by their path relative to `root`; the
-// directories walked are appended to `directories`.
-std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir,
-                                                           std::vector<fs::path>* directories) {
-  std::error_code ec;
-  std::vector<fs::path> files;
-  directories->push_back(root);
-  // An output directory inside the source tree is not part of the source.
-  fs::path outCanonical = fs::weakly_canonical(outDir, ec);
-  for (auto it = fs::recursive_directory_iterator(root, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (ec) break;
-    if (it->is_directory()) {
-      if (fs::weakly_canonical(it->path(), ec) == outCanonical) {
-        it.disable_recursion_pending();
+// Walks the tree one directory at a time (recursive_directory_iterator stops at the first entry
+// it cannot read, and its entries' queries throw on a symbolic-link loop): an entry that cannot be
+// examined is reported and skipped, and the rest of the tree is walked. Symbolic links to
+// directories are listed (a build system watches them) but not entered, as before.
+class TreeWalk {
+ public:
+  TreeWalk(const fs::path& outDir, Plan& plan) : plan_(plan) {
+    std::error_code ec;
+    outCanonical_ = fs::weakly_canonical(outDir, ec);
+  }
+
+  // Appends the shader files under `dir` to `files`, the directories to the plan's dependencies.
+  void walk(const fs::path& dir, std::vector<fs::path>& files) {
+    std::error_code ec;
+    fs::directory_iterator it(dir, ec);
+    for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
+      const fs::path& path = it->path();
+      // Cached from the directory listing unless the entry is a link, which is followed here.
+      std::error_code entryError;
+      const bool isDirectory = it->is_directory(entryError);
+      const bool isFile = !entryError && !isDirectory && it->is_regular_file(entryError);
+      if (entryError) {
+        // A dangling link has nothing behind it to convert (skipped silently, as before).
+        if (entryError != std::errc::no_such_file_or_directory) skipped(path, entryError, "cannot examine this entry");
         continue;
       }
-      directories->push_back(it->path());
+      if (isDirectory) {
+        // An output directory inside the source tree is not part of the source.
+        if (fs::weakly_canonical(path, entryError) == outCanonical_) continue;
+        plan_.extraDependencies.push_back(path);
+        if (!it->is_symlink(entryError)) walk(path, files);
+      } else if (isFile && stageFromPath(path.string())) {
+        files.push_back(path);
+      }
     }
-    if (it->is_regular_file() && stageFromPath(it->path().string())) files.push_back(it->path());
+    // A directory that vanished while the tree was walked (a process's, under /proc) held nothing.
+    if (ec && ec != std::errc::no_such_file_or_directory)
+      skipped(dir, ec, "cannot read this directory", /*mayHoldShaders=*/true);
   }
+
+ private:
+  // An entry with a shader's name (or a directory, which may hold shaders) is an error: the run
+  // goes on but says something was not converted. Anything else is a warning.
+  void skipped(const fs::path& path, const std::error_code& why, const std::string& what, bool mayHoldShaders = false) {
+    const bool error = mayHoldShaders || stageFromPath(path.string()).has_value();
+    (error ? plan_.skippedEntries : plan_.warnings)
+        .push_back(path.string() + (error ? ": error: " : ": warning: ") + what + " (" + why.message() +
+                   "); skipped" + (error ? ", the other shaders are converted regardless" : ""));
+  }
+
+  Plan& plan_;
+  fs::path outCanonical_;
+};
+
+// Shader files under `root`, grouped into pipelines keyed by their path relative to `root`; the
+// directories walked are added to the plan's dependencies, entries that cannot be read to its
+// skipped entries or warnings.
+std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir, Plan& plan) {
+  std::vector<fs::path> files;
+  plan.extraDependencies.push_back(root);
+  TreeWalk(outDir, plan).walk(root, files);
   std::sort(files.begin(), files.end());
   std::map<std::string, std::vector<fs::path>> pipelines;
   // Lexical: every file came from walking `root` (fs::relative would resolve both paths per file).
@@ -138,14 +179,16 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
 Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOptions& base) {
   Plan plan;
   plan.root = root;
+  plan.outputDir = outDir;
   PassOptions options = passOptions(base, PassMode::Stereo);
-  for (const auto& [key, stages] : findPipelines(root, outDir, &plan.extraDependencies))
+  for (const auto& [key, stages] : findPipelines(root, outDir, plan))
     addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
   return plan;
 }
 
 Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const CliOptions& base) {
   Plan plan;
+  plan.outputDir = outDir;
   plan.extraDependencies.push_back(manifestFile);
   SceneManifest manifest;
   auto check = [](const std::vector<std::string>& words) {
@@ -160,7 +203,7 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
                           "' does not exist");
     return plan;
   }
-  auto pipelines = findPipelines(plan.root, outDir, &plan.extraDependencies);
+  auto pipelines = findPipelines(plan.root, outDir, plan);
 
   CliOptions defaults = base;
   for (const auto& o : manifest.defaults) applyOptionWords(defaults, o.words);  // checked while loading
@@ -214,6 +257,17 @@ bool insideDirectory(const fs::path& path, const fs::path& directory) {
 }
 
 std::string checkOutputPlacement(const Plan& plan, const fs::path& outDir) {
+  // A link into the tree would put outputs among the sources, and the walk skips its target as the
+  // output directory. (A real output folder nested in the tree is fine: the walk skips it.)
+  fs::path bare = outDir.lexically_normal();
+  if (!bare.has_filename()) bare = bare.parent_path();  // `out/`: the link, not what it points at
+  std::error_code linkError;
+  if (fs::is_symlink(bare, linkError)) {
+    fs::path target = fs::weakly_canonical(bare, linkError), root = fs::weakly_canonical(plan.root, linkError);
+    if (insideDirectory(target, root))
+      return outDir.string() + ": error: the output directory is a symbolic link into the source tree (to '" +
+             target.string() + "'); outputs would be written among the sources";
+  }
   // Resolved paths: each directory once, then a file's own name unless the file itself is a
   // symbolic link. (Native strings as keys: std::filesystem::path compares component by component.)
   std::error_code ec;
@@ -232,6 +286,23 @@ std::string checkOutputPlacement(const Plan& plan, const fs::path& outDir) {
     for (const auto& out : job.outputs)
       if (!insideDirectory(out, outDir) || inputs.count(resolved(out)))
         return out.string() + ": error: output would be outside the output directory or overwrite an input";
+  return "";
+}
+
+std::string linkOutOfOutputDirectory(const fs::path& output, const fs::path& outDir) {
+  std::error_code ec;
+  const fs::path outCanonical = fs::weakly_canonical(outDir, ec);
+  fs::path walked = outDir;
+  for (const auto& component : output.lexically_relative(outDir)) {
+    walked /= component;
+    fs::file_status status = fs::symlink_status(walked, ec);
+    if (!fs::exists(status)) break;  // nothing further exists yet: written as plain files
+    if (!fs::is_symlink(status)) continue;
+    fs::path target = fs::weakly_canonical(walked, ec);
+    if (!insideDirectory(target, outCanonical))
+      return "'" + walked.string() + "' is a symbolic link out of the output directory (to '" + target.string() +
+             "'); not written through it";
+  }
   return "";
 }
 

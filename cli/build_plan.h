@@ -14,9 +14,13 @@ namespace stereoshift {
 
 struct Plan {
   std::filesystem::path root;
+  std::filesystem::path outputDir;
   std::vector<BuildJob> jobs;
   std::vector<std::string> errors;    // file:line:col: error: ...
   std::vector<std::string> warnings;
+  // Entries of the tree that could not be examined (file: error: ...): reported and counted as
+  // errors, but the rest of the tree converts.
+  std::vector<std::string> skippedEntries;
   // The manifest and every directory of the tree: a build system that compares timestamps sees a
   // directory change when a shader is added or removed in it, so the step reruns.
   std::vector<std::filesystem::path> extraDependencies;
@@ -31,8 +35,12 @@ Plan planManifest(const std::filesystem::path& manifestFile, const std::filesyst
 // Lexically: whether `path` is `directory` or lies under it.
 bool insideDirectory(const std::filesystem::path& path, const std::filesystem::path& directory);
 
-// Outputs go only under the output directory, and never onto an input: the first output that would
-// break this, as an error message, or "".
+// Outputs go only under the output directory, never onto an input, and the output directory is not
+// a link into the source tree: the first breach, as an error message, or "".
 std::string checkOutputPlacement(const Plan& plan, const std::filesystem::path& outDir);
+
+// Where writing `output` (a path under `outDir`) would follow a symbolic link out of `outDir`
+// (the output itself, or a directory on the way to it): why, as a message; "" when it would not.
+std::string linkOutOfOutputDirectory(const std::filesystem::path& output, const std::filesystem::path& outDir);
 
 }  // namespace stereoshift

@@ -41,7 +41,8 @@ bool getString(const std::string& in, size_t& at, std::string* s) {
 
 std::string serialize(const JobResult& r) {
   nlohmann::json head = {{"errors", r.errors}, {"log", r.log}, {"reports", r.reports},
-                         {"dependencies", r.dependencies}, {"key", r.key}, {"outputs", r.outputs.size()}};
+                         {"dependencies", r.dependencies}, {"key", r.key}, {"outputs", r.outputs.size()},
+                         {"replayable", r.replayable}};
   std::string out;
   putString(out, head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   for (const auto& o : r.outputs) putString(out, o);
@@ -59,6 +60,7 @@ bool deserialize(const std::string& in, JobResult* r) {
   r->reports = head.value("reports", nlohmann::json::array());
   r->dependencies = head.value("dependencies", std::vector<std::string>{});
   r->key = head.value("key", "");
+  r->replayable = head.value("replayable", false);
   size_t count = head.value("outputs", size_t{0});
   r->outputs.resize(count);
   for (auto& o : r->outputs)
@@ -74,6 +76,7 @@ JobResult convertJob(const BuildJob& job, const std::string& tool) {
   std::vector<std::string> paths;
   for (const auto& p : job.stages) paths.push_back(p.string());
   result.errors += readSources(paths, &sources, log);
+  result.replayable = result.errors == 0;  // a read error says nothing about the bytes
   if (!result.errors) {
     std::vector<TranspileResult> converted = transpilePipeline(sources, job.options);
     result.outputs.resize(converted.size());
@@ -151,7 +154,7 @@ void copyThroughPasses(const Plan& plan, std::vector<JobResult>& results) {
         results[i].log += job.stages[k].string() + ": error: cannot read file\n";
         report["ok"] = false;
         ++results[i].errors;
-      } else if (!writeIfChanged(job.outputs[k], bytes, &error)) {
+      } else if (!writeIfChanged(plan.outputDir, job.outputs[k], bytes, &error)) {
         results[i].log += job.outputs[k].string() + ": error: " + error + "\n";
         report["ok"] = false;
         ++results[i].errors;
@@ -177,13 +180,15 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
       result = workerFailure(job, outcome.completed ? "sent back an unreadable result" : outcome.failure);
     } else {
       nlohmann::json outputs = nlohmann::json::object();
+      bool writeFailed = false;
       for (size_t k = 0; k < result.outputs.size() && k < job.outputs.size(); ++k) {
         if (!result.reports[k].value("ok", false)) continue;
         std::string error;
-        if (!writeIfChanged(job.outputs[k], result.outputs[k], &error)) {
+        if (!writeIfChanged(plan.outputDir, job.outputs[k], result.outputs[k], &error)) {
           result.log += job.outputs[k].string() + ": error: " + error + "\n";
           result.reports[k]["ok"] = false;
           ++result.errors;
+          writeFailed = true;
           continue;
         }
         outputs[job.outputs[k].string()] = hashBytes(result.outputs[k]);
@@ -192,7 +197,8 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
         r["cached"] = false;
         r["timings_ms"]["pipeline_wall"] = outcome.seconds * 1000.0;
       }
-      if (!result.errors) recordConverted(next, job, result, std::move(outputs));
+      // A failure to write depends on the disk, not on the inputs: never cached.
+      if (!writeFailed && (!result.errors || result.replayable)) recordFinished(next, plan, job, result, std::move(outputs));
     }
     ++finished;
     if (tty) drawProgress(finished, toConvert.size(), job.id);

@@ -22,7 +22,8 @@ struct ScheduleOptions {
 };
 
 // Converts plan.jobs[i] for every i in `toConvert` in worker processes, writes their outputs, and
-// records the jobs that converted without error in `next`. Shows progress on a terminal.
+// records in `next` the jobs that converted, or failed with diagnostics the same inputs repeat.
+// Shows progress on a terminal.
 void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, const std::string& tool,
                       const ScheduleOptions& options, std::vector<JobResult>& results, Cache& next);
 
