@@ -1,0 +1,309 @@
+// The plan of `stereoshift build`: the tree walk (or the manifest's passes over it) made into jobs.
+#include "cli/build_plan.h"
+
+#include "cli/scene_manifest.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+namespace {
+
+// `dir/name.vert` -> `dir/name.<variant>.vert` (variant before every extension).
+fs::path variantPath(const fs::path& path, const std::string& variant) {
+  std::string name = path.filename().string();
+  size_t dot = name.find('.');
+  std::string renamed = dot == std::string::npos ? name + "." + variant
+                                                 : name.substr(0, dot) + "." + variant + name.substr(dot);
+  return path.parent_path() / renamed;
+}
+
+// The conversion-option keys a manifest may set: the CLI long names, less the per-file and
+// debugging ones.
+std::vector<std::string> manifestOptionKeys() {
+  CliOptions scratch;
+  CLI::App app;
+  addConversionOptions(app, scratch);
+  static const std::set<std::string> excluded = {"help", "report", "pass", "print-all", "validate-each", "stage", "D", "I"};
+  std::vector<std::string> keys;
+  for (const CLI::Option* option : app.get_options())
+    for (const auto& name : option->get_lnames())
+      if (!excluded.count(name)) keys.push_back(name);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// Applies command-line words (`--block-name X`, `-D A`) on top of `o`; lists (defines, include
+// directories) are appended to. Returns an error message or "".
+std::string applyOptionWords(CliOptions& o, const std::vector<std::string>& words) {
+  if (words.empty()) return "";
+  CliOptions updated = o;
+  updated.t.defines.clear();
+  updated.t.includeDirs.clear();
+  CLI::App app;
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  addConversionOptions(app, updated);
+  std::vector<std::string> reversed(words.rbegin(), words.rend());  // CLI11 parses from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    return e.what();
+  }
+  std::vector<std::string> defines = o.t.defines, includes = o.t.includeDirs;
+  defines.insert(defines.end(), updated.t.defines.begin(), updated.t.defines.end());
+  includes.insert(includes.end(), updated.t.includeDirs.begin(), updated.t.includeDirs.end());
+  updated.t.defines = defines;
+  updated.t.includeDirs = includes;
+  if (auto error = finishOptions(updated)) return *error;
+  o = std::move(updated);
+  return "";
+}
+
+// Walks the tree one directory at a time (recursive_directory_iterator stops at the first entry
+// it cannot read, and its entries' queries throw on a symbolic-link loop): an entry that cannot be
+// examined is reported and skipped, and the rest of the tree is walked. Symbolic links to
+// directories are listed (a build system watches them) but not entered, as before.
+class TreeWalk {
+ public:
+  TreeWalk(const fs::path& outDir, Plan& plan) : plan_(plan) {
+    std::error_code ec;
+    outCanonical_ = fs::weakly_canonical(outDir, ec);
+  }
+
+  // Appends the shader files under `dir` to `files`, the directories to the plan's dependencies.
+  void walk(const fs::path& dir, std::vector<fs::path>& files) {
+    std::error_code ec;
+    fs::directory_iterator it(dir, ec);
+    for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
+      const fs::path& path = it->path();
+      // Cached from the directory listing unless the entry is a link, which is followed here.
+      std::error_code entryError;
+      const bool isDirectory = it->is_directory(entryError);
+      const bool isFile = !entryError && !isDirectory && it->is_regular_file(entryError);
+      if (entryError) {
+        // A dangling link has nothing behind it to convert (skipped silently, as before).
+        if (entryError != std::errc::no_such_file_or_directory) skipped(path, entryError, "cannot examine this entry");
+        continue;
+      }
+      if (isDirectory) {
+        // An output directory inside the source tree is not part of the source.
+        if (fs::weakly_canonical(path, entryError) == outCanonical_) continue;
+        plan_.extraDependencies.push_back(path);
+        if (!it->is_symlink(entryError)) walk(path, files);
+      } else if (isFile && stageFromPath(path.string())) {
+        files.push_back(path);
+      }
+    }
+    // A directory that vanished while the tree was walked (a process's, under /proc) held nothing.
+    if (ec && ec != std::errc::no_such_file_or_directory)
+      skipped(dir, ec, "cannot read this directory", /*mayHoldShaders=*/true);
+  }
+
+ private:
+  // An entry with a shader's name (or a directory, which may hold shaders) is an error: the run
+  // goes on but says something was not converted. Anything else is a warning.
+  void skipped(const fs::path& path, const std::error_code& why, const std::string& what, bool mayHoldShaders = false) {
+    const bool error = mayHoldShaders || stageFromPath(path.string()).has_value();
+    (error ? plan_.skippedEntries : plan_.warnings)
+        .push_back(path.string() + (error ? ": error: " : ": warning: ") + what + " (" + why.message() +
+                   "); skipped" + (error ? ", the other shaders are converted regardless" : ""));
+  }
+
+  Plan& plan_;
+  fs::path outCanonical_;
+};
+
+// Shader files under `root`, grouped into pipelines keyed by their path relative to `root`; the
+// directories walked are added to the plan's dependencies, entries that cannot be read to its
+// skipped entries or warnings.
+std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir, Plan& plan) {
+  std::vector<fs::path> files;
+  plan.extraDependencies.push_back(root);
+  TreeWalk(outDir, plan).walk(root, files);
+  std::sort(files.begin(), files.end());
+  std::map<std::string, std::vector<fs::path>> pipelines;
+  // Lexical: every file came from walking `root` (fs::relative would resolve both paths per file).
+  for (const auto& f : files) pipelines[pipelineKey(f.lexically_relative(root).generic_string())].push_back(f);
+  return pipelines;
+}
+
+// The options a pass converts with, and their description for the cache key (computed once per
+// pass: describing the options per pipeline cost a fifth of a no-op rebuild of a large tree).
+struct PassOptions {
+  TranspileOptions options;
+  std::string fingerprint;  // the options (before per-pipeline include roots) and the mode
+};
+
+PassOptions passOptions(const CliOptions& options, PassMode mode) {
+  PassOptions p{options.t, ""};
+  if (mode == PassMode::Deferred) p.options.deferredUnprojection = true;
+  if (mode == PassMode::UiAtDepth) p.options.hudAtDepth = true;
+  nlohmann::json fingerprint = describeOptions(p.options);
+  fingerprint["mode"] = toString(mode);
+  p.fingerprint = fingerprint.dump();
+  return p;
+}
+
+void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const std::vector<fs::path>& stages,
+            const PassOptions& options, const std::string& pass, PassMode mode, bool variant) {
+  BuildJob job;
+  job.id = variant ? key + "@" + pass : key;
+  job.stages = stages;
+  job.pass = pass;
+  job.mode = mode;
+  job.options = options.options;
+  job.fingerprint = options.fingerprint;
+  // Each shader's directory and an `include` directory beside it are include roots.
+  for (const auto& s : stages) {
+    fs::path dir = s.parent_path();
+    job.options.includeDirs.push_back(dir.string());
+    std::error_code ec;
+    if (fs::is_directory(dir / "include", ec)) job.options.includeDirs.push_back((dir / "include").string());
+  }
+  for (size_t i = options.options.includeDirs.size(); i < job.options.includeDirs.size(); ++i)
+    job.fingerprint += "\n-I" + job.options.includeDirs[i];
+  for (const auto& s : stages) {
+    fs::path out = outDir / s.lexically_relative(plan.root);
+    if (variant) out = variantPath(out, pass);
+    job.outputs.push_back(out);
+  }
+  plan.jobs.push_back(std::move(job));
+}
+
+}  // namespace
+
+Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOptions& base) {
+  Plan plan;
+  plan.root = root;
+  plan.outputDir = outDir;
+  PassOptions options = passOptions(base, PassMode::Stereo);
+  for (const auto& [key, stages] : findPipelines(root, outDir, plan))
+    addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
+  return plan;
+}
+
+Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const CliOptions& base) {
+  Plan plan;
+  plan.outputDir = outDir;
+  plan.extraDependencies.push_back(manifestFile);
+  SceneManifest manifest;
+  auto check = [](const std::vector<std::string>& words) {
+    CliOptions scratch;
+    return applyOptionWords(scratch, words);
+  };
+  if (!loadSceneManifest(manifestFile, manifestOptionKeys(), check, &manifest, &plan.errors)) return plan;
+  plan.root = manifest.sourceRoot;
+  std::error_code ec;
+  if (!fs::is_directory(plan.root, ec)) {
+    plan.errors.push_back(manifestFile.string() + ":1:1: error: source directory '" + plan.root.string() +
+                          "' does not exist");
+    return plan;
+  }
+  auto pipelines = findPipelines(plan.root, outDir, plan);
+
+  CliOptions defaults = base;
+  for (const auto& o : manifest.defaults) applyOptionWords(defaults, o.words);  // checked while loading
+
+  // Which passes use each pipeline, in manifest order.
+  std::map<std::string, std::vector<const ScenePass*>> users;
+  for (const auto& pass : manifest.passes)
+    for (const auto& [pattern, where] : pass.pipelines) {
+      int matched = 0;
+      for (const auto& [key, stages] : pipelines)
+        if (pipelineMatches(pattern, key)) {
+          auto& list = users[key];
+          if (std::find(list.begin(), list.end(), &pass) == list.end()) list.push_back(&pass);
+          ++matched;
+        }
+      if (!matched)
+        plan.errors.push_back(manifestFile.string() + ":" + std::to_string(where.line) + ":" +
+                              std::to_string(where.column) + ": error: pass '" + pass.name + "': '" + pattern +
+                              "' matches no pipeline under " + plan.root.string());
+    }
+  std::map<const ScenePass*, PassOptions> optionsOf;
+  for (const auto& pass : manifest.passes) {
+    CliOptions options = defaults;
+    for (const auto& o : pass.options) applyOptionWords(options, o.words);
+    optionsOf.emplace(&pass, passOptions(options, pass.mode));
+  }
+  std::vector<std::string> unused;
+  for (const auto& [key, stages] : pipelines) {
+    auto it = users.find(key);
+    if (it == users.end()) {
+      unused.push_back(key);
+      continue;
+    }
+    bool variants = it->second.size() > 1;
+    for (const ScenePass* pass : it->second) addJob(plan, outDir, key, stages, optionsOf.at(pass), pass->name, pass->mode, variants);
+  }
+  if (!unused.empty()) {
+    std::string list;
+    for (size_t i = 0; i < unused.size() && i < 5; ++i) list += (i ? ", " : "") + unused[i];
+    if (unused.size() > 5) list += ", ...";
+    plan.warnings.push_back(manifestFile.string() + ": warning: " + std::to_string(unused.size()) +
+                            " pipeline(s) used by no pass are not emitted: " + list);
+  }
+  return plan;
+}
+
+bool insideDirectory(const fs::path& path, const fs::path& directory) {
+  fs::path p = path.lexically_normal(), d = directory.lexically_normal();
+  auto [end, _] = std::mismatch(d.begin(), d.end(), p.begin(), p.end());
+  return end == d.end() || (std::next(end) == d.end() && end->empty());
+}
+
+std::string checkOutputPlacement(const Plan& plan, const fs::path& outDir) {
+  // A link into the tree would put outputs among the sources, and the walk skips its target as the
+  // output directory. (A real output folder nested in the tree is fine: the walk skips it.)
+  fs::path bare = outDir.lexically_normal();
+  if (!bare.has_filename()) bare = bare.parent_path();  // `out/`: the link, not what it points at
+  std::error_code linkError;
+  if (fs::is_symlink(bare, linkError)) {
+    fs::path target = fs::weakly_canonical(bare, linkError), root = fs::weakly_canonical(plan.root, linkError);
+    if (insideDirectory(target, root))
+      return outDir.string() + ": error: the output directory is a symbolic link into the source tree (to '" +
+             target.string() + "'); outputs would be written among the sources";
+  }
+  // Resolved paths: each directory once, then a file's own name unless the file itself is a
+  // symbolic link. (Native strings as keys: std::filesystem::path compares component by component.)
+  std::error_code ec;
+  std::map<std::string, fs::path> resolvedDirectories;
+  auto resolved = [&](const fs::path& file) {
+    if (fs::is_symlink(file, ec)) return fs::weakly_canonical(file, ec).native();
+    fs::path parent = file.parent_path();
+    auto [at, fresh] = resolvedDirectories.try_emplace(parent.native());
+    if (fresh) at->second = fs::weakly_canonical(parent.empty() ? fs::path(".") : parent, ec);
+    return (at->second / file.filename()).native();
+  };
+  std::set<std::string> inputs;
+  for (const auto& job : plan.jobs)
+    for (const auto& s : job.stages) inputs.insert(resolved(s));
+  for (const auto& job : plan.jobs)
+    for (const auto& out : job.outputs)
+      if (!insideDirectory(out, outDir) || inputs.count(resolved(out)))
+        return out.string() + ": error: output would be outside the output directory or overwrite an input";
+  return "";
+}
+
+std::string linkOutOfOutputDirectory(const fs::path& output, const fs::path& outDir) {
+  std::error_code ec;
+  const fs::path outCanonical = fs::weakly_canonical(outDir, ec);
+  fs::path walked = outDir;
+  for (const auto& component : output.lexically_relative(outDir)) {
+    walked /= component;
+    fs::file_status status = fs::symlink_status(walked, ec);
+    if (!fs::exists(status)) break;  // nothing further exists yet: written as plain files
+    if (!fs::is_symlink(status)) continue;
+    fs::path target = fs::weakly_canonical(walked, ec);
+    if (!insideDirectory(target, outCanonical))
+      return "'" + walked.string() + "' is a symbolic link out of the output directory (to '" + target.string() +
+             "'); not written through it";
+  }
+  return "";
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,46 @@
+// The plan of `stereoshift build`: turns a source tree (or a scene manifest and the tree it names)
+// into the jobs to run, one per pipeline (stages grouped by base name), or one per pass using it
+// when a manifest gives a pipeline to several passes (`name.<pass>.vert`).
+#pragma once
+
+#include "cli/build_job.h"
+#include "cli/cli_support.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct Plan {
+  std::filesystem::path root;
+  std::filesystem::path outputDir;
+  std::vector<BuildJob> jobs;
+  std::vector<std::string> errors;    // file:line:col: error: ...
+  std::vector<std::string> warnings;
+  // Entries of the tree that could not be examined (file: error: ...): reported and counted as
+  // errors, but the rest of the tree converts.
+  std::vector<std::string> skippedEntries;
+  // The manifest and every directory of the tree: a build system that compares timestamps sees a
+  // directory change when a shader is added or removed in it, so the step reruns.
+  std::vector<std::filesystem::path> extraDependencies;
+};
+
+// Every pipeline under the directory `root`, converted with `base`.
+Plan planDirectory(const std::filesystem::path& root, const std::filesystem::path& outDir, const CliOptions& base);
+// The pipelines the passes of the manifest use, each with its pass's options.
+Plan planManifest(const std::filesystem::path& manifestFile, const std::filesystem::path& outDir,
+                  const CliOptions& base);
+
+// Lexically: whether `path` is `directory` or lies under it.
+bool insideDirectory(const std::filesystem::path& path, const std::filesystem::path& directory);
+
+// Outputs go only under the output directory, never onto an input, and the output directory is not
+// a link into the source tree: the first breach, as an error message, or "".
+std::string checkOutputPlacement(const Plan& plan, const std::filesystem::path& outDir);
+
+// Where writing `output` (a path under `outDir`) would follow a symbolic link out of `outDir`
+// (the output itself, or a directory on the way to it): why, as a message; "" when it would not.
+std::string linkOutOfOutputDirectory(const std::filesystem::path& output, const std::filesystem::path& outDir);
+
+}  // namespace stereoshift

@@ -1,0 +1,87 @@
+// The report of `stereoshift build`: the results of every job, in path order, as the JSON report
+// and the summary line.
+#include "cli/build_report.h"
+
+#include <iostream>
+#include <map>
+#include <string_view>
+
+namespace stereoshift {
+
+std::string reportEntryText(const nlohmann::json& report) {
+  std::string text = report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace), indented;
+  indented.reserve(text.size() + text.size() / 8);
+  for (char c : text) {
+    indented += c;
+    if (c == '\n') indented += "    ";
+  }
+  return indented;
+}
+
+std::pair<bool, std::string> reportFacts(const nlohmann::json& report) {
+  return {report.value("ok", false), report.value("classification", "?")};
+}
+
+// A converted entry starts with "cached": false ("cached" sorts before every other key); an
+// up-to-date one says true.
+constexpr std::string_view kConvertedPrefix = "{\n      \"cached\": false,";
+constexpr std::string_view kCachedPrefix = "{\n      \"cached\": true,";
+
+bool markEntryCached(const std::string& convertedText, std::string* cachedText) {
+  if (!convertedText.starts_with(kConvertedPrefix)) return false;
+  *cachedText = std::string(kCachedPrefix) + convertedText.substr(kConvertedPrefix.size());
+  return true;
+}
+
+BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& results, int removed,
+                          const std::string& source) {
+  BuildReport report;
+  report.removed = removed;
+  std::string shaderEntries;
+  std::map<std::string, int> counts;
+  // One entry into the report and the summary; `total` is the count an ok entry joins.
+  auto addEntry = [&](const std::pair<bool, std::string>& facts, int& total, const std::string& text) {
+    const auto& [ok, classification] = facts;
+    counts[ok ? classification : "failed"]++;
+    ++(ok ? total : report.failed);
+    shaderEntries += (report.shaders++ ? ",\n    " : "\n    ") + text;
+  };
+  for (const auto& d : plan.extraDependencies) report.dependencies.push_back(d.string());
+  for (size_t i = 0; i < plan.jobs.size(); ++i) {
+    for (const auto& s : plan.jobs[i].stages) report.dependencies.push_back(s.string());
+    report.dependencies.insert(report.dependencies.end(), results[i].dependencies.begin(),
+                               results[i].dependencies.end());
+    for (size_t k = 0; k < results[i].reportTexts.size(); ++k)  // up to date
+      addEntry(results[i].reportFacts[k], report.upToDate, results[i].reportTexts[k]);
+    for (const auto& r : results[i].reports)
+      addEntry(reportFacts(r), convertsShaders(plan.jobs[i].mode) ? report.converted : report.copied,
+               reportEntryText(r));
+  }
+  nlohmann::json summary;
+  summary["tool"] = std::string("stereoshift ") + version();
+  summary["source"] = source;
+  summary["summary"] = {{"pipelines", plan.jobs.size()}, {"shaders", report.shaders},
+                        {"converted", report.converted}, {"up_to_date", report.upToDate},
+                        {"copied_by_pass", report.copied}, {"failed", report.failed},
+                        {"removed_stale_outputs", removed}};
+  summary["classification_counts"] = counts;
+  summary["shaders"] = "";  // the entries go in as text
+  report.text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  static constexpr std::string_view kShadersSlot = "\n  \"shaders\": \"\"";  // unique: one top-level key
+  size_t slot = report.text.find(kShadersSlot);
+  if (slot != std::string::npos)
+    report.text.replace(slot, kShadersSlot.size(),
+                        "\n  \"shaders\": [" + shaderEntries + (report.shaders ? "\n  ]" : "]"));
+  return report;
+}
+
+void printSummaryLine(const BuildReport& report, const std::string& source, const std::string& output) {
+  std::cerr << "stereoshift: " << report.shaders << " shaders from " << source << " into " << output << ": "
+            << report.converted << " converted, " << report.upToDate << " up to date";
+  if (report.copied) std::cerr << ", " << report.copied << " copied (mono/post/UI passes)";
+  if (report.failed) std::cerr << ", " << report.failed << " failed";
+  if (report.removed) std::cerr << ", " << report.removed << " stale outputs removed";
+  std::cerr << "\n";
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,216 @@
+// The schedule of `stereoshift build`: copy-through in the parent, conversions in worker processes,
+// the worker's side of a conversion and the result it sends back, progress.
+#include "cli/build_schedule.h"
+
+#include "cli/cli_support.h"
+#include "cli/worker_pool.h"
+#include "transpiler/frontend/front_end.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+namespace {
+
+// ---- what a worker sends back -------------------------------------------------------------------
+
+void putString(std::string& out, const std::string& s) {
+  uint64_t size = s.size();
+  out.append(reinterpret_cast<const char*>(&size), sizeof size);
+  out += s;
+}
+
+bool getString(const std::string& in, size_t& at, std::string* s) {
+  uint64_t size;
+  if (in.size() - at < sizeof size) return false;
+  std::memcpy(&size, in.data() + at, sizeof size);
+  at += sizeof size;
+  if (in.size() - at < size) return false;
+  *s = in.substr(at, size);
+  at += size;
+  return true;
+}
+
+std::string serialize(const JobResult& r) {
+  nlohmann::json head = {{"errors", r.errors}, {"log", r.log}, {"reports", r.reports},
+                         {"dependencies", r.dependencies}, {"key", r.key}, {"outputs", r.outputs.size()},
+                         {"replayable", r.replayable}};
+  std::string out;
+  putString(out, head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  for (const auto& o : r.outputs) putString(out, o);
+  return out;
+}
+
+bool deserialize(const std::string& in, JobResult* r) {
+  size_t at = 0;
+  std::string text;
+  if (!getString(in, at, &text)) return false;
+  nlohmann::json head = nlohmann::json::parse(text, nullptr, false);
+  if (head.is_discarded()) return false;
+  r->errors = head.value("errors", 1);
+  r->log = head.value("log", "");
+  r->reports = head.value("reports", nlohmann::json::array());
+  r->dependencies = head.value("dependencies", std::vector<std::string>{});
+  r->key = head.value("key", "");
+  r->replayable = head.value("replayable", false);
+  size_t count = head.value("outputs", size_t{0});
+  r->outputs.resize(count);
+  for (auto& o : r->outputs)
+    if (!getString(in, at, &o)) return false;
+  return true;
+}
+
+// Runs in a worker: converts one pipeline, keeping everything in memory.
+JobResult convertJob(const BuildJob& job, const std::string& tool) {
+  JobResult result;
+  std::ostringstream log;
+  std::vector<SourceFile> sources;
+  std::vector<std::string> paths;
+  for (const auto& p : job.stages) paths.push_back(p.string());
+  result.errors += readSources(paths, &sources, log);
+  result.replayable = result.errors == 0;  // a read error says nothing about the bytes
+  if (!result.errors) {
+    std::vector<TranspileResult> converted = transpilePipeline(sources, job.options);
+    result.outputs.resize(converted.size());
+    for (size_t i = 0; i < converted.size(); ++i) {
+      auto& r = converted[i];
+      int diagnosticErrors = printDiagnostics(r.diagnostics, log);
+      if (!r.passLog.empty()) log << r.passLog;
+      for (const auto& inc : r.includedFiles) result.dependencies.push_back(inc);
+      r.report["ok"] = r.ok;
+      if (!job.pass.empty()) {
+        r.report["pass"] = job.pass;
+        r.report["mode"] = toString(job.mode);
+      }
+      if (r.ok) {
+        result.outputs[i] = std::move(r.output);
+        r.report["output_file"] = job.outputs[i].string();
+      } else {
+        result.errors += std::max(1, diagnosticErrors);
+      }
+      result.reports.push_back(std::move(r.report));
+    }
+  }
+  std::sort(result.dependencies.begin(), result.dependencies.end());
+  result.dependencies.erase(std::unique(result.dependencies.begin(), result.dependencies.end()), result.dependencies.end());
+  result.log = log.str();
+  result.key = jobKey(tool, job, result.dependencies, &sources);
+  return result;
+}
+
+// The dialect of a shader, for scheduling: HLSL, SPIR-V, or the GLSL version and profile. Shaders
+// of one dialect share glslang's built-in symbol tables inside a worker.
+std::string dialectOf(const fs::path& path) {
+  std::string name = path.filename().string();
+  if (name.ends_with(".hlsl")) return "hlsl";
+  if (name.ends_with(".spv")) return "spirv";
+  std::string text;
+  if (!readFile(path.string(), &text)) return "";
+  VersionLine v = findVersion(text);
+  return "glsl " + std::to_string(v.version) + (v.es ? " es" : "");
+}
+
+void drawProgress(size_t done, size_t total, const std::string& what) {
+  constexpr int width = 24;
+  int filled = total ? static_cast<int>(width * done / total) : width;
+  std::string bar(static_cast<size_t>(filled), '=');
+  if (filled < width) bar += '>' + std::string(static_cast<size_t>(width - filled - 1), ' ');
+  std::cerr << "\r[" << bar << "] " << done << "/" << total << " " << what << "\x1b[K" << std::flush;
+}
+
+// The result of a job whose worker did not send one back (crashed, timed out, garbled).
+JobResult workerFailure(const BuildJob& job, const std::string& why) {
+  std::string stages;
+  for (const auto& s : job.stages) stages += (stages.empty() ? "" : ", ") + s.filename().string();
+  JobResult result;
+  result.errors = 1;
+  result.log = job.stages.front().string() + ": error: the conversion of pipeline '" + job.id + "' (" + stages +
+               ") " + why + "; the other shaders are converted regardless\n";
+  for (const auto& s : job.stages)
+    result.reports.push_back({{"file", s.string()}, {"ok", false}, {"failure", why}, {"classification", "failed"}});
+  return result;
+}
+
+}  // namespace
+
+void copyThroughPasses(const Plan& plan, std::vector<JobResult>& results) {
+  for (size_t i = 0; i < plan.jobs.size(); ++i) {
+    const BuildJob& job = plan.jobs[i];
+    if (convertsShaders(job.mode)) continue;
+    for (size_t k = 0; k < job.stages.size(); ++k) {
+      nlohmann::json report = {{"file", job.stages[k].string()}, {"pass", job.pass}, {"mode", toString(job.mode)},
+                               {"classification", std::string(toString(job.mode)) + "-pass"},
+                               {"output", "copied"}, {"changed", false}};
+      std::string bytes, error;
+      if (!readFile(job.stages[k].string(), &bytes)) {
+        results[i].log += job.stages[k].string() + ": error: cannot read file\n";
+        report["ok"] = false;
+        ++results[i].errors;
+      } else if (!writeIfChanged(plan.outputDir, job.outputs[k], bytes, &error)) {
+        results[i].log += job.outputs[k].string() + ": error: " + error + "\n";
+        report["ok"] = false;
+        ++results[i].errors;
+      } else {
+        report["ok"] = true;
+        report["output_file"] = job.outputs[k].string();
+      }
+      results[i].reports.push_back(report);
+    }
+  }
+}
+
+void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, const std::string& tool,
+                      const ScheduleOptions& options, std::vector<JobResult>& results, Cache& next) {
+  if (toConvert.empty()) return;
+  const bool tty = ::isatty(2);
+  size_t finished = 0;
+  auto record = [&](size_t slot, TaskOutcome&& outcome) {
+    size_t i = toConvert[slot];
+    const BuildJob& job = plan.jobs[i];
+    JobResult& result = results[i];
+    if (!outcome.completed || !deserialize(outcome.payload, &result)) {
+      result = workerFailure(job, outcome.completed ? "sent back an unreadable result" : outcome.failure);
+    } else {
+      nlohmann::json outputs = nlohmann::json::object();
+      bool writeFailed = false;
+      for (size_t k = 0; k < result.outputs.size() && k < job.outputs.size(); ++k) {
+        if (!result.reports[k].value("ok", false)) continue;
+        std::string error;
+        if (!writeIfChanged(plan.outputDir, job.outputs[k], result.outputs[k], &error)) {
+          result.log += job.outputs[k].string() + ": error: " + error + "\n";
+          result.reports[k]["ok"] = false;
+          ++result.errors;
+          writeFailed = true;
+          continue;
+        }
+        outputs[job.outputs[k].string()] = hashBytes(result.outputs[k]);
+      }
+      for (auto& r : result.reports) {
+        r["cached"] = false;
+        r["timings_ms"]["pipeline_wall"] = outcome.seconds * 1000.0;
+      }
+      // A failure to write depends on the disk, not on the inputs: never cached.
+      if (!writeFailed && (!result.errors || result.replayable)) recordFinished(next, plan, job, result, std::move(outputs));
+    }
+    ++finished;
+    if (tty) drawProgress(finished, toConvert.size(), job.id);
+  };
+  ensureGlslangInitialized();  // once, before forking: every worker inherits it
+  unsigned workers = options.jobs > 0 ? static_cast<unsigned>(options.jobs) : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::string> affinity;
+  for (size_t i : toConvert) affinity.push_back(dialectOf(plan.jobs[i].stages.front()));
+  runIsolated(
+      toConvert.size(), workers, options.jobTimeoutSeconds,
+      [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
+  if (tty) std::cerr << "\n";
+}
+
+}  // namespace stereoshift
