@@ -1,5 +1,6 @@
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/glslang_log.h"
+#include "transpiler/frontend/language_detect.h"
 #include "passes/source_text.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -315,10 +316,12 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
                             "(vert, tesc, tese, geom, frag, comp, mesh, task)");
     return result;
   }
-  std::string lowerPath = input.path;
-  std::transform(lowerPath.begin(), lowerPath.end(), lowerPath.begin(), ::tolower);
-  bool hlsl = lowerPath.ends_with(".hlsl") || lowerPath.ends_with(".fx") || lowerPath.ends_with(".hlsli");
-  SourceLanguage language = hlsl ? SourceLanguage::Hlsl : SourceLanguage::Glsl;
+  // -x, else the file name's language extension, else the text (HLSL kept in `name.vert` files).
+  LanguageDecision decided = decideLanguage(input.path, input.contents, options.language);
+  SourceLanguage language = decided.language;
+  result.info.language = language;
+  result.info.languageSource = decided.source;
+  result.info.languageReason = decided.reason;
 
   if (language == SourceLanguage::Hlsl) {
     std::string entry = chooseHlslEntry(input.contents, *stage, options.entryPoint);
@@ -334,6 +337,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
     result.spirv = std::move(a.spirv);
     result.info = std::move(a.info);
     result.info.language = language;
+    result.info.languageSource = decided.source;
+    result.info.languageReason = decided.reason;
     result.info.stage = *stage;
     result.info.entryPoint = entry;
     result.info.vulkan = true;
@@ -374,6 +379,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   }
   if (!best->ok) {
     diags.append(best->diags);
+    if (decided.source == LanguageSource::Content && v.begin == std::string::npos)
+      diags.note(input.path, "parsed as GLSL (" + decided.reason + "); if this is HLSL, say so with -x hlsl");
     return result;
   }
   diags.append(best->diags);  // warnings
@@ -381,6 +388,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   result.spirv = std::move(best->spirv);
   result.info = std::move(best->info);
   result.info.language = language;
+  result.info.languageSource = decided.source;
+  result.info.languageReason = decided.reason;
   result.info.stage = *stage;
   result.info.version = v.version;
   result.info.es = v.es;
