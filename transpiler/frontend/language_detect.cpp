@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <set>
+#include <string_view>
 #include <unordered_set>
 
 namespace stereoshift {
@@ -26,8 +27,9 @@ bool isIdentifierStart(char c) { return std::isalpha(static_cast<unsigned char>(
 // Splits `text` into identifiers, numbers, punctuation (`::` as one token) and preprocessor
 // directives; comments and string/character literals are dropped, so a commented-out HLSL line in
 // a GLSL file (or `"SV_Target"` in a message) is no evidence. `#define NAME` adds NAME to `macros`:
-// a GLSL file that maps `float4` to `vec4` with a macro is not HLSL for it.
-std::vector<Token> tokenize(const std::string& text, std::set<std::string>* macros) {
+// a GLSL file that maps `float4` to `vec4` with a macro is not HLSL for it. `stopAtVersion`: stop at
+// a `#version` directive (the decision is then made; most GLSL files start with one).
+std::vector<Token> tokenize(const std::string& text, std::set<std::string>* macros, bool stopAtVersion = false) {
   std::vector<Token> tokens;
   bool lineStart = true;  // only whitespace so far on this line: a `#` here starts a directive
   size_t i = 0, n = text.size();
@@ -76,6 +78,7 @@ std::vector<Token> tokenize(const std::string& text, std::set<std::string>* macr
       while (j < n && (text[j] == ' ' || text[j] == '\t')) ++j;
       std::string name = identifierAt(j);
       tokens.push_back({TokenKind::Directive, name});
+      if (stopAtVersion && name == "version") break;
       i = j + name.size();
       if (name == "define") {
         while (i < n && (text[i] == ' ' || text[i] == '\t')) ++i;
@@ -117,7 +120,7 @@ bool isHlslVectorType(const std::string& word) {
                                         "double", "float", "half", "uint", "int", "bool", "dword"};
   for (const char* scalar : scalars) {
     if (!startsWith(word, scalar)) continue;
-    std::string rest = word.substr(std::char_traits<char>::length(scalar));
+    std::string_view rest = std::string_view(word).substr(std::char_traits<char>::length(scalar));
     auto dim = [](char d) { return d >= '1' && d <= '4'; };
     if (rest.size() == 1 && dim(rest[0])) return true;
     if (rest.size() == 3 && dim(rest[0]) && rest[1] == 'x' && dim(rest[2])) return true;
@@ -403,8 +406,11 @@ LanguageDecision decideLanguage(const std::string& path, const std::string& text
     return d;
   }
   d.source = LanguageSource::Content;
-  LanguageEvidence e = scoreLanguage(text);
-  if (e.hasVersion) {
+  std::set<std::string> macros;
+  std::vector<Token> head = tokenize(text, &macros, true);
+  bool hasVersion = !head.empty() && head.back().kind == TokenKind::Directive && head.back().text == "version";
+  LanguageEvidence e = hasVersion ? LanguageEvidence{} : Scorer(head, macros).run();  // no #version: `head` is all
+  if (hasVersion) {
     d.language = SourceLanguage::Glsl;
     d.reason = "#version directive";
     return d;
