@@ -158,6 +158,9 @@ void printErrorSummary(int errors) {
 
 void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("-S,--stage", o.stage, "Shader stage when the extension does not say: vert, tesc, tese, geom, frag, comp, mesh, task");
+  app.add_option("-x,--language", o.language,
+                 "Language of the input, whatever its file name says: glsl or hlsl (default: the name's .hlsl/.fx/.glsl "
+                 "extension, else the content)");
   app.add_option("-e,--entry-point", o.t.entryPoint, "HLSL entry point (default: main, then VSMain/PSMain/GSMain/DSMain/HSMain/CSMain)");
   app.add_option("-D", o.t.defines, "Define a preprocessor macro: -DNAME or -DNAME=VALUE")->allow_extra_args(false);
   app.add_option("-I", o.t.includeDirs, "Add an #include search directory")->allow_extra_args(false);
@@ -237,6 +240,9 @@ std::optional<std::string> finishOptions(CliOptions& o) {
     o.t.stage = stageFromName(o.stage);
     if (!o.t.stage) return "unknown stage '" + o.stage + "' " + validValues("--stage");
   }
+  if (o.language == "glsl") o.t.language = SourceLanguage::Glsl;
+  else if (o.language == "hlsl") o.t.language = SourceLanguage::Hlsl;
+  else if (!o.language.empty()) return "unknown -x '" + o.language + "' (glsl, hlsl)";
   static const std::map<std::string, TargetLanguage> targets = {
       {"glsl", TargetLanguage::Glsl}, {"essl", TargetLanguage::Essl}, {"hlsl", TargetLanguage::Hlsl},
       {"msl", TargetLanguage::Msl}, {"spirv", TargetLanguage::Spirv}, {"spirv-asm", TargetLanguage::SpirvAsm}};
@@ -655,7 +661,7 @@ namespace stereoshift {
 nlohmann::json describeOptions(const TranspileOptions& t) {
   auto opt = [](const auto& v) -> nlohmann::json { return v ? nlohmann::json(*v) : nlohmann::json(); };
   const EyeParamOptions& e = t.eye;
-  return {
+  nlohmann::json description = {
       {"stage", t.stage ? stageName(*t.stage) : ""},
       {"entryPoint", t.entryPoint},
       {"defines", t.defines},
@@ -687,6 +693,9 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
       {"verify", t.verify},
       {"forceReemit", t.forceReemit},
   };
+  // Only when given, so the cache keys of builds without -x stay what they were.
+  if (t.language) description["language"] = static_cast<int>(*t.language);
+  return description;
 }
 
 }  // namespace stereoshift

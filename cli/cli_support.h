@@ -21,6 +21,7 @@ struct CliOptions {
   std::vector<std::string> inputs;
   std::string output;
   std::string stage, target, eyeSource = "auto", shiftForm = "branch";
+  std::string language;  // -x glsl|hlsl
   std::string pipeline;
   std::string reportPath;
   std::string depfile;  // single shader / pipeline: Makefile-style dependencies of the outputs

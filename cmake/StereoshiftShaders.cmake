@@ -7,6 +7,7 @@
 #     [INCLUDE_DIRS <dir>...]          (-I)
 #     [DEFINES <NAME[=VALUE]>...]      (-D)
 #     [TARGET_LANGUAGE glsl|essl|hlsl|msl|spirv|spirv-asm]
+#     [LANGUAGE glsl|hlsl]             (-x: the input language, whatever the file names say)
 #     [OPTIONS <stereoshift option>...]
 #     [OUTPUTS_VAR <variable>])
 #
@@ -48,7 +49,7 @@ function(stereoshift_add_shaders target)
   set(reserved_options -o --output --depfile --pipeline --report)
   cmake_parse_arguments(PARSE_ARGV 1 arg
     ""
-    "OUTPUT_DIR;BASE_DIR;MANIFEST;TARGET_LANGUAGE;OUTPUTS_VAR"
+    "OUTPUT_DIR;BASE_DIR;MANIFEST;TARGET_LANGUAGE;LANGUAGE;OUTPUTS_VAR"
     "SOURCES;INCLUDE_DIRS;DEFINES;OPTIONS")
 
   # --- argument checks --------------------------------------------------------------------------
@@ -58,7 +59,7 @@ function(stereoshift_add_shaders target)
   endif()
   # An empty list after a multi-value keyword (DEFINES ${none}) is fine; a one-value keyword needs its value.
   foreach(keyword IN LISTS arg_KEYWORDS_MISSING_VALUES)
-    if(keyword MATCHES "^(OUTPUT_DIR|BASE_DIR|MANIFEST|TARGET_LANGUAGE|OUTPUTS_VAR)$")
+    if(keyword MATCHES "^(OUTPUT_DIR|BASE_DIR|MANIFEST|TARGET_LANGUAGE|LANGUAGE|OUTPUTS_VAR)$")
       message(FATAL_ERROR "stereoshift_add_shaders(${target}): ${keyword} needs a value")
     endif()
   endforeach()
@@ -83,6 +84,9 @@ function(stereoshift_add_shaders target)
   if(DEFINED arg_TARGET_LANGUAGE AND NOT arg_TARGET_LANGUAGE IN_LIST target_languages)
     message(FATAL_ERROR "stereoshift_add_shaders(${target}): TARGET_LANGUAGE '${arg_TARGET_LANGUAGE}' is not one of: ${target_languages}")
   endif()
+  if(DEFINED arg_LANGUAGE AND NOT arg_LANGUAGE MATCHES "^(glsl|hlsl)$")
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): LANGUAGE '${arg_LANGUAGE}' is not one of: glsl hlsl")
+  endif()
   foreach(option IN LISTS arg_OPTIONS)
     string(REGEX REPLACE "=.*" "" option_name "${option}")
     if(option_name IN_LIST reserved_options)
@@ -105,6 +109,9 @@ function(stereoshift_add_shaders target)
   endforeach()
   if(DEFINED arg_TARGET_LANGUAGE)
     list(APPEND conversion_args "--target" "${arg_TARGET_LANGUAGE}")
+  endif()
+  if(DEFINED arg_LANGUAGE)
+    list(APPEND conversion_args "-x" "${arg_LANGUAGE}")
   endif()
   list(APPEND conversion_args ${arg_OPTIONS})
 

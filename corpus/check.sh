@@ -37,6 +37,10 @@ check_one() {
             # glslang wants -I glued to its directory (no space).
             run "$f" "$GLSLANG" -V "-I$here/vk450/include" -o /dev/null "$f" || ok=1
             ;;
+        "$here"/hlsl-stage-named/*)
+            # HLSL in files named by stage only (name.vert): the stage is the extension, the entry main.
+            run "$f" "$GLSLANG" -D -V -S "${f##*.}" -e main -o /dev/null "$f" || ok=1
+            ;;
         "$here"/hlsl/*)
             local base="${f%.hlsl}" stage entry
             stage="${base##*.}"
@@ -69,7 +73,7 @@ while IFS= read -r f; do
         fail=$((fail + 1))
         failed+=("${f#"$here"/}")
     fi
-done < <(find "$here/gl330" "$here/es300" "$here/vk450" "$here/hlsl" -type f \
+done < <(find "$here/gl330" "$here/es300" "$here/vk450" "$here/hlsl" "$here/hlsl-stage-named" -type f \
             \( -name '*.vert' -o -name '*.tesc' -o -name '*.tese' -o -name '*.geom' \
                -o -name '*.frag' -o -name '*.comp' -o -name '*.hlsl' \) \
             -not -path '*/include/*' | LC_ALL=C sort)

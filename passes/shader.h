@@ -13,6 +13,9 @@ namespace stereoshift {
 
 enum class Stage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute, Task, Mesh, Unknown };
 enum class SourceLanguage { Glsl, Hlsl, Spirv };
+// How the input language was decided: a language extension in the file name (.hlsl, .fx, .glsl),
+// the -x flag, or the text itself (#version, HLSL-only constructs, the SPIR-V magic number).
+enum class LanguageSource { Extension, Flag, Content };
 
 // Which output language: `Auto` keeps the input's own language and version.
 enum class TargetLanguage { Auto, Glsl, Essl, Hlsl, Msl, Spirv, SpirvAsm };
@@ -50,6 +53,7 @@ struct EyeParamOptions {
 struct TranspileOptions {
   // Front end
   std::optional<Stage> stage;        // default: from the file extension
+  std::optional<SourceLanguage> language;  // -x glsl|hlsl; default: from the file name, else the content
   std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
   std::vector<std::string> defines;  // NAME or NAME=VALUE
   std::vector<std::string> includeDirs;
@@ -82,6 +86,8 @@ struct TranspileOptions {
 // What the back end must know about the original source to emit a drop-in replacement.
 struct SourceInfo {
   SourceLanguage language = SourceLanguage::Glsl;
+  LanguageSource languageSource = LanguageSource::Extension;
+  std::string languageReason;  // what decided the language, for the report
   Stage stage = Stage::Unknown;
   int version = 0;         // GLSL #version; 0 for HLSL and SPIR-V
   bool es = false;         // ESSL

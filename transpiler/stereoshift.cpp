@@ -2,6 +2,7 @@
 
 #include "transpiler/backend/back_end.h"
 #include "transpiler/frontend/front_end.h"
+#include "transpiler/frontend/language_detect.h"
 #include "transpiler/backend/emit_prep.h"
 #include "transpiler/backend/splice_route.h"
 #include "passes/ir/validate.h"
@@ -143,6 +144,8 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     words.resize(input.contents.size() / 4);
     std::memcpy(words.data(), input.contents.data(), input.contents.size());
     info.language = SourceLanguage::Spirv;
+    info.languageSource = LanguageSource::Content;
+    info.languageReason = "SPIR-V magic number";
     info.vulkan = true;
   } else {
     if (std::memchr(input.contents.data(), '\0', std::min<size_t>(input.contents.size(), 4096))) {
@@ -156,7 +159,13 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     } else {
       front = compileToSpirv(input, options, diags);
     }
-    if (!front.ok) return result;
+    if (!front.ok) {
+      // The language decision is reported even when the shader does not parse: it is often why.
+      result.report["language"] = languageName(front.info.language);
+      result.report["language_source"] = languageSourceName(front.info.languageSource);
+      result.report["language_reason"] = front.info.languageReason;
+      return result;
+    }
     words = std::move(front.spirv);
     info = std::move(front.info);
     result.includedFiles = std::move(front.includedFiles);
@@ -183,6 +192,8 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
   }
   result.report["stage"] = stageName(info.stage);
   result.report["language"] = languageName(info.language);
+  result.report["language_source"] = languageSourceName(info.languageSource);
+  result.report["language_reason"] = info.languageReason;
   if (info.language == SourceLanguage::Glsl)
     result.report["dialect"] = std::to_string(info.version) + (info.es ? " es" : "") + (info.vulkan ? " vulkan" : "");
 

@@ -279,6 +279,24 @@ endif()
     log, _, _ = build(args.cmake, build_dir)
     check("ninja: no work to do." in log, f"with the caller's CMP0116 OLD, the second build did work:\n{log}")
 
+    # LANGUAGE reaches every command as -x: HLSL in a file named by stage only.
+    hlsl_dir = work / "language-src"
+    hlsl_dir.mkdir(parents=True)
+    (hlsl_dir / "mesh.vert").write_text(
+        "cbuffer Camera : register(b0) { float4x4 ViewProj; };\n"
+        "float4 main(float3 pos : POSITION) : SV_Position { return mul(ViewProj, float4(pos, 1.0)); }\n")
+    project = write_project(work / "language", prefix, body=f"""
+stereoshift_add_shaders(stage_named SOURCES "{hlsl_dir}/mesh.vert" BASE_DIR "{hlsl_dir}" OUTPUT_DIR out LANGUAGE hlsl)
+""")
+    build_dir = work / "build-language"
+    run([args.cmake, "-S", project, "-B", build_dir, "-G", "Ninja", f"-DCMAKE_MAKE_PROGRAM={args.ninja}"])
+    commands = run([args.ninja, "-C", build_dir, "-t", "commands"]).stdout
+    check(" -x hlsl " in commands, f"LANGUAGE hlsl: no '-x hlsl' in the commands:\n{commands}")
+    build(args.cmake, build_dir)
+    output = build_dir / "out" / "mesh.vert"
+    text = output.read_text() if output.is_file() else ""
+    check("cbuffer StereoParams" in text, f"LANGUAGE hlsl: {output} is not the converted HLSL shader")
+
     bad_calls = {
         "no_output_dir": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert")', "OUTPUT_DIR is required"),
         "outside_base_dir": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert" BASE_DIR "{include}" OUTPUT_DIR o)',
@@ -287,6 +305,8 @@ endif()
                                  "not both"),
         "bad_language": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert" OUTPUT_DIR o TARGET_LANGUAGE wgsl)',
                          "is not one of"),
+        "bad_input_language": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert" OUTPUT_DIR o LANGUAGE wgsl)',
+                               "LANGUAGE 'wgsl' is not one of: glsl hlsl"),
         "reserved_option": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert" OUTPUT_DIR o OPTIONS -o x)',
                             "may not contain '-o'"),
         "missing_source": (f'stereoshift_add_shaders(t SOURCES "{shaders}/nothing.vert" OUTPUT_DIR o)', "does not exist"),

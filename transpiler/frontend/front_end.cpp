@@ -1,6 +1,7 @@
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/source_limits.h"
+#include "transpiler/frontend/language_detect.h"
 #include "passes/source_text.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -619,10 +620,12 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
                             "(vert, tesc, tese, geom, frag, comp, mesh, task)");
     return result;
   }
-  std::string lowerPath = input.path;
-  std::transform(lowerPath.begin(), lowerPath.end(), lowerPath.begin(), ::tolower);
-  bool hlsl = lowerPath.ends_with(".hlsl") || lowerPath.ends_with(".fx") || lowerPath.ends_with(".hlsli");
-  SourceLanguage language = hlsl ? SourceLanguage::Hlsl : SourceLanguage::Glsl;
+  // -x, else the file name's language extension, else the text (HLSL kept in `name.vert` files).
+  LanguageDecision decided = decideLanguage(input.path, input.contents, options.language);
+  SourceLanguage language = decided.language;
+  result.info.language = language;
+  result.info.languageSource = decided.source;
+  result.info.languageReason = decided.reason;
 
   if (language == SourceLanguage::Hlsl) {
     std::string entry = chooseHlslEntry(input.contents, *stage, options.entryPoint);
@@ -638,6 +641,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
     result.spirv = std::move(a.spirv);
     result.info = std::move(a.info);
     result.info.language = language;
+    result.info.languageSource = decided.source;
+    result.info.languageReason = decided.reason;
     result.info.stage = *stage;
     result.info.entryPoint = entry;
     result.info.vulkan = true;
@@ -682,6 +687,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   }
   if (!best->ok) {
     diags.append(best->diags);
+    if (decided.source == LanguageSource::Content && v.begin == std::string::npos)
+      diags.note(input.path, "parsed as GLSL (" + decided.reason + "); if this is HLSL, say so with -x hlsl");
     return result;
   }
   diags.append(best->diags);  // warnings
@@ -689,6 +696,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   result.spirv = std::move(best->spirv);
   result.info = std::move(best->info);
   result.info.language = language;
+  result.info.languageSource = decided.source;
+  result.info.languageReason = decided.reason;
   result.info.stage = *stage;
   result.info.version = v.version;
   result.info.es = v.es;

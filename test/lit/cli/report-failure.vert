@@ -1,4 +1,5 @@
-// A failed conversion still writes its report, marked "ok": false.
+// A failed conversion still writes its report, marked "ok": false, with the language it was parsed
+// as and why (often the reason it failed).
 // RUN: %not %stereoshift %s -o %t.out --report %t.json
 // RUN: test ! -e %t.out
 // RUN: FileCheck %s --input-file %t.json
@@ -8,5 +9,8 @@ void main() {
 }
 // CHECK: {
 // CHECK-NEXT: "file": "{{.*}}report-failure.vert",
+// CHECK-NEXT: "language": "glsl",
+// CHECK-NEXT: "language_reason": "#version directive",
+// CHECK-NEXT: "language_source": "content",
 // CHECK-NEXT: "ok": false
 // CHECK-NEXT: }

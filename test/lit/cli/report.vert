@@ -1,5 +1,6 @@
-// --report writes a JSON report of what was done: the shader's file, stage, language and dialect,
-// its classification, each pass's result and findings, the target, and whether it was emitted.
+// --report writes a JSON report of what was done: the shader's file, stage, language (and how it
+// was decided) and dialect, its classification, each pass's result and findings, the target, and
+// whether it was emitted.
 // RUN: rm -rf %t && mkdir %t
 // RUN: %stereoshift --verify %s -o %t/out.vert --report %t/report.json
 // RUN: FileCheck %s --input-file %t/report.json
@@ -21,6 +22,8 @@ void main() {
 // CHECK-NEXT: "dialect": "450 vulkan",
 // CHECK-NEXT: "file": "{{.*}}report.vert",
 // CHECK-NEXT: "language": "glsl",
+// CHECK-NEXT: "language_reason": "#version directive",
+// CHECK-NEXT: "language_source": "content",
 // CHECK-NEXT: "ok": true,
 // CHECK-NEXT: "output": "emitted",
 // CHECK-NEXT: "output_file": "{{.*}}out{{2?}}.vert",
