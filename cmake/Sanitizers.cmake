@@ -17,3 +17,12 @@ if(STEREOSHIFT_SANITIZE)
   add_compile_options(${STEREOSHIFT_SANITIZER_FLAGS} -fsanitize=fuzzer-no-link)
   add_link_options(${STEREOSHIFT_SANITIZER_FLAGS})
 endif()
+
+# The packaged glslang is built without RTTI, and UBSan's vptr check needs the typeinfo of each
+# polymorphic class it checks: the sources that use glslang's classes (TShader, TProgram, the
+# intermediate tree) go without that one check; every other check stays on for them.
+function(stereoshift_without_vptr_check directory)
+  if(STEREOSHIFT_SANITIZE)
+    set_source_files_properties(${ARGN} DIRECTORY ${directory} PROPERTIES COMPILE_OPTIONS -fno-sanitize=vptr)
+  endif()
+endfunction()

@@ -23,6 +23,7 @@ RSS_LIMIT_MB = 4096
 
 
 def replay(args):
+    # Only the files directly in the folder: known-glslang-crashes/ below it is not replayed.
     inputs = sorted(p for p in args.inputs.glob("*") if p.is_file() and not p.name.startswith(".")
                     and p.suffix != ".md") if args.inputs.is_dir() else []
     if not inputs:
