@@ -5,7 +5,7 @@
 // applied to q itself, before the perspective divide, and reports the view-dependent constructs it
 // leaves alone (other matrix products, gl_FragCoord-based effects, reflections).
 //
-// Why this is exact (STEREO.md section 4): the G-buffer of an eye was rendered with the stereo
+// Why this is exact (docs/stereo-math.md section 4): the G-buffer of an eye was rendered with the stereo
 // projection, whose clip x is x + e*S*(w - C), so the pixel's NDC x is the mono one plus
 // e*S*(1 - C/w) while y, z and w are the mono ones. By linearity InvM * (ndc + d*e0) = q_mono +
 // d*InvM[col 0]. For a perspective projection (or a view-projection with an affine view) InvM maps

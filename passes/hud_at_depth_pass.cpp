@@ -1,6 +1,6 @@
 // hud-at-depth: turns a proven-2D shader (every clip position written with the literal w = 1) into
 // one that places its element at the eye depth `hudDepth`: each store of the position `pos` becomes
-// a store of `pos * hudDepth`, i.e. vec4(pos.xy * d, pos.z * d, d) (STEREO.md section 2). The shader
+// a store of `pos * hudDepth`, i.e. vec4(pos.xy * d, pos.z * d, d) (docs/stereo-math.md section 2). The shader
 // then needs the shift like any perspective position, which gives the element the parallax
 // e*S*(1 - C/d). Opt-in (--hud-at-depth): without it 2D shaders stay mono and are copied through.
 //

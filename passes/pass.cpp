@@ -1,6 +1,5 @@
 #include "passes/pass.h"
 
-#include <glslang/SPIRV/GLSL.std.450.h>
 #include <spirv-tools/optimizer.hpp>
 
 namespace stereoshift {

@@ -1,6 +1,6 @@
 // The pass interface and what passes share: the context with its cached analyses (clip positions,
-// the folded copy), the eye parameters, and the one piece of code that emits the stereo shift (so the position and its halo copies are shifted
-// by exactly the same instruction sequence, bit for bit).
+// the folded copy) and the eye parameters. The shift itself is emitted by shift_emitter.h (so the
+// position and its halo copies are shifted by exactly the same instruction sequence, bit for bit).
 #pragma once
 
 #include "passes/analysis/clip_positions.h"

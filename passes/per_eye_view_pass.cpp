@@ -1,5 +1,5 @@
 // per-eye-view: turns the mono camera position that feeds view vectors into the per-eye centre
-//     C_eye = C + InvVP * (eyeSign*separation*convergence, 0, 0, 0)      (STEREO.md section 3)
+//     C_eye = C + InvVP * (eyeSign*separation*convergence, 0, 0, 0)      (docs/stereo-math.md section 3)
 // wherever a view vector offsets texture coordinates (relief / parallax occlusion / steep / cone
 // mapping, reflection lookups), so each eye sees the surface relief from its own position.
 //
@@ -746,7 +746,7 @@ class PerEyeViewPass final : public Pass {
               "a position-dependent lookup (volume, projector), not a view vector");
       } else if (hint == NameHint::Camera) {
         leave(shadedOutputs.empty() ? "shading only (specular)" : "shading only (specular), written to " + joined(shadedOutputs),
-              "specular highlights look right with the mono eye (STEREO.md section 3); --per-eye-specular makes it per-eye");
+              "specular highlights look right with the mono eye (docs/stereo-math.md section 3); --per-eye-specular makes it per-eye");
       } else {
         leave("direction used for shading only", "not known to be a camera (no texture-coordinate offset, no camera-like name)");
       }

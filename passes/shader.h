@@ -67,7 +67,7 @@ struct TranspileOptions {
   bool compensatedShift = false;  // error-free transformations: x' within ~0.5 ULP of the exact shift
   bool haloFix = true;
   bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
-  // Per-eye pixel maths (STEREO.md sections 2-4)
+  // Per-eye pixel maths (docs/stereo-math.md sections 2-4)
   bool perEyeView = true;             // per-eye camera position where a view vector offsets texture coordinates
   bool perEyeSpecular = false;        // also where it only feeds lighting (specular looks fine mono)
   std::string cameraUniform;          // --camera-uniform: this uniform (or block member) is the camera position
@@ -92,14 +92,12 @@ struct SourceInfo {
   int version = 0;         // GLSL #version; 0 for HLSL and SPIR-V
   bool es = false;         // ESSL
   bool vulkan = false;     // Vulkan GLSL semantics (sets, push constants)
-  bool versionRaised = false;  // glslang needed a higher version to make SPIR-V
   std::string entryPoint;  // the source's entry-point name
   // Names (variable names, and block type names) that carried explicit qualifiers in the source.
   // glslang must auto-assign locations and bindings to make SPIR-V; the back end strips the ones
   // the source did not have, so OpenGL shaders keep relying on glBindAttribLocation & co.
   std::set<std::string> explicitLocation;
   std::set<std::string> explicitBinding;
-  std::set<std::string> explicitSet;
 };
 
 struct SourceFile {

@@ -120,7 +120,7 @@ uint32_t emitShiftedX(PassContext& context, const ShiftSpec& spec, std::vector<I
     if (precise) m.decorate(id, spv::DecorationNoContraction);
     return id;
   };
-  // x + (eyeSign * separation) * (w - convergence): the order of STEREO.md section 1.
+  // x + (eyeSign * separation) * (w - convergence): the order of docs/stereo-math.md section 1.
   uint32_t depth = op(spv::OpFSub, w, convergence);
   uint32_t scale = emitEyeScale(context, out, eyeSign, separation, precise);
   if (spec.compensated) {

@@ -1,7 +1,7 @@
 // stereoshift runtime helper: the per-eye values an application feeds to shaders that stereoshift
 // converted. Header-only, C++17, no dependencies beyond the standard library.
 //
-// The maths is STEREO.md sections 1 and 3 and NVIDIA's "stereo fundamentals" GDC talk:
+// The maths is docs/stereo-math.md sections 1 and 3 and NVIDIA's "stereo fundamentals" GDC talk:
 //   e = eye sign (-1 left, +1 right, 0 mono), S = separation (interaxial / virtual screen width,
 //   user scale applied), C = convergence (eye-space depth of the zero-parallax plane).
 //   - the converted vertex shaders shift the clip position: x' = x + e*S*(w - C), the same as
@@ -100,7 +100,7 @@ Mat4<T> inverse(const Mat4<T>& m) {
   return out;
 }
 
-// ---- the stereo projection (STEREO.md section 1) ---------------------------------------------------
+// ---- the stereo projection (docs/stereo-math.md section 1) ---------------------------------------------------
 
 // The projection whose clip x is the shifted one, x' = x + e*S*(w - C), for every point:
 //   row 0  +=  e*S * row 3      (w is row 3: -z in GL, +z in a left-handed D3D projection)
@@ -126,7 +126,7 @@ Mat4<T> stereoProjectionD3D(Mat4<T> rowVectorMatrix, T eyeSign, T separation, T 
   return rowVectorMatrix;
 }
 
-// ---- the per-eye camera centre (STEREO.md section 3) -----------------------------------------------
+// ---- the per-eye camera centre (docs/stereo-math.md section 3) -----------------------------------------------
 
 // World-space offset of this eye's centre from the mono camera, from the inverse view matrix and
 // P00 (the projection's horizontal scale, element (0, 0)): InvView * (e*S*C / P00, 0, 0, 0), i.e.

@@ -1,4 +1,4 @@
-// Deferred lighting per eye against ground truth (deferred-unprojection pass, STEREO.md section 4).
+// Deferred lighting per eye against ground truth (deferred-unprojection pass, docs/stereo-math.md section 4).
 //
 // Per eye, on lavapipe: a G-buffer (albedo, normal, depth) of a small scene rendered with that eye's
 // stereo projection (mono P with row 0 = [p00, 0, p02 - e S, -e S C]), then a full-screen lighting

@@ -1,4 +1,4 @@
-// HUD at depth by execution (hud-at-depth pass, --hud-at-depth, STEREO.md section 2).
+// HUD at depth by execution (hud-at-depth pass, --hud-at-depth, docs/stereo-math.md section 2).
 //
 // A 2D HUD vertex shader (every position written with the literal w = 1) is converted with
 // TranspileOptions::hudAtDepth to SPIR-V; original and converted shader run on lavapipe with

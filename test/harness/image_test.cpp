@@ -1,7 +1,7 @@
 // Image-level ground truth: a test scene (quads at eye depths C/2 .. 100 C, an orthographic HUD quad,
 // a full-screen post pass) rendered per eye two ways on lavapipe:
 //   truth:      the original shaders with the stereo projection matrix (mono P with row 0 changed to
-//               [p00, 0, p02 - e S, -e S C], STEREO.md section 1), the HUD and post pass untouched;
+//               [p00, 0, p02 - e S, -e S C], docs/stereo-math.md section 1), the HUD and post pass untouched;
 //   transpiled: stereoshift's shaders with the eye parameters, every matrix mono.
 // Differences may only be rasterization ties: every differing pixel must lie on an edge of the
 // truth image. Left, right and a red/cyan anaglyph are written as PNG for a person to look at.

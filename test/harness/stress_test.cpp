@@ -1,5 +1,5 @@
 // Numerical stress suite: a pass-through vertex shader (gl_Position = the attribute) gives full
-// control of x and w, so the sweep reaches every regime of STEREO.md section 2 and 6. Each case states
+// control of x and w, so the sweep reaches every regime of docs/stereo-math.md section 2 and 6. Each case states
 // its bound and checks it on lavapipe against the double-precision reference.
 #include "transpiler/verify/stereo_verify.h"
 #include "test/harness/vulkan_suite.h"
@@ -133,7 +133,7 @@ TEST_F(Stress, ExactCutoffShiftsTheOrthographicOffByOne) {
   VerifyResult r = verifyStereo(*context_, stages, s);
   ASSERT_TRUE(r.error.empty()) << r.error;
   // The driver's exact rule keeps only w == 1 itself (3 vertices of the sweep): 1 - 2^-24 and
-  // 1 + 2^-23 are shifted (the orthographic HUD pitfall of STEREO.md section 2).
+  // 1 + 2^-23 are shifted (the orthographic HUD pitfall of docs/stereo-math.md section 2).
   EXPECT_EQ(r.cutoffVertices, 3u);
   EXPECT_LE(r.maxStereoUlps, 2.5);
 }

@@ -80,7 +80,7 @@ TEST(StereoRuntime, GlStereoProjectionIsTheMonoProjectionFollowedByTheShift) {
   M p = glPerspective(0.9, 16.0 / 9.0, 0.1, 500.0, 0.03);
   for (double e : {-1.0, 1.0, 0.0}) {
     M stereo = stereoProjectionGL(p, e, kS, kC);
-    // STEREO.md section 1, in GL notation: row 0 = [p00, 0, p02 - e S, -e S C].
+    // docs/stereo-math.md section 1, in GL notation: row 0 = [p00, 0, p02 - e S, -e S C].
     EXPECT_DOUBLE_EQ(element(stereo, 0, 0), element(p, 0, 0));
     EXPECT_DOUBLE_EQ(element(stereo, 0, 2), element(p, 0, 2) - e * kS);
     EXPECT_DOUBLE_EQ(element(stereo, 0, 3), -e * kS * kC);

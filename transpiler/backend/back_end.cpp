@@ -112,8 +112,6 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         o.emit_line_directives = false;
         compiler.set_common_options(o);
         result.text = compiler.compile();
-        result.version = static_cast<int>(o.version);
-        result.es = o.es;
         result.vulkanSemantics = o.vulkan_semantics;
         break;
       }
@@ -133,7 +131,6 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         text = renameIdentifiers(text, hints.cbufferMemberNames);
         if (!info.entryPoint.empty() && info.entryPoint != "main") text = renameEntryPoint(std::move(text), info.entryPoint);
         result.text = std::move(text);
-        result.version = static_cast<int>(h.shader_model);
         break;
       }
       case TargetLanguage::Msl: {

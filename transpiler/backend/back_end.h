@@ -23,8 +23,6 @@ struct EmitResult {
   bool ok = false;
   std::string text;
   TargetLanguage language = TargetLanguage::Glsl;  // resolved (never Auto)
-  int version = 0;
-  bool es = false;
   bool vulkanSemantics = false;
 };
 

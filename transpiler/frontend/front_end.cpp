@@ -378,7 +378,6 @@ void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, Source
       for (const auto& key : keys) {
         if (q.hasLocation()) info.explicitLocation.insert(key);
         if (q.hasBinding()) info.explicitBinding.insert(key);
-        if (q.hasSet()) info.explicitSet.insert(key);
       }
     }
   }
@@ -658,7 +657,6 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
     return result;
   }
   std::string text = input.contents;
-  bool raised = false;
   if (v.es && v.version < 310) {
     if (v.version == 100) {
       diags.error(input.path, 1, 1,
@@ -668,7 +666,6 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
     }
     // glslang 12 refuses ES < 310 for SPIR-V; parse as 310 (same line count) and emit the original.
     if (v.begin != std::string::npos) text.replace(v.begin, v.end - v.begin, "#version 310 es");
-    raised = true;
   }
   std::vector<Client> clients;
   bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);
@@ -701,7 +698,6 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   result.info.stage = *stage;
   result.info.version = v.version;
   result.info.es = v.es;
-  result.info.versionRaised = raised;
   result.info.entryPoint = "main";
   result.includedFiles = std::move(best->included);
   return result;

@@ -1,5 +1,5 @@
 // per-eye-view: a reflection lookup (a cube map sampled along reflect(-v, n)) is a view vector used
-// as a texture coordinate: per eye, like relief mapping (STEREO.md section 3: reflections should
+// as a texture coordinate: per eye, like relief mapping (docs/stereo-math.md section 3: reflections should
 // use the stereo eyes).
 // RUN: %stereoshift --validate-each --verify %s -o %t.out.frag --report %t.json
 // RUN: %rmchecks %t.out.frag | FileCheck %s
