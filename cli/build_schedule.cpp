@@ -181,8 +181,16 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
     } else {
       nlohmann::json outputs = nlohmann::json::object();
       bool writeFailed = false;
+      // A pipeline is all or nothing: when one stage failed, the stages that converted are not
+      // written either, so the output tree keeps the pipeline's last good conversion whole.
+      const bool pipelineFailed = result.errors > 0;
       for (size_t k = 0; k < result.outputs.size() && k < job.outputs.size(); ++k) {
         if (!result.reports[k].value("ok", false)) continue;
+        if (pipelineFailed) {
+          result.reports[k].erase("output_file");
+          result.reports[k]["output"] = "not written: another stage of the pipeline failed";
+          continue;
+        }
         std::string error;
         if (!writeIfChanged(plan.outputDir, job.outputs[k], result.outputs[k], &error)) {
           result.log += job.outputs[k].string() + ": error: " + error + "\n";
