@@ -212,8 +212,12 @@ class Loader {
     try {
       root = toml::parse_file(file_.string());
     } catch (const toml::parse_error& e) {
+      // toml++ quotes the offending text as it is, line breaks included: one diagnostic, one line.
+      std::string message(e.description());
+      for (char& c : message)
+        if (c == '\n' || c == '\r') c = ' ';
       error(ManifestLocation{static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
-            std::string(e.description()));
+            message);
       return false;
     }
     manifest->file = file_;

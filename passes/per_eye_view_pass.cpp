@@ -788,7 +788,8 @@ class PerEyeViewPass final : public Pass {
     // Outputs that will differ between the eyes once the camera is per eye (by design, like the
     // shifted position): for the report, and for the execution harness's unchanged-outputs check.
     std::set<std::string> perEyeOutputs;
-    for (const auto& [slot, why] : cameras) {
+    for (const auto& camera : cameras) {
+      const auto& slot = camera.first;  // a named reference: clang 14 cannot capture structured bindings
       std::map<uint32_t, uint8_t> loads;
       spirv::forEachFunctionInstruction(*folded, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
         if (auto loaded = inst.opcode == spv::OpLoad ? slotOfPointer(*folded, inst.operand(0)) : std::nullopt;

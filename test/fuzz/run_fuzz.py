@@ -87,7 +87,8 @@ def parse_frame(line):
         module, rest = "<unknown module>", rest[:-len("(<unknown module>)")]
     elif rest.startswith("in "):
         head, _, tail = rest.rpartition(" ")
-        if head and (tail.startswith("/") or re.search(r":\d+(:\d+)?$", tail)):
+        # a source file (`/src/x.cpp:12:3`), or an archive member without line info (`ShaderLang.cpp.o`)
+        if head and (tail.startswith("/") or re.search(r":\d+(:\d+)?$|\.o$", tail)):
             source, rest = tail, head
     function = rest[3:].strip() if rest.startswith("in ") else rest.strip()
     return {"pc": match.group(2), "function": function, "module": module, "source": source}
@@ -197,8 +198,9 @@ def triage(text):
             result["caller"] = qualified_name(group[-1]["function"])
     if seen is not None:
         frame, library = seen
+        where = pathlib.PurePath(frame["source"] or frame["module"]).name
         result.update(owner="third-party", library=library,
-                      frame=f"{qualified_name(frame['function']) or '??'} ({frame['source'] or frame['module']})")
+                      frame=f"{qualified_name(frame['function']) or '??'} ({where})")
     return result
 
 

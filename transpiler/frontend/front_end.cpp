@@ -395,8 +395,12 @@ std::optional<Diagnostic> findTreeLimitViolation(TIntermNode* root, const std::s
   std::vector<Pending> stack;
   if (root) stack.push_back({root, 1, 0, root});
   while (!stack.empty()) {
-    auto [node, depth, controlNesting, statement] = stack.back();
+    // Plain variables, not structured bindings: the lambda below captures them (clang 14 cannot).
+    const Pending top = stack.back();
     stack.pop_back();
+    TIntermNode* node = top.node;
+    int depth = top.depth, controlNesting = top.controlNesting;
+    TIntermNode* statement = top.statement;
     bool control = node->getAsSelectionNode() || node->getAsLoopNode() || node->getAsSwitchNode();
     controlNesting += control ? 1 : 0;
     std::string message;
