@@ -65,13 +65,13 @@ uint32_t firstFreeUniformLocation(const spirv::Module& m) {
   return next;
 }
 
-// The binding for the new block: the option, else one past the highest binding in the set. HLSL
-// registers are per class (b, t, s, u), so for HLSL only constant buffers count.
+// The binding for the new block: the option, else one past the highest binding in the set. D3D-style
+// HLSL registers are per class (b, t, s, u), so there only constant buffers count.
 uint32_t chooseBinding(const PassContext& ctx, uint32_t set) {
   const auto& o = ctx.options.eye;
   if (ctx.source.language == SourceLanguage::Hlsl && o.hlslRegister) return *o.hlslRegister;
   if (o.binding) return *o.binding;
-  auto highest = highestBinding(ctx.module, set, ctx.source.language == SourceLanguage::Hlsl);
+  auto highest = highestBinding(ctx.module, set, perClassRegisters(ctx.source));
   return highest ? *highest + 1 : 0;
 }
 

@@ -89,6 +89,10 @@ bool carriesEyeParameters(const PassContext& context) {
   return eyeSign && separation;
 }
 
+bool perClassRegisters(const SourceInfo& source) {
+  return source.language == SourceLanguage::Hlsl && !source.vulkanBindings;
+}
+
 std::optional<uint32_t> highestBinding(const spirv::Module& m, uint32_t set, bool constantBuffersOnly) {
   std::optional<uint32_t> highest;
   for (const auto& inst : m.typesValues) {

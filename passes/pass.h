@@ -151,6 +151,9 @@ bool carriesEyeParameters(const PassContext& context);
 // The highest Binding among the variables of descriptor set `set`. With `constantBuffersOnly` only
 // Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
 // onto the same binding numbers.
+// Whether bindings count per register class (D3D-style HLSL) rather than in one space (GLSL, SPIR-V,
+// HLSL with [[vk::binding]]).
+bool perClassRegisters(const SourceInfo& source);
 std::optional<uint32_t> highestBinding(const spirv::Module& module, uint32_t set, bool constantBuffersOnly);
 
 }  // namespace stereoshift

@@ -88,6 +88,9 @@ struct SourceInfo {
   SourceLanguage language = SourceLanguage::Glsl;
   LanguageSource languageSource = LanguageSource::Extension;
   std::string languageReason;  // what decided the language, for the report
+  // HLSL written for Vulkan with [[vk::binding(N)]]: every resource class shares one binding space,
+  // unlike D3D's per-class registers (b, t, s, u); the injected cbuffer must avoid all of them.
+  bool vulkanBindings = false;
   Stage stage = Stage::Unknown;
   int version = 0;         // GLSL #version; 0 for HLSL and SPIR-V
   bool es = false;         // ESSL

@@ -361,8 +361,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       if (!m) continue;
       const FrontEndResult& front = c->front;
       hlsl |= front.info.language == SourceLanguage::Hlsl;
-      auto stageHighest = highestBinding(*m, options.eye.descriptorSet.value_or(0),
-                                         front.info.language == SourceLanguage::Hlsl);
+      auto stageHighest = highestBinding(*m, options.eye.descriptorSet.value_or(0), perClassRegisters(front.info));
       if (stageHighest) highest = std::max(highest.value_or(0), *stageHighest);
     }
     if (highest) {

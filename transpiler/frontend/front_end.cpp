@@ -649,6 +649,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
     result.info.stage = *stage;
     result.info.entryPoint = entry;
     result.info.vulkan = true;
+    // Conservative: a mention in a comment only makes the injected binding skip more numbers.
+    result.info.vulkanBindings = input.contents.find("vk::binding") != std::string::npos;
     result.includedFiles = std::move(a.included);
     return result;
   }

@@ -35,7 +35,7 @@ struct DSOutput
 };
 
 // ---- stereoshift: stereo parameters and clip-space shift (injected) ----
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign;
     float separation;

@@ -28,7 +28,7 @@ cbuffer ubo : register(b0)
     UBO ubo : packoffset(c0);
 };
 
-cbuffer StereoParams : register(b1)
+cbuffer StereoParams : register(b2)
 {
     float eyeSign : packoffset(c0);
     float separation : packoffset(c0.y);
