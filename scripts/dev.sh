@@ -29,13 +29,14 @@ fi
 
 build_dir="${STEREOSHIFT_BUILD_DIR:-build}"
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build_dir" --parallel "$(nproc)"
-
 case "$mode" in
   run)
+    # Only the tool: the corpus job needs nothing else (tests and benchmarks build in `test` mode).
+    cmake --build "$build_dir" --parallel "$(nproc)" --target stereoshift
     "$build_dir/stereoshift" build corpus -o out/corpus
     ;;
   test)
+    cmake --build "$build_dir" --parallel "$(nproc)"
     ctest --test-dir "$build_dir" --output-on-failure --parallel "$(nproc)"
 
     # The same tool under AddressSanitizer + UndefinedBehaviorSanitizer (cmake/Sanitizers.cmake), in a
