@@ -22,23 +22,6 @@ namespace {
 
 // ---- what a worker sends back -------------------------------------------------------------------
 
-void putString(std::string& out, const std::string& s) {
-  uint64_t size = s.size();
-  out.append(reinterpret_cast<const char*>(&size), sizeof size);
-  out += s;
-}
-
-bool getString(const std::string& in, size_t& at, std::string* s) {
-  uint64_t size;
-  if (in.size() - at < sizeof size) return false;
-  std::memcpy(&size, in.data() + at, sizeof size);
-  at += sizeof size;
-  if (in.size() - at < size) return false;
-  *s = in.substr(at, size);
-  at += size;
-  return true;
-}
-
 std::string serialize(const JobResult& r) {
   nlohmann::json head = {{"errors", r.errors}, {"log", r.log}, {"reports", r.reports},
                          {"dependencies", r.dependencies}, {"key", r.key}, {"outputs", r.outputs.size()},

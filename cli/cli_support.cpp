@@ -273,9 +273,8 @@ std::optional<std::string> finishOptions(CliOptions& o) {
   o.t.eye.hlslRegister = o.hlslRegister;
   o.t.eye.glBinding = o.glBinding;
   o.t.targetVersion = o.targetVersion;
-  const std::vector<std::string>& passNames = enumeratedOptions().at("--pass");
   for (const auto& p : o.t.onlyPasses)
-    if (std::find(passNames.begin(), passNames.end(), p) == passNames.end()) return unknownValue("--pass", p);
+    if (!findPass(p)) return unknownValue("--pass", p);
   return std::nullopt;
 }
 
@@ -464,18 +463,6 @@ std::optional<std::string> outputThatIsAnInput(const std::vector<std::string>& o
   return std::nullopt;
 }
 
-namespace {
-
-// What the conversion child hands back to the parent, which writes: the error count so far, the
-// outputs (written only when there is no error), the report and the depfile text.
-struct ConversionRun {
-  int errors = 0;
-  std::vector<PendingOutput> outputs;
-  bool hasReport = false;
-  nlohmann::json report;
-  std::string depfileText;
-};
-
 void putString(std::string& wire, const std::string& s) {
   uint64_t size = s.size();
   wire.append(reinterpret_cast<const char*>(&size), sizeof size);
@@ -492,6 +479,18 @@ bool getString(const std::string& wire, size_t& at, std::string* s) {
   at += size;
   return true;
 }
+
+namespace {
+
+// What the conversion child hands back to the parent, which writes: the error count so far, the
+// outputs (written only when there is no error), the report and the depfile text.
+struct ConversionRun {
+  int errors = 0;
+  std::vector<PendingOutput> outputs;
+  bool hasReport = false;
+  nlohmann::json report;
+  std::string depfileText;
+};
 
 // The report travels as JSON text; the outputs as raw bytes (SPIR-V is binary).
 std::string serialize(const ConversionRun& run) {

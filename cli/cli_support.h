@@ -50,6 +50,11 @@ size_t editDistance(const std::string& a, const std::string& b);
 
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
 bool writeAtomically(const std::filesystem::path& path, const std::string& bytes, std::string* error);
+
+// The wire format a forked child (single-shader conversion, build worker) sends its result back in:
+// length-prefixed byte strings. getString advances `at`; false when `wire` ends early.
+void putString(std::string& wire, const std::string& s);
+bool getString(const std::string& wire, size_t& at, std::string* s);
 // Writes the report as JSON to `path` ('-': standard output; empty: nowhere).
 bool writeReport(const std::string& path, const nlohmann::json& report);
 // The same for a report already in text form ("-": standard output); an identical file is not rewritten.
