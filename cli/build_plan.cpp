@@ -2,6 +2,7 @@
 #include "cli/build_plan.h"
 
 #include "cli/scene_manifest.h"
+#include "passes/diagnostics.h"
 
 #include <algorithm>
 #include <map>
@@ -221,7 +222,7 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
         }
       if (!matched)
         plan.errors.push_back(manifestFile.string() + ":" + std::to_string(where.line) + ":" +
-                              std::to_string(where.column) + ": error: pass '" + pass.name + "': '" + pattern +
+                              std::to_string(where.column) + ": error: pass '" + pass.name + "': '" + escapeControlBytes(pattern) +
                               "' matches no pipeline under " + plan.root.string());
     }
   std::map<const ScenePass*, PassOptions> optionsOf;

@@ -1,4 +1,5 @@
 #include "cli/scene_manifest.h"
+#include "passes/diagnostics.h"
 
 #include <toml++/toml.h>
 
@@ -70,9 +71,11 @@ class Loader {
          const std::function<std::string(const std::vector<std::string>&)>& checkOption, std::vector<std::string>* errors)
       : file_(file), optionKeys_(optionKeys), checkOption_(checkOption), errors_(errors) {}
 
+  // Messages quote manifest text (names, keys, modes, toml++'s own excerpts); a TOML multi-line string can
+  // put a line break in it, and one diagnostic stays one line.
   void error(ManifestLocation at, const std::string& message) {
     errors_->push_back(file_.string() + ":" + std::to_string(std::max(1, at.line)) + ":" +
-                       std::to_string(std::max(1, at.column)) + ": error: " + message);
+                       std::to_string(std::max(1, at.column)) + ": error: " + escapeControlBytes(message));
   }
 
   void unknownKey(const toml::key& key, const std::vector<std::string>& accepted, const std::string& where) {
@@ -212,12 +215,9 @@ class Loader {
     try {
       root = toml::parse_file(file_.string());
     } catch (const toml::parse_error& e) {
-      // toml++ quotes the offending text as it is, line breaks included: one diagnostic, one line.
-      std::string message(e.description());
-      for (char& c : message)
-        if (c == '\n' || c == '\r') c = ' ';
+      // toml++ quotes the offending text as it is, line breaks included; error() escapes them.
       error(ManifestLocation{static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
-            message);
+            std::string(e.description()));
       return false;
     }
     manifest->file = file_;

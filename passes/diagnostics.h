@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace stereoshift {
@@ -17,6 +18,10 @@ struct Diagnostic {
 
   std::string format() const;  // "file:line:col: error: message"
 };
+
+// `text` with its control bytes written as escapes (\n, \r, \t, \xNN), for quoting user text (a TOML
+// multi-line string, a file name) inside a diagnostic that must stay on one line.
+std::string escapeControlBytes(std::string_view text);
 
 class Diagnostics {
  public:
