@@ -46,10 +46,10 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::Intermediate;
     } else if (positions.outputs().empty()) {
       ctx.classification = Classification::NoPositionOutput;
-    } else if (carriesEyeParameters(ctx)) {
+    } else if (std::string why = alreadyStereoReason(ctx); !why.empty()) {
       ctx.classification = Classification::AlreadyStereo;
-      ctx.diags.note(ctx.file, "shader already carries stereo eye parameters ('" + ctx.options.eye.eyeSignName +
-                                   "'); left as it is, never shifted twice");
+      report["already_stereo"] = why;
+      ctx.diags.note(ctx.file, "shader " + why + "; left as it is, never shifted twice");
     } else if (allWritesHaveConstantW1(ctx.module, positions) ||
                (!entryStoresRuntimeProduct(ctx.module, positions) && constantW1AfterFolding(ctx))) {
       ctx.classification = Classification::ConstantW1;

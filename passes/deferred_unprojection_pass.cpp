@@ -261,8 +261,8 @@ class DeferredUnprojectionPass final : public Pass {
       return PassResult::Unchanged;
     // Already converted (the eye parameters were there before this run): fixing q again would
     // subtract the parallax twice.
-    if (!ctx.eyeDeclared && carriesEyeParameters(ctx)) {
-      ctx.report["passes"][name()]["left_alone"] = "the shader already carries the eye parameters";
+    if (std::string why = ctx.eyeDeclared ? "" : alreadyStereoReason(ctx); !why.empty()) {
+      ctx.report["passes"][name()]["left_alone"] = "the shader " + why;
       return PassResult::Unchanged;
     }
     std::set<uint32_t> eyeParameters;

@@ -1,5 +1,6 @@
 #include "passes/pass.h"
 
+#include <cctype>
 #include <spirv-tools/optimizer.hpp>
 
 namespace stereoshift {
@@ -87,6 +88,25 @@ bool carriesEyeParameters(const PassContext& context) {
     separation |= n == context.options.eye.separationName;
   }
   return eyeSign && separation;
+}
+
+std::string alreadyStereoReason(const PassContext& context) {
+  if (carriesEyeParameters(context))
+    return "already carries stereo eye parameters ('" + context.options.eye.eyeSignName + "')";
+  const spirv::Module& m = context.module;
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable && m.decorationValue(inst.resultId, spv::DecorationBuiltIn) ==
+                                              static_cast<uint32_t>(spv::BuiltInViewIndex))
+      return "reads the view index (gl_ViewIndex / gl_ViewID_OVR / SV_ViewID): it is multiview stereo already";
+  // glslang 12 reads HLSL's SV_ViewID as a plain input and keeps only its semantic string.
+  for (const auto& inst : m.annotations) {
+    if (inst.opcode != spv::OpDecorateString || inst.operand(1) != uint32_t(spv::DecorationUserSemantic)) continue;
+    std::string semantic = inst.stringOperand(2);
+    for (char& c : semantic) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (semantic == "SV_VIEWID" && m.storageClassOf(inst.operand(0)) == spv::StorageClassInput)
+      return "reads the view index (gl_ViewIndex / gl_ViewID_OVR / SV_ViewID): it is multiview stereo already";
+  }
+  return "";
 }
 
 bool perClassRegisters(const SourceInfo& source) {

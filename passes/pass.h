@@ -148,6 +148,12 @@ const ClipPositionAnalysis& clipPositions(PassContext& context);
 // again would double the parallax. Before this run injects anything, that is; see eyeDeclared.
 bool carriesEyeParameters(const PassContext& context);
 
+// Why the shader is stereo already ("already carries ...", "reads ..."), or "" when it is not: it carries the eye parameters (above), or it
+// reads the view index (BuiltIn ViewIndex: gl_ViewIndex, gl_ViewID_OVR, SV_ViewID), so each eye is a
+// view of a multiview draw and its positions or matrices are picked per view already. Shifting it, or
+// giving it a per-eye camera, would double the parallax.
+std::string alreadyStereoReason(const PassContext& context);
+
 // The highest Binding among the variables of descriptor set `set`. With `constantBuffersOnly` only
 // Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
 // onto the same binding numbers.

@@ -643,8 +643,9 @@ class PerEyeViewPass final : public Pass {
       return result;
     };
     // Already stereo (an earlier run, or the application's own parameters): never twice.
-    if (ctx.classification == Classification::AlreadyStereo || (!ctx.eyeDeclared && carriesEyeParameters(ctx))) {
-      report["skipped"] = "the shader already carries the eye parameters";
+    if (std::string why = ctx.eyeDeclared ? "" : alreadyStereoReason(ctx);
+        ctx.classification == Classification::AlreadyStereo || !why.empty()) {
+      report["skipped"] = "the shader " + (why.empty() ? std::string("is stereo already") : why);
       return finish(PassResult::Unchanged);
     }
     // Cheap first: a view vector needs a vec3/vec4 subtraction somewhere in the module (inlining

@@ -101,6 +101,9 @@ struct SourceInfo {
   // the source did not have, so OpenGL shaders keep relying on glBindAttribLocation & co.
   std::set<std::string> explicitLocation;
   std::set<std::string> explicitBinding;
+  // GL_OVR_multiview's `layout(num_views = N) in;` (0: none). SPIR-V does not carry N, and an OpenGL
+  // GLSL output of a multiview shader must declare it again.
+  int multiviewViews = 0;
 };
 
 struct SourceFile {

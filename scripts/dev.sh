@@ -3,7 +3,7 @@
 #   scripts/dev.sh run    install what is missing, build, convert the bundled corpus/ into out/corpus
 #   scripts/dev.sh test   install what is missing, build, run every test (unit, harness, lit, corpus),
 #                         then the sanitizer tree: unit, lit and corpus tests under ASan + UBSan, each
-#                         fuzz target for STEREOSHIFT_FUZZ_SECONDS (default 45) and the fuzz regressions
+#                         fuzz target for a fixed number of inputs (STEREOSHIFT_FUZZ_SECONDS=N: N seconds) and the fuzz regressions
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -48,10 +48,17 @@ case "$mode" in
           worker_pool_tests stereo_runtime_tests stereoshift_fuzz_targets fuzz_seeds
     ctest --test-dir "$sanitize_dir" --output-on-failure --parallel "$(nproc)" \
           -R '^(unit|unit[.].*|lit|corpus|fuzz[.]regressions[.].*)$'
-    # Each fuzz target for a bounded time from the seeds (corpus/, the lit tests) and what earlier runs
-    # in this tree found; a crash fails.
+    # Each fuzz target from the seeds (corpus/, the lit tests) for a fixed number of inputs with a fixed
+    # libFuzzer seed, so a busy machine finds what an idle one finds (STEREOSHIFT_FUZZ_RUNS_SCALE scales
+    # the budgets); STEREOSHIFT_FUZZ_SECONDS=N explores for N seconds per target from the corpus that
+    # earlier runs in this tree grew instead. A crash in our code fails either way.
+    if [ -n "${STEREOSHIFT_FUZZ_SECONDS:-}" ]; then
+      fuzz_budget=(--seconds "$STEREOSHIFT_FUZZ_SECONDS")
+    else
+      fuzz_budget=(--runs --runs-scale "${STEREOSHIFT_FUZZ_RUNS_SCALE:-1}")
+    fi
     python3 test/fuzz/run_fuzz.py fuzz --bin-dir "$sanitize_dir/test/fuzz" --seeds "$sanitize_dir/test/fuzz/seeds" \
-            --work "$sanitize_dir/test/fuzz/work" --seconds "${STEREOSHIFT_FUZZ_SECONDS:-45}"
+            --work "$sanitize_dir/test/fuzz/work" "${fuzz_budget[@]}"
     ;;
   *)
     echo "usage: scripts/dev.sh [run|test]" >&2; exit 2 ;;

@@ -27,6 +27,7 @@ EXPECTED_CLASSIFICATION = {
     "deferred-unproject": {"no-position-stage"},
     # per-eye view vectors live in vertex (shifted) or fragment (untouched) shaders
     "per-eye-view": {"perspective", "no-position-stage"},
+    "already-stereo": {"already-stereo"},  # multiview shaders (gl_ViewIndex, gl_ViewID_OVR, SV_ViewID)
 }
 
 STAGE_OF = {"vert": "vert", "tesc": "tesc", "tese": "tese", "geom": "geom", "frag": "frag", "comp": "comp"}

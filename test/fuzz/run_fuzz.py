@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Runs the libFuzzer targets of test/fuzz (sanitizer build only).
 
-  run_fuzz.py fuzz --bin-dir B --seeds S --work W --seconds N   each target for N seconds (CI)
+  run_fuzz.py fuzz --bin-dir B --seeds S --work W --runs       each target for a fixed number of inputs (CI)
+  run_fuzz.py fuzz --bin-dir B --seeds S --work W --seconds N   each target for N seconds (exploring)
   run_fuzz.py replay --target T --inputs DIR                    every kept input once (ctest)
 
 A crash in our code, a sanitizer report, a timeout or a leak exits non-zero; `fuzz` names the input
@@ -10,7 +11,13 @@ that did it, which belongs under test/fuzz/regressions/<target>/ once looked at.
 A crash whose faulting frames (the first stack of the report, before the first frame of our own code)
 are all in a packaged library (glslang, SPIRV-Tools, SPIRV-Cross) is a known third-party crash: `fuzz`
 keeps the input under W/<target>/third-party-crashes/, says where it crashed and fuzzes on from the same
-corpus for the rest of the target's N seconds. `replay` runs the inputs of DIR/known-*-crashes/ one by
+corpus for the rest of the target's budget.
+
+`--runs` is the CI mode and does not depend on the machine's speed: each target starts from the seeds
+alone (the corpus earlier runs grew is set aside), with a fixed libFuzzer seed, for a fixed number of
+executions (RUN_BUDGET, or --runs-scale times it). The same tree gives the same inputs on a busy machine
+as on an idle one, only later; a wall-clock cap (--seconds, generous) only stops a run early, which is
+never a failure. `--seconds` alone keeps the corpus from run to run and explores for that long. `replay` runs the inputs of DIR/known-*-crashes/ one by
 one and accepts each that passes or crashes in that same library, and nothing else."""
 import argparse
 import hashlib
@@ -31,6 +38,10 @@ DICTIONARIES = {"fuzz_scene_manifest": HERE / "scene.dict"}  # the others: shade
 # loaded CI machine does not report a slow but finite input.
 INPUT_TIMEOUT_S = 60
 RSS_LIMIT_MB = 4096
+# Executions per target in --runs mode: about 45 s each on one idle core of the CI machine's kind under
+# ASan + UBSan (the transpile targets run the whole glslang front end per input; SPIR-V input skips it).
+RUN_BUDGET = {"fuzz_transpile_glsl": 12000, "fuzz_transpile_hlsl": 15000, "fuzz_transpile_spirv": 200000,
+              "fuzz_scene_manifest": 50000}
 # After a third-party crash the fuzzer restarts (reloading the corpus) only if this much time is left.
 MIN_RESTART_S = 3
 
@@ -291,7 +302,11 @@ def filtered_seeds(seeds, excluded, into):
 
 def fuzz_target(name, args, env):
     binary = args.bin_dir / name
-    corpus = args.work / "corpus" / name     # grows from run to run in the build tree
+    # Grows from run to run in the build tree; the --runs mode starts each time from the seeds alone.
+    corpus = args.work / ("corpus-fixed" if args.runs else "corpus") / name
+    if args.runs and corpus.exists():
+        shutil.rmtree(corpus)
+    budget = int(RUN_BUDGET[name] * args.runs_scale) if args.runs else None
     artifacts = args.work / "artifacts" / name
     third_party_dir = args.work / name / "third-party-crashes"
     seeds = args.seeds / name
@@ -308,7 +323,10 @@ def fuzz_target(name, args, env):
         if sessions and remaining < MIN_RESTART_S:
             break
         seed_dir = filtered_seeds(seeds, excluded, args.work / name / "seeds") if excluded else seeds
-        command = [str(binary), f"-max_total_time={max(1, int(remaining))}", f"-timeout={INPUT_TIMEOUT_S}",
+        if budget is not None and sessions and executions >= budget:
+            break
+        pinned = [f"-seed={sessions + 1}", f"-runs={budget - executions}"] if budget is not None else []
+        command = [str(binary), *pinned, f"-max_total_time={max(1, int(remaining))}", f"-timeout={INPUT_TIMEOUT_S}",
                    f"-rss_limit_mb={RSS_LIMIT_MB}", f"-dict={DICTIONARIES.get(name, HERE / 'shader.dict')}",
                    f"-artifact_prefix={artifacts}/", "-print_final_stats=1", str(corpus), str(seed_dir)]
         sessions += 1
@@ -323,7 +341,7 @@ def fuzz_target(name, args, env):
         runs = re.findall(r"stat::number_of_executed_units:\s*(\d+)", text)
         executions += int(runs[-1]) if runs else 0
         if result.returncode == 0:
-            break  # its time is up
+            break  # its budget (runs or time) is spent
         written = re.findall(r"Test unit written to (\S+)", text)
         artifact = pathlib.Path(written[-1]) if written else None
         verdict = triage(text)
@@ -339,7 +357,9 @@ def fuzz_target(name, args, env):
         left = deadline - time.monotonic()
         print(f"run_fuzz: {name}: known third-party crash in {verdict['library']}: {verdict['error']} in "
               f"{verdict['frame']}" + (f" from {verdict['caller']}" if verdict["caller"] else "")
-              + f"; input kept as {kept}; " + (f"fuzzing on ({left:.0f} s left)" if left >= MIN_RESTART_S
+              + f"; input kept as {kept}; " + (f"fuzzing on ({budget - executions} runs left)" if budget is not None
+                                               and left >= MIN_RESTART_S
+                                               else f"fuzzing on ({left:.0f} s left)" if left >= MIN_RESTART_S
                                                else "no time left"))
         if "INITED" not in text and not drop_from_startup(kept, corpus, seeds, excluded):
             print(f"run_fuzz: {name}: it crashed while reading the corpus and is in neither {corpus} nor "
@@ -379,12 +399,18 @@ def main():
     f.add_argument("--bin-dir", required=True, type=pathlib.Path)
     f.add_argument("--seeds", required=True, type=pathlib.Path)
     f.add_argument("--work", required=True, type=pathlib.Path)
-    f.add_argument("--seconds", type=int, default=45)
+    f.add_argument("--seconds", type=int, default=None,
+                   help="wall-clock limit per target (default 45; with --runs, a cap of 240)")
+    f.add_argument("--runs", action="store_true", help="a fixed execution budget per target, from the seeds "
+                   "alone with a fixed libFuzzer seed (CI: independent of the machine's speed)")
+    f.add_argument("--runs-scale", type=float, default=1.0, help="multiply each --runs budget")
     f.add_argument("--targets", nargs="*", help="default: all of them")
     r = modes.add_parser("replay")
     r.add_argument("--target", required=True, type=pathlib.Path)
     r.add_argument("--inputs", required=True, type=pathlib.Path)
     args = parser.parse_args()
+    if args.mode == "fuzz" and args.seconds is None:
+        args.seconds = 240 if args.runs else 45
     return fuzz(args) if args.mode == "fuzz" else replay(args)
 
 

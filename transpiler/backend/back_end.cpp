@@ -110,6 +110,11 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         o.separate_shader_objects = false;
         o.vertex.support_nonzero_base_instance = false;  // no stray SPIRV_Cross_BaseInstance uniform
         o.emit_line_directives = false;
+        // OpenGL multiview (GL_OVR_multiview2) needs `layout(num_views = N) in;`, which SPIR-V does not
+        // carry: the source's own N, else 2 (a stereo pair) for a Vulkan multiview source.
+        if (!o.vulkan_semantics)
+          for (spv::Capability c : compiler.get_declared_capabilities())
+            if (c == spv::CapabilityMultiView) o.ovr_multiview_view_count = info.multiviewViews > 0 ? info.multiviewViews : 2;
         compiler.set_common_options(o);
         result.text = compiler.compile();
         result.vulkanSemantics = o.vulkan_semantics;

@@ -362,6 +362,24 @@ std::string buildPreamble(const std::vector<std::string>& defines, bool glsl) {
   return preamble;
 }
 
+// N of `layout(num_views = N) in;` (GL_OVR_multiview), 0 when the text declares none. glslang keeps the
+// count in its parse context only, so the text is read again (a mention in a comment is harmless: it
+// only matters for a shader that reads the view index).
+int declaredViewCount(std::string_view text) {
+  for (size_t at = text.find("num_views"); at != std::string_view::npos; at = text.find("num_views", at + 1)) {
+    size_t i = at + 9;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i >= text.size() || text[i] != '=') continue;
+    ++i;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    int views = 0;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && views < 1000)
+      views = views * 10 + (text[i++] - '0');
+    if (views > 0) return views;
+  }
+  return 0;
+}
+
 void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, SourceInfo& info) {
   auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
   if (!root) return;
@@ -526,6 +544,7 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
     return attempt;
   }
   recordExplicitQualifiers(*shader.getIntermediate(), attempt.info);
+  attempt.info.multiviewViews = declaredViewCount(text);
 
   glslang::TProgram program;
   program.addShader(&shader);

@@ -18,5 +18,5 @@ void main() {
 // ONCE-NOT: frame.invViewProj[0]
 // CHECK: "output": "copied",
 // CHECK: "deferred-unprojection": {
-// CHECK-NEXT: "left_alone": "the shader already carries the eye parameters",
+// CHECK-NEXT: "left_alone": "the shader already carries stereo eye parameters ('eyeSign')",
 // CHECK-NEXT: "result": "unchanged"

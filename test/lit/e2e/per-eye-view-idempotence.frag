@@ -18,4 +18,4 @@ void main() {
 // ONCE: stereo.eyeOffsetX
 // CHECK: "per-eye-view": {
 // CHECK-NEXT: "result": "unchanged",
-// CHECK-NEXT: "skipped": "the shader already carries the eye parameters"
+// CHECK-NEXT: "skipped": "the shader already carries stereo eye parameters ('eyeSign')"
