@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,9 @@ struct PassContext {
   Diagnostics& diags;
   std::string file;
   nlohmann::json& report;  // passes add what they did under report["passes"][name()]
+  // The module as the front end made it (null for SPIR-V input), so --validate-each blames a pass
+  // only for validation errors the front end's module did not already have (see validateSpirv).
+  const std::vector<uint32_t>* frontEndSpirv = nullptr;
 
   // The clip-position outputs: clipPositions(*this).outputs(), kept here each time the analysis is
   // computed for the passes that read them from the context (no pass adds or removes an output).

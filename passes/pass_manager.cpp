@@ -53,7 +53,8 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
       *passLog += "; IR after " + std::string(info.name) + " (" + toString(result) + ")\n" +
                   spirv::disassemble(ctx.module.encode());
     if (ctx.options.validateEach && result == PassResult::Changed &&
-        !validateSpirv(ctx.module.encode(), ctx.source, ctx.file, std::string("after pass ") + info.name, ctx.diags))
+        !validateSpirv(ctx.module.encode(), ctx.source, ctx.file, std::string("after pass ") + info.name, ctx.diags,
+                       ctx.frontEndSpirv))
       return false;
   }
   return true;

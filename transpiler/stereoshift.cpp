@@ -201,6 +201,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
   auto passesStarted = std::chrono::steady_clock::now();
   PassContext ctx{module, options, info, diags, file, result.report};
   ctx.nextStage = nextStage;
+  if (info.language != SourceLanguage::Spirv) ctx.frontEndSpirv = &result.originalSpirv;
   if (compiled && compiled->foldTried) {
     ctx.folded = std::move(compiled->folded);
     ctx.foldTried = true;
@@ -230,7 +231,17 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
   }
 
   std::vector<uint32_t> finalWords = module.encode();
-  if (!validateSpirv(finalWords, info, file, "after the passes", diags)) return result;
+  std::string inherited;
+  if (!validateSpirv(finalWords, info, file, "after the passes", diags, ctx.frontEndSpirv, &inherited)) return result;
+  if (!inherited.empty()) {
+    // e.g. a loose `uniform bool` of OpenGL GLSL: fine in the GLSL/HLSL/MSL SPIRV-Cross writes, not as SPIR-V.
+    result.report["front_end_spirv_invalid"] = inherited;
+    if (target == TargetLanguage::Spirv || target == TargetLanguage::SpirvAsm) {
+      diags.error(file, "glslang's SPIR-V for this shader does not validate (" + inherited +
+                            "); it cannot be written as SPIR-V (choose a source-language --target)");
+      return result;
+    }
+  }
 
   // ---- back end ----
   auto backStarted = std::chrono::steady_clock::now();

@@ -24,8 +24,7 @@ spv_target_env environmentFor(const SourceInfo& info, uint32_t version) {
 
 }  // namespace
 
-bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, const std::string& file,
-                   const std::string& when, Diagnostics& diags) {
+std::string validationErrors(const std::vector<uint32_t>& words, const SourceInfo& info) {
   uint32_t version = words.size() > 1 ? words[1] : 0;
   spvtools::SpirvTools tools(environmentFor(info, version));
   std::string messages;
@@ -34,8 +33,20 @@ bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, c
   });
   spvtools::ValidatorOptions options;
   options.SetRelaxBlockLayout(true);  // HLSL offsets (glslang's EShMsgHlslOffsets)
-  if (tools.Validate(words.data(), words.size(), options)) return true;
+  if (tools.Validate(words.data(), words.size(), options)) return "";
   while (!messages.empty() && messages.back() == '\n') messages.pop_back();
+  return messages.empty() ? "the validator refused the module without a message" : messages;
+}
+
+bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, const std::string& file,
+                   const std::string& when, Diagnostics& diags, const std::vector<uint32_t>* frontEnd,
+                   std::string* inherited) {
+  std::string messages = validationErrors(words, info);
+  if (messages.empty()) return true;
+  if (frontEnd && !frontEnd->empty() && validationErrors(*frontEnd, info) == messages) {
+    if (inherited) *inherited = messages;
+    return true;
+  }
   diags.error(file, "invalid SPIR-V " + when + ": " + messages);
   return false;
 }

@@ -13,7 +13,18 @@
 namespace stereoshift {
 
 // False, with an "invalid SPIR-V <when>: ..." error in `diags`, when the module does not validate.
+//
+// glslang makes SPIR-V that the validator refuses from some valid OpenGL GLSL (a loose `uniform bool`
+// is a Bool variable in UniformConstant storage, which SPIR-V forbids): the passes must not be blamed
+// for what the front end made. With `frontEnd` (the module as glslang made it), an error that the
+// front end's module already has, word for word, is inherited: the call succeeds and `*inherited`
+// holds it. spirv-val stops at the first error, so a later one of the passes' own would hide behind
+// it; the back end refuses to write such a module as SPIR-V.
 bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, const std::string& file,
-                   const std::string& when, Diagnostics& diags);
+                   const std::string& when, Diagnostics& diags, const std::vector<uint32_t>* frontEnd = nullptr,
+                   std::string* inherited = nullptr);
+
+// The validator's error messages for `words` ("" when they validate).
+std::string validationErrors(const std::vector<uint32_t>& words, const SourceInfo& info);
 
 }  // namespace stereoshift
