@@ -142,6 +142,16 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         break;
       }
       case TargetLanguage::Msl: {
+        // Metal has no geometry stage (tessellation it has: SPIRV-Cross turns tesc into a compute kernel
+        // and tese into a post-tessellation vertex function); mesh and task stages SPIRV-Cross cannot
+        // write as Metal either. Refused, never written as text that is not Metal.
+        if (info.stage == Stage::Geometry || info.stage == Stage::Mesh || info.stage == Stage::Task) {
+          const char* what = info.stage == Stage::Geometry ? "geometry" : info.stage == Stage::Mesh ? "mesh" : "task";
+          diags.error(file, std::string("--target msl: Metal has no ") + what +
+                                " shader that SPIRV-Cross can write (convert this stage for another target, or move "
+                                "its work into a vertex, compute or post-tessellation stage)");
+          return result;
+        }
         spirv_cross::CompilerMSL compiler(words);
         auto msl = compiler.get_msl_options();
         // 2.1 is the first MSL with [[invariant]] positions; default to it unless asked otherwise.
@@ -149,6 +159,12 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         msl.msl_version = spirv_cross::CompilerMSL::Options::make_msl_version(uint32_t(v / 10), uint32_t(v % 10));
         compiler.set_msl_options(msl);
         result.text = compiler.compile();
+        // SPIRV-Cross writes `unknown` where it has no Metal function qualifier for the entry point.
+        if (result.text.find("\nunknown ") != std::string::npos) {
+          diags.error(file, std::string("--target msl: SPIRV-Cross cannot express this ") + stageName(info.stage) +
+                                " shader as a Metal function; nothing was written");
+          return result;
+        }
         break;
       }
       default:
