@@ -1,3 +1,18 @@
+// This turns a shader (or the pre-rasterization stages of a pipeline) into a run on the device:
+// the original and the transpiled SPIR-V, with inputs generated from the module's own reflection —
+// every buffer, image, sampler and texel-buffer descriptor it declares, every vertex input, push
+// constants (as a uniform buffer when over the device limit), pass-through stages in front of a lone
+// tese or geometry shader — captured through transform feedback and compared per eye with the
+// exact shift computed in double. Where a shader cannot run, the result's `error` says why in one line.
+//
+// The generated data decide what "equal outputs" mean, so they are distinct: every scalar, vector
+// and matrix value is seeded by its resource (set, binding, array element) and its byte offset, and
+// no two uniforms hold the same numbers. Matrices: no heuristic guesses which mat4 is the projection.
+// Each is instead its own member of a family that maps points in front of a camera (z < 0, w > 0)
+// to points in front again, with a projective last row so w leaves 1 (see matrixEntry): any
+// product of them, in either multiplication order, keeps the geometry in front with w spread from
+// near to far. So a shadow-map coordinate `DepthBiasMVP * p` and the position `MVP * p` differ, and a
+// pass that used the wrong operand shows.
 #include "transpiler/verify/stereo_verify.h"
 
 #include "transpiler/verify/capture_instrument.h"
@@ -617,6 +632,65 @@ std::string missingFeature(const Module& m, const VkPhysicalDeviceFeatures& f) {
   return {};
 }
 
+// Double-precision vertex inputs (dvec3 positions of CAD-style samples) need 64-bit vertex
+// formats, which lavapipe does not have. The harness feeds them as 32-bit floats instead: each
+// such input becomes a float input at the same location whose loads are converted to double, in
+// the original and the transpiled module alike (the generated data are floats anyway).
+void feedDoubleInputsAsFloats(Module& m) {
+  if (m.executionModel() != spv::ExecutionModelVertex) return;
+  for (uint32_t id : m.entryInterface()) {
+    const Instruction* var = m.definition(id);
+    if (!var || var->operand(0) != spv::StorageClassInput || m.hasDecoration(id, spv::DecorationBuiltIn)) continue;
+    const uint32_t doubleType = m.pointeeType(var->typeId);
+    const Instruction* d = m.definition(doubleType);
+    const uint32_t n = d && d->opcode == spv::OpTypeVector ? d->operand(1) : 1;
+    const Instruction* scalar = d && d->opcode == spv::OpTypeVector ? m.definition(d->operand(0)) : d;
+    if (!scalar || scalar->opcode != spv::OpTypeFloat || scalar->operand(0) != 64) continue;
+    const uint32_t doubleScalar = scalar->resultId;
+    const uint32_t floatScalar = m.typeFloat(32);
+    const uint32_t floatType = n > 1 ? m.typeVector(floatScalar, n) : floatScalar;
+    const uint32_t floatVar = m.addGlobalVariable(m.typePointer(spv::StorageClassInput, floatType), spv::StorageClassInput);
+    const uint32_t floatScalarPointer = m.typePointer(spv::StorageClassInput, floatScalar);
+    for (auto decoration : {spv::DecorationLocation, spv::DecorationComponent})
+      if (auto value = m.decorationValue(id, decoration)) m.decorate(floatVar, decoration, {*value});
+    m.setName(floatVar, m.name(id));
+    // Out of the interface: the double variable is no longer read.
+    for (auto& entry : m.entryPoints) {
+      const size_t first = 2 + entry.stringWordCount(2);
+      for (size_t i = first; i < entry.operands.size(); ++i)
+        if (entry.operands[i] == id) {
+          entry.operands.erase(entry.operands.begin() + long(i));
+          break;
+        }
+    }
+    std::vector<uint32_t> chains;  // access chains into the old variable, now into the float one
+    for (auto& f : m.functions)
+      for (auto& b : f.blocks) {
+        std::vector<Instruction> rewritten;
+        for (auto& inst : b.instructions) {
+          if ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) && inst.operand(0) == id) {
+            inst.typeId = floatScalarPointer;
+            inst.operands[0] = floatVar;
+            chains.push_back(inst.resultId);
+          } else if (inst.opcode == spv::OpLoad &&
+                     (inst.operand(0) == id ||
+                      std::find(chains.begin(), chains.end(), inst.operand(0)) != chains.end())) {
+            const bool whole = inst.operand(0) == id;
+            const uint32_t loaded = m.takeId();
+            rewritten.emplace_back(spv::OpLoad, whole ? floatType : floatScalar, loaded,
+                                   std::vector<uint32_t>{whole ? floatVar : inst.operand(0)});
+            rewritten.emplace_back(spv::OpFConvert, whole ? doubleType : doubleScalar, inst.resultId,
+                                   std::vector<uint32_t>{loaded});
+            continue;
+          }
+          rewritten.push_back(std::move(inst));
+        }
+        b.instructions = std::move(rewritten);
+      }
+    m.invalidateDefinitions();
+  }
+}
+
 // Vertices per input primitive of a geometry shader, and the list topology that feeds it.
 uint32_t geometryInput(const Module& geometry, VkPrimitiveTopology* topology) {
   for (const auto& mode : geometry.executionModes) switch (mode.operand(1)) {
@@ -741,6 +815,8 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     }
     convertOpenGLForVulkan(*b, blockBinding, &error);
     matchInvariance(*a, *b);
+    feedDoubleInputsAsFloats(*a);
+    feedDoubleInputsAsFloats(*b);
     originals.push_back(std::move(*a));
     transpiled.push_back(std::move(*b));
   }
