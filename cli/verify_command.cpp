@@ -45,6 +45,11 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
   settings.convergenceName = options.eye.convergenceName;
   harness::VerifyResult r = harness::verifyStereo(*context, stages, settings);
   if (!r.error.empty()) {
+    // The shader could not run: one line saying why, on stderr and (with --json) in the report.
+    if (verify.json)
+      std::cout << nlohmann::json{{"file", name}, {"classification", classification}, {"ok", false}, {"ran", false},
+                                  {"error", r.error}}.dump(2)
+                << "\n";
     std::cerr << name << ": error: " << r.error << "\n1 error generated.\n";
     return 1;
   }
@@ -53,6 +58,7 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
     j["file"] = name;
     j["device"] = context->deviceName();
     j["bound_ulps"] = settings.maxUlps;
+    j["ran"] = true;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << name << " on " << context->deviceName() << ": " << r.vertices << " vertices\n"
@@ -60,6 +66,9 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
               << "  other outputs per eye:       " << (r.otherOutputsUnchanged ? "unchanged" : "CHANGED") << "\n"
               << "  stereo x error:              " << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ")\n"
               << "  vertices kept by the cutoff: " << r.cutoffVertices << "\n";
+    for (const auto& s : r.synthesizedStages) std::cout << "  run behind:                  " << s << "\n";
+    if (r.pushConstantsAsBuffer)
+      std::cout << "  push constants:              over the device limit, bound as a uniform buffer\n";
     for (const auto& p : r.problems) std::cout << "  problem: " << p << "\n";
     std::cout << (r.ok ? "verified" : "FAILED") << "\n";
   }

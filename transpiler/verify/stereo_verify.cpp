@@ -1,6 +1,22 @@
+// This turns a shader (or the pre-rasterization stages of a pipeline) into a run on the device:
+// the original and the transpiled SPIR-V, with inputs generated from the module's own reflection —
+// every buffer, image, sampler and texel-buffer descriptor it declares, every vertex input, push
+// constants (as a uniform buffer when over the device limit), pass-through stages in front of a lone
+// tese or geometry shader — captured through transform feedback and compared per eye with the
+// exact shift computed in double. Where a shader cannot run, the result's `error` says why in one line.
+//
+// The generated data decide what "equal outputs" mean, so they are distinct: every scalar, vector
+// and matrix value is seeded by its resource (set, binding, array element) and its byte offset, and
+// no two uniforms hold the same numbers. Matrices: no heuristic guesses which mat4 is the projection.
+// Each is instead its own member of a family that maps points in front of a camera (z < 0, w > 0)
+// to points in front again, with a projective last row so w leaves 1 (see matrixEntry): any
+// product of them, in either multiplication order, keeps the geometry in front with w spread from
+// near to far. So a shadow-map coordinate `DepthBiasMVP * p` and the position `MVP * p` differ, and a
+// pass that used the wrong operand shows.
 #include "transpiler/verify/stereo_verify.h"
 
 #include "transpiler/verify/capture_instrument.h"
+#include "transpiler/verify/stage_synthesis.h"
 #include "passes/ir/module.h"
 
 #include <algorithm>
@@ -10,6 +26,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <map>
 
 namespace stereoshift::harness {
@@ -27,24 +44,62 @@ nlohmann::json VerifyResult::json() const {
           {"other_outputs_unchanged", otherOutputsUnchanged},
           {"halo_components_changed", haloComponentsChanged},
           {"new_nans", newNaNs},
+          {"synthesized_stages", synthesizedStages},
+          {"push_constants_as_buffer", pushConstantsAsBuffer},
           {"problems", problems}};
 }
 
 namespace {
 
-// The "scene" every matrix uniform gets: a perspective projection (60 degrees, near 0.1, far 200)
-// times a view 6 units back, column-major. Any matrix would do for comparing original and
-// transpiled on identical inputs; this one spreads w over the comfortable depth range.
-void sceneMatrix(float out[16]) {
-  const double f = 1.0 / std::tan(std::numbers::pi / 6.0), n = 0.1, fa = 200.0;
-  double p[16] = {f, 0, 0, 0, 0, f, 0, 0, 0, 0, fa / (n - fa), -1, 0, 0, fa * n / (n - fa), 0};
-  double t[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.3, -0.2, -6, 1};
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) {
-      double s = 0;
-      for (int k = 0; k < 4; ++k) s += p[k * 4 + r] * t[c * 4 + k];
-      out[c * 4 + r] = static_cast<float>(s);
-    }
+// --- generated data --------------------------------------------------------------------------
+// Every value is a function of a seed: the resource's (set, binding, array element) — or the push
+// constant block — mixed with the value's byte offset inside it, so two members, two elements or
+// two resources never get the same data, while an original and its transpiled copy (whose shared
+// resources keep their offsets) get exactly the same.
+
+uint32_t mix(uint32_t a, uint32_t b) {
+  uint32_t h = a * 0x9E3779B1u ^ (b + 0x7F4A7C15u + (a << 6) + (a >> 2));
+  h ^= h >> 15;
+  h *= 0x2C1B3C6Du;
+  h ^= h >> 12;
+  h *= 0x297A2D39u;
+  h ^= h >> 15;
+  return h;
+}
+double unit(uint32_t h) { return double(h >> 8) / double(1u << 24); }  // [0, 1)
+uint32_t resourceSeed(uint32_t set, uint32_t binding, uint32_t element) { return mix(mix(set + 1, binding + 1), element); }
+constexpr uint32_t kPushConstantSeed = 0x5055u;
+
+// Entry (row, column) of the 4x4 matrix of `seed` (column-vector convention, M * p):
+//   row 0  s*cos t  -s*sin t  sigma   tx
+//   row 1  s*sin t   s*cos t    0     ty
+//   row 2     0         0     gamma  -delta
+//   row 3     0         0     -beta   alpha
+// a turn t about z, a scale s, a small shear sigma of x by z, a shift (tx, ty) and a projective
+// last row. For a point in front of a camera looking down -z (z < 0, w > 0) it gives again z' < 0
+// and w' = alpha*w - beta*z > 0, so every product of such matrices keeps points in front, whatever
+// order a shader multiplies them in and whichever of them is "the projection": no heuristic has
+// to guess which uniform is which. Over the generated depths (z in [-60, -0.5]) one matrix spreads
+// w over [alpha + beta/2, alpha + 60 beta], so near and far vertices both get shifted. The
+// transposed reading (HLSL mul(v, M)) keeps w > 0 too: its w row is (tx, ty, -delta, alpha) with
+// |tx|, |ty| <= 0.05. A matrix with fewer rows or columns (mat3 normal matrices, mat4x3 affine
+// transforms, mat2) is the top-left part. Arrays of matrices (bone palettes, instance transforms)
+// are affine — the same without the projective row and with t, s close to a rigid motion — so
+// weighted blends of them stay plausible transforms.
+double matrixEntry(uint32_t seed, uint32_t row, uint32_t column, bool affine) {
+  const double t = (unit(mix(seed, 1)) - 0.5) * (affine ? 0.2 : 0.6);
+  const double s = affine ? 0.95 + 0.1 * unit(mix(seed, 2)) : 0.8 + 0.4 * unit(mix(seed, 2));
+  const double tx = (unit(mix(seed, 3)) - 0.5) * 0.1, ty = (unit(mix(seed, 4)) - 0.5) * 0.1;
+  const double sigma = affine ? 0.0 : (unit(mix(seed, 5)) - 0.5) * 0.1;
+  const double gamma = affine ? 1.0 : 0.9 + 0.2 * unit(mix(seed, 6));
+  const double delta = affine ? (unit(mix(seed, 7)) - 0.5) * 0.2 : 0.2 + 0.8 * unit(mix(seed, 7));
+  const double beta = affine ? 0.0 : 0.05 + 0.45 * unit(mix(seed, 8));
+  const double alpha = affine ? 1.0 : 0.6 + 0.8 * unit(mix(seed, 9));
+  const double m[4][4] = {{s * std::cos(t), -s * std::sin(t), sigma, tx},
+                          {s * std::sin(t), s * std::cos(t), 0, ty},
+                          {0, 0, gamma, -delta},
+                          {0, 0, -beta, alpha}};
+  return row < 4 && column < 4 ? m[row][column] : 0.0;
 }
 
 struct Reflector {
@@ -58,6 +113,10 @@ struct Reflector {
     if (d->opcode == spv::OpTypeVector) return d->operand(1);
     return 1;
   }
+  uint32_t arrayLength(const Instruction* d) const {
+    const Instruction* length = d && d->opcode == spv::OpTypeArray ? def(d->operand(1)) : nullptr;
+    return length ? length->operand(0) : 0;
+  }
 
   void putFloat(std::vector<uint8_t>& bytes, size_t at, float v) const {
     if (bytes.size() < at + 4) bytes.resize(at + 4, 0);
@@ -67,14 +126,30 @@ struct Reflector {
     if (bytes.size() < at + 4) bytes.resize(at + 4, 0);
     std::memcpy(bytes.data() + at, &v, 4);
   }
+  void putDouble(std::vector<uint8_t>& bytes, size_t at, double v) const {
+    if (bytes.size() < at + 8) bytes.resize(at + 8, 0);
+    std::memcpy(bytes.data() + at, &v, 8);
+  }
+  bool isDouble(uint32_t type) const {
+    const Instruction* d = def(type);
+    while (d && (d->opcode == spv::OpTypeVector || d->opcode == spv::OpTypeMatrix)) d = def(d->operand(0));
+    return d && d->opcode == spv::OpTypeFloat && d->operand(0) == 64;
+  }
+  void putReal(std::vector<uint8_t>& bytes, size_t at, double v, bool wide) const {
+    wide ? putDouble(bytes, at, v) : putFloat(bytes, at, float(v));
+  }
 
-  // Fills one value of `type` at `at` with plausible data.
-  void fill(std::vector<uint8_t>& bytes, uint32_t type, size_t at, uint32_t matrixStride, bool rowMajor) const {
+  // Fills one value of `type` at byte `at` of a resource with seed `seed` (see "generated data").
+  // Floats are in [0.5, 1.5), vector components in [0.25 (i+1), 0.25 (i+1) + 0.5) with the fourth
+  // of a vec4 1 (a point, a colour), integers 1 (safe as a count, an index or a divisor), bools false.
+  void fill(std::vector<uint8_t>& bytes, uint32_t type, size_t at, uint32_t matrixStride, bool rowMajor,
+            uint32_t seed, bool inArray = false) const {
     const Instruction* d = def(type);
     if (!d) return;
+    const uint32_t here = mix(seed, uint32_t(at));
     switch (d->opcode) {
       case spv::OpTypeFloat:
-        putFloat(bytes, at, 0.5f);
+        putReal(bytes, at, 0.5 + unit(here), d->operand(0) == 64);
         break;
       case spv::OpTypeInt:
         putU32(bytes, at, 1);
@@ -83,44 +158,32 @@ struct Reflector {
         putU32(bytes, at, 0);
         break;
       case spv::OpTypeVector: {
-        const float values[4] = {0.25f, 0.5f, 0.75f, 1.0f};
-        bool isFloat = def(d->operand(0)) && def(d->operand(0))->opcode == spv::OpTypeFloat;
-        for (uint32_t i = 0; i < d->operand(1); ++i)
-          isFloat ? putFloat(bytes, at + 4 * i, values[i]) : putU32(bytes, at + 4 * i, i);
+        const Instruction* component = def(d->operand(0));
+        const bool isFloat = component && component->opcode == spv::OpTypeFloat;
+        const bool wide = isFloat && component->operand(0) == 64;
+        for (uint32_t i = 0; i < d->operand(1); ++i) {
+          double v = (d->operand(1) == 4 && i == 3) ? 1.0 : 0.25 * (i + 1) + 0.5 * unit(mix(here, i));
+          isFloat ? putReal(bytes, at + (wide ? 8 : 4) * i, v, wide) : putU32(bytes, at + 4 * i, i);
+        }
         break;
       }
       case spv::OpTypeMatrix: {
-        uint32_t columns = d->operand(1);
-        uint32_t rows = scalarCount(d->operand(0));
-        float scene[16];
-        sceneMatrix(scene);
-        uint32_t stride = matrixStride ? matrixStride : 16;
+        const uint32_t columns = d->operand(1), rows = scalarCount(d->operand(0));
+        const bool wide = isDouble(type);
+        const uint32_t scalar = wide ? 8 : 4;
+        const uint32_t stride = matrixStride ? matrixStride : 4 * scalar;
         for (uint32_t c = 0; c < columns; ++c)
           for (uint32_t r = 0; r < rows; ++r) {
-            float v = (columns == 4 && rows == 4) ? scene[c * 4 + r] : (c == r ? 1.0f : 0.0f);
-            size_t offset = rowMajor ? r * stride + c * 4 : c * stride + r * 4;
-            putFloat(bytes, at + offset, v);
+            size_t offset = rowMajor ? r * stride + c * scalar : c * stride + r * scalar;
+            putReal(bytes, at + offset, matrixEntry(here, r, c, inArray), wide);
           }
         break;
       }
       case spv::OpTypeArray:
       case spv::OpTypeRuntimeArray: {
-        const Instruction* length = d->opcode == spv::OpTypeArray ? def(d->operand(1)) : nullptr;
-        uint32_t count = length ? length->operand(0) : 64;  // a runtime array gets 64 elements
+        uint32_t count = d->opcode == spv::OpTypeArray ? arrayLength(d) : 64;  // a runtime array gets 64 elements
         uint32_t stride = m.decorationValue(type, spv::DecorationArrayStride).value_or(16);
-        const Instruction* element = def(d->operand(0));
-        for (uint32_t i = 0; i < count; ++i) {
-          // Arrays of matrices (bone palettes): identity, so skinning keeps the mesh in view.
-          if (element && element->opcode == spv::OpTypeMatrix) {
-            uint32_t columns = element->operand(1), rows = scalarCount(element->operand(0));
-            uint32_t ms = matrixStride ? matrixStride : 16;
-            for (uint32_t c = 0; c < columns; ++c)
-              for (uint32_t r = 0; r < rows; ++r)
-                putFloat(bytes, at + i * stride + (rowMajor ? r * ms + c * 4 : c * ms + r * 4), c == r ? 1.f : 0.f);
-          } else {
-            fill(bytes, d->operand(0), at + i * stride, matrixStride, rowMajor);
-          }
-        }
+        for (uint32_t i = 0; i < count; ++i) fill(bytes, d->operand(0), at + i * stride, matrixStride, rowMajor, seed, true);
         break;
       }
       case spv::OpTypeStruct:
@@ -128,7 +191,7 @@ struct Reflector {
           uint32_t offset = m.memberDecorationValue(type, i, spv::DecorationOffset).value_or(0);
           uint32_t ms = m.memberDecorationValue(type, i, spv::DecorationMatrixStride).value_or(0);
           bool rm = m.hasMemberDecoration(type, i, spv::DecorationRowMajor);
-          fill(bytes, d->operands[i], at + offset, ms, rm);
+          fill(bytes, d->operands[i], at + offset, ms, rm, seed, inArray);
         }
         break;
       default:
@@ -136,6 +199,8 @@ struct Reflector {
     }
   }
 
+  // The vertex format of one attribute location's worth of `type` (a scalar or vector); 0 size
+  // and VK_FORMAT_UNDEFINED when it has none (bool, 8/16-bit).
   VkFormat formatOf(uint32_t type, uint32_t* size) const {
     const Instruction* d = def(type);
     uint32_t n = 1;
@@ -151,64 +216,100 @@ struct Reflector {
                                  VK_FORMAT_R32G32B32A32_SINT};
     static const VkFormat u[] = {VK_FORMAT_R32_UINT, VK_FORMAT_R32G32_UINT, VK_FORMAT_R32G32B32_UINT,
                                  VK_FORMAT_R32G32B32A32_UINT};
+    static const VkFormat dbl[] = {VK_FORMAT_R64_SFLOAT, VK_FORMAT_R64G64_SFLOAT, VK_FORMAT_R64G64B64_SFLOAT,
+                                   VK_FORMAT_R64G64B64A64_SFLOAT};
     if (d->opcode == spv::OpTypeFloat && d->operand(0) == 32) return f[n - 1];
+    if (d->opcode == spv::OpTypeFloat && d->operand(0) == 64) {
+      *size = 8 * n;
+      return dbl[n - 1];
+    }
     if (d->opcode == spv::OpTypeInt && d->operand(0) == 32) return d->operand(1) ? s[n - 1] : u[n - 1];
+    *size = 0;
     return VK_FORMAT_UNDEFINED;
   }
+
+  // Locations one scalar or vector takes (64-bit three- and four-component vectors take two).
+  uint32_t locations(uint32_t type) const { return isDouble(type) && scalarCount(type) > 2 ? 2 : 1; }
 };
 
-// Vertex data: attribute 0..n, vertex i spread over x, y in [-2, 2] and z in [-60, 5].
+// Vertex data. Attribute i of vertex v: a point spread over x, y in [-2, 2] and z in [-60, -0.5]
+// (in front of a camera looking down -z, which every generated matrix keeps in front), moved a
+// little per location so that two attributes never hold the same values; the fourth component of
+// a four-component vector is 1. Integer attributes get small values (v + location) mod 4 in the
+// first component (bone and instance indices), 0 or 1 in the others. Matrices take one location
+// per column, arrays one per element, dvec3/dvec4 two, fed as 64-bit formats.
 bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::string* error) {
   Reflector r{m};
-  uint32_t offset = 0;
-  std::vector<std::pair<uint32_t, uint32_t>> attributes;  // location, type
+  struct Leaf {
+    uint32_t location, type;
+    std::string name;
+  };
+  std::vector<Leaf> leaves;
+  std::function<bool(uint32_t, uint32_t, const std::string&)> expand = [&](uint32_t location, uint32_t type,
+                                                                           const std::string& name) {
+    const Instruction* d = m.definition(type);
+    if (d && (d->opcode == spv::OpTypeMatrix || d->opcode == spv::OpTypeArray)) {
+      uint32_t n = d->opcode == spv::OpTypeMatrix ? d->operand(1) : r.arrayLength(d);
+      uint32_t element = d->operand(0), step = 1;
+      for (uint32_t i = 0; i < n; ++i) {
+        const size_t before = leaves.size();
+        if (!expand(location, element, name)) return false;
+        step = 0;
+        for (size_t k = before; k < leaves.size(); ++k) step += r.locations(leaves[k].type);
+        location += step;
+      }
+      return true;
+    }
+    uint32_t size = 0;
+    if (r.formatOf(type, &size) == VK_FORMAT_UNDEFINED) {
+      *error = "vertex input '" + name + "' at location " + std::to_string(location) +
+               " has a type the harness cannot feed (only 32-bit scalars and vectors, doubles, and "
+               "matrices and arrays of them are vertex formats)";
+      return false;
+    }
+    leaves.push_back({location, type, name});
+    return true;
+  };
   for (uint32_t id : m.entryInterface()) {
     const Instruction* var = m.definition(id);
     if (!var || var->operand(0) != spv::StorageClassInput || m.hasDecoration(id, spv::DecorationBuiltIn)) continue;
     auto location = m.decorationValue(id, spv::DecorationLocation);
     if (!location) continue;
-    attributes.push_back({*location, m.pointeeType(var->typeId)});
+    if (!expand(*location, m.pointeeType(var->typeId), m.name(id))) return false;
   }
-  std::sort(attributes.begin(), attributes.end());
-  // A matrix attribute takes one location per column.
-  std::vector<std::pair<uint32_t, uint32_t>> expanded;
-  for (auto [location, type] : attributes) {
-    const Instruction* d = m.definition(type);
-    if (d && d->opcode == spv::OpTypeMatrix)
-      for (uint32_t c = 0; c < d->operand(1); ++c) expanded.push_back({location + c, d->operand(0)});
-    else
-      expanded.push_back({location, type});
-  }
-  attributes = expanded;
-  for (auto [location, type] : attributes) {
+  std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.location < b.location; });
+  uint32_t offset = 0;
+  for (const Leaf& leaf : leaves) {
     uint32_t size = 0;
-    VkFormat format = r.formatOf(type, &size);
-    if (format == VK_FORMAT_UNDEFINED) {
-      *error = "vertex input at location " + std::to_string(location) + " has a type the harness cannot feed";
-      return false;
-    }
-    vb->attributes.push_back({location, format, offset});
+    VkFormat format = r.formatOf(leaf.type, &size);
+    const uint32_t align = r.isDouble(leaf.type) ? 8 : 4;
+    offset = (offset + align - 1) & ~(align - 1);
+    vb->attributes.push_back({leaf.location, format, offset});
     offset += size;
   }
-  vb->stride = std::max<uint32_t>(offset, 4);
+  vb->stride = std::max<uint32_t>((offset + 7) & ~7u, 4);
   vb->bytes.assign(size_t(vb->stride) * count, 0);
+  std::vector<uint8_t>& bytes = vb->bytes;
   for (uint32_t v = 0; v < count; ++v) {
     float t = count > 1 ? float(v) / float(count - 1) : 0.f;
-    const float values[4] = {-2.f + 4.f * std::fmod(t * 7.f, 1.f), -2.f + 4.f * std::fmod(t * 3.f, 1.f),
-                             5.f - 65.f * t, 1.f};
-    for (const auto& a : vb->attributes) {
-      uint32_t size = 0;
-      VkFormat format = r.formatOf(attributes[&a - vb->attributes.data()].second, &size);
-      bool isFloat = format == VK_FORMAT_R32_SFLOAT || format == VK_FORMAT_R32G32_SFLOAT ||
-                     format == VK_FORMAT_R32G32B32_SFLOAT || format == VK_FORMAT_R32G32B32A32_SFLOAT;
-      for (uint32_t c = 0; c < size / 4; ++c) {
-        size_t at = size_t(v) * vb->stride + a.offset + 4 * c;
+    const double point[3] = {-2.0 + 4.0 * std::fmod(t * 7.f, 1.f), -2.0 + 4.0 * std::fmod(t * 3.f, 1.f),
+                             -0.5 - 59.5 * t};
+    for (size_t i = 0; i < leaves.size(); ++i) {
+      const VertexAttribute& a = vb->attributes[i];
+      const uint32_t n = r.scalarCount(leaves[i].type), L = a.location;
+      const bool wide = r.isDouble(leaves[i].type);
+      const Instruction* scalar = m.definition(leaves[i].type);
+      if (scalar && scalar->opcode == spv::OpTypeVector) scalar = m.definition(scalar->operand(0));
+      const bool isFloat = scalar && scalar->opcode == spv::OpTypeFloat;
+      for (uint32_t c = 0; c < n; ++c) {
+        size_t at = size_t(v) * vb->stride + a.offset + (wide ? 8 : 4) * c;
         if (isFloat) {
-          float value = values[c];
-          std::memcpy(vb->bytes.data() + at, &value, 4);
+          const double perLocation[3] = {0.03125 * L, -0.046875 * L, 0.0};
+          double value = c == 3 ? 1.0 : c == 2 ? point[2] * (1.0 + L / 64.0) : point[c] + perLocation[c];
+          Reflector{m}.putReal(bytes, at, value, wide);
         } else {
-          uint32_t value = c == 0 ? v % 4 : 0;
-          std::memcpy(vb->bytes.data() + at, &value, 4);
+          uint32_t value = c == 0 ? (v + L) % 4 : (v + c) % 2;
+          std::memcpy(bytes.data() + at, &value, 4);
         }
       }
     }
@@ -216,7 +317,113 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
   return true;
 }
 
-// Uniform buffers, textures and push constants of one module (merged across stages by the caller).
+// The VkFormat a shader's image format names (storage images must be bound with exactly it);
+// Unknown takes the four-channel 32-bit format of the sampled type.
+VkFormat imageFormat(uint32_t spirvFormat, char kind) {
+  switch (spirvFormat) {
+    case spv::ImageFormatRgba32f: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case spv::ImageFormatRgba16f: return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case spv::ImageFormatR32f: return VK_FORMAT_R32_SFLOAT;
+    case spv::ImageFormatRgba8: return VK_FORMAT_R8G8B8A8_UNORM;
+    case spv::ImageFormatRgba8Snorm: return VK_FORMAT_R8G8B8A8_SNORM;
+    case spv::ImageFormatRg32f: return VK_FORMAT_R32G32_SFLOAT;
+    case spv::ImageFormatRg16f: return VK_FORMAT_R16G16_SFLOAT;
+    case spv::ImageFormatR16f: return VK_FORMAT_R16_SFLOAT;
+    case spv::ImageFormatR11fG11fB10f: return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
+    case spv::ImageFormatRgba16: return VK_FORMAT_R16G16B16A16_UNORM;
+    case spv::ImageFormatRg8: return VK_FORMAT_R8G8_UNORM;
+    case spv::ImageFormatR8: return VK_FORMAT_R8_UNORM;
+    case spv::ImageFormatRgba32i: return VK_FORMAT_R32G32B32A32_SINT;
+    case spv::ImageFormatR32i: return VK_FORMAT_R32_SINT;
+    case spv::ImageFormatRgba8i: return VK_FORMAT_R8G8B8A8_SINT;
+    case spv::ImageFormatRgba32ui: return VK_FORMAT_R32G32B32A32_UINT;
+    case spv::ImageFormatR32ui: return VK_FORMAT_R32_UINT;
+    case spv::ImageFormatRgba8ui: return VK_FORMAT_R8G8B8A8_UINT;
+    default:
+      return kind == 'i' ? VK_FORMAT_R32G32B32A32_SINT : kind == 'u' ? VK_FORMAT_R32G32B32A32_UINT
+                                                       : VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+}
+
+// One image, sampler or texel-buffer descriptor (or array of them) from the OpTypeImage /
+// OpTypeSampledImage / OpTypeSampler it is declared with. Texels: small deterministic images
+// (4 texels a side, 4 layers, 6 faces a cube) of seeded values in [0, 1), integers in [0, 4).
+bool describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t binding, uint32_t count,
+                   const std::string& name, SampledTexture* tex, std::string* error) {
+  const Instruction* d = m.definition(type);
+  const std::string where = "'" + name + "' (set " + std::to_string(set) + ", binding " + std::to_string(binding) + ")";
+  tex->set = set;
+  tex->binding = binding;
+  tex->arrayCount = count;
+  if (d && d->opcode == spv::OpTypeSampler) {
+    tex->type = VK_DESCRIPTOR_TYPE_SAMPLER;
+    tex->width = tex->height = 1;
+    tex->rgba.assign(4 * count, 0.f);
+    return true;
+  }
+  bool combined = d && d->opcode == spv::OpTypeSampledImage;
+  if (combined) d = m.definition(d->operand(0));
+  if (!d || d->opcode != spv::OpTypeImage) {
+    *error = "resource " + where + " is not a buffer, image or sampler the harness can bind";
+    return false;
+  }
+  const Instruction* sampled = m.definition(d->operand(0));
+  const char kind = sampled && sampled->opcode == spv::OpTypeInt ? (sampled->operand(1) ? 'i' : 'u') : 'f';
+  const uint32_t dim = d->operand(1), arrayed = d->operand(3), multisampled = d->operand(4), usage = d->operand(5);
+  if (multisampled) {
+    *error = "multisampled texture " + where + ": the harness binds single-sampled images only";
+    return false;
+  }
+  const bool storage = usage == 2;
+  tex->format = imageFormat(storage ? d->operand(6) : uint32_t(spv::ImageFormatUnknown), kind);
+  tex->width = tex->height = 4;
+  switch (dim) {
+    case spv::Dim1D:
+      tex->height = 1;
+      tex->viewType = arrayed ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
+      break;
+    case spv::Dim2D:
+    case spv::DimRect:
+      tex->viewType = arrayed ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+      break;
+    case spv::Dim3D:
+      tex->depth = 4;
+      tex->viewType = VK_IMAGE_VIEW_TYPE_3D;
+      break;
+    case spv::DimCube:
+      tex->layers = 6;
+      tex->viewType = arrayed ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
+      break;
+    case spv::DimBuffer:
+      tex->width = 64;
+      tex->height = 1;
+      tex->type = storage ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      break;
+    default:
+      *error = "texture " + where + " has a dimension the harness cannot bind (subpass inputs are fragment-only)";
+      return false;
+  }
+  if (arrayed && dim != spv::DimBuffer) tex->layers *= dim == spv::DimCube ? 2 : 4;
+  if (dim != spv::DimBuffer)
+    tex->type = combined  ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                : storage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                          : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+  const size_t values = tex->texelsPerElement() * 4 * count;
+  tex->rgba.resize(values);
+  for (size_t i = 0; i < values; ++i) {
+    uint32_t h = mix(resourceSeed(set, binding, uint32_t(i / (tex->texelsPerElement() * 4))), uint32_t(i));
+    if (kind == 'f') {
+      tex->rgba[i] = float(unit(h));
+    } else {
+      uint32_t bits = h % 4;
+      std::memcpy(&tex->rgba[i], &bits, 4);
+    }
+  }
+  return true;
+}
+
+// Buffers, images, samplers and push constants of one module (merged across stages by the caller:
+// a (set, binding) already present keeps its data).
 bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
   Reflector r{m};
   for (const auto& inst : m.typesValues) {
@@ -232,38 +439,73 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
         if (t.set == s && t.binding == b) return true;
       return false;
     };
-    bool storageBuffer = storage == spv::StorageClassStorageBuffer ||
-                         (storage == spv::StorageClassUniform && m.hasDecoration(type, spv::DecorationBufferBlock));
-    if (storageBuffer) {  // e.g. an HLSL StructuredBuffer: 64 elements of plausible data
-      if (present(set, binding)) continue;
-      UniformBuffer sb{set, binding, {}, true};
-      r.fill(sb.bytes, type, 0, 0, false);
-      sb.bytes.resize((sb.bytes.size() + 15) & ~size_t(15), 0);
-      in->uniformBuffers.push_back(std::move(sb));
-      continue;
-    }
-    if (storage == spv::StorageClassUniform) {
-      if (present(set, binding)) continue;
-      UniformBuffer ub{set, binding, {}};
-      r.fill(ub.bytes, type, 0, 0, false);
-      ub.bytes.resize((ub.bytes.size() + 15) & ~size_t(15), 0);
-      in->uniformBuffers.push_back(std::move(ub));
-    } else if (storage == spv::StorageClassPushConstant) {
+    if (storage == spv::StorageClassPushConstant) {
       std::vector<uint8_t> bytes;
-      r.fill(bytes, type, 0, 0, false);
+      r.fill(bytes, type, 0, 0, false, kPushConstantSeed);
       if (bytes.size() > in->pushConstants.size()) in->pushConstants = bytes;
       in->pushConstants.resize((in->pushConstants.size() + 3) & ~size_t(3), 0);
-    } else if (storage == spv::StorageClassUniformConstant) {
-      const Instruction* d = m.definition(type);
-      if (d && d->opcode == spv::OpTypeSampledImage) {
-        if (present(set, binding)) continue;
-        SampledTexture tex{set, binding, 4, 4, std::vector<float>(64, 0.5f)};
-        in->textures.push_back(std::move(tex));
-      } else {
-        *error = "resource '" + m.name(inst.resultId) + "' is not a uniform buffer or combined image sampler";
+      continue;
+    }
+    if (storage != spv::StorageClassUniform && storage != spv::StorageClassStorageBuffer &&
+        storage != spv::StorageClassUniformConstant)
+      continue;
+    // A separate texture and sampler at one (set, binding) (HLSL `[[vk::binding(1)]]` on both) are
+    // the two halves of one combined image sampler descriptor.
+    if (storage == spv::StorageClassUniformConstant)
+      for (auto& t : in->textures)
+        if (t.set == set && t.binding == binding) {
+          SampledTexture other;
+          std::string ignored;
+          const Instruction* d = m.definition(type);
+          uint32_t element = d && (d->opcode == spv::OpTypeArray || d->opcode == spv::OpTypeRuntimeArray) ? d->operand(0) : type;
+          if (describeImage(m, element, set, binding, t.arrayCount, m.name(inst.resultId), &other, &ignored) &&
+              ((t.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE && other.type == VK_DESCRIPTOR_TYPE_SAMPLER) ||
+               (t.type == VK_DESCRIPTOR_TYPE_SAMPLER && other.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE))) {
+            if (t.type == VK_DESCRIPTOR_TYPE_SAMPLER) t = std::move(other);
+            t.type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+          }
+        }
+    if (present(set, binding)) {
+      // The same (set, binding) in two stages, or in the original and its transpiled copy, is the
+      // same resource; two different kinds of resource there cannot be bound at all.
+      const bool image = storage == spv::StorageClassUniformConstant;
+      bool clash = false;
+      for (const auto& u : in->uniformBuffers) clash |= u.set == set && u.binding == binding && image;
+      for (const auto& t : in->textures) clash |= t.set == set && t.binding == binding && !image;
+      if (clash) {
+        *error = "resource '" + m.name(inst.resultId) + "' (set " + std::to_string(set) + ", binding " +
+                 std::to_string(binding) + ") shares its binding with a resource of another kind";
         return false;
       }
+      continue;
     }
+    // A descriptor array: `uniform Light { ... } lights[4]`, `sampler2D shadowMaps[3]`, or a
+    // runtime-sized `texture2D textures[]` (bound with 4 elements).
+    uint32_t count = 1, element = type;
+    const Instruction* d = m.definition(type);
+    if (d && (d->opcode == spv::OpTypeArray || d->opcode == spv::OpTypeRuntimeArray)) {
+      count = d->opcode == spv::OpTypeArray ? std::max(1u, r.arrayLength(d)) : 4;
+      element = d->operand(0);
+    }
+    if (storage == spv::StorageClassUniformConstant) {
+      SampledTexture tex;
+      if (!describeImage(m, element, set, binding, count, m.name(inst.resultId), &tex, error)) return false;
+      in->textures.push_back(std::move(tex));
+      continue;
+    }
+    const bool storageBuffer = storage == spv::StorageClassStorageBuffer || m.hasDecoration(element, spv::DecorationBufferBlock);
+    UniformBuffer ub{set, binding, {}, storageBuffer, count};
+    std::vector<std::vector<uint8_t>> elements(count);
+    size_t size = 16;
+    for (uint32_t e = 0; e < count; ++e) {
+      r.fill(elements[e], element, 0, 0, false, resourceSeed(set, binding, e));
+      size = std::max(size, (elements[e].size() + 15) & ~size_t(15));
+    }
+    for (auto& bytes : elements) {
+      bytes.resize(size, 0);
+      ub.bytes.insert(ub.bytes.end(), bytes.begin(), bytes.end());
+    }
+    in->uniformBuffers.push_back(std::move(ub));
   }
   return true;
 }
@@ -323,6 +565,178 @@ VkShaderStageFlagBits toVk(spv::ExecutionModel model) {
     case spv::ExecutionModelGeometry: return VK_SHADER_STAGE_GEOMETRY_BIT;
     default: return VK_SHADER_STAGE_VERTEX_BIT;
   }
+}
+
+// A push-constant block larger than the device allows (lavapipe: maxPushConstantsSize) cannot be
+// pushed; the harness turns it into a uniform buffer at (set, 0) instead — the same bytes, read
+// through the same offsets (the device's uniformBufferStandardLayout lets the std430 layout of
+// push constants stand), identically in the original and the transpiled module.
+void pushConstantsToUniformBuffer(Module& m, uint32_t set) {
+  for (auto& inst : m.typesValues) {
+    if (inst.opcode == spv::OpTypePointer && inst.operand(0) == uint32_t(spv::StorageClassPushConstant))
+      inst.operands[0] = spv::StorageClassUniform;
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == uint32_t(spv::StorageClassPushConstant)) {
+      inst.operands[0] = spv::StorageClassUniform;
+      m.decorate(inst.resultId, spv::DecorationDescriptorSet, {set});
+      m.decorate(inst.resultId, spv::DecorationBinding, {0});
+    }
+  }
+  m.invalidateDefinitions();
+}
+
+uint32_t pushConstantBytes(const Module& m) {
+  uint32_t bytes = 0;
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == uint32_t(spv::StorageClassPushConstant)) {
+      std::vector<uint8_t> scratch;
+      Reflector{m}.fill(scratch, m.pointeeType(inst.typeId), 0, 0, false, kPushConstantSeed);
+      bytes = std::max(bytes, uint32_t(scratch.size()));
+    }
+  return bytes;
+}
+
+// The device features a module's capabilities need; empty when the device has them all.
+std::string missingFeature(const Module& m, const VkPhysicalDeviceFeatures& f) {
+  struct Need {
+    spv::Capability capability;
+    VkBool32 VkPhysicalDeviceFeatures::*feature;
+    const char* capabilityName;
+    const char* featureName;
+  };
+  static const Need needs[] = {
+      {spv::CapabilityFloat64, &VkPhysicalDeviceFeatures::shaderFloat64, "Float64", "shaderFloat64"},
+      {spv::CapabilityInt64, &VkPhysicalDeviceFeatures::shaderInt64, "Int64", "shaderInt64"},
+      {spv::CapabilityInt16, &VkPhysicalDeviceFeatures::shaderInt16, "Int16", "shaderInt16"},
+      {spv::CapabilityGeometryPointSize, &VkPhysicalDeviceFeatures::shaderTessellationAndGeometryPointSize,
+       "GeometryPointSize", "shaderTessellationAndGeometryPointSize"},
+      {spv::CapabilityTessellationPointSize, &VkPhysicalDeviceFeatures::shaderTessellationAndGeometryPointSize,
+       "TessellationPointSize", "shaderTessellationAndGeometryPointSize"},
+      {spv::CapabilityClipDistance, &VkPhysicalDeviceFeatures::shaderClipDistance, "ClipDistance", "shaderClipDistance"},
+      {spv::CapabilityCullDistance, &VkPhysicalDeviceFeatures::shaderCullDistance, "CullDistance", "shaderCullDistance"},
+      {spv::CapabilitySampledCubeArray, &VkPhysicalDeviceFeatures::imageCubeArray, "SampledCubeArray", "imageCubeArray"},
+      {spv::CapabilityImageCubeArray, &VkPhysicalDeviceFeatures::imageCubeArray, "ImageCubeArray", "imageCubeArray"},
+      {spv::CapabilityStorageImageReadWithoutFormat, &VkPhysicalDeviceFeatures::shaderStorageImageReadWithoutFormat,
+       "StorageImageReadWithoutFormat", "shaderStorageImageReadWithoutFormat"},
+      {spv::CapabilityStorageImageWriteWithoutFormat, &VkPhysicalDeviceFeatures::shaderStorageImageWriteWithoutFormat,
+       "StorageImageWriteWithoutFormat", "shaderStorageImageWriteWithoutFormat"},
+      {spv::CapabilityStorageImageExtendedFormats, &VkPhysicalDeviceFeatures::shaderStorageImageExtendedFormats,
+       "StorageImageExtendedFormats", "shaderStorageImageExtendedFormats"},
+      {spv::CapabilityMultiViewport, &VkPhysicalDeviceFeatures::multiViewport, "MultiViewport", "multiViewport"},
+      {spv::CapabilityImageGatherExtended, &VkPhysicalDeviceFeatures::shaderImageGatherExtended,
+       "ImageGatherExtended", "shaderImageGatherExtended"},
+  };
+  for (const Need& n : needs)
+    if (m.hasCapability(n.capability) && !(f.*n.feature))
+      return std::string("the ") + executionModelName(m.executionModel()) + " shader needs the " + n.featureName +
+             " device feature (SPIR-V capability " + n.capabilityName + "), which this device lacks";
+  return {};
+}
+
+// Double-precision vertex inputs (dvec3 positions of CAD-style samples) need 64-bit vertex
+// formats, which lavapipe does not have. The harness feeds them as 32-bit floats instead: each
+// such input becomes a float input at the same location whose loads are converted to double, in
+// the original and the transpiled module alike (the generated data are floats anyway).
+void feedDoubleInputsAsFloats(Module& m) {
+  if (m.executionModel() != spv::ExecutionModelVertex) return;
+  for (uint32_t id : m.entryInterface()) {
+    const Instruction* var = m.definition(id);
+    if (!var || var->operand(0) != spv::StorageClassInput || m.hasDecoration(id, spv::DecorationBuiltIn)) continue;
+    const uint32_t doubleType = m.pointeeType(var->typeId);
+    const Instruction* d = m.definition(doubleType);
+    const uint32_t n = d && d->opcode == spv::OpTypeVector ? d->operand(1) : 1;
+    const Instruction* scalar = d && d->opcode == spv::OpTypeVector ? m.definition(d->operand(0)) : d;
+    if (!scalar || scalar->opcode != spv::OpTypeFloat || scalar->operand(0) != 64) continue;
+    const uint32_t doubleScalar = scalar->resultId;
+    const uint32_t floatScalar = m.typeFloat(32);
+    const uint32_t floatType = n > 1 ? m.typeVector(floatScalar, n) : floatScalar;
+    const uint32_t floatVar = m.addGlobalVariable(m.typePointer(spv::StorageClassInput, floatType), spv::StorageClassInput);
+    const uint32_t floatScalarPointer = m.typePointer(spv::StorageClassInput, floatScalar);
+    for (auto decoration : {spv::DecorationLocation, spv::DecorationComponent})
+      if (auto value = m.decorationValue(id, decoration)) m.decorate(floatVar, decoration, {*value});
+    m.setName(floatVar, m.name(id));
+    // Out of the interface: the double variable is no longer read.
+    for (auto& entry : m.entryPoints) {
+      const size_t first = 2 + entry.stringWordCount(2);
+      for (size_t i = first; i < entry.operands.size(); ++i)
+        if (entry.operands[i] == id) {
+          entry.operands.erase(entry.operands.begin() + long(i));
+          break;
+        }
+    }
+    std::vector<uint32_t> chains;  // access chains into the old variable, now into the float one
+    for (auto& f : m.functions)
+      for (auto& b : f.blocks) {
+        std::vector<Instruction> rewritten;
+        for (auto& inst : b.instructions) {
+          if ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) && inst.operand(0) == id) {
+            inst.typeId = floatScalarPointer;
+            inst.operands[0] = floatVar;
+            chains.push_back(inst.resultId);
+          } else if (inst.opcode == spv::OpLoad &&
+                     (inst.operand(0) == id ||
+                      std::find(chains.begin(), chains.end(), inst.operand(0)) != chains.end())) {
+            const bool whole = inst.operand(0) == id;
+            const uint32_t loaded = m.takeId();
+            rewritten.emplace_back(spv::OpLoad, whole ? floatType : floatScalar, loaded,
+                                   std::vector<uint32_t>{whole ? floatVar : inst.operand(0)});
+            rewritten.emplace_back(spv::OpFConvert, whole ? doubleType : doubleScalar, inst.resultId,
+                                   std::vector<uint32_t>{loaded});
+            continue;
+          }
+          rewritten.push_back(std::move(inst));
+        }
+        b.instructions = std::move(rewritten);
+      }
+    m.invalidateDefinitions();
+  }
+}
+
+// Vertices per input primitive of a geometry shader, and the list topology that feeds it.
+uint32_t geometryInput(const Module& geometry, VkPrimitiveTopology* topology) {
+  for (const auto& mode : geometry.executionModes) switch (mode.operand(1)) {
+      case spv::ExecutionModeInputPoints: *topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST; return 1;
+      case spv::ExecutionModeInputLines: *topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST; return 2;
+      case spv::ExecutionModeInputLinesAdjacency: *topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY; return 4;
+      case spv::ExecutionModeInputTrianglesAdjacency:
+        *topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY;
+        return 6;
+      case spv::ExecutionModeTriangles: *topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST; return 3;
+      default: break;
+    }
+  *topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  return 3;
+}
+
+// The transpiled shader marks its position Invariant (the shift must not be contracted differently
+// per eye); a driver then compiles everything feeding the position without FMA contraction
+// (llvmpipe does), so the original — contracted — would differ from it in the last bits at
+// eyeSign = 0 for reasons that are not the injected code. The harness marks the same outputs
+// Invariant in its copy of the original, so that both compile alike and eyeSign = 0 is compared bit
+// for bit against the same arithmetic.
+void matchInvariance(Module& original, const Module& transpiled) {
+  auto builtIn = [](const Module& m, uint32_t id) { return m.decorationValue(id, spv::DecorationBuiltIn); };
+  std::vector<std::pair<uint32_t, uint32_t>> memberBuiltIns;  // (struct, member) -> BuiltIn, in the original
+  for (const auto& inst : transpiled.annotations) {
+    if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationInvariant)) {
+      const uint32_t target = inst.operand(0);
+      auto b = builtIn(transpiled, target);
+      for (const auto& v : original.typesValues)
+        if (v.opcode == spv::OpVariable && v.operand(0) == uint32_t(spv::StorageClassOutput) &&
+            !original.hasDecoration(v.resultId, spv::DecorationInvariant) &&
+            (b ? builtIn(original, v.resultId) == b : original.name(v.resultId) == transpiled.name(target))) {
+          original.decorate(v.resultId, spv::DecorationInvariant);
+          break;
+        }
+    } else if (inst.opcode == spv::OpMemberDecorate && inst.operand(2) == uint32_t(spv::DecorationInvariant)) {
+      auto b = transpiled.memberDecorationValue(inst.operand(0), inst.operand(1), spv::DecorationBuiltIn);
+      if (!b) continue;
+      for (const auto& d : original.annotations)
+        if (d.opcode == spv::OpMemberDecorate && d.operand(2) == uint32_t(spv::DecorationBuiltIn) && d.operand(3) == *b &&
+            !original.hasMemberDecoration(d.operand(0), d.operand(1), spv::DecorationInvariant))
+          memberBuiltIns.push_back({d.operand(0), d.operand(1)});
+    }
+  }
+  for (auto [structId, member] : memberBuiltIns) original.decorateMember(structId, member, spv::DecorationInvariant);
 }
 
 double ulpOf(double magnitude) {
@@ -400,11 +814,57 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
       return result;
     }
     convertOpenGLForVulkan(*b, blockBinding, &error);
+    matchInvariance(*a, *b);
+    feedDoubleInputsAsFloats(*a);
+    feedDoubleInputsAsFloats(*b);
     originals.push_back(std::move(*a));
     transpiled.push_back(std::move(*b));
   }
-  CaptureLayout layoutA, layoutB;
+  // A tessellation-evaluation or geometry shader given alone runs behind synthesized pass-through
+  // stages, the same in front of the original and the transpiled one.
+  std::vector<Module> leading;
+  std::vector<std::string> leadingNames;
   std::string error;
+  if (!synthesizeLeadingStages(originals.front(), &leading, &leadingNames, &error)) {
+    result.error = error;
+    return result;
+  }
+  originals.insert(originals.begin(), leading.begin(), leading.end());
+  transpiled.insert(transpiled.begin(), leading.begin(), leading.end());
+  result.synthesizedStages = leadingNames;
+  for (size_t i = 0; i + 1 < originals.size(); ++i)
+    if (!checkStageInterface(originals[i], originals[i + 1], &error)) {
+      result.error = error;
+      return result;
+    }
+  for (const auto& m : transpiled) {
+    std::string missing = missingFeature(m, context.features());
+    if (!missing.empty()) {
+      result.error = missing;
+      return result;
+    }
+  }
+  // Push constants over the device limit: a uniform buffer one set beyond every set in use.
+  const uint32_t pushLimit = context.properties().limits.maxPushConstantsSize;
+  uint32_t pushBytes = 0, freeSet = 0;
+  for (const auto* list : {&originals, &transpiled})
+    for (const auto& m : *list) {
+      pushBytes = std::max(pushBytes, pushConstantBytes(m));
+      for (const auto& inst : m.annotations)
+        if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationDescriptorSet))
+          freeSet = std::max(freeSet, inst.operand(2) + 1);
+    }
+  if (pushBytes > pushLimit) {
+    if (freeSet >= context.properties().limits.maxBoundDescriptorSets) {
+      result.error = "the push constants (" + std::to_string(pushBytes) + " bytes) exceed the device's " +
+                     std::to_string(pushLimit) + "-byte limit and no descriptor set is free to hold them instead";
+      return result;
+    }
+    for (auto* list : {&originals, &transpiled})
+      for (auto& m : *list) pushConstantsToUniformBuffer(m, freeSet);
+    result.pushConstantsAsBuffer = true;
+  }
+  CaptureLayout layoutA, layoutB;
   if (!instrumentForCapture(originals.back(), &layoutA, nullptr, &error) ||
       !instrumentForCapture(transpiled.back(), &layoutB, nullptr, &error)) {
     result.error = error;
@@ -445,14 +905,19 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     }
   }
   bool tessellation = false;
-  for (const auto& m : originals) tessellation |= m.executionModel() == spv::ExecutionModelTessellationControl;
+  const Module* geometry = nullptr;
+  for (const auto& m : originals) {
+    tessellation |= m.executionModel() == spv::ExecutionModelTessellationControl;
+    if (m.executionModel() == spv::ExecutionModelGeometry) geometry = &m;
+  }
   uint32_t count = settings.vertexCount;
   if (tessellation) {
     base.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
-    for (const auto& inst : originals[1].executionModes)
-      if (inst.operand(1) == uint32_t(spv::ExecutionModeOutputVertices)) base.patchControlPoints = inst.operand(2);
+    base.patchControlPoints = patchControlPoints(originals);
     if (base.patchControlPoints == 0) base.patchControlPoints = 3;
     count -= count % base.patchControlPoints;
+  } else if (geometry) {
+    count -= count % geometryInput(*geometry, &base.topology);
   } else {
     base.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     count -= count % 3;

@@ -38,7 +38,7 @@ struct VerifySettings {
 
 struct VerifyResult {
   bool ok = false;
-  std::string error;            // setup failure (not an accuracy failure)
+  std::string error;            // why the shader could not run (one line), not an accuracy failure
   uint32_t vertices = 0;
   bool monoIdentical = false;   // eyeSign = 0: every output bit for bit equal to the original
   double maxStereoUlps = 0;     // largest |x' - x_ref| in ULPs of max(|x|, |S(w - C)|)
@@ -46,6 +46,8 @@ struct VerifyResult {
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
   uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
   uint32_t newNaNs = 0;         // x became NaN although the original x and w were not NaN
+  std::vector<std::string> synthesizedStages;  // pass-through stages run in front of the given ones
+  bool pushConstantsAsBuffer = false;  // push constants over the device limit, bound as a uniform buffer
   std::vector<std::string> problems;
   nlohmann::json json() const;
 };

@@ -208,7 +208,8 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
 bool buildDescriptorLayout(const PipelineInputs& in, std::vector<std::vector<DescriptorSlot>>* sets,
                            std::string* error) {
   std::map<uint32_t, std::map<uint32_t, DescriptorSlot>> bySet;
-  auto add = [&](uint32_t set, uint32_t binding, VkDescriptorType type, uint32_t index, const char* what) {
+  auto add = [&](uint32_t set, uint32_t binding, VkDescriptorType type, uint32_t index, const char* what,
+                 uint32_t count) {
     auto& slots = bySet[set];
     if (slots.count(binding)) {
       if (error)
@@ -216,17 +217,17 @@ bool buildDescriptorLayout(const PipelineInputs& in, std::vector<std::vector<Des
                  std::to_string(binding) + ") given by " + what + " " + std::to_string(index);
       return false;
     }
-    slots[binding] = DescriptorSlot{binding, type, index};
+    slots[binding] = DescriptorSlot{binding, type, index, std::max(count, 1u)};
     return true;
   };
   for (uint32_t i = 0; i < in.uniformBuffers.size(); ++i)
     if (!add(in.uniformBuffers[i].set, in.uniformBuffers[i].binding,
              in.uniformBuffers[i].storage ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, i,
-             "uniform buffer"))
+             "uniform buffer", in.uniformBuffers[i].arrayCount))
       return false;
   for (uint32_t i = 0; i < in.textures.size(); ++i)
-    if (!add(in.textures[i].set, in.textures[i].binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, i,
-             "texture"))
+    if (!add(in.textures[i].set, in.textures[i].binding, in.textures[i].type, i, "texture",
+             in.textures[i].arrayCount))
       return false;
   sets->clear();
   if (bySet.empty()) return true;
@@ -251,6 +252,7 @@ struct VulkanContext::Impl {
   VkCommandPool commandPool = VK_NULL_HANDLE;
 
   VkPhysicalDeviceProperties props{};
+  VkPhysicalDeviceFeatures enabledFeatures{};
   VkPhysicalDeviceMemoryProperties memory{};
   VkPhysicalDeviceTransformFeedbackPropertiesEXT xfbProps{};
   uint32_t apiVersion = 0;
@@ -291,6 +293,10 @@ struct VulkanContext::Impl {
   Image image2D(Scope& scope, VkFormat format, uint32_t w, uint32_t h, uint32_t layers, VkImageUsageFlags usage,
                 VkImageAspectFlags aspect, const char* what);
   void requireFormat(VkFormat format, VkFormatFeatureFlags optimalFeatures, const char* what) const;
+  // One element of a SampledTexture that has an image: created, filled through `uploads` and left
+  // in the layout its descriptor type reads it in.
+  Image textureImage(Scope& scope, VkCommandBuffer uploads, const SampledTexture& t, uint32_t element,
+                     const std::string& where);
   VkCommandBuffer beginCommands(Scope& scope);
   void submitAndWait(Scope& scope, VkCommandBuffer cb);
 
@@ -486,6 +492,7 @@ void VulkanContext::Impl::createDevice() {
   // Enable everything supported except robustness (which would hide out-of-bounds accesses).
   features.features.robustBufferAccess = VK_FALSE;
   geometryShader = features.features.geometryShader;
+  enabledFeatures = features.features;
   tessellationShader = features.features.tessellationShader;
   if (v12) {
     multiview = f11.multiview;
@@ -630,6 +637,96 @@ Image VulkanContext::Impl::image2D(Scope& scope, VkFormat format, uint32_t w, ui
   VKH_CHECK(vkCreateImageView(device, &vci, nullptr, &img.view));
   VkImageView view = img.view;
   scope.defer([dev, view] { vkDestroyImageView(dev, view, nullptr); });
+  return img;
+}
+
+Image VulkanContext::Impl::textureImage(Scope& scope, VkCommandBuffer uploads, const SampledTexture& t,
+                                       uint32_t element, const std::string& where) {
+  const bool storage = t.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const bool cube = t.viewType == VK_IMAGE_VIEW_TYPE_CUBE || t.viewType == VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
+  const bool volume = t.viewType == VK_IMAGE_VIEW_TYPE_3D;
+  const bool line = t.viewType == VK_IMAGE_VIEW_TYPE_1D || t.viewType == VK_IMAGE_VIEW_TYPE_1D_ARRAY;
+  const std::string what = "texture " + where;
+  if (t.width == 0 || t.height == 0 || t.depth == 0 || t.layers == 0) fail(what + " has zero size");
+  if (t.width > props.limits.maxImageDimension2D || t.height > props.limits.maxImageDimension2D)
+    fail(what + " exceeds maxImageDimension2D");
+  if (cube && (t.width != t.height || t.layers % 6)) fail(what + ": a cube needs square faces and 6 layers per cube");
+  if (volume && t.layers != 1) fail(what + ": a 3D image has one layer");
+  if (line && t.height != 1) fail(what + ": a 1D image has height 1");
+  const size_t texels = t.texelsPerElement();
+  if (t.rgba.size() != texels * 4 * t.arrayCount)
+    fail(what + ": rgba has " + std::to_string(t.rgba.size()) + " values, expected width*height*depth*layers*4*arrayCount = " +
+         std::to_string(texels * 4 * t.arrayCount));
+  requireFormat(t.format,
+                (storage ? VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT : VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) |
+                    VK_FORMAT_FEATURE_TRANSFER_DST_BIT,
+                what.c_str());
+  Image img;
+  VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  ici.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+  ici.imageType = volume ? VK_IMAGE_TYPE_3D : line ? VK_IMAGE_TYPE_1D : VK_IMAGE_TYPE_2D;
+  ici.format = t.format;
+  ici.extent = {t.width, t.height, t.depth};
+  ici.mipLevels = 1;
+  ici.arrayLayers = t.layers;
+  ici.samples = VK_SAMPLE_COUNT_1_BIT;
+  ici.tiling = VK_IMAGE_TILING_OPTIMAL;
+  ici.usage = (storage ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_SAMPLED_BIT) | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  ici.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VKH_CHECK(vkCreateImage(device, &ici, nullptr, &img.image));
+  VkDevice dev = device;
+  VkImage im = img.image;
+  scope.defer([dev, im] { vkDestroyImage(dev, im, nullptr); });
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(device, img.image, &req);
+  VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  mai.allocationSize = req.size;
+  mai.memoryTypeIndex = memoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what.c_str());
+  VkDeviceMemory mem = VK_NULL_HANDLE;
+  VKH_CHECK(vkAllocateMemory(device, &mai, nullptr, &mem));
+  scope.deferFree(mem);
+  VKH_CHECK(vkBindImageMemory(device, img.image, mem, 0));
+
+  VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  vci.image = img.image;
+  vci.viewType = t.viewType;
+  vci.format = t.format;
+  vci.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, t.layers};
+  VKH_CHECK(vkCreateImageView(device, &vci, nullptr, &img.view));
+  VkImageView view = img.view;
+  scope.defer([dev, view] { vkDestroyImageView(dev, view, nullptr); });
+
+  VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = img.image;
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, t.layers};
+  vkCmdPipelineBarrier(uploads, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &b);
+  const float* texels0 = t.rgba.data() + texels * 4 * element;
+  const bool fourChannel32 = t.format == VK_FORMAT_R32G32B32A32_SFLOAT || t.format == VK_FORMAT_R32G32B32A32_SINT ||
+                             t.format == VK_FORMAT_R32G32B32A32_UINT;
+  if (fourChannel32) {
+    HostBuffer staging = hostBuffer(scope, texels * 16, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, texels0, texels * 16,
+                                    "texture staging");
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, t.layers};
+    copy.imageExtent = {t.width, t.height, t.depth};
+    vkCmdCopyBufferToImage(uploads, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  } else {  // any other format: one value everywhere, converted by the clear
+    VkClearColorValue value;
+    std::memcpy(&value, texels0, 16);
+    vkCmdClearColorImage(uploads, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &b.subresourceRange);
+  }
+  b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | (storage ? VK_ACCESS_SHADER_WRITE_BIT : 0);
+  b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  b.newLayout = storage ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  vkCmdPipelineBarrier(uploads, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &b);
   return img;
 }
 
@@ -786,14 +883,16 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
   if (!buildDescriptorLayout(in, &layoutSets, &layoutError)) err(layoutError);
 
   std::vector<VkDescriptorSetLayout> setLayouts;
-  uint32_t uboCount = 0, ssboCount = 0, texCount = 0;
+  std::map<VkDescriptorType, uint32_t> descriptorCounts;
+  uint32_t bufferDescriptors = 0, imageDescriptors = 0, texelBufferDescriptors = 0;
   for (auto& slots : layoutSets) {
     std::vector<VkDescriptorSetLayoutBinding> b;
     for (const DescriptorSlot& s : slots) {
-      b.push_back({s.binding, s.type, 1, VK_SHADER_STAGE_ALL_GRAPHICS, nullptr});
-      (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER   ? uboCount
-       : s.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER ? ssboCount
-                                                     : texCount)++;
+      b.push_back({s.binding, s.type, s.count, VK_SHADER_STAGE_ALL_GRAPHICS, nullptr});
+      descriptorCounts[s.type] += s.count;
+      bool buffer = s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || s.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      bool texel = s.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER || s.type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+      (buffer ? bufferDescriptors : texel ? texelBufferDescriptors : imageDescriptors) += s.count;
     }
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     lci.bindingCount = uint32_t(b.size());
@@ -808,9 +907,7 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
 
   if (!setLayouts.empty()) {
     std::vector<VkDescriptorPoolSize> sizes;
-    if (uboCount) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uboCount});
-    if (ssboCount) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ssboCount});
-    if (texCount) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, texCount});
+    for (auto [type, count] : descriptorCounts) sizes.push_back({type, count});
     VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pci.maxSets = uint32_t(setLayouts.size());
     pci.poolSizeCount = uint32_t(sizes.size());
@@ -829,75 +926,94 @@ VulkanContext::Impl::BuiltPipeline VulkanContext::Impl::buildPipeline(Scope& sco
   // Resources + writes. Infos are stored in pre-sized vectors so their addresses stay valid.
   std::vector<VkDescriptorBufferInfo> bufferInfos;
   std::vector<VkDescriptorImageInfo> imageInfos;
-  bufferInfos.reserve(uboCount + ssboCount);
-  imageInfos.reserve(texCount);
+  std::vector<VkBufferView> texelViews;
+  bufferInfos.reserve(bufferDescriptors);
+  imageInfos.reserve(imageDescriptors);
+  texelViews.reserve(texelBufferDescriptors);
   std::vector<VkWriteDescriptorSet> writes;
+  VkSampler sampler = VK_NULL_HANDLE;  // one nearest clamp-to-edge sampler serves every descriptor
+  auto sharedSampler = [&] {
+    if (sampler) return sampler;
+    VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    sci.magFilter = sci.minFilter = VK_FILTER_NEAREST;
+    sci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    sci.addressModeU = sci.addressModeV = sci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sci.maxLod = 0.f;
+    sci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    VKH_CHECK(vkCreateSampler(dev, &sci, nullptr, &sampler));
+    VkSampler made = sampler;
+    scope.defer([dev, made] { vkDestroySampler(dev, made, nullptr); });
+    return sampler;
+  };
   for (uint32_t set = 0; set < layoutSets.size(); ++set) {
     for (const DescriptorSlot& s : layoutSets[set]) {
       VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
       w.dstSet = out.sets[set];
       w.dstBinding = s.binding;
-      w.descriptorCount = 1;
+      w.descriptorCount = s.count;
       w.descriptorType = s.type;
       std::string where = "(set " + std::to_string(set) + ", binding " + std::to_string(s.binding) + ")";
       if (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || s.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER) {
         const UniformBuffer& u = in.uniformBuffers[s.resourceIndex];
         if (u.bytes.empty()) err("uniform buffer " + where + " is empty");
-        if (!u.storage && u.bytes.size() > props.limits.maxUniformBufferRange)
+        if (u.bytes.size() % s.count) err("uniform buffer array " + where + ": bytes do not split into equal elements");
+        const size_t elementSize = u.bytes.size() / s.count;
+        if (!u.storage && elementSize > props.limits.maxUniformBufferRange)
           err("uniform buffer " + where + " exceeds maxUniformBufferRange");
-        HostBuffer hb = hostBuffer(scope, u.bytes.size(),
-                                   u.storage ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                   u.bytes.data(), u.bytes.size(), "uniform buffer");
-        bufferInfos.push_back({hb.buffer, 0, u.bytes.size()});
-        w.pBufferInfo = &bufferInfos.back();
-      } else {
-        const SampledTexture& t = in.textures[s.resourceIndex];
-        if (t.width == 0 || t.height == 0) err("texture " + where + " has zero size");
-        if (t.width > props.limits.maxImageDimension2D || t.height > props.limits.maxImageDimension2D)
-          err("texture " + where + " exceeds maxImageDimension2D");
-        if (t.rgba.size() != size_t(t.width) * t.height * 4)
-          err("texture " + where + ": rgba has " + std::to_string(t.rgba.size()) + " floats, expected width*height*4 = " +
-              std::to_string(size_t(t.width) * t.height * 4));
-        const VkFormat fmt = VK_FORMAT_R32G32B32A32_SFLOAT;
-        requireFormat(fmt, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT, "texture");
-        Image img = image2D(scope, fmt, t.width, t.height, 1,
-                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-                            "texture");
-        HostBuffer staging = hostBuffer(scope, t.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, t.rgba.data(),
-                                        t.rgba.size() * 4, "texture staging");
-        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-        b.srcAccessMask = 0;
-        b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-        b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = img.image;
-        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        vkCmdPipelineBarrier(uploads, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
-                             nullptr, 0, nullptr, 1, &b);
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {t.width, t.height, 1};
-        vkCmdCopyBufferToImage(uploads, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-        b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-        b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        b.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-        vkCmdPipelineBarrier(uploads, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, 0, 0,
-                             nullptr, 0, nullptr, 1, &b);
-
-        VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-        sci.magFilter = sci.minFilter = VK_FILTER_NEAREST;
-        sci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-        sci.addressModeU = sci.addressModeV = sci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        sci.maxLod = 0.f;
-        sci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-        VkSampler sampler = VK_NULL_HANDLE;
-        VKH_CHECK(vkCreateSampler(dev, &sci, nullptr, &sampler));
-        scope.defer([dev, sampler] { vkDestroySampler(dev, sampler, nullptr); });
-        imageInfos.push_back({sampler, img.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-        w.pImageInfo = &imageInfos.back();
+        size_t first = bufferInfos.size();
+        for (uint32_t e = 0; e < s.count; ++e) {
+          HostBuffer hb = hostBuffer(scope, elementSize,
+                                     u.storage ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                     u.bytes.data() + e * elementSize, elementSize, "uniform buffer");
+          bufferInfos.push_back({hb.buffer, 0, elementSize});
+        }
+        w.pBufferInfo = &bufferInfos[first];
+        writes.push_back(w);
+        continue;
       }
+      const SampledTexture& t = in.textures[s.resourceIndex];
+      if (s.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER || s.type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER) {
+        const bool storageTexels = s.type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+        if (t.width == 0) err("texel buffer " + where + " has zero texels");
+        if (t.rgba.size() != size_t(t.width) * 4 * s.count)
+          err("texel buffer " + where + ": rgba must hold width*4 values per element");
+        VkFormatProperties fp;
+        vkGetPhysicalDeviceFormatProperties(phys, t.format, &fp);
+        VkFormatFeatureFlags need = storageTexels ? VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT
+                                                  : VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT;
+        if (!(fp.bufferFeatures & need)) err("texel buffer " + where + ": format not supported for texel buffers");
+        size_t first = texelViews.size();
+        for (uint32_t e = 0; e < s.count; ++e) {
+          HostBuffer hb = hostBuffer(scope, size_t(t.width) * 16,
+                                     storageTexels ? VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT
+                                                   : VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                                     t.rgba.data() + size_t(e) * t.width * 4, size_t(t.width) * 16, "texel buffer");
+          VkBufferViewCreateInfo bvci{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+          bvci.buffer = hb.buffer;
+          bvci.format = t.format;
+          bvci.range = VK_WHOLE_SIZE;
+          VkBufferView view = VK_NULL_HANDLE;
+          VKH_CHECK(vkCreateBufferView(dev, &bvci, nullptr, &view));
+          scope.defer([dev, view] { vkDestroyBufferView(dev, view, nullptr); });
+          texelViews.push_back(view);
+        }
+        w.pTexelBufferView = &texelViews[first];
+        writes.push_back(w);
+        continue;
+      }
+      size_t first = imageInfos.size();
+      for (uint32_t e = 0; e < s.count; ++e) {
+        VkDescriptorImageInfo info{};
+        if (s.type == VK_DESCRIPTOR_TYPE_SAMPLER || s.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)
+          info.sampler = sharedSampler();
+        if (s.type != VK_DESCRIPTOR_TYPE_SAMPLER) {
+          info.imageView = textureImage(scope, uploads, t, e, where).view;
+          info.imageLayout = s.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE ? VK_IMAGE_LAYOUT_GENERAL
+                                                                        : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        }
+        imageInfos.push_back(info);
+      }
+      w.pImageInfo = &imageInfos[first];
       writes.push_back(w);
     }
   }
@@ -1340,6 +1456,8 @@ RenderResult VulkanContext::render(const RenderRequest& request) {
 }
 
 std::string VulkanContext::deviceName() const { return impl_->props.deviceName; }
+const VkPhysicalDeviceProperties& VulkanContext::properties() const { return impl_->props; }
+const VkPhysicalDeviceFeatures& VulkanContext::features() const { return impl_->enabledFeatures; }
 VkPhysicalDeviceType VulkanContext::deviceType() const { return impl_->props.deviceType; }
 uint32_t VulkanContext::apiVersion() const { return impl_->apiVersion; }
 bool VulkanContext::validationEnabled() const { return impl_->validation; }

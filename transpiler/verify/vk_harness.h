@@ -58,18 +58,38 @@ struct UniformBuffer {
   uint32_t set = 0;
   uint32_t binding = 0;
   std::vector<uint8_t> bytes;
-  bool storage = false;  // bind as a (read-only) storage buffer, e.g. an HLSL StructuredBuffer
+  bool storage = false;  // bind as a storage buffer, e.g. an HLSL StructuredBuffer or a GLSL buffer block
+  // A descriptor array (`uniform Lights { ... } lights[4]`): `bytes` holds arrayCount elements of
+  // equal size back to back; each element is its own buffer.
+  uint32_t arrayCount = 1;
 };
 
-// A combined image sampler over a 2D VK_FORMAT_R32G32B32A32_SFLOAT image, one mip level,
-// nearest filtering, clamp-to-edge, unnormalized coordinates off. `rgba` holds width*height*4
-// floats, row-major, row 0 first (texture coordinate v = 0).
+// An image descriptor. By default a combined image sampler over a 2D VK_FORMAT_R32G32B32A32_SFLOAT
+// image, one mip level, nearest filtering, clamp-to-edge, unnormalized coordinates off. `rgba`
+// holds width*height*depth*layers*4 32-bit values (floats, or the raw bits of an integer format),
+// row-major, row 0 first (texture coordinate v = 0), then slice after slice and layer after layer.
+// The other kinds a shader declares:
+//   * viewType: 1D, 2D, 3D (depth slices), cube (layers = 6) and the array views (layers);
+//   * type: COMBINED_IMAGE_SAMPLER, SAMPLED_IMAGE (a texture without sampler), SAMPLER (a sampler
+//     alone: no image, `rgba` unused), STORAGE_IMAGE (layout GENERAL), UNIFORM_TEXEL_BUFFER and
+//     STORAGE_TEXEL_BUFFER (a buffer view of `width` texels, `rgba` its texels);
+//   * format: any colour format; only the 32-bit four-channel formats take `rgba` as their texels,
+//     every other format is cleared to the first texel's value;
+//   * arrayCount: a descriptor array (`sampler2D shadowMaps[4]`), `rgba` holding each element's
+//     texels one after the other.
 struct SampledTexture {
   uint32_t set = 0;
   uint32_t binding = 0;
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<float> rgba;
+  VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D;
+  uint32_t depth = 1;
+  uint32_t layers = 1;
+  VkDescriptorType type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  uint32_t arrayCount = 1;
+  size_t texelsPerElement() const { return size_t(width) * height * depth * layers; }
 };
 
 // A specialization constant: the 32 raw bits (float bits, int, uint or VkBool32). Applied to every
@@ -183,6 +203,7 @@ struct DescriptorSlot {
   uint32_t binding = 0;
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   uint32_t resourceIndex = 0;  // index into uniformBuffers or textures
+  uint32_t count = 1;          // descriptor array size
 };
 
 // sets->at(s) lists the bindings of descriptor set s, sorted by binding; sets between 0 and the
@@ -228,6 +249,8 @@ class VulkanContext {
   RenderResult render(const RenderRequest& request);
 
   std::string deviceName() const;
+  const VkPhysicalDeviceProperties& properties() const;  // limits such as maxPushConstantsSize
+  const VkPhysicalDeviceFeatures& features() const;      // the core features enabled on the device
   VkPhysicalDeviceType deviceType() const;
   uint32_t apiVersion() const;  // the version used (min of loader and device)
   bool validationEnabled() const;

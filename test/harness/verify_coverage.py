@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Coverage of `stereoshift verify`: runs it over every pre-rasterization shader of a shader tree
+(the corpus by default), each shader by itself as a user would hand it over, and prints how many
+get the perspective shift, how many of those `verify` can run, how many pass, and why the rest
+could not run or failed, grouped by reason (names and numbers taken out so alike reasons group).
+
+  python3 test/harness/verify_coverage.py --stereoshift build/stereoshift [--root corpus] [-v]
+
+Exit status 0 whatever the figures: this measures, it does not judge.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+from collections import Counter
+
+PRE_RASTER = ("vert", "tesc", "tese", "geom")
+
+
+def stage_of(name):
+    parts = name.split(".")
+    # foo.vert, foo.vert.hlsl, foo.vert.glsl
+    for part in reversed(parts[1:]):
+        if part in PRE_RASTER:
+            return part
+        if part in ("frag", "comp"):
+            return None
+    return None
+
+
+def reason_key(text):
+    """One line of a reason with the shader-specific parts (paths, names, numbers) taken out."""
+    line = text.strip().splitlines()[0] if text.strip() else "(no message)"
+    line = re.sub(r"^\S+?:(\d+:)*\s*error:\s*", "", line)
+    line = re.sub(r"'[^']*'", "'…'", line)
+    line = re.sub(r"\b\d+(\.\d+)?\b", "N", line)
+    return line
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap.add_argument("--stereoshift", default=os.path.join(here, "..", "..", "build", "stereoshift"))
+    ap.add_argument("--root", default=os.path.join(here, "..", "..", "corpus"))
+    ap.add_argument("--timeout", type=float, default=120)
+    ap.add_argument("-v", "--verbose", action="store_true", help="one line per shader")
+    args = ap.parse_args()
+
+    shaders = []
+    for dirpath, dirs, files in os.walk(args.root):
+        dirs[:] = [d for d in dirs if d != "include"]  # include/ folders hold headers, not shaders
+        for f in sorted(files):
+            if stage_of(f):
+                shaders.append(os.path.join(dirpath, f))
+    shaders.sort()
+
+    perspective = ran = passed = 0
+    cannot_run, failed, other = Counter(), Counter(), Counter()
+    for path in shaders:
+        rel = os.path.relpath(path, args.root)
+        try:
+            # An include/ folder beside the shader is its #include search path (as corpus/check.sh does).
+            include = os.path.join(os.path.dirname(path), "include")
+            flags = ["-I", include] if os.path.isdir(include) else []
+            p = subprocess.run([args.stereoshift, "verify", "--json"] + flags + [path], capture_output=True, text=True,
+                               timeout=args.timeout)
+        except subprocess.TimeoutExpired:
+            perspective += 1
+            cannot_run["timed out"] += 1
+            if args.verbose:
+                print(f"{rel}: cannot run: timed out")
+            continue
+        result = None
+        try:
+            result = json.loads(p.stdout) if p.stdout.strip() else None
+        except json.JSONDecodeError:
+            result = None
+        if result is not None and result.get("verified") is False:
+            other[result.get("classification", "?")] += 1
+            if args.verbose:
+                print(f"{rel}: {result.get('classification')}: nothing injected")
+            continue
+        perspective += 1
+        if result is None or result.get("ran") is False:
+            key = reason_key(p.stderr)
+            cannot_run[key] += 1
+            if args.verbose:
+                print(f"{rel}: cannot run: {p.stderr.strip().splitlines()[0] if p.stderr.strip() else '?'}")
+            continue
+        ran += 1
+        if result.get("ok"):
+            passed += 1
+            if args.verbose:
+                print(f"{rel}: verified")
+        else:
+            problems = result.get("problems") or ["(no problem listed)"]
+            failed[reason_key(problems[0])] += 1
+            if args.verbose:
+                print(f"{rel}: FAILED: {problems[0]}")
+
+    pct = lambda n: f"{100.0 * n / perspective:.1f}%" if perspective else "-"
+    print(f"pre-rasterization shaders: {len(shaders)} "
+          f"(not shifted: {sum(other.values())}: " + ", ".join(f"{k} {v}" for k, v in sorted(other.items())) + ")")
+    print(f"get the shift:             {perspective}")
+    print(f"verify runs:               {ran} ({pct(ran)})")
+    print(f"verify passes:             {passed} ({pct(passed)})")
+    if cannot_run:
+        print("cannot run, by reason:")
+        for k, v in cannot_run.most_common():
+            print(f"  {v:3d}  {k}")
+    if failed:
+        print("ran but failed, by first problem:")
+        for k, v in failed.most_common():
+            print(f"  {v:3d}  {k}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,120 @@
+// `verify` on shaders written the way public samples write them, one per resource family, vertex
+// input shape and stage combination the harness feeds (test/harness/shaders/verify/): each must
+// run on lavapipe — original against transpiled — and verify, with the shift actually exercised
+// (vertices beyond the cutoff). Plus the data check: a shadow-map coordinate computed with its own
+// matrix must not look like an unshifted copy of the position.
+#include "transpiler/verify/stereo_verify.h"
+#include "test/harness/vulkan_suite.h"
+#include "transpiler/stereoshift.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace stereoshift;
+using namespace stereoshift::harness;
+
+namespace {
+
+class VerifyInputs : public VulkanSuite<> {
+ protected:
+  // Builds the given shaders (pipeline order) and runs verify on them.
+  VerifyResult verify(const std::vector<std::string>& files) {
+    std::vector<SourceFile> sources;
+    for (const auto& f : files) {
+      sources.push_back({std::string(VERIFY_SHADER_DIR) + "/" + f, {}});
+      EXPECT_TRUE(readFile(sources.back().path, &sources.back().contents)) << f;
+    }
+    TranspileOptions options;
+    std::vector<StageModules> stages;
+    std::string classification;
+    Diagnostics diags;
+    VerifyResult failed;
+    if (!buildStageModules(sources, options, &stages, &classification, diags)) {
+      failed.error = "does not build: " + diags.format();
+      return failed;
+    }
+    EXPECT_EQ(classification, "perspective") << files.back();
+    return verifyStereo(*context_, stages, VerifySettings{});
+  }
+
+  void expectVerified(const VerifyResult& r, const std::string& what) {
+    ASSERT_TRUE(r.error.empty()) << what << ": " << r.error;
+    EXPECT_TRUE(r.ok) << what << ": " << (r.problems.empty() ? "" : r.problems.front());
+    EXPECT_TRUE(r.monoIdentical) << what;
+    EXPECT_GT(r.vertices, 0u) << what;
+    EXPECT_LT(r.cutoffVertices, r.vertices) << what << ": the cutoff kept every vertex, the shift was never checked";
+  }
+
+  void SetUp() override {
+    if (!context_) {
+      if (HARNESS_REQUIRE_VULKAN) FAIL() << "no Vulkan device: " << setupError_;
+      GTEST_SKIP() << "no Vulkan device: " << setupError_;
+    }
+  }
+};
+
+// sampler2DArray, samplerCube, sampler3D and an integer usampler2D, in two descriptor sets.
+TEST_F(VerifyInputs, TextureArraysCubesVolumesAndIntegerTextures) {
+  expectVerified(verify({"texture_kinds.vert"}), "texture_kinds.vert");
+}
+
+// HLSL Texture2D / SamplerState apart (two bindings) and together (one binding), Texture2DArray.
+TEST_F(VerifyInputs, SeparateTexturesAndSamplersHlsl) {
+  expectVerified(verify({"separate_samplers.vert.hlsl"}), "separate_samplers.vert.hlsl");
+}
+
+// A readonly std430 buffer of per-instance structs and storage images of two formats.
+TEST_F(VerifyInputs, StorageBuffersAndImages) {
+  expectVerified(verify({"storage_resources.vert"}), "storage_resources.vert");
+}
+
+// uniform Light { ... } lights[3], sampler2D detailMaps[2], samplerBuffer.
+TEST_F(VerifyInputs, DescriptorArraysAndTexelBuffers) {
+  VerifyResult r = verify({"descriptor_arrays.vert"});
+  expectVerified(r, "descriptor_arrays.vert");
+}
+
+// ivec4, uvec2, mat4 (four locations), float[4] (four locations), dvec3.
+TEST_F(VerifyInputs, IntegerMatrixArrayAndDoubleVertexInputs) {
+  expectVerified(verify({"vertex_input_types.vert"}), "vertex_input_types.vert");
+}
+
+// A lone OpenGL 3.3 geometry shader (points in, loose uniforms) behind a synthesized vertex stage.
+TEST_F(VerifyInputs, LoneGeometryShaderGetsAVertexStage) {
+  VerifyResult r = verify({"billboard.geom"});
+  expectVerified(r, "billboard.geom");
+  ASSERT_EQ(r.synthesizedStages.size(), 1u);
+  EXPECT_EQ(r.synthesizedStages[0], "vertex (synthesized pass-through)");
+}
+
+// A lone tessellation-evaluation shader with per-vertex and patch inputs behind synthesized
+// vertex and tessellation-control stages.
+TEST_F(VerifyInputs, LoneTessEvaluationShaderGetsVertexAndControlStages) {
+  VerifyResult r = verify({"pn_patch.tese"});
+  expectVerified(r, "pn_patch.tese");
+  ASSERT_EQ(r.synthesizedStages.size(), 2u);
+  EXPECT_EQ(r.synthesizedStages[1], "tessellation-control (synthesized pass-through)");
+}
+
+// 516 bytes of push constants: over lavapipe's limit, so bound as a uniform buffer.
+TEST_F(VerifyInputs, PushConstantsOverTheDeviceLimit) {
+  const uint32_t limit = context_->properties().limits.maxPushConstantsSize;
+  if (limit >= 516) GTEST_SKIP() << "this device takes " << limit << " bytes of push constants";
+  VerifyResult r = verify({"big_push_constants.vert"});
+  expectVerified(r, "big_push_constants.vert");
+  EXPECT_TRUE(r.pushConstantsAsBuffer);
+}
+
+// MVP and DepthBiasMVP are different uniforms: ShadowCoord differs from the position, so it is
+// neither a stale copy (halo) nor re-derived, and stays the same for both eyes.
+TEST_F(VerifyInputs, ShadowCoordinateIsNotReportedAsAHalo) {
+  VerifyResult r = verify({"shadow_coord.vert"});
+  expectVerified(r, "shadow_coord.vert");
+  EXPECT_TRUE(r.otherOutputsUnchanged);
+  EXPECT_EQ(r.haloComponentsChanged, 0u);
+  for (const auto& p : r.problems) EXPECT_EQ(p.find("halo"), std::string::npos) << p;
+}
+
+}  // namespace
