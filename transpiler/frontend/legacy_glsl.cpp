@@ -273,12 +273,18 @@ bool isNewKeyword(const std::string& word, bool es) {
   return common.count(word) || (es ? essl310.count(word) : glsl330.count(word));
 }
 
-}  // namespace
-
-bool isLegacyGlsl(const SourceInfo& info) {
-  return info.language == SourceLanguage::Glsl && !info.vulkan &&
-         (info.es ? info.version < 300 : info.version < 330);
+// Whether `name` is a compatibility built-in of any stage, translated or not.
+bool isCompatBuiltin(const std::string& name) {
+  static const std::set<std::string> names = [] {
+    std::set<std::string> all;
+    for (Stage stage : {Stage::Vertex, Stage::Fragment})
+      for (const auto& [glName, builtin] : compatBuiltins(stage)) all.insert(glName);
+    return all;
+  }();
+  return names.count(name) > 0 || isUntranslatedCompatBuiltin(name);
 }
+
+}  // namespace
 
 LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& version) {
   LegacyDialect d;
@@ -293,11 +299,8 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
   // No #version: GLSL's default is 110, ESSL's 100; what the text uses decides between them.
   d.legacy = true;
   Scan s = scan(text);
-  auto compat = compatBuiltins(Stage::Vertex);
-  auto fragmentCompat = compatBuiltins(Stage::Fragment);
   for (const auto& t : s.identifiers) {
-    if (t.text == "ftransform" || (t.text.starts_with("gl_") && (compat.count(t.text) || fragmentCompat.count(t.text) ||
-                                                                   isUntranslatedCompatBuiltin(t.text)))) {
+    if (t.text == "ftransform" || isCompatBuiltin(t.text)) {
       d.version = 110;
       d.reason = "no #version; uses the desktop compatibility built-in " + t.text + ", so GLSL's default 110";
       return d;
@@ -409,11 +412,11 @@ LegacyTranslation translateLegacyGlsl(const std::string& text, Stage stage, cons
       return located(t.begin, "'" + w + "' is fixed-function state of the compatibility profile that stereoshift "
                               "cannot translate (only the transform matrices, vertex attributes, colours, "
                               "texture coordinates and fog coordinate are); pass it as a uniform of your own");
-    } else if (!es && w.starts_with("gl_") && !compatBuiltins(Stage::Vertex).count(w) &&
-               !compatBuiltins(Stage::Fragment).count(w)) {
-      // Core built-in: unchanged.
-    } else if (!es && (compatBuiltins(Stage::Vertex).count(w) || compatBuiltins(Stage::Fragment).count(w))) {
+    } else if (!es && isCompatBuiltin(w)) {
+      // A compatibility built-in of another stage (gl_Vertex in a fragment shader).
       return located(t.begin, "'" + w + "' is not available in a " + std::string(stageName(stage)) + " shader");
+    } else if (w.starts_with("gl_")) {
+      // A core built-in: unchanged.
     } else if (oneXX && isNewKeyword(w, es)) {
       rename(w + "_stereoshift");
     }

@@ -40,9 +40,6 @@ struct LegacyDialect {
 // The dialect of `text` given its #version line (findVersion).
 LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& version);
 
-// Whether a shader of this dialect takes the legacy route (ESSL 100, desktop 110-150).
-bool isLegacyGlsl(const SourceInfo& info);
-
 struct LegacyTranslation {
   bool ok = false;
   std::string text;                   // the ESSL 310 / GLSL 330 translation
