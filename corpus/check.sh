@@ -33,6 +33,10 @@ check_one() {
         "$here"/es300/*)
             run "$f" "$GLSLANG" "$f" || ok=1
             ;;
+        "$here"/legacy-glsl/*)
+            # ESSL 100 (with or without #version) and desktop 110-150: glslang's AST checks, no SPIR-V.
+            run "$f" "$GLSLANG" "$f" || ok=1
+            ;;
         "$here"/vk450/*)
             # glslang wants -I glued to its directory (no space).
             run "$f" "$GLSLANG" -V "-I$here/vk450/include" -o /dev/null "$f" || ok=1
@@ -73,7 +77,7 @@ while IFS= read -r f; do
         fail=$((fail + 1))
         failed+=("${f#"$here"/}")
     fi
-done < <(find "$here/gl330" "$here/es300" "$here/vk450" "$here/hlsl" "$here/hlsl-stage-named" -type f \
+done < <(find "$here/gl330" "$here/es300" "$here/legacy-glsl" "$here/vk450" "$here/hlsl" "$here/hlsl-stage-named" -type f \
             \( -name '*.vert' -o -name '*.tesc' -o -name '*.tese' -o -name '*.geom' \
                -o -name '*.frag' -o -name '*.comp' -o -name '*.hlsl' \) \
             -not -path '*/include/*' | LC_ALL=C sort)

@@ -5,6 +5,8 @@
 #include "transpiler/frontend/language_detect.h"
 #include "transpiler/backend/emit_prep.h"
 #include "transpiler/backend/splice_route.h"
+#include "transpiler/backend/glsl_splice.h"
+#include "transpiler/frontend/legacy_glsl.h"
 #include "passes/ir/validate.h"
 #include "passes/pass_manager.h"
 #include "passes/ir/module.h"
@@ -168,6 +170,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     }
     words = std::move(front.spirv);
     info = std::move(front.info);
+    if (!front.dialectReason.empty()) result.report["dialect_reason"] = front.dialectReason;
     result.includedFiles = std::move(front.includedFiles);
     if (!result.includedFiles.empty()) result.report["included_files"] = result.includedFiles;
   }
@@ -199,7 +202,16 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
 
   // ---- passes ----
   auto passesStarted = std::chrono::steady_clock::now();
-  PassContext ctx{module, options, info, diags, file, result.report};
+  // Legacy GLSL kept in its own dialect declares the eye parameters as loose uniforms (ESSL 100 and
+  // GLSL below 140 have no uniform blocks).
+  TranspileOptions legacyOptions;
+  bool legacyRoute = takesLegacyGlslRoute(info, resolveTarget(info, options), options);
+  if (legacyRoute && options.eye.source == EyeSource::Auto) {
+    legacyOptions = options;
+    legacyOptions.eye.source = EyeSource::LooseUniforms;
+  }
+  PassContext ctx{module, legacyRoute && options.eye.source == EyeSource::Auto ? legacyOptions : options, info, diags,
+                  file, result.report};
   ctx.nextStage = nextStage;
   if (info.language != SourceLanguage::Spirv) ctx.frontEndSpirv = &result.originalSpirv;
   if (compiled && compiled->foldTried) {
@@ -264,6 +276,18 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
       }
       result.report["verified"] = true;
     }
+  } else if (legacyRoute) {
+    // ESSL 100 / GLSL 110-150 vertex shaders: the shift spliced into the original text (glsl_splice.h),
+    // always re-compiled at the original version; an output that does not compile is never written.
+    if (!spliceLegacyGlsl(input, ctx, result.output, result.report, diags)) return result;
+    Diagnostics verifyDiags;
+    if (!verifyLegacyCompiles(result.output, info.stage, info.version, info.es, file + " (emitted)", verifyDiags)) {
+      diags.append(verifyDiags);
+      diags.error(file, "the emitted shader does not compile at its original version");
+      result.output.clear();
+      return result;
+    }
+    result.report["verified"] = true;
   } else {
     spirv::Module emitModule = module;
     SourceInfo emitInfo = info;

@@ -2,6 +2,7 @@
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/source_limits.h"
 #include "transpiler/frontend/language_detect.h"
+#include "transpiler/frontend/legacy_glsl.h"
 #include "passes/source_text.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -615,18 +616,12 @@ bool withinSourceLimits(const SourceFile& input, Diagnostics& diags) {
   return true;
 }
 
-// A garbled or missing #version, said as such: glslang itself would fall back to ESSL 100 and
-// complain that ES shaders for SPIR-V need version 310, which points the wrong way.
+// A garbled #version, said as such: glslang itself would fall back to ESSL 100 and complain that ES
+// shaders for SPIR-V need version 310, which points the wrong way. (A missing one is not a problem:
+// the shader is GLSL 110 or ESSL 100, see decideLegacyDialect.)
 void reportVersionProblem(const SourceFile& input, const VersionLine& v, Diagnostics& diags) {
-  if (!v.problem.empty()) {
-    auto [line, column] = lineAndColumn(input.contents, v.problemAt);
-    diags.error(input.path, line, column, v.problem);
-    return;
-  }
-  diags.error(input.path, 1, 1,
-              "no #version directive: GLSL without one is version 110, which stereoshift cannot convert "
-              "(glslang makes SPIR-V from GLSL 330 or later and ESSL 300 or later); start the shader with "
-              "a #version line such as `#version 330` or `#version 450`");
+  auto [line, column] = lineAndColumn(input.contents, v.problemAt);
+  diags.error(input.path, line, column, v.problem);
 }
 
 }  // namespace
@@ -677,20 +672,29 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   // GLSL: decide the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL
   // (tried first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
   VersionLine v = findVersion(input.contents);
-  if (!v.problem.empty() || v.begin == std::string::npos) {
+  if (!v.problem.empty()) {
     reportVersionProblem(input, v, diags);
     return result;
   }
   std::string text = input.contents;
-  if (v.es && v.version < 310) {
-    if (v.version == 100) {
-      diags.error(input.path, 1, 1,
-                  "ESSL 100 is not supported yet: glslang 12 cannot make SPIR-V from `attribute`/`varying` "
-                  "shaders (convert to ESSL 300, or use --target with a GLSL 300 es source)");
+  // ESSL 100 and desktop 110-150 (and no #version at all): glslang makes SPIR-V only from ESSL 310 and
+  // GLSL 330 on, and asked for 1xx with a SPIR-V client it fails its own built-ins and prints them to
+  // stdout. Such shaders are parsed as a faithful ESSL 310 / GLSL 330 translation instead (the
+  // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
+  LegacyDialect dialect = decideLegacyDialect(input.contents, v);
+  if (dialect.legacy) {
+    LegacyTranslation translated = translateLegacyGlsl(input.contents, *stage, dialect, input.path);
+    if (!translated.ok) {
+      diags.add(translated.error);
       return result;
     }
+    text = std::move(translated.text);
+    v.version = dialect.version;
+    v.es = dialect.es;
+    result.dialectReason = dialect.reason;
+  } else if (v.es && v.version < 310) {
     // glslang 12 refuses ES < 310 for SPIR-V; parse as 310 (same line count) and emit the original.
-    if (v.begin != std::string::npos) text.replace(v.begin, v.end - v.begin, "#version 310 es");
+    text.replace(v.begin, v.end - v.begin, "#version 310 es");
   }
   std::vector<Client> clients;
   bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);

@@ -15,6 +15,7 @@ struct FrontEndResult {
   std::vector<uint32_t> spirv;
   SourceInfo info;
   std::vector<std::string> includedFiles;
+  std::string dialectReason;  // GLSL without #version or below 330: why this dialect (legacy_glsl.h)
 };
 
 // The first `#version N [es|core|compatibility]` directive at the start of a line of GLSL `text`.

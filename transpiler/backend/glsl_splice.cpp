@@ -1,0 +1,242 @@
+// This turns the passes' decisions for a legacy GLSL vertex shader into stereo GLSL of the same
+// dialect by a source splice: see glsl_splice.h.
+#include "transpiler/backend/glsl_splice.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string_view>
+
+namespace stereoshift {
+
+namespace {
+
+constexpr const char* kMonoMain = "main_stereoshift_mono";
+
+bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+struct Word {
+  size_t begin, end;
+  std::string text;
+};
+
+// The identifiers and punctuation of `text` outside comments and outside directives other than
+// #define (whose body is code), in order; numbers are skipped.
+std::vector<Word> words(const std::string& text) {
+  std::vector<Word> out;
+  bool lineStart = true;
+  for (size_t i = 0; i < text.size();) {
+    char c = text[i];
+    if (c == '\n') {
+      lineStart = true;
+      ++i;
+    } else if (text.compare(i, 2, "//") == 0) {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (text.compare(i, 2, "/*") == 0) {
+      size_t close = text.find("*/", i + 2);
+      i = close == std::string::npos ? text.size() : close + 2;
+    } else if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+    } else if (c == '#' && lineStart) {
+      size_t k = i + 1;
+      while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
+      bool define = text.compare(k, 6, "define") == 0;
+      if (define) {
+        i = k + 6;
+        lineStart = false;
+        continue;
+      }
+      while (i < text.size() && text[i] != '\n') {
+        if (text[i] == '\\' && i + 1 < text.size()) ++i;
+        ++i;
+      }
+    } else if (isIdentStart(c)) {
+      size_t b = i;
+      while (i < text.size() && isIdentChar(text[i])) ++i;
+      out.push_back({b, i, text.substr(b, i - b)});
+      lineStart = false;
+    } else if (std::isdigit(static_cast<unsigned char>(c))) {
+      while (i < text.size() && (isIdentChar(text[i]) || text[i] == '.')) ++i;
+      lineStart = false;
+    } else {
+      out.push_back({i, i + 1, std::string(1, c)});
+      ++i;
+      lineStart = false;
+    }
+  }
+  return out;
+}
+
+std::string floatLiteral(float value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
+  std::string lit = buf;
+  if (lit.find_first_of(".eEn") == std::string::npos) lit += ".0";
+  return lit;
+}
+
+// When `p` (the position) is shifted: the condition of emitCutoffCondition, in its order.
+std::string conditionText(const GlslSpliceOptions& spec, const std::string& p) {
+  std::string stereo = spec.eyeSignName + " != 0.0";
+  // isinf exists from GLSL 130 / ESSL 300; below, `abs(w) <= FLT_MAX` is false for inf and NaN alike
+  // (a NaN w fails the other term anyway), so the condition is the same.
+  bool hasIsinf = spec.es ? spec.version >= 300 : spec.version >= 130;
+  std::string finite = hasIsinf ? "!isinf(" + p + ".w)" : "abs(" + p + ".w) <= 3.40282347e+38";
+  switch (spec.cutoff) {
+    case CutoffMode::Epsilon:
+      return stereo + " && abs(" + p + ".w - 1.0) > " + floatLiteral(spec.epsilon) + " && " + finite;
+    case CutoffMode::Exact:
+      return stereo + " && " + p + ".w != 1.0 && " + finite;
+    case CutoffMode::None:
+      break;
+  }
+  return stereo;
+}
+
+std::string shiftedX(const GlslSpliceOptions& spec, const std::string& p) {
+  return p + ".x + (" + spec.eyeSignName + " * " + spec.separationName + ") * (" + p + ".w - " +
+         spec.convergenceName + ")";
+}
+
+}  // namespace
+
+std::vector<std::string> exactPositionCopies(const std::string& source) {
+  std::vector<Word> w = words(source);
+  std::map<std::string, bool> exact;  // name -> every assignment seen is `name = gl_Position;`
+  for (size_t k = 0; k + 1 < w.size(); ++k) {
+    if (!isIdentStart(w[k].text[0]) || w[k].text == "gl_Position") continue;
+    bool assigned = w[k + 1].text == "=" && !(k + 2 < w.size() && w[k + 2].text == "=") &&
+                    !(k > 0 && (w[k - 1].text == "." || w[k - 1].text == "]"));
+    if (!assigned) continue;
+    bool copy = k + 3 < w.size() && w[k + 2].text == "gl_Position" && w[k + 3].text == ";";
+    auto [it, fresh] = exact.emplace(w[k].text, copy);
+    if (!fresh) it->second = it->second && copy;
+  }
+  std::vector<std::string> out;
+  for (const auto& [name, isCopy] : exact)
+    if (isCopy) out.push_back(name);
+  return out;
+}
+
+GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOptions& options) {
+  GlslSpliceResult result;
+  std::string nl = source.find("\r\n") != std::string::npos ? "\r\n" : "\n";
+  std::vector<Word> w = words(source);
+  std::string text;
+  size_t pos = 0;
+  int mains = 0;
+  for (const auto& word : w) {
+    if (word.text != "main") continue;
+    text.append(source, pos, word.begin - pos);
+    text += kMonoMain;
+    pos = word.end;
+    ++mains;
+  }
+  text.append(source, pos, std::string::npos);
+  if (mains == 0) {
+    result.error = "the shader defines no `main`";
+    return result;
+  }
+  for (const auto& word : w)
+    if (word.text == kMonoMain) {
+      result.error = std::string("the shader already uses the name `") + kMonoMain + "`";
+      return result;
+    }
+
+  const std::string p = "gl_Position", ind = "    ";
+  std::string t;
+  if (!text.empty() && text.back() != '\n') t += nl;
+  t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
+  for (const std::string* name : {&options.eyeSignName, &options.separationName, &options.convergenceName})
+    t += "uniform float " + *name + ";" + nl;
+  t += "void main()" + nl + "{" + nl + ind + kMonoMain + "();" + nl;
+  if (options.form == ShiftForm::Select) {
+    t += ind + p + ".x = (" + conditionText(options, p) + ") ? " + shiftedX(options, p) + " : " + p + ".x;" + nl;
+  } else {
+    t += ind + "if (" + conditionText(options, p) + ")" + nl + ind + "{" + nl;
+    t += ind + ind + p + ".x = " + shiftedX(options, p) + ";" + nl + ind + "}" + nl;
+  }
+  for (const auto& copy : options.haloCopies) t += ind + copy + " = " + p + ";" + nl;
+  t += "}" + nl + "// ---- end stereoshift ----" + nl;
+  result.text = text + t;
+  result.ok = true;
+  return result;
+}
+
+bool takesLegacyGlslRoute(const SourceInfo& info, TargetLanguage target, const TranspileOptions& options) {
+  bool legacy = info.language == SourceLanguage::Glsl && !info.vulkan &&
+                (info.es ? info.version < 300 : info.version < 330);
+  return legacy && info.stage == Stage::Vertex && target == (info.es ? TargetLanguage::Essl : TargetLanguage::Glsl) &&
+         !options.targetVersion && !options.forceReemit;
+}
+
+namespace {
+
+// The passes whose work the splice renders as text.
+bool splicedAsText(std::string_view pass) {
+  return pass == "clip-position-detection" || pass == "eye-params" || pass == "stereo-shift" || pass == "halo";
+}
+
+// The source's name of a name in the analysis translation (stereoshift_TexCoord -> gl_TexCoord).
+std::string sourceName(const std::string& translated) {
+  static constexpr std::string_view kPrefix = "stereoshift_";
+  if (translated.starts_with(kPrefix)) return "gl_" + translated.substr(kPrefix.size());
+  return translated;
+}
+
+}  // namespace
+
+bool spliceLegacyGlsl(const SourceFile& input, const PassContext& context, std::string& output,
+                      nlohmann::json& report, Diagnostics& diags) {
+  const std::string& file = input.path;
+  if (context.eye.source != EyeSource::LooseUniforms) {
+    diags.error(file, "GLSL below 330 and ESSL 100 keep their own dialect, where the eye parameters are loose "
+                      "uniforms: use --eye-source loose-uniforms (or auto), or choose --target and --target-version");
+    return false;
+  }
+  GlslSpliceOptions splice;
+  static_cast<ShiftSpec&>(splice) = shiftSpec(context);
+  splice.version = context.source.version;
+  splice.es = context.source.es;
+  nlohmann::json dropped = nlohmann::json::array();
+  auto drop = [&](const std::string& what) {
+    diags.warning(file, "the legacy GLSL text route cannot carry " + what + "; the output leaves it out");
+    dropped.push_back(what);
+  };
+  if (splice.fused) drop("--fused-shift (GLSL 1xx has no fma: the plain form is used)");
+  if (splice.compensated) drop("--compensated-shift (GLSL 1xx has no `precise`: the plain form is used)");
+  if (report.contains("passes")) {
+    for (const auto& [pass, facts] : report["passes"].items()) {
+      if (splicedAsText(pass) || !facts.contains("result") || facts["result"] != "changed") continue;
+      drop("what the " + pass + " pass changed");
+    }
+    // Halo outputs: exact copies of gl_Position are re-copied after the shift; derived ones are not.
+    std::vector<std::string> copies = exactPositionCopies(input.contents);
+    if (report["passes"].contains("halo") && report["passes"]["halo"].contains("shifted_outputs")) {
+      for (const auto& out : report["passes"]["halo"]["shifted_outputs"]) {
+        std::string name = sourceName(out.get<std::string>());
+        if (std::find(copies.begin(), copies.end(), name) != copies.end()) {
+          if (std::find(splice.haloCopies.begin(), splice.haloCopies.end(), name) == splice.haloCopies.end())
+            splice.haloCopies.push_back(name);
+        } else {
+          drop("the halo fix of output '" + name + "' (derived from the clip position, not a plain copy)");
+        }
+      }
+    }
+  }
+  GlslSpliceResult spliced = spliceGlslStereo(input.contents, splice);
+  if (!spliced.ok) {
+    diags.error(file, spliced.line, spliced.column, "cannot splice the stereo shift: " + spliced.error);
+    return false;
+  }
+  output = std::move(spliced.text);
+  report["route"] = "glsl-source-splice";
+  if (!splice.haloCopies.empty()) report["halo_copies"] = splice.haloCopies;
+  if (!dropped.empty()) report["not_carried"] = dropped;
+  return true;
+}
+
+}  // namespace stereoshift
