@@ -516,7 +516,10 @@ int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage l
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 100);
     shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
   }
-  int spirvMinor = options && options->targetSpv ? *options->targetSpv : env ? defaultSpirvMinor(*env) : 0;
+  // OpenGL rules take SPIR-V 1.0 only (ARB_gl_spirv): a Vulkan environment sets the version of the
+  // Vulkan attempt, and an OpenGL GLSL shader of the same run keeps 1.0.
+  const bool openGLRules = language == SourceLanguage::Glsl && client == Client::OpenGL;
+  int spirvMinor = openGLRules ? 0 : options && options->targetSpv ? *options->targetSpv : env ? defaultSpirvMinor(*env) : 0;
   // Mesh and task shaders exist only from SPIR-V 1.4 / Vulkan 1.3 on.
   if (stage == Stage::Mesh || stage == Stage::Task) {
     if (!env || *env != TargetEnv::Vulkan1_3) shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
