@@ -249,7 +249,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     if (options.verify) {
       Diagnostics verifyDiags;
       if (!verifyCompiles(result.output, SourceLanguage::Hlsl, info.stage, info.entryPoint, true, file + " (emitted)",
-                          verifyDiags)) {
+                          verifyDiags, &options)) {
         diags.append(verifyDiags);
         diags.error(file, "--verify: the emitted shader does not compile");
         return result;
@@ -270,7 +270,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
       Diagnostics verifyDiags;
       std::string entry = target == TargetLanguage::Hlsl ? (info.entryPoint.empty() ? "main" : info.entryPoint) : "main";
       if (!verifyCompiles(result.output, lang, info.stage, entry, emitted.vulkanSemantics,
-                          file + " (emitted)", verifyDiags)) {
+                          file + " (emitted)", verifyDiags, &options)) {
         diags.append(verifyDiags);
         diags.error(file, "--verify: the emitted shader does not compile");
         return result;

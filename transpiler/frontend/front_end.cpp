@@ -749,7 +749,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 }
 
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
-                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags) {
+                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
+                    const TranspileOptions* environment) {
   ensureGlslangInitialized();
   glslang::TShader shader(toGlslang(stage));
   const char* strings[] = {text.c_str()};
@@ -757,7 +758,7 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
   const int lengths[] = {static_cast<int>(text.size())};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   int messages = configureEnvironment(shader, stage, language, vulkanSemantics ? Client::Vulkan : Client::AstOnly,
-                                      entryPoint);
+                                      entryPoint, environment);
   // OpenGL GLSL/ESSL is checked as the driver would see it: AST only, the original dialect's rules.
   glslang::TShader::ForbidIncluder noIncludes;
   bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), noIncludes);
