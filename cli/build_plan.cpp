@@ -3,8 +3,11 @@
 
 #include "cli/scene_manifest.h"
 #include "passes/diagnostics.h"
+#include "transpiler/frontend/front_end.h"
+#include "transpiler/frontend/language_detect.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -29,7 +32,8 @@ std::vector<std::string> manifestOptionKeys() {
   CliOptions scratch;
   CLI::App app;
   addConversionOptions(app, scratch);
-  static const std::set<std::string> excluded = {"help", "report", "pass", "print-all", "validate-each", "stage", "D", "I"};
+  // stage-ext: the manifest's [stages] table instead, one for the whole tree.
+  static const std::set<std::string> excluded = {"help", "report", "pass", "print-all", "validate-each", "stage", "stage-ext", "D", "I"};
   std::vector<std::string> keys;
   for (const CLI::Option* option : app.get_options())
     for (const auto& name : option->get_lnames())
@@ -70,7 +74,8 @@ std::string applyOptionWords(CliOptions& o, const std::vector<std::string>& word
 // directories are listed (a build system watches them) but not entered, as before.
 class TreeWalk {
  public:
-  TreeWalk(const fs::path& outDir, Plan& plan) : plan_(plan) {
+  TreeWalk(const fs::path& outDir, const std::map<std::string, Stage>& stageExtensions, Plan& plan)
+      : plan_(plan), stageExtensions_(stageExtensions) {
     std::error_code ec;
     outCanonical_ = fs::weakly_canonical(outDir, ec);
   }
@@ -95,7 +100,7 @@ class TreeWalk {
         if (fs::weakly_canonical(path, entryError) == outCanonical_) continue;
         plan_.extraDependencies.push_back(path);
         if (!it->is_symlink(entryError)) walk(path, files);
-      } else if (isFile && stageFromPath(path.string())) {
+      } else if (isFile && mayBeShader(path)) {
         files.push_back(path);
       }
     }
@@ -108,27 +113,117 @@ class TreeWalk {
   // An entry with a shader's name (or a directory, which may hold shaders) is an error: the run
   // goes on but says something was not converted. Anything else is a warning.
   void skipped(const fs::path& path, const std::error_code& why, const std::string& what, bool mayHoldShaders = false) {
-    const bool error = mayHoldShaders || stageFromPath(path.string()).has_value();
+    const bool error = mayHoldShaders || stageFromPath(path.string(), stageExtensions_).has_value();
     (error ? plan_.skippedEntries : plan_.warnings)
         .push_back(path.string() + (error ? ": error: " : ": warning: ") + what + " (" + why.message() +
                    "); skipped" + (error ? ", the other shaders are converted regardless" : ""));
   }
 
+  // A file the name says is a stage, or a shader-language file (.glsl .hlsl .fx) whose stage its
+  // text may say (#pragma shader_stage); which of those are pipelines is decided on their text.
+  bool mayBeShader(const fs::path& path) const {
+    if (stageFromPath(path.string(), stageExtensions_)) return true;
+    if (isIncludeOnlyName(path.string())) return false;
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".glsl" || extension == ".hlsl" || extension == ".fx";
+  }
+
   Plan& plan_;
+  const std::map<std::string, Stage>& stageExtensions_;
   fs::path outCanonical_;
 };
+
+// The files `text` (the shader at `path`) #includes that exist, resolved as the front end would.
+std::vector<fs::path> includedFiles(const fs::path& path, const std::string& text, const std::vector<std::string>& userDirs) {
+  std::vector<fs::path> found;
+  std::vector<std::string> roots = includeSearchPath(path.string(), userDirs);
+  for (size_t line = 0, next = 0; line < text.size(); line = next) {
+    size_t newline = text.find('\n', line);
+    next = newline == std::string::npos ? text.size() : newline + 1;
+    size_t i = text.find_first_not_of(" \t", line);
+    if (i == std::string::npos || i >= next || text[i] != '#') continue;
+    i = text.find_first_not_of(" \t", i + 1);
+    if (i == std::string::npos || text.compare(i, 7, "include") != 0) continue;
+    i = text.find_first_not_of(" \t", i + 7);
+    if (i == std::string::npos || i >= next || (text[i] != '"' && text[i] != '<')) continue;
+    size_t close = text.find(text[i] == '"' ? '"' : '>', i + 1);
+    if (close == std::string::npos || close >= next) continue;
+    std::string header = text.substr(i + 1, close - i - 1);
+    std::error_code ec;
+    for (const auto& root : roots)
+      if (fs::is_regular_file(fs::path(root) / header, ec)) {
+        found.push_back(fs::weakly_canonical(fs::path(root) / header, ec));
+        break;
+      }
+  }
+  return found;
+}
+
+// Extensions other languages use too (C# .cs, F# .fs): such a file is a shader only when its text
+// says so (a #version line, or HLSL constructs), so a tree with tool sources beside the shaders builds.
+bool sharedExtensionWithoutShaderText(const fs::path& path, const std::string& text) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".cs" && extension != ".fs") return false;
+  if (findVersion(text).begin != std::string::npos) return false;
+  return decideLanguage(path.string(), text, std::nullopt).language != SourceLanguage::Hlsl;
+}
 
 // Shader files under `root`, grouped into pipelines keyed by their path relative to `root`; the
 // directories walked are added to the plan's dependencies, entries that cannot be read to its
 // skipped entries or warnings.
-std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir, Plan& plan) {
+//
+// A file is a pipeline stage when its stage can be told (-S, `#pragma shader_stage`, the name) and
+// no other file of the tree #includes it; a shader-language file with no stage (common.glsl) is an
+// include file. Stages group by the name without the stage part (pipelineKey): 5.1.parallax.vs and
+// 5.1.parallax.fs, basicVS.hlsl and basicPS.hlsl, water.vert.glsl and water.frag.glsl.
+std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir,
+                                                           const CliOptions& base, Plan& plan) {
   std::vector<fs::path> files;
   plan.extraDependencies.push_back(root);
-  TreeWalk(outDir, plan).walk(root, files);
+  const std::map<std::string, Stage>& extensions = base.t.stageExtensions;
+  TreeWalk(outDir, extensions, plan).walk(root, files);
   std::sort(files.begin(), files.end());
+  struct Candidate {
+    fs::path path;
+    StageDecision stage;
+    bool notShaderText = false;
+  };
+  std::vector<Candidate> candidates;
+  std::set<fs::path> included;
+  for (const auto& f : files) {
+    std::string text;
+    readFile(f.string(), &text);  // an unreadable stage is reported when its pipeline converts
+    Candidate c{f, decideStage(f.string(), text, base.t.stage, extensions), sharedExtensionWithoutShaderText(f, text)};
+    for (auto& header : includedFiles(f, text, base.t.includeDirs)) included.insert(std::move(header));
+    candidates.push_back(std::move(c));
+  }
   std::map<std::string, std::vector<fs::path>> pipelines;
-  // Lexical: every file came from walking `root` (fs::relative would resolve both paths per file).
-  for (const auto& f : files) pipelines[pipelineKey(f.lexically_relative(root).generic_string())].push_back(f);
+  for (const auto& c : candidates) {
+    std::error_code ec;
+    if (included.count(fs::weakly_canonical(c.path, ec))) continue;  // an include file of another shader
+    if (!c.stage.problem.empty()) {
+      plan.skippedEntries.push_back(c.path.string() + ":" + std::to_string(c.stage.problemLine) + ":" +
+                                    std::to_string(c.stage.problemColumn) + ": error: " + c.stage.problem +
+                                    "; skipped, the other shaders are converted regardless");
+      continue;
+    }
+    if (c.notShaderText) {
+      plan.warnings.push_back(c.path.string() + ": warning: named like a shader stage, but has no #version line "
+                              "and no HLSL constructs (C#/F# source?); skipped");
+      continue;
+    }
+    if (!c.stage.stage) {
+      plan.warnings.push_back(c.path.string() + ": warning: not converted: " + stageHint(c.path.string()) +
+                              " (a file another shader #includes needs none)");
+      continue;
+    }
+    // Lexical: every file came from walking `root` (fs::relative would resolve both paths per file).
+    pipelines[pipelineKey(c.path.lexically_relative(root).generic_string(), extensions)].push_back(c.path);
+  }
   return pipelines;
 }
 
@@ -158,13 +253,9 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
   job.mode = mode;
   job.options = options.options;
   job.fingerprint = options.fingerprint;
-  // Each shader's directory and an `include` directory beside it are include roots.
-  for (const auto& s : stages) {
-    fs::path dir = s.parent_path();
-    job.options.includeDirs.push_back(dir.string());
-    std::error_code ec;
-    if (fs::is_directory(dir / "include", ec)) job.options.includeDirs.push_back((dir / "include").string());
-  }
+  // Each shader's directory and an `include` directory beside it are include roots (the front end
+  // adds the same for a single shader; here they also enter the cache key).
+  for (const auto& s : stages) job.options.includeDirs = includeSearchPath(s.string(), job.options.includeDirs);
   for (size_t i = options.options.includeDirs.size(); i < job.options.includeDirs.size(); ++i)
     job.fingerprint += "\n-I" + job.options.includeDirs[i];
   for (const auto& s : stages) {
@@ -182,7 +273,7 @@ Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOption
   plan.root = root;
   plan.outputDir = outDir;
   PassOptions options = passOptions(base, PassMode::Stereo);
-  for (const auto& [key, stages] : findPipelines(root, outDir, plan))
+  for (const auto& [key, stages] : findPipelines(root, outDir, base, plan))
     addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
   return plan;
 }
@@ -204,9 +295,13 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
                           "' does not exist");
     return plan;
   }
-  auto pipelines = findPipelines(plan.root, outDir, plan);
+  // The manifest's [stages] table, under the command line's --stage-ext (which wins for an extension
+  // both name): the walk and every pass's conversion read the same extensions.
+  CliOptions withStages = base;
+  for (const auto& [extension, stage] : manifest.stageExtensions) withStages.t.stageExtensions.try_emplace(extension, stage);
+  auto pipelines = findPipelines(plan.root, outDir, withStages, plan);
 
-  CliOptions defaults = base;
+  CliOptions defaults = withStages;
   for (const auto& o : manifest.defaults) applyOptionWords(defaults, o.words);  // checked while loading
 
   // Which passes use each pipeline, in manifest order.

@@ -69,6 +69,9 @@ JobResult convertJob(const BuildJob& job, const std::string& tool) {
       if (!r.passLog.empty()) log << r.passLog;
       for (const auto& inc : r.includedFiles) result.dependencies.push_back(inc);
       r.report["ok"] = r.ok;
+      // Which pipeline the stage was grouped into (the name without its stage part): with the
+      // report's stage_reason, how `build` read the tree.
+      r.report["pipeline"] = job.id;
       if (!job.pass.empty()) {
         r.report["pass"] = job.pass;
         r.report["mode"] = toString(job.mode);

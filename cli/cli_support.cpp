@@ -141,7 +141,14 @@ int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* 
       while (true) ::pause();  // test-only (see the header): a conversion that never finishes
     SourceFile s{p, {}};
     std::error_code ec;
-    if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
+    if (p == "-") {
+      // Standard input, as glslc reads it: the stage and language then come from -S / -x or the
+      // text, and diagnostics name it <stdin>.
+      s.path = kStdinName;
+      std::ostringstream text;
+      text << std::cin.rdbuf();
+      s.contents = text.str();
+    } else if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
       log << p << ": error: cannot read file\n";
       ++failed;
       continue;
@@ -161,6 +168,13 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("-x,--language", o.language,
                  "Language of the input, whatever its file name says: glsl or hlsl (default: the name's .hlsl/.fx/.glsl "
                  "extension, else the content)");
+  app.add_option("--stage-ext", o.stageExts,
+                 "Read files ending in .EXT as STAGE shaders: --stage-ext EXT=STAGE (repeatable; e.g. vp=vert)")
+      ->allow_extra_args(false);
+  app.add_option("--target-env", o.targetEnv,
+                 "SPIR-V environment, as glslc: vulkan1.0 (default), vulkan1.1, vulkan1.2, vulkan1.3, opengl, opengl4.5");
+  app.add_option("--target-spv", o.targetSpv,
+                 "SPIR-V version to make, as glslc: spv1.0 ... spv1.6 (default: the environment's; SPIR-V input keeps its own)");
   app.add_option("-e,--entry-point", o.t.entryPoint, "HLSL entry point (default: main, then VSMain/PSMain/GSMain/DSMain/HSMain/CSMain)");
   app.add_option("-D", o.t.defines, "Define a preprocessor macro: -DNAME or -DNAME=VALUE")->allow_extra_args(false);
   app.add_option("-I", o.t.includeDirs, "Add an #include search directory")->allow_extra_args(false);
@@ -217,6 +231,8 @@ const std::map<std::string, std::vector<std::string>>& enumeratedOptions() {
       {"--target", {"glsl", "essl", "hlsl", "msl", "spirv", "spirv-asm"}},
       {"--eye-source", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms"}},
       {"--shift-form", {"branch", "select"}},
+      {"--target-env", {"vulkan1.0", "vulkan1.1", "vulkan1.2", "vulkan1.3", "opengl", "opengl4.5"}},
+      {"--target-spv", {"spv1.0", "spv1.1", "spv1.2", "spv1.3", "spv1.4", "spv1.5", "spv1.6"}},
       {"--pass", registeredPassNames()},
   };
   return options;
@@ -239,6 +255,30 @@ std::optional<std::string> finishOptions(CliOptions& o) {
   if (!o.stage.empty()) {
     o.t.stage = stageFromName(o.stage);
     if (!o.t.stage) return "unknown stage '" + o.stage + "' " + validValues("--stage");
+  }
+  if (!o.targetEnv.empty()) {
+    o.t.targetEnv = targetEnvFromName(o.targetEnv);
+    if (!o.t.targetEnv) return unknownValue("--target-env", o.targetEnv);
+  }
+  if (!o.targetSpv.empty()) {
+    const auto& known = enumeratedOptions().at("--target-spv");
+    auto it = std::find(known.begin(), known.end(), o.targetSpv);
+    if (it == known.end()) return unknownValue("--target-spv", o.targetSpv);
+    o.t.targetSpv = static_cast<int>(it - known.begin());
+    if (o.t.targetEnv == TargetEnv::OpenGL45 && *o.t.targetSpv > 0)
+      return "--target-spv " + o.targetSpv + " with --target-env " + o.targetEnv + ": OpenGL takes SPIR-V 1.0 only";
+  }
+  for (const auto& mapping : o.stageExts) {
+    size_t equals = mapping.find('=');
+    std::string extension = mapping.substr(0, equals);
+    while (!extension.empty() && extension.front() == '.') extension.erase(0, 1);
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::optional<Stage> stage = equals == std::string::npos ? std::nullopt : stageFromName(mapping.substr(equals + 1));
+    if (extension.empty() || extension.find_first_of("./") != std::string::npos || !stage)
+      return "--stage-ext '" + mapping + "': expected EXT=STAGE with STAGE one of " + validValues("--stage") +
+             ", e.g. --stage-ext vp=vert";
+    o.t.stageExtensions[extension] = *stage;
   }
   if (o.language == "glsl") o.t.language = SourceLanguage::Glsl;
   else if (o.language == "hlsl") o.t.language = SourceLanguage::Hlsl;
@@ -534,7 +574,8 @@ ConversionRun convertInChild(const CliOptions& o, const std::vector<std::string>
     std::vector<std::string> targets, dependencies;
     for (const auto& r : reports)
       if (r.contains("output_file")) targets.push_back(r["output_file"].get<std::string>());
-    for (const auto& s : sources) dependencies.push_back(s.path);
+    for (const auto& s : sources)
+      if (s.path != kStdinName) dependencies.push_back(s.path);
     for (const auto& r : reports)
       for (const auto& inc : r.value("included_files", nlohmann::json::array())) dependencies.push_back(inc.get<std::string>());
     if (targets.empty()) {
@@ -594,17 +635,17 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
       if (outcome.failure.rfind("timed out", 0) == 0) {
         char limit[32];
         std::snprintf(limit, sizeof limit, "%g", o.timeoutSeconds);
-        std::cerr << paths.front() << ": error: conversion exceeded the " << limit
+        std::cerr << (paths.front() == "-" ? std::string(kStdinName) : paths.front()) << ": error: conversion exceeded the " << limit
                   << " s time limit (--timeout); no output was written\n";
       } else {
-        std::cerr << paths.front() << ": error: stereoshift " << outcome.failure
+        std::cerr << (paths.front() == "-" ? std::string(kStdinName) : paths.front()) << ": error: stereoshift " << outcome.failure
                   << " while converting this shader; no output was written\n";
       }
       printErrorSummary(1);
       return 1;
     }
     if (!deserialize(outcome.payload, &run)) {
-      std::cerr << paths.front() << ": error: stereoshift's conversion process answered garbage; no output was written\n";
+      std::cerr << (paths.front() == "-" ? std::string(kStdinName) : paths.front()) << ": error: stereoshift's conversion process answered garbage; no output was written\n";
       printErrorSummary(1);
       return 1;
     }
@@ -694,6 +735,9 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
   };
   // Only when given, so the cache keys of builds without -x stay what they were.
   if (t.language) description["language"] = static_cast<int>(*t.language);
+  if (t.targetEnv) description["targetEnv"] = targetEnvName(*t.targetEnv);
+  if (t.targetSpv) description["targetSpv"] = *t.targetSpv;
+  for (const auto& [extension, stage] : t.stageExtensions) description["stageExtensions"][extension] = stageName(stage);
   return description;
 }
 

@@ -16,12 +16,17 @@
 
 namespace stereoshift {
 
+// What diagnostics and reports call a shader read from standard input (the input `-`).
+inline constexpr const char* kStdinName = "<stdin>";
+
 struct CliOptions {
   TranspileOptions t;
   std::vector<std::string> inputs;
   std::string output;
   std::string stage, target, eyeSource = "auto", shiftForm = "branch";
   std::string language;  // -x glsl|hlsl
+  std::string targetEnv, targetSpv;     // --target-env vulkan1.2, --target-spv spv1.5
+  std::vector<std::string> stageExts;   // --stage-ext vp=vert (repeatable)
   std::string pipeline;
   std::string reportPath;
   std::string depfile;  // single shader / pipeline: Makefile-style dependencies of the outputs
@@ -67,6 +72,7 @@ int printDiagnostics(const Diagnostics& diags, std::ostream& log);
 // no directory), reading that file never finishes (the process sleeps until it is killed), so the
 // tests of --timeout and `build --job-timeout` reach any limit whatever the machine's speed. This
 // runs where the conversion runs: in the forked child or build worker, never in build's parent.
+// The path "-" is standard input, read once; its SourceFile is named kStdinName.
 int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* sources, std::ostream& log);
 // "N errors generated." on standard error when N > 0.
 void printErrorSummary(int errors);

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("stereoshift ") + version());
   CliOptions o;
   addConversionOptions(app, o);
-  app.add_option("input", o.inputs, "Input shader (.vert .tesc .tese .geom .frag .comp .mesh .task, .hlsl, .spv)");
+  app.add_option("input", o.inputs, "Input shader (.vert .frag ..., .vs .fs ..., .vsh .fsh, .glsl/.hlsl/.fx with -S or #pragma shader_stage, .spv); '-': standard input");
   app.add_option("-o,--output", o.output, "Output file (a directory with --pipeline); '-' or none: standard output");
   app.add_option("--pipeline", o.pipeline, "Comma-separated stages of one pipeline; only its last pre-rasterization stage is shifted");
   app.add_option("--depfile", o.depfile,

@@ -6,6 +6,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <cctype>
 #include <set>
 #include <sstream>
 
@@ -210,6 +211,35 @@ class Loader {
     return ok;
   }
 
+  // [stages]: `vp = "vert"` reads files ending in .vp as vertex shaders.
+  bool stages(const toml::node& value, SceneManifest* manifest) {
+    const toml::table* table = value.as_table();
+    if (!table) {
+      error(locationOf(value), "`stages` must be a table ([stages], `ext = \"stage\"`)");
+      return false;
+    }
+    bool ok = true;
+    for (const auto& [key, stage] : *table) {
+      std::string extension(key.str());
+      while (!extension.empty() && extension.front() == '.') extension.erase(0, 1);
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      auto name = stage.value<std::string>();
+      std::optional<Stage> decided = name ? stageFromName(*name) : std::nullopt;
+      if (extension.empty() || extension.find_first_of("./") != std::string::npos) {
+        error(locationOf(key), "[stages]: '" + std::string(key.str()) + "' is not a file extension");
+        ok = false;
+      } else if (!decided) {
+        error(locationOf(stage), "[stages]: extension '" + extension +
+                                     "' needs a stage name (vert, tesc, tese, geom, frag, comp, mesh, task)");
+        ok = false;
+      } else {
+        manifest->stageExtensions[extension] = *decided;
+      }
+    }
+    return ok;
+  }
+
   bool load(SceneManifest* manifest) {
     toml::table root;
     try {
@@ -252,13 +282,15 @@ class Loader {
           ok &= this->pass(*p.as_table(), &pass, &names);
           manifest->passes.push_back(std::move(pass));
         }
+      } else if (k == "stages") {
+        ok &= stages(value, manifest);
       } else if (k == "version") {
         if (value.value<int64_t>() != 1) {
           error(locationOf(value), "unsupported manifest version (this stereoshift reads version = 1)");
           ok = false;
         }
       } else {
-        unknownKey(key, {"version", "source", "defaults", "pass"}, " at the top level");
+        unknownKey(key, {"version", "source", "defaults", "stages", "pass"}, " at the top level");
         ok = false;
       }
     }

@@ -4,6 +4,8 @@
 //   source = "shaders"            # shader tree root, relative to the manifest (default: its directory)
 //   [defaults]                    # conversion options for every converted pass (CLI long names)
 //   eye-source = "uniform-block"
+//   [stages]                      # more stage extensions: `ext = "stage"` (like --stage-ext ext=stage)
+//   vp = "vert"
 //   [[pass]]
 //   name = "main"                 # [A-Za-z0-9_-]+; names variants
 //   mode = "stereo"               # mono | stereo | deferred | post | ui | ui-at-depth
@@ -11,8 +13,11 @@
 //   block-name = "StereoParams"   # any conversion option, overriding [defaults]
 #pragma once
 
+#include "passes/shader.h"
+
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +58,7 @@ struct ScenePass {
 struct SceneManifest {
   std::filesystem::path file;
   std::filesystem::path sourceRoot;
+  std::map<std::string, Stage> stageExtensions;  // [stages]: extension (lower case, no dot) -> stage
   std::vector<ManifestOption> defaults;
   std::vector<ScenePass> passes;
 };

@@ -1,6 +1,10 @@
+// What a shader is: how its stage is told from its name and text (one place for every layer),
+// the pipeline it belongs to, and reading files.
 #include "passes/shader.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -15,38 +19,254 @@ bool readFile(const std::string& path, std::string* contents) {
   return true;
 }
 
-std::string pipelineKey(const std::string& path) {
+namespace {
+
+std::string lowerCase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// Extensions that name a language, not a stage: the stage is in the rest of the name (.spv: a
+// binary whose module says its stage; kept so `a.vert.spv` reads as before).
+bool isLanguageExtension(const std::string& lowerExtension) {
+  return lowerExtension == "glsl" || lowerExtension == "hlsl" || lowerExtension == "fx" || lowerExtension == "spv";
+}
+
+// A stage extension: a stage token (stageFromName), optionally followed by `shader`
+// (.vertexshader, .pixelshader) or by `h` (.vsh .fsh .gsh .csh). Mesh and task names take no `h`:
+// .msh is a mesh file format, not a shader.
+std::optional<Stage> stageFromExtension(const std::string& lowerExtension) {
+  if (auto stage = stageFromName(lowerExtension)) return stage;
+  for (const std::string suffix : {"shader", "h"}) {
+    if (lowerExtension.size() <= suffix.size() || !lowerExtension.ends_with(suffix)) continue;
+    auto stage = stageFromName(lowerExtension.substr(0, lowerExtension.size() - suffix.size()));
+    if (stage && !(suffix == "h" && (*stage == Stage::Mesh || *stage == Stage::Task))) return stage;
+  }
+  return std::nullopt;
+}
+
+// The words of a file-name stem that may name a stage when no extension does. Only words that are
+// stage names in shader collections and rarely anything else: not `mesh` (skinned_mesh.hlsl),
+// `geometry` (geometry_pass: a G-buffer pass), `domain` (domain warping) or `fs` (fs_quad: a
+// full-screen quad), which stay extensions only.
+std::optional<Stage> stageFromNameWord(const std::string& lowerWord) {
+  static const std::map<std::string, Stage> words = {
+      {"vs", Stage::Vertex},       {"vert", Stage::Vertex},         {"vertex", Stage::Vertex},
+      {"ps", Stage::Fragment},     {"frag", Stage::Fragment},       {"fragment", Stage::Fragment},
+      {"pixel", Stage::Fragment},  {"gs", Stage::Geometry},         {"geom", Stage::Geometry},
+      {"hs", Stage::TessControl},  {"tesc", Stage::TessControl},    {"ds", Stage::TessEvaluation},
+      {"tese", Stage::TessEvaluation}, {"cs", Stage::Compute},      {"comp", Stage::Compute}};
+  auto it = words.find(lowerWord);
+  if (it == words.end()) return std::nullopt;
+  return it->second;
+}
+
+struct Word {
+  size_t begin, end;
+};
+
+// The words of `stem`: split at '.', '_', '-' and ' ', and where the case changes: `basicVS` ->
+// basic|VS, `VSMain` -> VS|Main, `SkinnedPixel` -> Skinned|Pixel.
+std::vector<Word> splitWords(const std::string& stem) {
+  std::vector<Word> words;
+  auto isSeparator = [](char c) { return c == '.' || c == '_' || c == '-' || c == ' '; };
+  auto upper = [](char c) { return std::isupper(static_cast<unsigned char>(c)) != 0; };
+  auto lower = [](char c) { return std::islower(static_cast<unsigned char>(c)) != 0; };
+  size_t begin = 0;
+  for (size_t i = 0; i <= stem.size(); ++i) {
+    bool boundary = i == stem.size() || isSeparator(stem[i]);
+    bool caseChange = !boundary && i > begin &&
+                      ((lower(stem[i - 1]) && upper(stem[i])) ||
+                       (upper(stem[i - 1]) && upper(stem[i]) && i + 1 < stem.size() && lower(stem[i + 1])));
+    if (boundary || caseChange) {
+      if (i > begin) words.push_back({begin, i});
+      begin = boundary ? i + 1 : i;
+    }
+  }
+  return words;
+}
+
+// `stem` without the word `w` and one separator beside it (water_vs -> water, VS_water -> water).
+std::string withoutWord(const std::string& stem, Word w) {
+  auto isSeparator = [](char c) { return c == '.' || c == '_' || c == '-' || c == ' '; };
+  size_t begin = w.begin, end = w.end;
+  if (begin > 0 && isSeparator(stem[begin - 1])) --begin;
+  else if (end < stem.size() && isSeparator(stem[end])) ++end;
+  std::string rest = stem.substr(0, begin) + stem.substr(end);
+  return rest.empty() ? stem : rest;
+}
+
+}  // namespace
+
+bool isIncludeOnlyName(const std::string& path) {
+  std::string file = lowerCase(path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1));
+  for (const char* extension : {".hlsli", ".fxh", ".inc", ".glslinc", ".glslh", ".h"})
+    if (file.ends_with(extension)) return true;
+  return false;
+}
+
+StagedName readStagedName(const std::string& path, const std::map<std::string, Stage>& extraExtensions) {
   size_t slash = path.find_last_of('/');
-  size_t nameStart = slash == std::string::npos ? 0 : slash + 1;
-  return path.substr(0, path.find('.', nameStart));
+  std::string directory = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  std::string rest = path.substr(directory.size());
+  StagedName named;
+  named.key = path;
+  if (isIncludeOnlyName(path)) return named;
+  auto lastExtension = [&](const std::string& name) -> std::string {
+    size_t dot = name.find_last_of('.');
+    return dot == std::string::npos || dot == 0 ? "" : name.substr(dot + 1);
+  };
+  std::string languageExtension;
+  if (std::string e = lowerCase(lastExtension(rest)); isLanguageExtension(e) && !extraExtensions.count(e)) {
+    languageExtension = lastExtension(rest);
+    rest.resize(rest.size() - languageExtension.size() - 1);
+  }
+  named.key = directory + rest;
+  if (std::string written = lastExtension(rest); !written.empty()) {
+    std::string e = lowerCase(written);
+    auto extra = extraExtensions.find(e);
+    std::optional<Stage> stage = extra != extraExtensions.end() ? std::optional<Stage>(extra->second) : stageFromExtension(e);
+    if (stage) {
+      named.stage = stage;
+      named.key = directory + rest.substr(0, rest.size() - written.size() - 1);
+      named.reason = "extension ." + written + (languageExtension.empty() ? "" : "." + languageExtension) +
+                     (extra != extraExtensions.end() ? " (--stage-ext / [stages])" : "");
+      return named;
+    }
+  }
+  // The stage as a separate word of the name: only beside a language extension, so that
+  // `notes_vs.txt` or `build_cs.py` in a shader tree are never taken for shaders.
+  if (languageExtension.empty() || lowerCase(languageExtension) == "spv") return named;
+  std::vector<Word> words = splitWords(rest);
+  for (size_t i = words.size(); i-- > 0;) {
+    std::string word = rest.substr(words[i].begin, words[i].end - words[i].begin);
+    if (auto stage = stageFromNameWord(lowerCase(word))) {
+      named.stage = stage;
+      named.key = directory + withoutWord(rest, words[i]);
+      named.reason = "name part '" + word + "' of " + path.substr(directory.size());
+      return named;
+    }
+  }
+  return named;
+}
+
+StageDecision stageFromPragma(const std::string& text) {
+  StageDecision d;
+  int lineNumber = 0;
+  for (size_t line = 0, next = 0; line < text.size(); line = next) {
+    ++lineNumber;
+    size_t newline = text.find('\n', line);
+    next = newline == std::string::npos ? text.size() : newline + 1;
+    size_t i = line;
+    auto skipBlanks = [&] {
+      while (i < next && (text[i] == ' ' || text[i] == '\t')) ++i;
+    };
+    auto word = [&](const char* expected) {
+      skipBlanks();
+      size_t n = std::char_traits<char>::length(expected);
+      if (text.compare(i, n, expected) != 0) return false;
+      i += n;
+      return true;
+    };
+    if (!word("#") || !word("pragma") || !word("shader_stage") || !word("(")) continue;
+    skipBlanks();
+    size_t nameBegin = i;
+    while (i < next && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) ++i;
+    std::string name = text.substr(nameBegin, i - nameBegin);
+    d.stage = stageFromName(name);
+    if (!d.stage || !word(")")) {
+      d.stage.reset();
+      d.problem = "#pragma shader_stage(" + name + "): unknown stage '" + name +
+                  "' (vertex, fragment, tesscontrol, tesseval, geometry, compute, mesh, task)";
+      d.problemLine = lineNumber;
+      d.problemColumn = static_cast<int>(nameBegin - line) + 1;
+      return d;
+    }
+    d.reason = "#pragma shader_stage(" + name + ")";
+    return d;
+  }
+  return d;
+}
+
+StageDecision decideStage(const std::string& path, const std::string& text, std::optional<Stage> flag,
+                          const std::map<std::string, Stage>& extraExtensions) {
+  StageDecision d;
+  if (flag) {
+    d.stage = flag;
+    d.reason = std::string("-S ") + stageName(*flag);
+    return d;
+  }
+  d = stageFromPragma(text);
+  if (d.stage || !d.problem.empty()) return d;
+  StagedName named = readStagedName(path, extraExtensions);
+  d.stage = named.stage;
+  d.reason = named.reason;
+  return d;
+}
+
+std::string stageHint(const std::string& path) {
+  std::string file = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  std::string why = isIncludeOnlyName(path) ? "'" + file + "' is named as an include file, not a shader stage"
+                                            : "cannot tell the shader stage of '" + file + "'";
+  return why + ": give it with -S <stage> (vert, tesc, tese, geom, frag, comp, mesh, task), put "
+               "`#pragma shader_stage(vertex)` (or fragment, compute, ...) in the text, or name the file by "
+               "its stage (name.vert, name.frag.glsl, nameVS.hlsl, name_ps.hlsl)";
+}
+
+std::vector<std::string> includeSearchPath(const std::string& shaderPath, const std::vector<std::string>& userDirs) {
+  std::vector<std::string> dirs = userDirs;
+  auto add = [&](const std::string& dir) {
+    if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
+  };
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(shaderPath).parent_path();
+  add(dir.empty() ? "." : dir.string());
+  std::error_code ec;
+  fs::path beside = (dir.empty() ? fs::path(".") : dir) / "include";
+  if (fs::is_directory(beside, ec)) add(dir.empty() ? std::string("include") : beside.string());
+  return dirs;
+}
+
+std::string pipelineKey(const std::string& path, const std::map<std::string, Stage>& extraExtensions) {
+  return readStagedName(path, extraExtensions).key;
 }
 
 std::optional<Stage> stageFromName(const std::string& raw) {
-  std::string n = raw;
-  std::transform(n.begin(), n.end(), n.begin(), ::tolower);
+  std::string n = lowerCase(raw);
   if (n == "vert" || n == "vertex" || n == "vs") return Stage::Vertex;
-  if (n == "tesc" || n == "tesscontrol" || n == "hs" || n == "hull") return Stage::TessControl;
-  if (n == "tese" || n == "tesseval" || n == "tessevaluation" || n == "ds" || n == "domain") return Stage::TessEvaluation;
+  if (n == "tesc" || n == "tesscontrol" || n == "tcs" || n == "hs" || n == "hull") return Stage::TessControl;
+  if (n == "tese" || n == "tesseval" || n == "tessevaluation" || n == "tes" || n == "ds" || n == "domain")
+    return Stage::TessEvaluation;
   if (n == "geom" || n == "geometry" || n == "gs") return Stage::Geometry;
-  if (n == "frag" || n == "fragment" || n == "ps" || n == "pixel") return Stage::Fragment;
+  if (n == "frag" || n == "fragment" || n == "fs" || n == "ps" || n == "pixel") return Stage::Fragment;
   if (n == "comp" || n == "compute" || n == "cs") return Stage::Compute;
   if (n == "mesh" || n == "ms") return Stage::Mesh;
   if (n == "task" || n == "as" || n == "amplification") return Stage::Task;
   return std::nullopt;
 }
 
-std::optional<Stage> stageFromPath(const std::string& path) {
-  // name.vert, name.vert.glsl, name.vert.hlsl, name.vs.hlsl
-  std::string file = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
-  std::vector<std::string> parts;
-  for (size_t start = 0, dot; start <= file.size(); start = dot + 1) {
-    dot = file.find('.', start);
-    if (dot == std::string::npos) dot = file.size();
-    parts.push_back(file.substr(start, dot - start));
-  }
-  for (size_t i = parts.size(); i-- > 1;)
-    if (auto s = stageFromName(parts[i])) return s;
+std::optional<Stage> stageFromPath(const std::string& path, const std::map<std::string, Stage>& extraExtensions) {
+  return readStagedName(path, extraExtensions).stage;
+}
+
+std::optional<TargetEnv> targetEnvFromName(const std::string& name) {
+  if (name == "vulkan" || name == "vulkan1.0") return TargetEnv::Vulkan1_0;
+  if (name == "vulkan1.1") return TargetEnv::Vulkan1_1;
+  if (name == "vulkan1.2") return TargetEnv::Vulkan1_2;
+  if (name == "vulkan1.3") return TargetEnv::Vulkan1_3;
+  if (name == "opengl" || name == "opengl4.5") return TargetEnv::OpenGL45;
   return std::nullopt;
+}
+
+const char* targetEnvName(TargetEnv env) {
+  switch (env) {
+    case TargetEnv::Vulkan1_0: return "vulkan1.0";
+    case TargetEnv::Vulkan1_1: return "vulkan1.1";
+    case TargetEnv::Vulkan1_2: return "vulkan1.2";
+    case TargetEnv::Vulkan1_3: return "vulkan1.3";
+    case TargetEnv::OpenGL45: return "opengl4.5";
+  }
+  return "?";
 }
 
 const char* stageName(Stage stage) {

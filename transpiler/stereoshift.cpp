@@ -194,6 +194,9 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     }
   }
   result.report["stage"] = stageName(info.stage);
+  result.report["stage_reason"] = info.language == SourceLanguage::Spirv
+                                      ? "the module's execution model"
+                                      : decideStage(input.path, input.contents, options.stage, options.stageExtensions).reason;
   result.report["language"] = languageName(info.language);
   result.report["language_source"] = languageSourceName(info.languageSource);
   result.report["language_reason"] = info.languageReason;
@@ -269,7 +272,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     if (options.verify) {
       Diagnostics verifyDiags;
       if (!verifyCompiles(result.output, SourceLanguage::Hlsl, info.stage, info.entryPoint, true, file + " (emitted)",
-                          verifyDiags)) {
+                          verifyDiags, &options)) {
         diags.append(verifyDiags);
         diags.error(file, "--verify: the emitted shader does not compile");
         return result;
@@ -302,7 +305,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
       Diagnostics verifyDiags;
       std::string entry = target == TargetLanguage::Hlsl ? (info.entryPoint.empty() ? "main" : info.entryPoint) : "main";
       if (!verifyCompiles(result.output, lang, info.stage, entry, emitted.vulkanSemantics,
-                          file + " (emitted)", verifyDiags)) {
+                          file + " (emitted)", verifyDiags, &options)) {
         diags.append(verifyDiags);
         diags.error(file, "--verify: the emitted shader does not compile");
         return result;
@@ -332,7 +335,7 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
     if (module && !nextStageFactsMatter(*module, options)) return std::nullopt;
   }
   for (size_t i = 0; i < stages.size(); ++i) {
-    auto kind = options.stage ? options.stage : stageFromPath(stages[i].path);
+    auto kind = decideStage(stages[i].path, stages[i].contents, options.stage, options.stageExtensions).stage;
     if (kind != Stage::Fragment) continue;
     spirv::Module* module = compiled[i] ? parsedModule(*compiled[i]) : nullptr;
     if (!module) return std::nullopt;  // reported when the stage converts
@@ -367,7 +370,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   };
   int last = -1, lastRank = 0;
   for (size_t i = 0; i < stages.size(); ++i) {
-    auto stage = options.stage ? options.stage : stageFromPath(stages[i].path);
+    auto stage = decideStage(stages[i].path, stages[i].contents, options.stage, options.stageExtensions).stage;
     if (stage && rank(*stage) > lastRank) {
       last = static_cast<int>(i);
       lastRank = rank(*stage);

@@ -19,6 +19,11 @@ spv_target_env environmentFor(const SourceInfo& info, uint32_t version) {
       default: return SPV_ENV_UNIVERSAL_1_6;
     }
   }
+  // Vulkan: the oldest Vulkan version that takes the module's SPIR-V version (--target-env/--target-spv).
+  if (version >= 0x00010600) return SPV_ENV_VULKAN_1_3;
+  if (version >= 0x00010500) return SPV_ENV_VULKAN_1_2;
+  if (version >= 0x00010400) return SPV_ENV_VULKAN_1_1_SPIRV_1_4;
+  if (version >= 0x00010100) return SPV_ENV_VULKAN_1_1;
   return SPV_ENV_VULKAN_1_0;
 }
 

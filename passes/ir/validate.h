@@ -1,5 +1,6 @@
 // SPIR-V validation through SPIRV-Tools, for the environment the source implies (OpenGL GLSL:
-// OpenGL 4.5 rules; Vulkan GLSL and HLSL: Vulkan 1.0; SPIR-V input: the universal environment of
+// OpenGL 4.5 rules; Vulkan GLSL and HLSL: the oldest Vulkan version that takes the module's SPIR-V
+// version; SPIR-V input: the universal environment of
 // its own version). Used on the input, after each pass (--validate-each) and before emission.
 #pragma once
 

@@ -51,16 +51,17 @@ def hlsl_entry(text):
     return "main"
 
 
-def recompile(glslang, path, rel, language):
+def recompile(glslang, path, rel, language, reported_stage=None):
     """Compiles an output shader the way its dialect is consumed (`language`: the report's, so HLSL
-    in a stage-named file such as hlsl-stage-named/textured.vert is compiled as HLSL)."""
+    in a stage-named file such as hlsl-stage-named/textured.vert is compiled as HLSL). The stage is
+    the report's where it gives one (file-conventions/ names stages as .vs, basicVS.hlsl, #pragma)."""
     parts = os.path.basename(rel).split(".")
     text = open(path, encoding="utf-8", errors="replace").read()
     if rel.endswith(".hlsl") or language == "hlsl":
-        stage = STAGE_OF[parts[-2] if rel.endswith(".hlsl") else parts[-1]]
+        stage = STAGE_OF.get(reported_stage) or STAGE_OF[parts[-2] if rel.endswith(".hlsl") else parts[-1]]
         cmd = [glslang, "-D", "-V", "-S", stage, "-e", hlsl_entry(text), "-o", os.devnull, path]
     else:
-        stage = STAGE_OF[parts[-1]]
+        stage = STAGE_OF.get(reported_stage) or STAGE_OF[parts[-1]]
         vulkan = rel.startswith("vk450/")
         cmd = [glslang, "-S", stage, path] + (["-V", "-o", os.devnull] if vulkan else [])
         include = os.path.join(os.path.dirname(path), "include")
@@ -113,7 +114,7 @@ def main():
                 inc = os.path.join(os.path.dirname(src), "include")
                 if os.path.isdir(inc) and not os.path.isdir(os.path.join(os.path.dirname(produced), "include")):
                     shutil.copytree(inc, os.path.join(os.path.dirname(produced), "include"))
-                ok, log = recompile(args.glslang, produced, rel, entry.get("language"))
+                ok, log = recompile(args.glslang, produced, rel, entry.get("language"), entry.get("stage"))
                 if not ok:
                     failures.append("%s: output does not compile:\n%s" % (rel, log))
                 ref = os.path.join(args.reference, rel)

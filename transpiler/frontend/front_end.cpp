@@ -480,16 +480,48 @@ struct Attempt {
 // emitted OpenGL GLSL/ESSL as a driver would) the dialect's own rules without SPIR-V.
 enum class Client { Vulkan, OpenGL, AstOnly };
 
+// The glslang client version and SPIR-V version of an environment (glslc's defaults: Vulkan 1.1
+// makes SPIR-V 1.3, 1.2 makes 1.5, 1.3 makes 1.6); --target-spv overrides the SPIR-V version.
+glslang::EShTargetClientVersion vulkanClientVersion(TargetEnv env) {
+  switch (env) {
+    case TargetEnv::Vulkan1_1: return glslang::EShTargetVulkan_1_1;
+    case TargetEnv::Vulkan1_2: return glslang::EShTargetVulkan_1_2;
+    case TargetEnv::Vulkan1_3: return glslang::EShTargetVulkan_1_3;
+    default: return glslang::EShTargetVulkan_1_0;
+  }
+}
+
+glslang::EShTargetLanguageVersion spirvVersion(int minor) {
+  static const glslang::EShTargetLanguageVersion versions[] = {
+      glslang::EShTargetSpv_1_0, glslang::EShTargetSpv_1_1, glslang::EShTargetSpv_1_2, glslang::EShTargetSpv_1_3,
+      glslang::EShTargetSpv_1_4, glslang::EShTargetSpv_1_5, glslang::EShTargetSpv_1_6};
+  return versions[std::clamp(minor, 0, 6)];
+}
+
+int defaultSpirvMinor(TargetEnv env) {
+  switch (env) {
+    case TargetEnv::Vulkan1_1: return 3;
+    case TargetEnv::Vulkan1_2: return 5;
+    case TargetEnv::Vulkan1_3: return 6;
+    default: return 0;
+  }
+}
+
 // Sets the input language, client and target environment of `shader`; returns the messages to
 // parse and link with. HLSL always goes through Vulkan rules (descriptor sets, registers).
+// `options` (absent when checking emitted text) carries --target-env and --target-spv.
 int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage language, Client client,
-                         const std::string& entry) {
+                         const std::string& entry, const TranspileOptions* options = nullptr) {
   EShLanguage lang = toGlslang(stage);
   if (language == SourceLanguage::Glsl && client == Client::AstOnly) return EShMsgDefault;
+  // An OpenGL environment has no Vulkan version: HLSL (always Vulkan rules) then keeps 1.0.
+  std::optional<TargetEnv> env = options ? options->targetEnv : std::nullopt;
+  glslang::EShTargetClientVersion vulkanVersion =
+      env && *env != TargetEnv::OpenGL45 ? vulkanClientVersion(*env) : glslang::EShTargetVulkan_1_0;
   int messages = EShMsgSpvRules;
   if (language == SourceLanguage::Hlsl) {
     shader.setEnvInput(glslang::EShSourceHlsl, lang, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvClient(glslang::EShClientVulkan, vulkanVersion);
     shader.setEnvTargetHlslFunctionality1();  // keeps semantic strings (UserSemantic decorations)
     shader.setHlslIoMapping(true);
     shader.setEntryPoint(entry.c_str());
@@ -497,19 +529,22 @@ int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage l
     messages |= EShMsgReadHlsl | EShMsgVulkanRules | EShMsgHlslOffsets;
   } else if (client == Client::Vulkan) {
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvClient(glslang::EShClientVulkan, vulkanVersion);
     messages |= EShMsgVulkanRules;
   } else {
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 100);
     shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
   }
+  // OpenGL rules take SPIR-V 1.0 only (ARB_gl_spirv): a Vulkan environment sets the version of the
+  // Vulkan attempt, and an OpenGL GLSL shader of the same run keeps 1.0.
+  const bool openGLRules = language == SourceLanguage::Glsl && client == Client::OpenGL;
+  int spirvMinor = openGLRules ? 0 : options && options->targetSpv ? *options->targetSpv : env ? defaultSpirvMinor(*env) : 0;
   // Mesh and task shaders exist only from SPIR-V 1.4 / Vulkan 1.3 on.
   if (stage == Stage::Mesh || stage == Stage::Task) {
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_4);
-  } else {
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    if (!env || *env != TargetEnv::Vulkan1_3) shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+    spirvMinor = std::max(spirvMinor, 4);
   }
+  shader.setEnvTarget(glslang::EShTargetSpv, spirvVersion(spirvMinor));
   shader.setAutoMapLocations(true);
   shader.setAutoMapBindings(true);
   return messages;
@@ -526,9 +561,9 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   std::string preamble = buildPreamble(options.defines, language == SourceLanguage::Glsl);
   shader.setPreamble(preamble.c_str());
-  int messages = configureEnvironment(shader, stage, language, client, entry);
+  int messages = configureEnvironment(shader, stage, language, client, entry, &options);
 
-  RestrictedIncluder includer(input.path, options.includeDirs, text.size());
+  RestrictedIncluder includer(input.path, includeSearchPath(input.path, options.includeDirs), text.size());
   bool parsed = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includer);
   std::vector<std::pair<std::string, std::string>> sources = {{input.path, input.contents}};
   for (const auto& s : includer.sources()) sources.push_back(s);
@@ -631,10 +666,14 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   ensureGlslangInitialized();
   if (!withinSourceLimits(input, diags)) return result;
 
-  std::optional<Stage> stage = options.stage ? options.stage : stageFromPath(input.path);
+  StageDecision stageDecision = decideStage(input.path, input.contents, options.stage, options.stageExtensions);
+  std::optional<Stage> stage = stageDecision.stage;
+  if (!stageDecision.problem.empty()) {
+    diags.error(input.path, stageDecision.problemLine, stageDecision.problemColumn, stageDecision.problem);
+    return result;
+  }
   if (!stage) {
-    diags.error(input.path, "cannot tell the shader stage from the file name; use -S <stage> "
-                            "(vert, tesc, tese, geom, frag, comp, mesh, task)");
+    diags.error(input.path, 1, 1, stageHint(input.path));
     return result;
   }
   // -x, else the file name's language extension, else the text (HLSL kept in `name.vert` files).
@@ -698,7 +737,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   }
   std::vector<Client> clients;
   bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);
-  if (mayBeVulkan) clients.push_back(Client::Vulkan);
+  if (mayBeVulkan && options.targetEnv != TargetEnv::OpenGL45) clients.push_back(Client::Vulkan);  // --target-env opengl: GL rules only
   clients.push_back(Client::OpenGL);
 
   std::optional<Attempt> best;
@@ -733,7 +772,8 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 }
 
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
-                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags) {
+                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
+                    const TranspileOptions* environment) {
   ensureGlslangInitialized();
   glslang::TShader shader(toGlslang(stage));
   const char* strings[] = {text.c_str()};
@@ -741,7 +781,7 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
   const int lengths[] = {static_cast<int>(text.size())};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   int messages = configureEnvironment(shader, stage, language, vulkanSemantics ? Client::Vulkan : Client::AstOnly,
-                                      entryPoint);
+                                      entryPoint, environment);
   // OpenGL GLSL/ESSL is checked as the driver would see it: AST only, the original dialect's rules.
   glslang::TShader::ForbidIncluder noIncludes;
   bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), noIncludes);

@@ -33,9 +33,11 @@ VersionLine findVersion(const std::string& text);
 // Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form.
 FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags);
 
-// Re-compiles emitted GLSL/HLSL text to check that it is valid (`--verify`).
+// Re-compiles emitted GLSL/HLSL text to check that it is valid (`--verify`); `environment` (when
+// given) carries the conversion's --target-env / --target-spv, so a subgroup shader checks under them.
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
-                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags);
+                    bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
+                    const TranspileOptions* environment = nullptr);
 
 // glslang's process-wide initialisation, done once.
 void ensureGlslangInitialized();

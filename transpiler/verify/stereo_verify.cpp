@@ -750,7 +750,7 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
                        std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags) {
   std::vector<const SourceFile*> ordered;
   for (const auto& s : sources) {
-    auto stage = options.stage ? options.stage : stageFromPath(s.path);
+    auto stage = decideStage(s.path, s.contents, options.stage, options.stageExtensions).stage;
     if (stage && isPreRasterization(*stage)) ordered.push_back(&s);
   }
   if (ordered.empty()) {
@@ -759,7 +759,8 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     return false;
   }
   std::stable_sort(ordered.begin(), ordered.end(), [&](const SourceFile* a, const SourceFile* b) {
-    return static_cast<int>(*stageFromPath(a->path)) < static_cast<int>(*stageFromPath(b->path));
+    auto of = [&](const SourceFile* f) { return decideStage(f->path, f->contents, options.stage, options.stageExtensions).stage; };
+    return static_cast<int>(*of(a)) < static_cast<int>(*of(b));
   });
   for (size_t i = 0; i < ordered.size(); ++i) {
     TranspileOptions o = options;

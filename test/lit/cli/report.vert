@@ -59,5 +59,6 @@ void main() {
 // CHECK-NEXT: }
 // CHECK-NEXT: },
 // CHECK-NEXT: "stage": "vert",
+// CHECK-NEXT: "stage_reason": "extension .vert",
 // CHECK-NEXT: "target": "glsl",
 // CHECK-NEXT: "timings_ms": {

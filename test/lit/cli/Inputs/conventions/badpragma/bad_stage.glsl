@@ -1,0 +1,3 @@
+#version 450
+#pragma shader_stage(vortex)
+void main() {}

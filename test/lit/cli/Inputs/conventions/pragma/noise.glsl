@@ -1,0 +1,1 @@
+float hash(float n) { return fract(sin(n) * 43758.5453); }

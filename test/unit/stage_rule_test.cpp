@@ -1,0 +1,151 @@
+// The one rule that tells a shader's stage from its path and text (passes/shader.h): how shader
+// collections out there name their files, and the pipeline key that groups the stages of one
+// pipeline (the name without its stage part).
+#include "passes/shader.h"
+
+#include <gtest/gtest.h>
+
+namespace stereoshift {
+namespace {
+
+std::optional<Stage> stageOf(const std::string& path) { return stageFromPath(path); }
+
+TEST(StageRule, GlslcAndKhronosExtensions) {
+  EXPECT_EQ(stageOf("shaders/a.vert"), Stage::Vertex);
+  EXPECT_EQ(stageOf("shaders/a.tesc"), Stage::TessControl);
+  EXPECT_EQ(stageOf("shaders/a.tese"), Stage::TessEvaluation);
+  EXPECT_EQ(stageOf("shaders/a.geom"), Stage::Geometry);
+  EXPECT_EQ(stageOf("shaders/a.frag"), Stage::Fragment);
+  EXPECT_EQ(stageOf("shaders/a.comp"), Stage::Compute);
+  EXPECT_EQ(stageOf("shaders/a.mesh"), Stage::Mesh);
+}
+
+TEST(StageRule, ShortExtensionsOfTutorials) {
+  EXPECT_EQ(stageOf("5.1.parallax_mapping.vs"), Stage::Vertex);
+  EXPECT_EQ(stageOf("5.1.parallax_mapping.fs"), Stage::Fragment);
+  EXPECT_EQ(stageOf("explode.gs"), Stage::Geometry);
+  EXPECT_EQ(stageOf("terrain.tcs"), Stage::TessControl);
+  EXPECT_EQ(stageOf("terrain.tes"), Stage::TessEvaluation);
+  EXPECT_EQ(stageOf("particles.cs"), Stage::Compute);
+  EXPECT_EQ(stageOf("Shader.VS"), Stage::Vertex);  // case-insensitive
+}
+
+TEST(StageRule, ShaderAndHSuffixedExtensions) {
+  EXPECT_EQ(stageOf("Basic.vsh"), Stage::Vertex);
+  EXPECT_EQ(stageOf("Basic.fsh"), Stage::Fragment);
+  EXPECT_EQ(stageOf("Basic.gsh"), Stage::Geometry);
+  EXPECT_EQ(stageOf("SimpleTransform.vertexshader"), Stage::Vertex);
+  EXPECT_EQ(stageOf("SingleColor.fragmentshader"), Stage::Fragment);
+  EXPECT_EQ(stageOf("Explode.geometryshader"), Stage::Geometry);
+  EXPECT_EQ(stageOf("Blur.computeshader"), Stage::Compute);
+  EXPECT_EQ(stageOf("model.msh"), std::nullopt);  // a mesh file, not a mesh shader
+}
+
+TEST(StageRule, DoubleExtensions) {
+  EXPECT_EQ(stageOf("shader.vert.glsl"), Stage::Vertex);
+  EXPECT_EQ(stageOf("shader.frag.hlsl"), Stage::Fragment);
+  EXPECT_EQ(stageOf("blur.comp.hlsl"), Stage::Compute);
+  EXPECT_EQ(stageOf("a.vert.spv"), Stage::Vertex);
+  EXPECT_EQ(stageOf("a.vs.fx"), Stage::Vertex);
+}
+
+TEST(StageRule, StageWordInHlslNames) {
+  EXPECT_EQ(stageOf("basicVS.hlsl"), Stage::Vertex);
+  EXPECT_EQ(stageOf("basicPS.hlsl"), Stage::Fragment);
+  EXPECT_EQ(stageOf("water_vs.hlsl"), Stage::Vertex);
+  EXPECT_EQ(stageOf("water_ps.hlsl"), Stage::Fragment);
+  EXPECT_EQ(stageOf("VS_Skinned.hlsl"), Stage::Vertex);
+  EXPECT_EQ(stageOf("PS-Skinned.hlsl"), Stage::Fragment);
+  EXPECT_EQ(stageOf("TerrainHS.hlsl"), Stage::TessControl);
+  EXPECT_EQ(stageOf("TerrainDS.hlsl"), Stage::TessEvaluation);
+  EXPECT_EQ(stageOf("ExplodeGS.hlsl"), Stage::Geometry);
+  EXPECT_EQ(stageOf("ReduceCS.hlsl"), Stage::Compute);
+  EXPECT_EQ(stageOf("skybox_vertex.glsl"), Stage::Vertex);
+  EXPECT_EQ(stageOf("SkyboxPixel.fx"), Stage::Fragment);
+  // The last stage word decides: "Vertex" in VertexLitPS describes the lighting.
+  EXPECT_EQ(stageOf("VertexLitPS.hlsl"), Stage::Fragment);
+  // VSMain: the word ends where a lower-case letter starts the next one.
+  EXPECT_EQ(stageOf("VSMain.hlsl"), Stage::Vertex);
+}
+
+TEST(StageRule, StageWordsOnlyAsWholeSeparatedParts) {
+  EXPECT_EQ(stageOf("canvas.hlsl"), std::nullopt);    // "vs" inside a word
+  EXPECT_EQ(stageOf("physics.hlsl"), std::nullopt);
+  EXPECT_EQ(stageOf("pixelate.glsl"), std::nullopt);
+  EXPECT_EQ(stageOf("skinned_mesh.hlsl"), std::nullopt);  // mesh, geometry, domain: not stage words in names
+  EXPECT_EQ(stageOf("geometry_pass.glsl"), std::nullopt);
+  EXPECT_EQ(stageOf("domain_warp.glsl"), std::nullopt);
+  // Only beside a shader-language extension: tool files in a shader tree are not shaders.
+  EXPECT_EQ(stageOf("notes_vs.txt"), std::nullopt);
+  EXPECT_EQ(stageOf("build_cs.py"), std::nullopt);
+}
+
+TEST(StageRule, IncludeFilesHaveNoStage) {
+  EXPECT_EQ(stageOf("common.glsl"), std::nullopt);
+  EXPECT_EQ(stageOf("lighting.fxh"), std::nullopt);
+  EXPECT_EQ(stageOf("CommonVS.hlsli"), std::nullopt);
+  EXPECT_EQ(stageOf("noise.inc"), std::nullopt);
+  EXPECT_TRUE(isIncludeOnlyName("shaders/Lighting.FXH"));
+  EXPECT_FALSE(isIncludeOnlyName("shaders/effect.fx"));
+}
+
+TEST(StageRule, ExtraExtensions) {
+  std::map<std::string, Stage> extra = {{"vp", Stage::Vertex}, {"fp", Stage::Fragment}};
+  EXPECT_EQ(stageFromPath("Phong.vp", extra), Stage::Vertex);
+  EXPECT_EQ(stageFromPath("Phong.FP", extra), Stage::Fragment);
+  EXPECT_EQ(stageFromPath("Phong.vp"), std::nullopt);
+  EXPECT_EQ(pipelineKey("dir/Phong.vp", extra), "dir/Phong");
+}
+
+TEST(StageRule, PipelineKeyDropsOnlyTheStagePart) {
+  EXPECT_EQ(pipelineKey("lo/5.1.parallax_mapping.vs"), "lo/5.1.parallax_mapping");
+  EXPECT_EQ(pipelineKey("lo/5.1.parallax_mapping.fs"), "lo/5.1.parallax_mapping");
+  EXPECT_NE(pipelineKey("lo/5.1.parallax_mapping.vs"), pipelineKey("lo/5.2.steep_parallax.vs"));
+  EXPECT_EQ(pipelineKey("shader.vert.glsl"), "shader");
+  EXPECT_EQ(pipelineKey("shader.frag.glsl"), "shader");
+  EXPECT_EQ(pipelineKey("shaders/terrain.vert.hlsl"), "shaders/terrain");
+  EXPECT_EQ(pipelineKey("d3d/basicVS.hlsl"), "d3d/basic");
+  EXPECT_EQ(pipelineKey("d3d/basicPS.hlsl"), "d3d/basic");
+  EXPECT_EQ(pipelineKey("water_vs.hlsl"), "water");
+  EXPECT_EQ(pipelineKey("water_ps.hlsl"), "water");
+  EXPECT_EQ(pipelineKey("VS_water.hlsl"), "water");
+  EXPECT_EQ(pipelineKey("Basic.vsh"), "Basic");
+  EXPECT_EQ(pipelineKey("Basic.fsh"), "Basic");
+  EXPECT_EQ(pipelineKey("SimpleTransform.vertexshader"), "SimpleTransform");
+}
+
+TEST(StageRule, PragmaShaderStage) {
+  EXPECT_EQ(stageFromPragma("#version 450\n#pragma shader_stage(vertex)\nvoid main(){}").stage, Stage::Vertex);
+  EXPECT_EQ(stageFromPragma("  #  pragma  shader_stage( fragment )\n").stage, Stage::Fragment);
+  EXPECT_EQ(stageFromPragma("#pragma shader_stage(tesscontrol)").stage, Stage::TessControl);
+  EXPECT_EQ(stageFromPragma("#pragma shader_stage(tesseval)").stage, Stage::TessEvaluation);
+  EXPECT_EQ(stageFromPragma("#pragma optimize(on)\n").stage, std::nullopt);
+  StageDecision bad = stageFromPragma("#version 450\n#pragma shader_stage(vortex)\n");
+  EXPECT_EQ(bad.stage, std::nullopt);
+  EXPECT_EQ(bad.problemLine, 2);
+  EXPECT_EQ(bad.problemColumn, 22);
+  EXPECT_NE(bad.problem.find("vortex"), std::string::npos);
+}
+
+TEST(StageRule, DecisionOrder) {
+  // -S, then the pragma, then the name.
+  EXPECT_EQ(decideStage("a.frag", "#pragma shader_stage(vertex)", Stage::Geometry).stage, Stage::Geometry);
+  EXPECT_EQ(decideStage("a.frag", "#pragma shader_stage(vertex)", std::nullopt).stage, Stage::Vertex);
+  StageDecision named = decideStage("a.frag", "void main(){}", std::nullopt);
+  EXPECT_EQ(named.stage, Stage::Fragment);
+  EXPECT_EQ(named.reason, "extension .frag");
+  EXPECT_EQ(decideStage("<stdin>", "void main(){}", std::nullopt).stage, std::nullopt);
+  EXPECT_NE(stageHint("common.glsl").find("-S"), std::string::npos);
+  EXPECT_NE(stageHint("common.glsl").find("#pragma shader_stage"), std::string::npos);
+}
+
+TEST(TargetEnv, GlslcNames) {
+  EXPECT_EQ(targetEnvFromName("vulkan1.2"), TargetEnv::Vulkan1_2);
+  EXPECT_EQ(targetEnvFromName("opengl"), TargetEnv::OpenGL45);
+  EXPECT_EQ(targetEnvFromName("opengl4.5"), TargetEnv::OpenGL45);
+  EXPECT_EQ(targetEnvFromName("vulkan1.4"), std::nullopt);
+  EXPECT_STREQ(targetEnvName(TargetEnv::Vulkan1_3), "vulkan1.3");
+}
+
+}  // namespace
+}  // namespace stereoshift
