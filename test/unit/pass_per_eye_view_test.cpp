@@ -5,7 +5,8 @@
 namespace stereoshift::test {
 namespace {
 
-// uv = normalize(camera.position - inWorldPos).xy; outColor = texture(heightMap, uv) * camera.position.x
+// dir = normalize(camera.position - inWorldPos); outColor = texture(heightMap, 0.5 - dir.xy) * camera.position.x
+// (texture coordinates moved along the view direction: a parallax offset)
 const std::string kReliefMapping = R"(
                OpCapability Shader
           %1 = OpExtInstImport "GLSL.std.450"
@@ -37,6 +38,8 @@ const std::string kReliefMapping = R"(
     %v4float = OpTypeVector %float 4
         %int = OpTypeInt 32 1
       %int_0 = OpConstant %int 0
+ %float_half = OpConstant %float 0.5
+     %v2half = OpConstantComposite %v2float %float_half %float_half
      %Camera = OpTypeStruct %v3float
 %_ptr_Uniform_Camera = OpTypePointer Uniform %Camera
      %camera = OpVariable %_ptr_Uniform_Camera Uniform
@@ -57,7 +60,8 @@ const std::string kReliefMapping = R"(
       %world = OpLoad %v3float %inWorldPos
        %view = OpFSub %v3float %cam %world
         %dir = OpExtInst %v3float %1 Normalize %view
-         %uv = OpVectorShuffle %v2float %dir %dir 0 1
+      %slope = OpVectorShuffle %v2float %dir %dir 0 1
+         %uv = OpFSub %v2float %v2half %slope
         %tex = OpLoad %sampled %heightMap
       %texel = OpImageSampleImplicitLod %v4float %tex %uv
     %camXPtr = OpAccessChain %_ptr_Uniform_float %camera %int_0 %int_0
@@ -90,6 +94,29 @@ TEST(PerEyeViewPass, LeavesAViewVectorThatOnlyFeedsShading) {
   ASSERT_TRUE(run.ok) << run.diagnostics;
   EXPECT_EQ(run.result, PassResult::Unchanged);
   EXPECT_EQ(run.disassembly.find("eyeOffsetX"), std::string::npos);
+}
+
+TEST(PerEyeViewPass, LeavesALookupAlongTheViewVectorMonoUnlessPerEyeSpecular) {
+  // The texture is read *at* the direction (a reflection / BRDF-table lookup), not at texture
+  // coordinates moved along it: shading, mono by default, no new application parameters.
+  std::string lookup = kReliefMapping;
+  lookup.replace(lookup.find("%texel = OpImageSampleImplicitLod %v4float %tex %uv"),
+                 std::string("%texel = OpImageSampleImplicitLod %v4float %tex %uv").size(),
+                 "%texel = OpImageSampleImplicitLod %v4float %tex %slope");
+  SinglePassRun mono = runSinglePass(lookup, "per-eye-view");
+  ASSERT_TRUE(mono.ok) << mono.diagnostics;
+  EXPECT_EQ(mono.result, PassResult::Unchanged);
+  EXPECT_EQ(mono.disassembly.find("eyeOffsetX"), std::string::npos);
+  ASSERT_TRUE(mono.report["passes"]["per-eye-view"].contains("left_alone")) << mono.report.dump(1);
+  EXPECT_NE(mono.report["passes"]["per-eye-view"]["left_alone"][0]["reason"].get<std::string>().find("--per-eye-specular"),
+            std::string::npos);
+
+  TranspileOptions options = singlePassOptions();
+  options.perEyeSpecular = true;
+  SinglePassRun perEye = runSinglePass(lookup, "per-eye-view", options);
+  ASSERT_TRUE(perEye.ok) << perEye.diagnostics;
+  EXPECT_EQ(perEye.result, PassResult::Changed);
+  EXPECT_NE(perEye.disassembly.find("eyeOffsetX"), std::string::npos);
 }
 
 }  // namespace
