@@ -490,8 +490,8 @@ bool expandMatrix(const Module& m, uint32_t matrix, std::vector<Slot>& out) {
   if (!def) return false;
   if (def->opcode == spv::OpMatrixTimesMatrix)
     return expandMatrix(m, def->operand(0), out) && expandMatrix(m, def->operand(1), out);
-  auto slot = loadedSlot(m, matrix);
-  if (!slot) return false;
+  auto slot = valueSlot(m, matrix);  // a load, or a member of a whole-struct load
+  if (!slot || slot->inverseTranslation) return false;
   out.push_back(*slot);
   return true;
 }
@@ -516,8 +516,30 @@ std::optional<ClipChain> clipChainFrom(const Module& m, uint32_t value) {
 }
 
 // Whether the vec3/vec4 `point` is the vec4 `w` (or its xyz, or `vec4(point, 1)`).
+uint32_t leadingComponentsOf(const Module& m, uint32_t value);
+
+// The vector whose x, y, z a point is: `vec4(v, 1)`, `vec4(v.x, v.y, v.z, 1)`, `v.xyz`, or itself.
+uint32_t pointSource(const Module& m, uint32_t value) {
+  const Instruction* d = m.definition(value);
+  if (d && d->opcode == spv::OpCompositeConstruct && d->operands.size() == 2) return leadingComponentsOf(m, d->operand(0));
+  if (d && d->opcode == spv::OpCompositeConstruct && d->operands.size() == 4) {
+    uint32_t from = 0;
+    for (uint32_t i = 0; i < 3; ++i) {
+      const Instruction* e = m.definition(d->operands[i]);
+      if (!e || e->opcode != spv::OpCompositeExtract || e->operands.size() != 2 || e->operand(1) != i) return value;
+      if (from && e->operand(0) != from) return value;
+      from = e->operand(0);
+    }
+    return leadingComponentsOf(m, from);
+  }
+  return leadingComponentsOf(m, value);
+}
+
 bool samePoint(const Module& m, uint32_t point, uint32_t w) {
   if (point == w) return true;
+  // The same x, y, z through any of the ways of writing vec3 <-> vec4 (the optimizer forwards
+  // `vec4(vec3(world), 1)` to the extracts of `world` itself).
+  if (pointSource(m, point) == pointSource(m, w)) return true;
   const Instruction* p = m.definition(point);
   if (p && p->opcode == spv::OpVectorShuffle && p->operand(0) == w && p->operands.size() == 5 &&
       p->operand(2) == 0 && p->operand(3) == 1 && p->operand(4) == 2)
@@ -536,9 +558,24 @@ bool samePoint(const Module& m, uint32_t point, uint32_t w) {
 // `point` as (uniform matrices) * chain.points[level], the matrices being the ones applied first in
 // the chain's product (`FragPos = model * p` beside `gl_Position = projection * view * model * p`):
 // the rest of the product, which takes `point` to the clip position. Nullopt otherwise.
+// `v.xyz` written as a shuffle or as vec3(v.x, v.y, v.z): v; else the value itself.
+uint32_t leadingComponentsOf(const Module& m, uint32_t value) {
+  const Instruction* def = m.definition(value);
+  if (!def) return value;
+  if (def->opcode == spv::OpVectorShuffle && def->operand(0) == def->operand(1)) return def->operand(0);
+  if (def->opcode != spv::OpCompositeConstruct || def->operands.empty()) return value;
+  uint32_t from = 0;
+  for (uint32_t i = 0; i < def->operands.size(); ++i) {
+    const Instruction* e = m.definition(def->operands[i]);
+    if (!e || e->opcode != spv::OpCompositeExtract || e->operands.size() != 2 || e->operand(1) != i) return value;
+    if (from && e->operand(0) != from) return value;
+    from = e->operand(0);
+  }
+  return from;
+}
+
 std::optional<std::vector<Slot>> worldProduct(const Module& m, uint32_t point, const ClipChain& chain, size_t level) {
-  const Instruction* def = m.definition(point);
-  if (def && def->opcode == spv::OpVectorShuffle && def->operand(0) == def->operand(1)) def = m.definition(def->operand(0));
+  const Instruction* def = m.definition(leadingComponentsOf(m, point));
   if (!def) return std::nullopt;
   bool column = def->opcode == spv::OpMatrixTimesVector, row = def->opcode == spv::OpVectorTimesMatrix;
   if ((!column && !row) || column != chain.columnVectors) return std::nullopt;
@@ -567,11 +604,24 @@ std::vector<Subtraction> pointsWrittenToOutputs(const Module& m) {
     if (inst.opcode != spv::OpStore) return;
     uint32_t root = m.rootVariable(inst.operand(0));
     if (!root || m.storageClassOf(root) != spv::StorageClassOutput || m.hasDecoration(root, spv::DecorationBuiltIn)) return;
+    int64_t member = -1;
+    if (const Instruction* chain = m.definition(inst.operand(0));
+        chain && chain->opcode == spv::OpAccessChain && chain->operands.size() >= 2)
+      if (auto index = constantValue(m, chain->operand(1))) member = *index;
+    const Instruction* block = m.definition(m.pointeeType(m.definition(root)->typeId));
+    if (block && block->opcode == spv::OpTypeStruct &&
+        (member < 0 || m.hasMemberDecoration(block->resultId, static_cast<uint32_t>(member), spv::DecorationBuiltIn)))
+      return;  // gl_PerVertex (the clip position itself), or a whole block
     uint32_t value = inst.operand(1);
     const Instruction* def = m.definition(value);
-    // A tangent frame times the point: the point (the frame is per vertex, not a uniform).
-    if (def && def->opcode == spv::OpMatrixTimesVector && !loadedSlot(m, def->operand(0))) value = def->operand(1);
-    else if (def && def->opcode == spv::OpVectorTimesMatrix && !loadedSlot(m, def->operand(1))) value = def->operand(0);
+    // A tangent frame times the point: the point. The frame is built in the shader (mat3(T, B, N),
+    // its transpose), not a uniform matrix.
+    auto builtFrame = [&](uint32_t matrix) {
+      const Instruction* d = m.definition(matrix);
+      return d && (d->opcode == spv::OpTranspose || d->opcode == spv::OpCompositeConstruct);
+    };
+    if (def && def->opcode == spv::OpMatrixTimesVector && builtFrame(def->operand(0))) value = def->operand(1);
+    else if (def && def->opcode == spv::OpVectorTimesMatrix && builtFrame(def->operand(1))) value = def->operand(0);
     points.push_back({0, value});
   });
   return points;
