@@ -1,6 +1,7 @@
 // per-eye-view alone (with detection, whose classification it reads): a view vector `camera - P`
 // that steps texture coordinates gets the per-eye camera; one that only feeds shading stays mono.
 #include "test/unit/pass_fixture.h"
+#include "transpiler/stereoshift.h"
 
 namespace stereoshift::test {
 namespace {
@@ -117,6 +118,78 @@ TEST(PerEyeViewPass, LeavesALookupAlongTheViewVectorMonoUnlessPerEyeSpecular) {
   ASSERT_TRUE(perEye.ok) << perEye.diagnostics;
   EXPECT_EQ(perEye.result, PassResult::Changed);
   EXPECT_NE(perEye.disassembly.find("eyeOffsetX"), std::string::npos);
+}
+
+// The tutorial form: the vertex shader passes the camera itself to tangent space; only the
+// fragment stage subtracts. Converted as a pipeline, the camera is per eye where the fragment stage
+// moves texture coordinates along the difference, and stays mono where it only shades.
+const char* kTutorialVertex = R"(#version 330 core
+layout (location = 0) in vec3 aPos;
+layout (location = 1) in vec3 aNormal;
+layout (location = 2) in vec3 aTangent;
+layout (location = 3) in vec2 aUV;
+out VS_OUT { vec2 uv; vec3 tangentEye; vec3 tangentPos; } vs_out;
+uniform mat4 projection;
+uniform mat4 view;
+uniform mat4 model;
+uniform vec3 eyeWorld;
+void main() {
+  vec3 world = vec3(model * vec4(aPos, 1.0));
+  vec3 n = normalize(mat3(model) * aNormal);
+  vec3 t = normalize(mat3(model) * aTangent);
+  mat3 tbn = transpose(mat3(t, cross(n, t), n));
+  vs_out.uv = aUV;
+  vs_out.tangentEye = tbn * eyeWorld;
+  vs_out.tangentPos = tbn * world;
+  gl_Position = projection * view * vec4(world, 1.0);
+}
+)";
+
+std::string tutorialFragment(const std::string& use) {
+  return std::string(R"(#version 330 core
+in VS_OUT { vec2 uv; vec3 tangentEye; vec3 tangentPos; } fs_in;
+out vec4 color;
+uniform sampler2D heightMap;
+void main() {
+  vec3 v = normalize(fs_in.tangentEye - fs_in.tangentPos);
+)") + use + "\n}\n";
+}
+
+std::vector<TranspileResult> convertTutorialPipeline(const std::string& fragment) {
+  return transpilePipeline({{"relief.vert", kTutorialVertex}, {"relief.frag", fragment}}, TranspileOptions{});
+}
+
+TEST(PerEyeViewPipeline, CameraPassedToTheNextStageIsPerEyeWhereTheFragmentStageOffsetsTextureCoordinates) {
+  auto results = convertTutorialPipeline(
+      tutorialFragment("  color = texture(heightMap, fs_in.uv - v.xy / v.z * texture(heightMap, fs_in.uv).r * 0.05);"));
+  ASSERT_EQ(results.size(), 2u);
+  ASSERT_TRUE(results[0].ok) << results[0].diagnostics.format();
+  const auto& pass = results[0].report["passes"]["per-eye-view"];
+  ASSERT_TRUE(pass.contains("fixed")) << pass.dump(1);
+  EXPECT_EQ(pass["fixed"][0]["uniform"], "eyeWorld");
+  // The eye centre from the matrices that take the written world point to the clip position.
+  EXPECT_NE(pass["fixed"][0]["eye_centre"].get<std::string>().find("inverse(projection * view)"), std::string::npos);
+  EXPECT_FALSE(pass.contains("application"));  // nothing for the application to fill
+  EXPECT_NE(results[0].output.find("eyeWorld + (inverse(projection * view)"), std::string::npos) << results[0].output;
+  EXPECT_TRUE(results[1].copiedThrough);  // the fragment shader is not touched
+}
+
+TEST(PerEyeViewPipeline, CameraPassedToTheNextStageStaysMonoWhereItOnlyShades) {
+  auto results = convertTutorialPipeline(tutorialFragment("  color = texture(heightMap, fs_in.uv) * pow(max(v.z, 0.0), 8.0);"));
+  ASSERT_EQ(results.size(), 2u);
+  ASSERT_TRUE(results[0].ok) << results[0].diagnostics.format();
+  const auto& pass = results[0].report["passes"]["per-eye-view"];
+  EXPECT_FALSE(pass.contains("fixed")) << pass.dump(1);
+  EXPECT_EQ(results[0].output.find("eyeOffset"), std::string::npos);
+  EXPECT_EQ(results[0].output.find("inverse(projection"), std::string::npos);
+}
+
+TEST(PerEyeViewPipeline, ALookupAtTheViewVectorIsNotAnOffset) {
+  // vec2(dot(n, v), roughness): a coordinate computed from V, not uv moved along it.
+  auto results = convertTutorialPipeline(tutorialFragment("  color = texture(heightMap, vec2(max(v.z, 0.0), 0.5));"));
+  ASSERT_EQ(results.size(), 2u);
+  ASSERT_TRUE(results[0].ok) << results[0].diagnostics.format();
+  EXPECT_FALSE(results[0].report["passes"]["per-eye-view"].contains("fixed"));
 }
 
 }  // namespace
