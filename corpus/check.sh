@@ -26,7 +26,7 @@ run() {   # run <file> <command...>
 check_one() {
     local f="$1" ok=0
     case "$f" in
-        "$here"/gl330/*)
+        "$here"/gl330/*|"$here"/relief-tutorial/gl330/*)
             run "$f" "$GLSLANG" -G --auto-map-locations --auto-map-bindings -o /dev/null "$f" || ok=1
             run "$f" "$GLSLANG" "$f" || ok=1
             ;;
@@ -37,7 +37,7 @@ check_one() {
             # ESSL 100 (with or without #version) and desktop 110-150: glslang's AST checks, no SPIR-V.
             run "$f" "$GLSLANG" "$f" || ok=1
             ;;
-        "$here"/vk450/*)
+        "$here"/vk450/*|"$here"/relief-tutorial/vk450/*)
             # glslang wants -I glued to its directory (no space).
             run "$f" "$GLSLANG" -V "-I$here/vk450/include" -o /dev/null "$f" || ok=1
             ;;
@@ -45,7 +45,7 @@ check_one() {
             # HLSL in files named by stage only (name.vert): the stage is the extension, the entry main.
             run "$f" "$GLSLANG" -D -V -S "${f##*.}" -e main -o /dev/null "$f" || ok=1
             ;;
-        "$here"/hlsl/*)
+        "$here"/hlsl/*|"$here"/relief-tutorial/hlsl/*)
             local base="${f%.hlsl}" stage entry
             stage="${base##*.}"
             if grep -Eq '(^|[^A-Za-z0-9_])main[[:space:]]*\(' "$f"; then
@@ -77,7 +77,7 @@ while IFS= read -r f; do
         fail=$((fail + 1))
         failed+=("${f#"$here"/}")
     fi
-done < <(find "$here/gl330" "$here/es300" "$here/legacy-glsl" "$here/vk450" "$here/hlsl" "$here/hlsl-stage-named" -type f \
+done < <(find "$here/gl330" "$here/es300" "$here/legacy-glsl" "$here/vk450" "$here/hlsl" "$here/hlsl-stage-named" "$here/relief-tutorial" -type f \
             \( -name '*.vert' -o -name '*.tesc' -o -name '*.tese' -o -name '*.geom' \
                -o -name '*.frag' -o -name '*.comp' -o -name '*.hlsl' \) \
             -not -path '*/include/*' | LC_ALL=C sort)

@@ -6,9 +6,19 @@
 // loads of the position, and function-local variables whose every store is such a value. Each other output whose stored value is computed
 // from one of those, through pure arithmetic in the same function, gets that computation cloned
 // with the position replaced by its shifted value (the same instruction sequence as the shift).
+//
+// "One of those" is decided by value, not by instruction (analysis/value_numbers.h): a product
+// recomputed for the output (`vClip = mvp * p; gl_Position = mvp * p;`), the same product in a
+// helper function or written another equal way is the position too. The reverse, the position read
+// back from an output (`outPos = P * V * M * p; gl_Position = outPos;`), shifts the output and has
+// the position read the mono value it was computed from, so stereo-shift shifts it once.
 #include "passes/pass.h"
 
+#include "passes/analysis/value_numbers.h"
+#include "passes/ir/walker.h"
+
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -51,6 +61,17 @@ class HaloPass final : public Pass {
     for (uint32_t id : m.entryInterface())
       if (m.hasDecoration(id, spv::DecorationBuiltIn)) builtinOutputs.insert(id);
 
+    // Equal by value: every value numbered like one of the position's.
+    analysis::ValueNumbers numbers(m);
+    std::set<uint32_t> positionNumbers;
+    for (uint32_t v : positionValues)
+      if (auto n = numbers.number(v)) positionNumbers.insert(*n);
+    isPosition_ = [&, positionValues](uint32_t v) {
+      if (positionValues.count(v)) return true;
+      auto n = numbers.number(v);
+      return n && positionNumbers.count(*n) > 0;
+    };
+    std::map<uint32_t, uint32_t> monoStoredTo;  // output -> the mono value its (single) store wrote
     nlohmann::json fixed = nlohmann::json::array();
     if (!positionValues.empty())
       for (auto& fn : m.functions) {
@@ -65,6 +86,7 @@ class HaloPass final : public Pass {
             std::map<uint32_t, uint32_t> cloned;
             uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
             if (newValue == store.operand(1)) continue;  // not derived from the position
+            monoStoredTo[target] = store.operand(1);
             block.instructions[i].operands[1] = newValue;
             block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
             i += code.size();
@@ -73,12 +95,50 @@ class HaloPass final : public Pass {
           }
         }
       }
+    // Only an output written once has one mono value to read back.
+    for (auto it = monoStoredTo.begin(); it != monoStoredTo.end();) {
+      int stores = 0;
+      spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+        if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == it->first) ++stores;
+      });
+      it = stores == 1 ? std::next(it) : monoStoredTo.erase(it);
+    }
+    readBackMonoValues(ctx, monoStoredTo);
+    isPosition_ = nullptr;  // it refers to this run's numbering
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
     report["shifted_outputs"] = fixed;
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 
  private:
+  std::function<bool(uint32_t)> isPosition_;  // equal by value to the mono position (set per run)
+
+  // The position read back from an output this pass just shifted (`gl_Position = outPos`): the
+  // load would now read the shifted value and stereo-shift would shift it again. It reads the mono
+  // value the output was computed from instead, where that value is known there: the output's
+  // only store, earlier in the same block.
+  void readBackMonoValues(PassContext& ctx, const std::map<uint32_t, uint32_t>& monoStoredTo) {
+    auto& m = ctx.module;
+    const ClipPositionAnalysis& positions = clipPositions(ctx);
+    for (auto& fn : m.functions)
+      for (auto& block : fn.blocks) {
+        std::map<uint32_t, size_t> storedAt;  // output -> index of its store in this block
+        for (size_t i = 0; i < block.instructions.size(); ++i) {
+          Instruction& inst = block.instructions[i];
+          if (inst.opcode == spv::OpStore && monoStoredTo.count(inst.operand(0))) storedAt[inst.operand(0)] = i;
+          if (inst.opcode != spv::OpLoad || !monoStoredTo.count(inst.operand(0)) || !storedAt.count(inst.operand(0))) continue;
+          uint32_t loaded = inst.resultId;
+          bool feedsPosition = false;
+          for (const auto& other : block.instructions)
+            if (other.opcode == spv::OpStore && positions.addressesWholePosition(other.operand(0)) && other.operand(1) == loaded)
+              feedsPosition = true;
+          if (!feedsPosition) continue;
+          inst = Instruction(spv::OpCopyObject, inst.typeId, loaded, {monoStoredTo.at(inst.operand(0))});
+          m.invalidateDefinitions();
+        }
+      }
+  }
+
   // Copies made through structs and function calls (HLSL output structs: `o.clip = o.pos;` inside
   // the user's entry, members copied out by glslang's wrapper) are invisible to the local data flow
   // above. Inlining and folding a throw-away copy shows them: an output whose stored value is the
@@ -130,7 +190,7 @@ class HaloPass final : public Pass {
                           std::vector<Instruction>& code, std::map<uint32_t, uint32_t>& cloned, int depth) {
     if (auto it = cloned.find(value); it != cloned.end()) return it->second;
     auto& m = ctx.module;
-    if (positionValues.count(value)) {
+    if (positionValues.count(value) || (isPosition_ && isPosition_(value))) {
       uint32_t shifted = emitShiftedVec4Select(ctx, code, value);
       cloned[value] = shifted;
       return shifted;

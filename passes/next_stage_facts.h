@@ -2,8 +2,13 @@
 //
 // A vertex shader that writes `vViewTS = TBN * (camera - world)` cannot tell on its own whether the
 // next stage steps texture coordinates along it (relief / parallax occlusion mapping: needs the
-// per-eye camera) or only shades with it (specular: the mono eye is fine). transpilePipeline()
-// analyses the fragment stage first and hands these facts to the last pre-rasterization stage.
+// per-eye camera) or only shades with it (specular: the mono eye is fine). Nor can one that writes
+// the camera itself, `TangentViewPos = TBN * viewPos`, beside `TangentFragPos = TBN * FragPos`, for
+// the fragment stage to subtract (the tutorial form). transpilePipeline() analyses the fragment
+// stage first and hands these facts to the last pre-rasterization stage.
+//
+// "Offsets texture coordinates" means `uv +- f(v)`: a coordinate that is only computed from the
+// view vector (a BRDF table at dot(N, V), a reflection lookup) is shading, not relief.
 #pragma once
 
 #include <cstdint>
@@ -15,10 +20,14 @@ namespace stereoshift {
 struct StageInputUse {
   uint32_t location = 0;
   bool hasLocation = false;
-  std::string name;                 // OpName of the input variable (OpenGL links by name)
+  std::string name;                 // OpName of the input variable, or the member's name in a block
+  std::string blockName;            // a member of an interface block: the block's type name (OpenGL
+                                    // links blocks by block name and member name)
   bool read = false;                // the stage loads it at all
-  bool feedsTexcoord = false;       // some texture coordinate is computed from it
-  bool feedsTexcoordAsDirection = false;  // ... after it became a direction (normalize, v.xy / v.z, reflect)
+  bool feedsTexcoord = false;       // taken as a direction, it offsets texture coordinates
+  bool feedsTexcoordAsDirection = false;  // ... after it became a direction here (normalize, v.xy / v.z)
+  bool subtractedForOffset = false;  // one side of `a - b` (b varying too) whose direction offsets
+                                     // texture coordinates: `normalize(TangentViewPos - TangentFragPos)`
 };
 
 struct NextStageFacts {

@@ -63,8 +63,9 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
 bool nextStageFactsMatter(const spirv::Module& shiftedStage, const TranspileOptions& options) {
   if (!options.perEyeView) return false;
   // per-eye-view looks no further than a module without a vector subtraction, unless it is told
-  // the camera uniform (then it looks for that uniform's uses).
-  return !options.cameraUniform.empty() || hasVectorSubtraction(shiftedStage);
+  // the camera uniform (then it looks for that uniform's uses) or it passes a camera-like value on
+  // as it is (`TangentViewPos = TBN * viewPos`: the next stage subtracts).
+  return !options.cameraUniform.empty() || hasVectorSubtraction(shiftedStage) || passesCameraCandidate(shiftedStage);
 }
 
 NextStageFacts analyseNextStage(PassContext& consumer) { return analyseStageInputs(consumer); }

@@ -56,12 +56,23 @@ namespace {
 // A uniform value by where it lives: a Uniform / PushConstant / UniformConstant variable and the
 // constant member indices of the access chain to it. Ids of global variables are shared between
 // the module and its folded copy, so a slot found in one names the same value in the other.
+// `inverseTranslation`: the slot is a mat4 (a view matrix) and the value meant is the translation
+// column of its inverse, `inverse(view)[3]`: the camera position of a shader that has no uniform
+// for it.
 struct Slot {
   uint32_t variable = 0;
   std::vector<uint32_t> indices;
-  bool operator<(const Slot& o) const { return std::tie(variable, indices) < std::tie(o.variable, o.indices); }
-  bool operator==(const Slot& o) const { return variable == o.variable && indices == o.indices; }
+  bool inverseTranslation = false;
+  bool operator<(const Slot& o) const {
+    return std::tie(variable, indices, inverseTranslation) < std::tie(o.variable, o.indices, o.inverseTranslation);
+  }
+  bool operator==(const Slot& o) const {
+    return variable == o.variable && indices == o.indices && inverseTranslation == o.inverseTranslation;
+  }
 };
+
+bool isMat4(const Module& m, uint32_t type);
+bool isGlslExtInstIn(const Module& m, const Instruction& inst, GLSLstd450 which);
 
 std::optional<uint32_t> constantValue(const Module& m, uint32_t id) {
   const Instruction* def = m.definition(id);
@@ -112,6 +123,10 @@ uint32_t slotType(const Module& m, const Slot& slot) {
       type = def->operand(0);
     else return 0;
   }
+  if (slot.inverseTranslation) {
+    const Instruction* matrix = m.definition(type);
+    return matrix && matrix->opcode == spv::OpTypeMatrix ? matrix->operand(0) : 0;
+  }
   return type;
 }
 
@@ -133,12 +148,14 @@ std::string slotName(const Module& m, const Slot& slot) {
       type = def ? def->operand(0) : 0;
     }
   }
-  return text;
+  return slot.inverseTranslation ? "inverse(" + text + ")[3]" : text;
 }
 
 // The innermost name of a slot: the member name, or the loose uniform's name.
 std::string slotLeafName(const Module& m, const Slot& slot) {
-  std::string full = slotName(m, slot);
+  Slot plain = slot;
+  plain.inverseTranslation = false;
+  std::string full = slotName(m, plain);
   size_t dot = full.find_last_of('.');
   return dot == std::string::npos ? full : full.substr(dot + 1);
 }
@@ -195,6 +212,14 @@ enum Flow : uint8_t {
   kDerived = 1,    // computed from the seed
   kDirection = 2,  // ... after it became a direction
   kTangent = 4,    // ... after it was multiplied by a tangent frame
+  kOffset = 8,     // a texture coordinate moved along a direction from it: `uv +- f(v)`
+};
+
+// An output by where it is written: the variable, and the member of an interface block (or -1).
+struct OutputSlot {
+  uint32_t variable = 0;
+  int64_t member = -1;
+  bool operator<(const OutputSlot& o) const { return std::tie(variable, member) < std::tie(o.variable, o.member); }
 };
 
 bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_list<GLSLstd450> which) {
@@ -202,6 +227,10 @@ bool isGlslExtInst(const Module& m, const Instruction& inst, std::initializer_li
   const Instruction* set = m.definition(inst.operand(0));
   if (!set || set->stringOperand(0) != "GLSL.std.450") return false;
   return std::find(which.begin(), which.end(), GLSLstd450(inst.operand(1))) != which.end();
+}
+
+bool isGlslExtInstIn(const Module& m, const Instruction& inst, GLSLstd450 which) {
+  return isGlslExtInst(m, inst, {which});
 }
 
 bool isVariable(const Module& m, uint32_t id) {
@@ -217,6 +246,14 @@ class FlowQueries {
   explicit FlowQueries(const Module& m) : m_(m), flow_(m) {}
 
   const Module& module() const { return m_; }
+
+  // An Input / Output variable of block type (`out VS_OUT { ... } vs_out;`): linked member by member.
+  bool isInterfaceBlock(uint32_t variable) const {
+    const Instruction* var = m_.definition(variable);
+    uint32_t type = var ? m_.pointeeType(var->typeId) : 0;
+    const Instruction* def = m_.definition(type);
+    return def && def->opcode == spv::OpTypeStruct && m_.hasDecoration(type, spv::DecorationBlock);
+  }
 
   // Whether `id` varies per vertex / pixel: it is computed from a stage input (through arithmetic,
   // phis and function-local or private variables).
@@ -249,9 +286,10 @@ class FlowQueries {
   }
 
   struct Sinks {
-    uint8_t texcoord = 0;                 // flags seen at texture-coordinate operands
-    std::map<uint32_t, uint8_t> outputs;  // output variable -> flags of what is stored to it
-    bool anyUse = false;                  // the seed reaches any other instruction
+    uint8_t texcoord = 0;                    // flags seen at texture-coordinate operands
+    std::map<OutputSlot, uint8_t> outputs;   // output (member) -> flags of what is stored to it
+    std::set<uint32_t> subtractions;         // vec3/vec4 `a - b` with a from the seeds, b varying otherwise
+    bool anyUse = false;                     // the seed reaches any other instruction
   };
 
   // Follows the seeds forward to a fixed point. Seeds are values, or variables (their loads).
@@ -289,10 +327,15 @@ class FlowQueries {
     bool throughSamples;
     Sinks sinks;
 
-    bool storeCarries(const Instruction&, uint32_t root, ValueFlow::Flags f) override {
+    bool storeCarries(const Instruction& store, uint32_t root, ValueFlow::Flags f) override {
       if (!isVariable(q.m_, root)) return false;
       if (q.m_.storageClassOf(root) != spv::StorageClassOutput) return true;  // a local: its loads carry the value on
-      sinks.outputs[root] |= static_cast<uint8_t>(f);
+      OutputSlot output{root, -1};
+      if (q.isInterfaceBlock(root))
+        if (auto target = q.flow_.resolvePointer(store.operand(0)); target && !target->path.empty() &&
+                                                                    target->path.front() != analysis::kAnyIndex)
+          output.member = target->path.front();
+      sinks.outputs[output] |= static_cast<uint8_t>(f);
       return false;
     }
 
@@ -306,6 +349,18 @@ class FlowQueries {
       int tainted = 0;
       auto f = static_cast<uint8_t>(ValueFlow::operandFlags(inst, flags, &tainted));
       if (!f) return 0;
+      // uv +- f(v): a two-component coordinate moved along a direction (parallax, a POM loop's step;
+      // the optimizer folds `uv += a * b` into fma(a, b, uv)).
+      bool addition = inst.opcode == spv::OpFAdd || inst.opcode == spv::OpFSub || isGlslExtInst(q.m_, inst, {GLSLstd450Fma});
+      if (addition && vectorSize(inst.typeId) == 2) {
+        size_t first = inst.opcode == spv::OpExtInst ? 2 : 0;
+        for (size_t k = first; k < inst.operands.size(); ++k)
+          if (flagsOf(inst.operands[k]) & kDirection) f |= kOffset;
+      }
+      if (inst.opcode == spv::OpFSub && tainted == 1 && vectorSize(inst.typeId) >= 3) {
+        uint32_t other = flagsOf(inst.operand(0)) ? inst.operand(1) : inst.operand(0);
+        if (q.dependsOnInput(other)) sinks.subtractions.insert(inst.resultId);
+      }
       if (isGlslExtInst(q.m_, inst, {GLSLstd450Normalize, GLSLstd450Reflect, GLSLstd450Refract})) f |= kDirection;
       // v.xy / v.z: a ratio of two parts of the same vector is a direction's slope.
       if (inst.opcode == spv::OpFDiv && tainted == 2) f |= kDirection;
@@ -315,6 +370,11 @@ class FlowQueries {
         f |= kTangent;
       if (inst.opcode == spv::OpCompositeConstruct && isTangentDots(inst, flagsOf)) f |= kTangent;
       return f;
+    }
+
+    uint32_t vectorSize(uint32_t type) const {
+      const Instruction* def = q.m_.definition(type);
+      return def && def->opcode == spv::OpTypeVector ? def->operand(1) : 0;
     }
 
     // vec3(dot(v, t), dot(v, b), dot(v, n)) with per-vertex t, b, n: tangent space by hand.
@@ -344,12 +404,34 @@ struct Subtraction {
   uint32_t point = 0;  // P
 };
 
+// The slot a value reads: a load of it, a member of a whole-struct load (`Camera c = camera;
+// c.position`), or the translation column of the inverse of a loaded matrix (`inverse(view)[3]`).
+std::optional<Slot> valueSlot(const Module& m, uint32_t value) {
+  if (auto slot = loadedSlot(m, value)) return slot;
+  const Instruction* def = m.definition(value);
+  if (!def || def->opcode != spv::OpCompositeExtract) return std::nullopt;
+  std::vector<uint32_t> path(def->operands.begin() + 1, def->operands.end());
+  const Instruction* from = m.definition(def->operand(0));
+  if (from && isGlslExtInstIn(m, *from, GLSLstd450MatrixInverse) && path == std::vector<uint32_t>{3}) {
+    auto matrix = loadedSlot(m, from->operand(2));
+    if (!matrix || !isMat4(m, slotType(m, *matrix))) return std::nullopt;
+    matrix->inverseTranslation = true;
+    return matrix;
+  }
+  auto whole = loadedSlot(m, def->operand(0));
+  if (!whole) return std::nullopt;
+  const Instruction* type = m.definition(slotType(m, *whole));
+  if (!type || type->opcode != spv::OpTypeStruct) return std::nullopt;  // a vector's component: not a position
+  whole->indices.insert(whole->indices.end(), path.begin(), path.end());
+  return whole;
+}
+
 std::optional<Slot> cameraSide(const Module& m, uint32_t value) {
   const Instruction* def = m.definition(value);
   if (def && def->opcode == spv::OpVectorShuffle && def->operands.size() == 5 && def->operand(0) == def->operand(1) &&
       def->operand(2) == 0 && def->operand(3) == 1 && def->operand(4) == 2)
     value = def->operand(0);  // camera.xyz
-  auto slot = loadedSlot(m, value);
+  auto slot = valueSlot(m, value);
   if (!slot) return std::nullopt;
   const Instruction* type = m.definition(slotType(m, *slot));
   if (!type || type->opcode != spv::OpTypeVector || (type->operand(1) != 3 && type->operand(1) != 4)) return std::nullopt;
@@ -408,8 +490,8 @@ bool expandMatrix(const Module& m, uint32_t matrix, std::vector<Slot>& out) {
   if (!def) return false;
   if (def->opcode == spv::OpMatrixTimesMatrix)
     return expandMatrix(m, def->operand(0), out) && expandMatrix(m, def->operand(1), out);
-  auto slot = loadedSlot(m, matrix);
-  if (!slot) return false;
+  auto slot = valueSlot(m, matrix);  // a load, or a member of a whole-struct load
+  if (!slot || slot->inverseTranslation) return false;
   out.push_back(*slot);
   return true;
 }
@@ -434,8 +516,30 @@ std::optional<ClipChain> clipChainFrom(const Module& m, uint32_t value) {
 }
 
 // Whether the vec3/vec4 `point` is the vec4 `w` (or its xyz, or `vec4(point, 1)`).
+uint32_t leadingComponentsOf(const Module& m, uint32_t value);
+
+// The vector whose x, y, z a point is: `vec4(v, 1)`, `vec4(v.x, v.y, v.z, 1)`, `v.xyz`, or itself.
+uint32_t pointSource(const Module& m, uint32_t value) {
+  const Instruction* d = m.definition(value);
+  if (d && d->opcode == spv::OpCompositeConstruct && d->operands.size() == 2) return leadingComponentsOf(m, d->operand(0));
+  if (d && d->opcode == spv::OpCompositeConstruct && d->operands.size() == 4) {
+    uint32_t from = 0;
+    for (uint32_t i = 0; i < 3; ++i) {
+      const Instruction* e = m.definition(d->operands[i]);
+      if (!e || e->opcode != spv::OpCompositeExtract || e->operands.size() != 2 || e->operand(1) != i) return value;
+      if (from && e->operand(0) != from) return value;
+      from = e->operand(0);
+    }
+    return leadingComponentsOf(m, from);
+  }
+  return leadingComponentsOf(m, value);
+}
+
 bool samePoint(const Module& m, uint32_t point, uint32_t w) {
   if (point == w) return true;
+  // The same x, y, z through any of the ways of writing vec3 <-> vec4 (the optimizer forwards
+  // `vec4(vec3(world), 1)` to the extracts of `world` itself).
+  if (pointSource(m, point) == pointSource(m, w)) return true;
   const Instruction* p = m.definition(point);
   if (p && p->opcode == spv::OpVectorShuffle && p->operand(0) == w && p->operands.size() == 5 &&
       p->operand(2) == 0 && p->operand(3) == 1 && p->operand(4) == 2)
@@ -449,6 +553,78 @@ bool samePoint(const Module& m, uint32_t point, uint32_t w) {
     if (!e || e->opcode != spv::OpCompositeExtract || e->operand(0) != point || e->operand(1) != i) return false;
   }
   return true;
+}
+
+// `point` as (uniform matrices) * chain.points[level], the matrices being the ones applied first in
+// the chain's product (`FragPos = model * p` beside `gl_Position = projection * view * model * p`):
+// the rest of the product, which takes `point` to the clip position. Nullopt otherwise.
+// `v.xyz` written as a shuffle or as vec3(v.x, v.y, v.z): v; else the value itself.
+uint32_t leadingComponentsOf(const Module& m, uint32_t value) {
+  const Instruction* def = m.definition(value);
+  if (!def) return value;
+  if (def->opcode == spv::OpVectorShuffle && def->operand(0) == def->operand(1)) return def->operand(0);
+  if (def->opcode != spv::OpCompositeConstruct || def->operands.empty()) return value;
+  uint32_t from = 0;
+  for (uint32_t i = 0; i < def->operands.size(); ++i) {
+    const Instruction* e = m.definition(def->operands[i]);
+    if (!e || e->opcode != spv::OpCompositeExtract || e->operands.size() != 2 || e->operand(1) != i) return value;
+    if (from && e->operand(0) != from) return value;
+    from = e->operand(0);
+  }
+  return from;
+}
+
+std::optional<std::vector<Slot>> worldProduct(const Module& m, uint32_t point, const ClipChain& chain, size_t level) {
+  const Instruction* def = m.definition(leadingComponentsOf(m, point));
+  if (!def) return std::nullopt;
+  bool column = def->opcode == spv::OpMatrixTimesVector, row = def->opcode == spv::OpVectorTimesMatrix;
+  if ((!column && !row) || column != chain.columnVectors) return std::nullopt;
+  std::vector<Slot> applied;
+  if (!expandMatrix(m, column ? def->operand(0) : def->operand(1), applied)) return std::nullopt;
+  uint32_t inner = column ? def->operand(1) : def->operand(0);
+  if (!samePoint(m, inner, chain.points[level])) return std::nullopt;
+  std::vector<Slot> product = chain.productFor(level);
+  if (applied.size() >= product.size()) return std::nullopt;
+  if (column) {  // P * V * M: M applied first, at the end
+    if (!std::equal(applied.begin(), applied.end(), product.end() - static_cast<long>(applied.size()))) return std::nullopt;
+    product.resize(product.size() - applied.size());
+  } else {  // M * V * P applied left to right
+    if (!std::equal(applied.begin(), applied.end(), product.begin())) return std::nullopt;
+    product.erase(product.begin(), product.begin() + static_cast<long>(applied.size()));
+  }
+  return product;
+}
+
+// The points a vertex shader writes to its non-built-in outputs (as `Subtraction`s without a
+// subtraction): `FragPos`, `TBN * FragPos` (the frame taken off). Where the camera goes to an output
+// as it is, these say which space it lives in.
+std::vector<Subtraction> pointsWrittenToOutputs(const Module& m) {
+  std::vector<Subtraction> points;
+  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpStore) return;
+    uint32_t root = m.rootVariable(inst.operand(0));
+    if (!root || m.storageClassOf(root) != spv::StorageClassOutput || m.hasDecoration(root, spv::DecorationBuiltIn)) return;
+    int64_t member = -1;
+    if (const Instruction* chain = m.definition(inst.operand(0));
+        chain && chain->opcode == spv::OpAccessChain && chain->operands.size() >= 2)
+      if (auto index = constantValue(m, chain->operand(1))) member = *index;
+    const Instruction* block = m.definition(m.pointeeType(m.definition(root)->typeId));
+    if (block && block->opcode == spv::OpTypeStruct &&
+        (member < 0 || m.hasMemberDecoration(block->resultId, static_cast<uint32_t>(member), spv::DecorationBuiltIn)))
+      return;  // gl_PerVertex (the clip position itself), or a whole block
+    uint32_t value = inst.operand(1);
+    const Instruction* def = m.definition(value);
+    // A tangent frame times the point: the point. The frame is built in the shader (mat3(T, B, N),
+    // its transpose), not a uniform matrix.
+    auto builtFrame = [&](uint32_t matrix) {
+      const Instruction* d = m.definition(matrix);
+      return d && (d->opcode == spv::OpTranspose || d->opcode == spv::OpCompositeConstruct);
+    };
+    if (def && def->opcode == spv::OpMatrixTimesVector && builtFrame(def->operand(0))) value = def->operand(1);
+    else if (def && def->opcode == spv::OpVectorTimesMatrix && builtFrame(def->operand(1))) value = def->operand(0);
+    points.push_back({0, value});
+  });
+  return points;
 }
 
 // Clip chains of every store to the clip position in the folded module.
@@ -570,12 +746,63 @@ int rewriteCameraLoads(PassContext& ctx, const Slot& camera, const OffsetSource&
   auto& m = ctx.module;
   uint32_t f = m.typeFloat(32);
   int rewritten = 0;
+  auto v4OfOffset = [&](std::vector<Instruction>& code, uint32_t offset, uint32_t vectorType) {
+    const Instruction* t = m.definition(vectorType);
+    if (!t || t->operand(1) != 4) return offset;
+    uint32_t widened = m.takeId();
+    code.emplace_back(spv::OpCompositeConstruct, vectorType, widened, std::vector<uint32_t>{offset, m.constantFloat(0.0f)});
+    return widened;
+  };
   for (auto& fn : m.functions)
     for (auto& block : fn.blocks)
       for (size_t i = 0; i < block.instructions.size(); ++i) {
-        if (block.instructions[i].opcode != spv::OpLoad) continue;
-        auto slot = slotOfPointer(m, block.instructions[i].operand(0));
+        const Instruction& inst = block.instructions[i];
+        // inverse(view): its translation column (the camera centre) moves to the eye; the rotation
+        // stays, so the inverse is the per-eye camera's.
+        if (camera.inverseTranslation) {
+          if (!isGlslExtInstIn(m, inst, GLSLstd450MatrixInverse) || loadedSlot(m, inst.operand(2)) !=
+                                                                        std::optional<Slot>(Slot{camera.variable, camera.indices}))
+            continue;
+          uint32_t matrixType = inst.typeId, columnType = slotType(m, camera);
+          uint32_t perEye = inst.resultId, mono = m.takeId();
+          block.instructions[i].resultId = mono;
+          std::vector<Instruction> code;
+          uint32_t addend = v4OfOffset(code, emitEyeOffset(ctx, code, source), columnType);
+          uint32_t column = m.takeId(), moved = m.takeId();
+          code.emplace_back(spv::OpCompositeExtract, columnType, column, std::vector<uint32_t>{mono, 3});
+          code.emplace_back(spv::OpFAdd, columnType, moved, std::vector<uint32_t>{column, addend});
+          code.emplace_back(spv::OpCompositeInsert, matrixType, perEye, std::vector<uint32_t>{moved, mono, 3});
+          block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
+          i += code.size();
+          m.invalidateDefinitions();
+          ++rewritten;
+          continue;
+        }
+        if (inst.opcode != spv::OpLoad) continue;
+        auto slot = slotOfPointer(m, inst.operand(0));
         if (!slot || slot->variable != camera.variable) continue;
+        // A whole-struct load (`Camera c = camera;`): the camera member inside the loaded value moves.
+        if (slot->indices.size() < camera.indices.size() &&
+            std::equal(slot->indices.begin(), slot->indices.end(), camera.indices.begin())) {
+          std::vector<uint32_t> path(camera.indices.begin() + static_cast<long>(slot->indices.size()), camera.indices.end());
+          uint32_t structType = inst.typeId, memberType = slotType(m, camera);
+          uint32_t perEye = inst.resultId, mono = m.takeId();
+          block.instructions[i].resultId = mono;
+          std::vector<Instruction> code;
+          uint32_t addend = v4OfOffset(code, emitEyeOffset(ctx, code, source), memberType);
+          uint32_t member = m.takeId(), moved = m.takeId();
+          std::vector<uint32_t> extract = {mono}, insert = {moved, mono};
+          extract.insert(extract.end(), path.begin(), path.end());
+          insert.insert(insert.end(), path.begin(), path.end());
+          code.emplace_back(spv::OpCompositeExtract, memberType, member, extract);
+          code.emplace_back(spv::OpFAdd, memberType, moved, std::vector<uint32_t>{member, addend});
+          code.emplace_back(spv::OpCompositeInsert, structType, perEye, insert);
+          block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
+          i += code.size();
+          m.invalidateDefinitions();
+          ++rewritten;
+          continue;
+        }
         bool whole = slot->indices == camera.indices;
         bool component = slot->indices.size() == camera.indices.size() + 1 &&
                          std::equal(camera.indices.begin(), camera.indices.end(), slot->indices.begin());
@@ -616,17 +843,73 @@ const char* hintName(NameHint hint) {
   return "?";
 }
 
+// Locations one value of `type` takes in an interface: a matrix one per column, an array one per
+// element, a struct the sum of its members.
+uint32_t locationCount(const Module& m, uint32_t type) {
+  const Instruction* def = m.definition(type);
+  if (!def) return 1;
+  if (def->opcode == spv::OpTypeMatrix) return def->operand(1);
+  if (def->opcode == spv::OpTypeArray) return constantValue(m, def->operand(1)).value_or(1) * locationCount(m, def->operand(0));
+  if (def->opcode == spv::OpTypeStruct) {
+    uint32_t total = 0;
+    for (uint32_t member : def->operands) total += locationCount(m, member);
+    return total;
+  }
+  return 1;
+}
+
+// One input or output as the other stage links to it: a loose variable, or a member of a block.
+struct InterfaceSlot {
+  std::string name;       // the variable's name, or the member's
+  std::string blockName;  // the block type's name, for a member
+  std::string display;    // for the report: `vs_out.TangentViewPos`
+  std::optional<uint32_t> location;
+  bool builtin = false;
+};
+
+InterfaceSlot interfaceSlot(const Module& m, uint32_t variable, int64_t member) {
+  InterfaceSlot slot;
+  slot.location = m.decorationValue(variable, spv::DecorationLocation);
+  slot.builtin = m.hasDecoration(variable, spv::DecorationBuiltIn);
+  slot.name = m.name(variable);
+  if (member < 0) {
+    slot.display = slot.name.empty() ? std::to_string(variable) : slot.name;
+    return slot;
+  }
+  uint32_t block = m.pointeeType(m.definition(variable)->typeId);
+  const Instruction* def = m.definition(block);
+  auto index = static_cast<uint32_t>(member);
+  slot.blockName = m.name(block);
+  slot.name = m.memberName(block, index);
+  slot.display = (m.name(variable).empty() ? slot.blockName : m.name(variable)) + "." + slot.name;
+  slot.builtin |= m.hasMemberDecoration(block, index, spv::DecorationBuiltIn);
+  if (slot.location && def)
+    for (uint32_t i = 0; i < index && i < def->operands.size(); ++i) *slot.location += locationCount(m, def->operands[i]);
+  return slot;
+}
+
 // The next stage's use of one of our outputs, if the pipeline said.
-const StageInputUse* consumerOf(const PassContext& ctx, const Module& f, uint32_t output) {
+const StageInputUse* consumerOf(const PassContext& ctx, const Module& f, const OutputSlot& output) {
   if (!ctx.nextStage) return nullptr;
-  auto location = f.decorationValue(output, spv::DecorationLocation);
-  std::string name = f.name(output);
+  InterfaceSlot ours = interfaceSlot(f, output.variable, output.member);
   for (const auto& input : ctx.nextStage->inputs) {
-    if (ctx.nextStage->linkByName ? (!name.empty() && input.name == name)
-                                  : (location && input.hasLocation && input.location == *location))
+    if (ctx.nextStage->linkByName ? (!ours.name.empty() && input.name == ours.name && input.blockName == ours.blockName)
+                                  : (ours.location && input.hasLocation && input.location == *ours.location))
       return &input;
   }
   return nullptr;
+}
+
+// Values of the folded module that are a camera-like uniform (a vec3/vec4 slot, a member of a
+// whole-struct load, inverse(view)[3]), by slot, for slots not already found in a subtraction.
+std::map<Slot, std::vector<uint32_t>> cameraValuesOutsideSubtractions(const Module& f,
+                                                                      const std::map<Slot, std::vector<Subtraction>>& subtractions) {
+  std::map<Slot, std::vector<uint32_t>> found;
+  spirv::forEachFunctionInstruction(f, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (!inst.resultId) return;
+    if (auto slot = cameraSide(f, inst.resultId); slot && !subtractions.count(*slot)) found[*slot].push_back(inst.resultId);
+  });
+  return found;
 }
 
 class PerEyeViewPass final : public Pass {
@@ -651,7 +934,8 @@ class PerEyeViewPass final : public Pass {
     // Cheap first: a view vector needs a vec3/vec4 subtraction somewhere in the module (inlining
     // and folding never create one), and most shaders have none; the folded copy costs an
     // optimizer run.
-    if (ctx.options.cameraUniform.empty() && !hasVectorSubtraction(ctx.module)) return finish(PassResult::Unchanged);
+    if (ctx.options.cameraUniform.empty() && !hasVectorSubtraction(ctx.module) && !passesCameraCandidate(ctx.module))
+      return finish(PassResult::Unchanged);
     const Module* folded = foldedCopy(ctx);
     if (!folded) {
       report["skipped"] = "the optimizer could not inline and fold this module; nothing analysed";
@@ -680,13 +964,17 @@ class PerEyeViewPass final : public Pass {
         cameras[slot] = "forced by --camera-uniform";
         continue;
       }
-      bool offsetsHere = sinks.texcoord & kDirection;
+      bool offsetsHere = sinks.texcoord & kOffset;
+      // A coordinate computed from the direction without moving another one along it: a BRDF table
+      // at dot(N, V), an environment map along reflect(-V, N). Shading, mono by default.
+      bool looksUpAlong = !offsetsHere && (sinks.texcoord & kDirection);
       // Outputs: what the next stage does with them, or the single-shader hint.
       std::vector<std::string> offsetOutputs, shadedOutputs, unknownTangentOutputs, unknownOutputs;
       bool fragment = folded->executionModel() == spv::ExecutionModelFragment;
       for (const auto& [output, f] : sinks.outputs) {
-        if (folded->hasDecoration(output, spv::DecorationBuiltIn)) continue;
-        std::string outputName = folded->name(output).empty() ? std::to_string(output) : folded->name(output);
+        InterfaceSlot written = interfaceSlot(*folded, output.variable, output.member);
+        if (written.builtin) continue;
+        const std::string& outputName = written.display;
         const StageInputUse* use = consumerOf(ctx, *folded, output);
         if (fragment) {
           shadedOutputs.push_back(outputName);  // a colour: nothing after it samples along it
@@ -733,6 +1021,16 @@ class PerEyeViewPass final : public Pass {
         cameras[slot] = "--per-eye-specular: the view vector only shades, and the name says camera";
         continue;
       }
+      if (looksUpAlong && hint != NameHint::Light && ctx.options.perEyeSpecular) {
+        cameras[slot] = "--per-eye-specular: a texture is looked up along a direction from it (reflection, BRDF table)";
+        continue;
+      }
+      if (looksUpAlong && hint != NameHint::Light) {
+        leave("texture looked up along a direction from it (reflection, BRDF table), no texture coordinate moved along it",
+              "a lookup, not relief mapping: reflections and specular terms stay mono by default (no new application "
+              "parameters); --per-eye-specular makes them per-eye");
+        continue;
+      }
       if (hint == NameHint::Light) {
         leave("light vector", "the name says light: not view-dependent");
       } else if (!unknownOutputs.empty() || !unknownTangentOutputs.empty()) {
@@ -771,6 +1069,7 @@ class PerEyeViewPass final : public Pass {
       }
     }
 
+    decidePassedCameras(ctx, flow, subtractions, cameras, leftAlone);
     noteOtherViewDependentUses(ctx, *folded, subtractions, cameras, leftAlone);
 
     if (cameras.empty()) return finish(PassResult::Unchanged);
@@ -797,14 +1096,19 @@ class PerEyeViewPass final : public Pass {
             loaded && loaded->variable == slot.variable && loaded->indices.size() >= slot.indices.size() &&
             std::equal(slot.indices.begin(), slot.indices.end(), loaded->indices.begin()))
           loads[inst.resultId] = kDerived;
+        if (auto read = inst.resultId ? valueSlot(*folded, inst.resultId) : std::nullopt; read && *read == slot)
+          loads[inst.resultId] = kDerived;  // a member of a whole-struct load, inverse(view)[3]
       });
       for (const auto& [output, f] : flow.follow(loads, /*throughSamples=*/true).outputs)
-        if (!folded->hasDecoration(output, spv::DecorationBuiltIn) && !folded->name(output).empty())
-          perEyeOutputs.insert(folded->name(output));
+        if (InterfaceSlot written = interfaceSlot(*folded, output.variable, output.member);
+            !written.builtin && !written.name.empty())
+          perEyeOutputs.insert(written.display);
     }
     if (!perEyeOutputs.empty()) report["per_eye_outputs"] = perEyeOutputs;
     for (const auto& [slot, why] : cameras) {
-      OffsetSource source = chooseOffsetSource(ctx, *folded, slot, subtractions[slot], chains);
+      std::vector<Subtraction> points = subtractions[slot];
+      if (points.empty()) points = pointsWrittenToOutputs(*folded);  // the tutorial form: no subtraction here
+      OffsetSource source = chooseOffsetSource(ctx, *folded, slot, points, chains);
       int count = kConvergence + 1;
       if (source.kind == OffsetSource::EyeOffsetParams) count = kEyeOffsetZ + 1;
       if (!ensureEyeParams(ctx, count)) return finish(PassResult::Failed);
@@ -822,6 +1126,67 @@ class PerEyeViewPass final : public Pass {
   }
 
  private:
+  // The tutorial form: the camera position itself goes to an output (`TangentViewPos = TBN *
+  // viewPos`, beside `TangentFragPos = TBN * FragPos`) and the next stage subtracts it from another
+  // input and moves texture coordinates along the difference. With the pipeline's facts that is
+  // structure enough; a shader converted alone cannot tell relief mapping from a specular term
+  // (the normal-mapping tutorials write the same vertex shader), so it is reported, not guessed.
+  static void decidePassedCameras(const PassContext& ctx, FlowQueries& flow,
+                                  const std::map<Slot, std::vector<Subtraction>>& subtractions,
+                                  std::map<Slot, std::string>& cameras, nlohmann::json& leftAlone) {
+    const Module& f = flow.module();
+    if (f.executionModel() == spv::ExecutionModelFragment) return;  // its outputs are colours
+    auto joined = [](const std::vector<std::string>& list) {
+      std::string text;
+      for (const auto& s : list) text += (text.empty() ? "" : ", ") + s;
+      return text;
+    };
+    for (const auto& [slot, values] : cameraValuesOutsideSubtractions(f, subtractions)) {
+      if (cameras.count(slot)) continue;
+      std::string name = slotName(f, slot);
+      NameHint hint = slot.inverseTranslation ? NameHint::Camera : nameHint(name);
+      std::map<uint32_t, uint8_t> seeds;
+      for (uint32_t v : values) seeds[v] = kDerived;
+      auto sinks = flow.follow(seeds);
+      std::vector<std::string> subtractedThere, notKnown, shadingThere;
+      bool tangent = false;
+      for (const auto& [output, flags] : sinks.outputs) {
+        InterfaceSlot written = interfaceSlot(f, output.variable, output.member);
+        if (written.builtin) continue;
+        const StageInputUse* use = consumerOf(ctx, f, output);
+        tangent |= (flags & kTangent) != 0;
+        if (!ctx.nextStage) notKnown.push_back(written.display);
+        else if (use && use->read && !(flags & kDirection) && use->subtractedForOffset)  // a point, not a direction
+          subtractedThere.push_back(written.display);
+        else shadingThere.push_back(written.display);
+      }
+      nlohmann::json note = {{"uniform", name}, {"name_hint", hintName(hint)}};
+      if (hint == NameHint::Light) {
+        if (subtractedThere.empty()) continue;  // a light position passed on for lighting: nothing to say
+        note["use"] = "position written to " + joined(subtractedThere) + ", which the next stage marches along";
+        note["reason"] = "the name says light (a relief self-shadowing ray marches toward the light): not a view "
+                         "vector; --camera-uniform forces it";
+        leftAlone.push_back(note);
+        continue;
+      }
+      if (!subtractedThere.empty()) {
+        cameras[slot] = "structure across stages: the camera position goes to " + joined(subtractedThere) + ", which " +
+                        ctx.nextStage->file + " subtracts from another input and moves texture coordinates along";
+        continue;
+      }
+      if (!notKnown.empty() && (hint == NameHint::Camera || tangent)) {
+        note["use"] = std::string(tangent ? "tangent-space " : "") + "camera position written to " + joined(notKnown);
+        note["reason"] = "camera position passed to the next stage; convert the pipeline to decide (--pipeline, or "
+                         "--camera-uniform to force): relief mapping needs it per eye, normal-mapped specular does not";
+        leftAlone.push_back(note);
+      } else if (!shadingThere.empty() && hint == NameHint::Camera) {
+        note["use"] = "camera position written to " + joined(shadingThere);
+        note["reason"] = ctx.nextStage->file + " does not move texture coordinates along it (shading, a lookup): mono";
+        leftAlone.push_back(note);
+      }
+    }
+  }
+
   OffsetSource chooseOffsetSource(const PassContext& ctx, const Module& f, const Slot& camera,
                                   const std::vector<Subtraction>& subs, const std::vector<ClipChain>& chains) {
     OffsetSource source;
@@ -831,11 +1196,16 @@ class PerEyeViewPass final : public Pass {
     std::vector<Slot> product;
     for (const auto& c : chains)
       for (size_t level = 0; level < c.points.size() && !chain; ++level)
-        for (const auto& s : subs)
-          if (!chain && samePoint(f, s.point, c.points[level])) {
+        for (const auto& s : subs) {
+          if (chain) break;
+          if (samePoint(f, s.point, c.points[level])) {
             chain = &c;
             product = c.productFor(level);
+          } else if (auto world = worldProduct(f, s.point, c, level)) {
+            chain = &c;  // the point is a model transform of the chain's: the rest takes world to clip
+            product = *world;
           }
+        }
     bool columns = chain ? chain->columnVectors : shaderUsesColumnVectors(ctx, f);
     std::string k = "eyeSign*separation*convergence";
     auto apply = [&](const std::string& matrix) {
@@ -882,6 +1252,8 @@ class PerEyeViewPass final : public Pass {
       std::string name = slotName(f, *slot);
       if (nameHint(name) != NameHint::Camera) return;
       noted.insert(*slot);
+      for (const auto& entry : leftAlone)
+        if (entry.contains("uniform") && entry["uniform"] == name) return;  // already said what it does
       leftAlone.push_back({{"uniform", name}, {"use", "distance or other maths, no view vector (fog, level of detail)"},
                            {"reason", "the eyes differ by a fraction of the interaxial: mono keeps both eyes alike"}});
     });
@@ -900,6 +1272,21 @@ class PerEyeViewPass final : public Pass {
 
 }  // namespace
 
+bool passesCameraCandidate(const Module& m) {
+  if (m.executionModel() == spv::ExecutionModelFragment) return false;  // nothing after it to pass to
+  return spirv::anyFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (isGlslExtInstIn(m, inst, GLSLstd450MatrixInverse)) return true;
+    if (inst.opcode != spv::OpLoad) return false;
+    auto storage = m.storageClassOf(inst.operand(0));
+    if (!storage || !isUniformStorage(*storage)) return false;
+    const Instruction* type = m.definition(inst.typeId);
+    if (type && type->opcode == spv::OpTypeStruct) return true;  // a whole-struct load of a camera block
+    if (!type || type->opcode != spv::OpTypeVector || type->operand(1) < 3) return false;
+    const Instruction* component = m.definition(type->operand(0));
+    return component && component->opcode == spv::OpTypeFloat;
+  });
+}
+
 bool hasVectorSubtraction(const Module& m) {
   return spirv::anyFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
     if (inst.opcode != spv::OpFSub) return false;
@@ -913,25 +1300,61 @@ NextStageFacts analyseStageInputs(PassContext& ctx) {
   facts.file = ctx.file;
   facts.linkByName = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
   const Module* folded = foldedCopy(ctx);
-  const Module& m = ctx.module;
+  const Module& m = folded ? *folded : ctx.module;  // global ids are shared
   std::optional<FlowQueries> flow;
   if (folded) flow.emplace(*folded);
+  // What one input (a loose variable, or one member of an input block) does here.
+  auto analyse = [&](StageInputUse& use, const std::map<uint32_t, uint8_t>& asRead) {
+    if (!flow) return;
+    auto sinks = flow->follow(asRead);
+    use.read = sinks.anyUse;
+    use.feedsTexcoordAsDirection = (sinks.texcoord & kOffset) != 0;
+    for (uint32_t difference : sinks.subtractions)
+      if (flow->follow({{difference, kDerived}}).texcoord & kOffset) use.subtractedForOffset = true;
+    std::map<uint32_t, uint8_t> asDirection;
+    for (const auto& [id, f] : asRead) asDirection[id] = f | kDirection;
+    use.feedsTexcoord = (flow->follow(asDirection).texcoord & kOffset) != 0;
+  };
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassInput) continue;
     if (m.hasDecoration(inst.resultId, spv::DecorationBuiltIn)) continue;
-    StageInputUse use;
-    use.name = m.name(inst.resultId);
-    if (auto location = m.decorationValue(inst.resultId, spv::DecorationLocation)) {
-      use.location = *location;
-      use.hasLocation = true;
+    const Instruction* block = m.definition(m.pointeeType(inst.typeId));
+    bool isBlock = block && block->opcode == spv::OpTypeStruct && m.hasDecoration(block->resultId, spv::DecorationBlock);
+    if (!isBlock) {
+      StageInputUse use;
+      use.name = m.name(inst.resultId);
+      if (auto location = m.decorationValue(inst.resultId, spv::DecorationLocation)) {
+        use.location = *location;
+        use.hasLocation = true;
+      }
+      analyse(use, {{inst.resultId, kDerived}});
+      facts.inputs.push_back(use);
+      continue;
     }
-    if (flow) {
-      auto sinks = flow->follow({{inst.resultId, kDerived}});
-      use.read = sinks.anyUse;
-      use.feedsTexcoord = sinks.texcoord != 0;
-      use.feedsTexcoordAsDirection = (sinks.texcoord & kDirection) != 0;
+    // `in VS_OUT { ... } fs_in;`: member by member, each from the loads that read it (a load of the
+    // whole block reads them all).
+    for (uint32_t member = 0; member < block->operands.size(); ++member) {
+      InterfaceSlot slot = interfaceSlot(m, inst.resultId, member);
+      if (slot.builtin) continue;
+      StageInputUse use;
+      use.name = slot.name;
+      use.blockName = slot.blockName;
+      if (slot.location) {
+        use.location = *slot.location;
+        use.hasLocation = true;
+      }
+      std::map<uint32_t, uint8_t> loads;
+      spirv::forEachFunctionInstruction(m, [&](const Instruction& load, const spirv::Function&, const spirv::Block&) {
+        if (load.opcode != spv::OpLoad || m.rootVariable(load.operand(0)) != inst.resultId) return;
+        const Instruction* chain = m.definition(load.operand(0));
+        bool whole = chain && chain->opcode == spv::OpVariable;
+        bool thisMember = chain && (chain->opcode == spv::OpAccessChain || chain->opcode == spv::OpInBoundsAccessChain) &&
+                          chain->operands.size() >= 2 && constantValue(m, chain->operand(1)) == member;
+        if (whole || thisMember) loads[load.resultId] = kDerived;
+      });
+      if (!loads.empty()) analyse(use, loads);
+      facts.inputs.push_back(use);
     }
-    facts.inputs.push_back(use);
   }
   return facts;
 }

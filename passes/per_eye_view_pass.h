@@ -18,4 +18,9 @@ NextStageFacts analyseStageInputs(PassContext& context);
 // inlining and folding never create one, so without it per-eye-view has nothing to look at.
 bool hasVectorSubtraction(const spirv::Module& module);
 
+// Whether a pre-rasterization module reads a value that could be the camera position passed on to
+// the next stage as it is (a vec3/vec4 uniform, a whole uniform struct, the inverse of a matrix):
+// the tutorial form of relief mapping, `TangentViewPos = TBN * viewPos`, has no subtraction there.
+bool passesCameraCandidate(const spirv::Module& module);
+
 }  // namespace stereoshift

@@ -62,7 +62,7 @@ def recompile(glslang, path, rel, language, reported_stage=None):
         cmd = [glslang, "-D", "-V", "-S", stage, "-e", hlsl_entry(text), "-o", os.devnull, path]
     else:
         stage = STAGE_OF.get(reported_stage) or STAGE_OF[parts[-1]]
-        vulkan = rel.startswith("vk450/")
+        vulkan = os.path.basename(os.path.dirname(rel)) == "vk450"  # vk450/, relief-tutorial/vk450/
         cmd = [glslang, "-S", stage, path] + (["-V", "-o", os.devnull] if vulkan else [])
         include = os.path.join(os.path.dirname(path), "include")
         if os.path.isdir(include):

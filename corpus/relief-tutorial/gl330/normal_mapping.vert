@@ -1,0 +1,36 @@
+#version 330 core
+// stereoshift-expect: shift
+// Normal-mapped wall, vertex stage: the same tangent-space camera as parallax mapping, but the fragment stage only lights with it.
+layout (location = 0) in vec3 aPos;
+layout (location = 1) in vec3 aNormal;
+layout (location = 2) in vec2 aTexCoords;
+layout (location = 3) in vec3 aTangent;
+layout (location = 4) in vec3 aBitangent;
+
+out VS_OUT {
+    vec2 TexCoords;
+    vec3 TangentLightPos;
+    vec3 TangentViewPos;
+    vec3 TangentFragPos;
+} vs_out;
+
+uniform mat4 projection;
+uniform mat4 view;
+uniform mat4 model;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+
+void main()
+{
+    vec3 fragPos = vec3(model * vec4(aPos, 1.0));
+    mat3 normalMatrix = transpose(inverse(mat3(model)));
+    vec3 T = normalize(normalMatrix * aTangent);
+    vec3 B = normalize(normalMatrix * aBitangent);
+    vec3 N = normalize(normalMatrix * aNormal);
+    mat3 TBN = transpose(mat3(T, B, N));
+    vs_out.TexCoords = aTexCoords;
+    vs_out.TangentLightPos = TBN * lightPos;
+    vs_out.TangentViewPos  = TBN * viewPos;
+    vs_out.TangentFragPos  = TBN * fragPos;
+    gl_Position = projection * view * model * vec4(aPos, 1.0);
+}
