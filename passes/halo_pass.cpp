@@ -65,6 +65,8 @@ class HaloPass final : public Pass {
             std::map<uint32_t, uint32_t> cloned;
             uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
             if (newValue == store.operand(1)) continue;  // not derived from the position
+            if (positionValues.count(store.operand(1)))
+              exactCopies_.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
             block.instructions[i].operands[1] = newValue;
             block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
             i += code.size();
@@ -75,10 +77,20 @@ class HaloPass final : public Pass {
       }
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
     report["shifted_outputs"] = fixed;
+    // The outputs computed from the clip position rather than copies of it: the HLSL source splice
+    // shifts copies in the text, these only the IR carries.
+    nlohmann::json derived = nlohmann::json::array();
+    for (const auto& output : fixed) {
+      if (std::find(exactCopies_.begin(), exactCopies_.end(), output.get<std::string>()) == exactCopies_.end())
+        derived.push_back(output);
+    }
+    if (!derived.empty()) report["derived_outputs"] = derived;
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 
  private:
+  std::vector<std::string> exactCopies_;
+
   // Copies made through structs and function calls (HLSL output structs: `o.clip = o.pos;` inside
   // the user's entry, members copied out by glslang's wrapper) are invisible to the local data flow
   // above. Inlining and folding a throw-away copy shows them: an output whose stored value is the
@@ -120,6 +132,7 @@ class HaloPass final : public Pass {
           }
       m.invalidateDefinitions();
       fixed.push_back(name);
+      exactCopies_.push_back(name);
     }
   }
 

@@ -5,6 +5,7 @@
 #include "transpiler/frontend/language_detect.h"
 #include "transpiler/backend/emit_prep.h"
 #include "transpiler/backend/splice_route.h"
+#include "transpiler/hlsl_file_splice.h"
 #include "passes/ir/validate.h"
 #include "passes/pass_manager.h"
 #include "passes/ir/module.h"
@@ -239,20 +240,11 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     result.binaryOutput = true;
   } else if (target == TargetLanguage::SpirvAsm) {
     result.output = spirv::disassemble(finalWords);
-  } else if (takesSourceSpliceRoute(info, target)) {
-    // SPIRV-Cross 2021 cannot emit HLSL geometry or domain shaders: splice the shift into the
-    // original text instead (the passes above still classified it and chose the register).
-    if (!spliceSourceStereo(input, ctx, result.output, result.report, diags)) return result;
-    if (options.verify) {
-      Diagnostics verifyDiags;
-      if (!verifyCompiles(result.output, SourceLanguage::Hlsl, info.stage, info.entryPoint, true, file + " (emitted)",
-                          verifyDiags)) {
-        diags.append(verifyDiags);
-        diags.error(file, "--verify: the emitted shader does not compile");
-        return result;
-      }
-      result.report["verified"] = true;
-    }
+  } else if (HlslSpliceOutcome spliced = spliceHlslFile(input, ctx, target, result.output, result.report, diags);
+             spliced != HlslSpliceOutcome::NotTaken) {
+    // HLSL back to HLSL: the shift spliced into the original text, every entry point kept (the
+    // passes above still classified it and chose the register); see hlsl_file_splice.h.
+    if (spliced == HlslSpliceOutcome::Failed) return result;
   } else {
     spirv::Module emitModule = module;
     SourceInfo emitInfo = info;
