@@ -574,6 +574,9 @@ std::string chooseHlslEntry(const std::string& text, Stage stage, const std::str
   for (const auto& [techniqueStage, name] : techniqueEntryPoints(text)) {
     if (techniqueStage == stage && defines(name)) return name;
   }
+  // Else the signature says it (`VS`, `mainVS`, `RenderSceneVS`...): the first function of the file
+  // whose outputs carry this stage's system value.
+  if (std::string bySignature = entryPointBySignature(text, stage); !bySignature.empty()) return bySignature;
   return "main";
 }
 

@@ -185,4 +185,48 @@ std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const std::strin
   return found;
 }
 
+std::string entryPointBySignature(const std::string& text, Stage stage) {
+  if (stage != Stage::Vertex && stage != Stage::Fragment) return {};
+  const std::string systemValue = stage == Stage::Vertex ? "sv_position" : "sv_target";
+  EffectText e(text);
+  auto isSystemValue = [&](size_t k) { return lowered(e.at(k)).starts_with(systemValue); };
+  // Structs with a member of that semantic.
+  std::set<std::string> carriers;
+  for (size_t k = 0; k + 2 < e.size(); ++k) {
+    if (e.at(k) != "struct" || !e.isIdent(k + 1) || !e.is(k + 2, '{')) continue;
+    size_t close = e.closing(k + 2);
+    for (size_t j = k + 3; j < close && close != std::string::npos; ++j) {
+      if (e.is(j, ':') && isSystemValue(j + 1)) carriers.insert(std::string(e.at(k + 1)));
+    }
+  }
+  // Function definitions at file scope: `Type Name ( params ) [: SEMANTIC] {`.
+  std::vector<std::string> candidates;
+  std::set<std::string> called;
+  int depth = 0;
+  for (size_t k = 0; k < e.size(); ++k) {
+    if (e.is(k, '{')) ++depth;
+    if (e.is(k, '}')) --depth;
+    if (depth > 0 && e.isIdent(k) && e.is(k + 1, '(')) called.insert(std::string(e.at(k)));
+    if (depth != 0 || !e.isIdent(k) || !e.isIdent(k + 1) || !e.is(k + 2, '(')) continue;
+    size_t close = e.closing(k + 2);
+    if (close == std::string::npos) continue;
+    bool returnsValue = e.is(close + 1, ':') && isSystemValue(close + 2) && e.is(close + 3, '{');
+    bool body = e.is(close + 1, '{') || returnsValue;
+    if (!body) continue;
+    bool marked = returnsValue || carriers.count(std::string(e.at(k)));
+    for (size_t j = k + 3; j < close && !marked; ++j) {
+      if (e.at(j) != "out" && e.at(j) != "inout") continue;
+      for (size_t t = j + 1; t < close && !e.is(t, ','); ++t) {
+        if ((e.is(t, ':') && isSystemValue(t + 1)) || carriers.count(std::string(e.at(t)))) marked = true;
+      }
+    }
+    if (marked) candidates.push_back(std::string(e.at(k + 1)));
+    k = close;
+  }
+  for (const auto& name : candidates) {
+    if (!called.count(name)) return name;
+  }
+  return {};
+}
+
 }  // namespace stereoshift
