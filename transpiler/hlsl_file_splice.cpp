@@ -122,8 +122,11 @@ HlslSpliceOutcome spliceHlslFile(const SourceFile& input, PassContext& context, 
   }
 
   Diagnostics spliceDiags;
-  if (!spliceSourceStereo(input, context, shifted, output, report, spliceDiags)) {
-    if (info.stage != Stage::Vertex) {
+  bool clash = false;
+  if (!spliceSourceStereo(input, context, shifted, output, report, spliceDiags, &clash)) {
+    // A clash (already injected, register taken) is refused on every route: re-emitting would
+    // shift a stereo shader twice.
+    if (info.stage != Stage::Vertex || clash) {
       diags.append(spliceDiags);
       return HlslSpliceOutcome::Failed;
     }

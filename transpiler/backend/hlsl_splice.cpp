@@ -166,6 +166,7 @@ HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOpt
   if (!err) err = splice(options, view, edits, &sites);
   if (err) {
     result.error = err->message;
+    result.clash = err->clash;
     if (err->offset != npos) view.locate(err->offset, result.line, result.column);
     return result;
   }

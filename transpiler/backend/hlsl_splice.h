@@ -74,6 +74,7 @@ struct HlslSpliceResult {
   std::string error;  // what went wrong (ok == false)
   int line = 0;       // 1-based location of the problem; 0: no location (whole file)
   int column = 0;     // 1-based byte column; 0: unknown
+  bool clash = false;  // the error is a clash with the source's names or registers (see SpliceError)
   int sites = 0;      // shifted outputs: Append calls (geometry), entry outputs (domain), returns (vertex)
 };
 

@@ -57,7 +57,7 @@ HlslSplicedEntry splicedVertexEntry(const std::string& name, const nlohmann::jso
 
 bool spliceSourceStereo(const SourceFile& input, const PassContext& context,
                         const std::vector<HlslSplicedEntry>& vertexEntries, std::string& output,
-                        nlohmann::json& report, Diagnostics& diags) {
+                        nlohmann::json& report, Diagnostics& diags, bool* clash) {
   const std::string& file = input.path;
   const spirv::Module& module = context.module;
   const char* route = context.source.stage == Stage::Vertex ? "HLSL vertex shaders" : "HLSL geometry and domain shaders";
@@ -84,6 +84,7 @@ bool spliceSourceStereo(const SourceFile& input, const PassContext& context,
   HlslSpliceResult spliced = spliceHlslStereo(input.contents, splice);
   if (!spliced.ok) {
     diags.error(file, spliced.line, spliced.column, "cannot splice the stereo shift: " + spliced.error);
+    if (clash) *clash = spliced.clash;
     return false;
   }
   output = std::move(spliced.text);

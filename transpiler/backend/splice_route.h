@@ -36,9 +36,10 @@ HlslSplicedEntry splicedVertexEntry(const std::string& name, const nlohmann::jso
 // the file to shift (the context's own among them); empty: the context's entry point alone. On
 // success the stereo HLSL is in `output` and the route and the number of shifted sites are in
 // `report`; false with the reason in `diags` when the splice fails or the conversion asks for
-// something the text route cannot express.
+// something the text route cannot express; `clash` (optional) then says whether it failed on a
+// clash with the source's names or registers rather than on text it does not read.
 bool spliceSourceStereo(const SourceFile& input, const PassContext& context,
                         const std::vector<HlslSplicedEntry>& vertexEntries, std::string& output,
-                        nlohmann::json& report, Diagnostics& diags);
+                        nlohmann::json& report, Diagnostics& diags, bool* clash = nullptr);
 
 }  // namespace stereoshift
