@@ -23,7 +23,8 @@ namespace {
 using namespace hlsl_splice;
 
 std::optional<SpliceError> checkOptions(const HlslSpliceOptions& opt) {
-  if (!isValidIdentifier(opt.entryPoint)) {
+  bool entriesListed = opt.vertex && !opt.vertexEntries.empty();  // each checked where it is looked up
+  if (!entriesListed && !isValidIdentifier(opt.entryPoint)) {
     return SpliceError{npos, "invalid entry point name '" + opt.entryPoint + "'"};
   }
   std::vector<std::string> names = {opt.cbufferName, opt.eyeSignName, opt.separationName, opt.convergenceName};
