@@ -87,6 +87,8 @@ class HaloPass final : public Pass {
             uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
             if (newValue == store.operand(1)) continue;  // not derived from the position
             monoStoredTo[target] = store.operand(1);
+            if (positionValues.count(store.operand(1)))
+              exactCopies_.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
             block.instructions[i].operands[1] = newValue;
             block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
             i += code.size();
@@ -107,6 +109,14 @@ class HaloPass final : public Pass {
     isPosition_ = nullptr;  // it refers to this run's numbering
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
     report["shifted_outputs"] = fixed;
+    // The outputs computed from the clip position rather than copies of it: the HLSL source splice
+    // shifts copies in the text, these only the IR carries.
+    nlohmann::json derived = nlohmann::json::array();
+    for (const auto& output : fixed) {
+      if (std::find(exactCopies_.begin(), exactCopies_.end(), output.get<std::string>()) == exactCopies_.end())
+        derived.push_back(output);
+    }
+    if (!derived.empty()) report["derived_outputs"] = derived;
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 
@@ -138,6 +148,7 @@ class HaloPass final : public Pass {
         }
       }
   }
+  std::vector<std::string> exactCopies_;
 
   // Copies made through structs and function calls (HLSL output structs: `o.clip = o.pos;` inside
   // the user's entry, members copied out by glslang's wrapper) are invisible to the local data flow
@@ -180,6 +191,7 @@ class HaloPass final : public Pass {
           }
       m.invalidateDefinitions();
       fixed.push_back(name);
+      exactCopies_.push_back(name);
     }
   }
 

@@ -7,6 +7,7 @@
 #include "transpiler/backend/splice_route.h"
 #include "transpiler/backend/glsl_splice.h"
 #include "transpiler/frontend/legacy_glsl.h"
+#include "transpiler/hlsl_file_splice.h"
 #include "passes/ir/validate.h"
 #include "passes/pass_manager.h"
 #include "passes/ir/module.h"
@@ -265,20 +266,11 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     result.binaryOutput = true;
   } else if (target == TargetLanguage::SpirvAsm) {
     result.output = spirv::disassemble(finalWords);
-  } else if (takesSourceSpliceRoute(info, target)) {
-    // SPIRV-Cross 2021 cannot emit HLSL geometry or domain shaders: splice the shift into the
-    // original text instead (the passes above still classified it and chose the register).
-    if (!spliceSourceStereo(input, ctx, result.output, result.report, diags)) return result;
-    if (options.verify) {
-      Diagnostics verifyDiags;
-      if (!verifyCompiles(result.output, SourceLanguage::Hlsl, info.stage, info.entryPoint, true, file + " (emitted)",
-                          verifyDiags, &options)) {
-        diags.append(verifyDiags);
-        diags.error(file, "--verify: the emitted shader does not compile");
-        return result;
-      }
-      result.report["verified"] = true;
-    }
+  } else if (HlslSpliceOutcome spliced = spliceHlslFile(input, ctx, target, result.output, result.report, diags);
+             spliced != HlslSpliceOutcome::NotTaken) {
+    // HLSL back to HLSL: the shift spliced into the original text, every entry point kept (the
+    // passes above still classified it and chose the register); see hlsl_file_splice.h.
+    if (spliced == HlslSpliceOutcome::Failed) return result;
   } else if (legacyRoute) {
     // ESSL 100 / GLSL 110-150 vertex shaders: the shift spliced into the original text (glsl_splice.h),
     // always re-compiled at the original version; an output that does not compile is never written.
@@ -300,14 +292,19 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
     EmitResult emitted = emitSource(emitModule.encode(), info, options, hints, file, diags);
     if (!emitted.ok) return result;
     result.output = std::move(emitted.text);
-    if (options.verify && target != TargetLanguage::Msl) {
+    // Every GLSL/ESSL/HLSL text SPIRV-Cross writes is compiled again before it is written (not only
+    // under --verify): a target that cannot express the shader (a Vulkan construct at an OpenGL version,
+    // a built-in a dialect lacks) is refused with glslang's reason instead of becoming a file that does
+    // not compile. MSL has no compiler here (see README "Not supported").
+    if (target != TargetLanguage::Msl) {
       SourceLanguage lang = target == TargetLanguage::Hlsl ? SourceLanguage::Hlsl : SourceLanguage::Glsl;
       Diagnostics verifyDiags;
       std::string entry = target == TargetLanguage::Hlsl ? (info.entryPoint.empty() ? "main" : info.entryPoint) : "main";
       if (!verifyCompiles(result.output, lang, info.stage, entry, emitted.vulkanSemantics,
                           file + " (emitted)", verifyDiags, &options)) {
         diags.append(verifyDiags);
-        diags.error(file, "--verify: the emitted shader does not compile");
+        diags.error(file, "the emitted " + std::string(targetName(target)) +
+                              " does not compile; nothing was written (the target cannot express this shader as it is)");
         return result;
       }
       result.report["verified"] = true;

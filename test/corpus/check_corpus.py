@@ -51,12 +51,53 @@ def hlsl_entry(text):
     return "main"
 
 
+def blank_techniques(text):
+    """Effect files: technique/state blocks blanked (line breaks kept), as glslang cannot parse them."""
+    out = list(text)
+    for m in re.finditer(r"^[ \t]*(technique(?:10|11)?|BlendState|DepthStencilState|RasterizerState)\b[^{;]*\{",
+                         text, re.I | re.M):
+        depth, i = 0, m.end() - 1
+        while i < len(text):
+            depth += {"{": 1, "}": -1}.get(text[i], 0)
+            if depth == 0:
+                break
+            i += 1
+        for k in range(m.start(), min(i + 1, len(text))):
+            if out[k] not in "\r\n":
+                out[k] = " "
+    return "".join(out)
+
+
+def recompile_entry_points(glslang, path, entry_points):
+    """A file with several entry points: every one of them compiled from the output, each with its stage."""
+    text = blank_techniques(open(path, encoding="utf-8", errors="replace").read())
+    logs, ok = [], True
+    with tempfile.NamedTemporaryFile("w", suffix=".hlsl", delete=False) as f:
+        f.write(text)
+    try:
+        for name, facts in sorted(entry_points.items()):
+            if facts.get("stage") not in STAGE_OF:
+                continue
+            cmd = [glslang, "-D", "-V", "-S", facts["stage"], "-e", name, "-o", os.devnull, f.name]
+            run = subprocess.run(cmd, capture_output=True, text=True)
+            ok &= run.returncode == 0
+            logs.append(run.stdout + run.stderr)
+    finally:
+        os.remove(f.name)
+    return ok, "".join(logs)
+
+
 def recompile(glslang, path, rel, language, reported_stage=None):
     """Compiles an output shader the way its dialect is consumed (`language`: the report's, so HLSL
     in a stage-named file such as hlsl-stage-named/textured.vert is compiled as HLSL). The stage is
     the report's where it gives one (file-conventions/ names stages as .vs, basicVS.hlsl, #pragma)."""
     parts = os.path.basename(rel).split(".")
     text = open(path, encoding="utf-8", errors="replace").read()
+    if rel.endswith(".fx"):
+        text = blank_techniques(text)
+        cmd = [glslang, "-D", "-V", "-S", STAGE_OF[parts[-2]], "-e", hlsl_entry(text), "-o", os.devnull, "--stdin"]
+        run = subprocess.run(cmd, input=text, capture_output=True, text=True)
+        return run.returncode == 0, run.stdout + run.stderr
     if rel.endswith(".hlsl") or language == "hlsl":
         stage = STAGE_OF.get(reported_stage) or STAGE_OF[parts[-2] if rel.endswith(".hlsl") else parts[-1]]
         cmd = [glslang, "-D", "-V", "-S", stage, "-e", hlsl_entry(text), "-o", os.devnull, path]
@@ -114,7 +155,10 @@ def main():
                 inc = os.path.join(os.path.dirname(src), "include")
                 if os.path.isdir(inc) and not os.path.isdir(os.path.join(os.path.dirname(produced), "include")):
                     shutil.copytree(inc, os.path.join(os.path.dirname(produced), "include"))
-                ok, log = recompile(args.glslang, produced, rel, entry.get("language"), entry.get("stage"))
+                if entry.get("entry_points"):
+                    ok, log = recompile_entry_points(args.glslang, produced, entry["entry_points"])
+                else:
+                    ok, log = recompile(args.glslang, produced, rel, entry.get("language"), entry.get("stage"))
                 if not ok:
                     failures.append("%s: output does not compile:\n%s" % (rel, log))
                 ref = os.path.join(args.reference, rel)

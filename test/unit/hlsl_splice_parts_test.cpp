@@ -14,6 +14,12 @@ namespace {
 
 using namespace stereoshift::hlsl_splice;
 
+int countOf(const std::string& haystack, const std::string& needle) {
+  int n = 0;
+  for (size_t p = haystack.find(needle); p != std::string::npos; p = haystack.find(needle, p + needle.size())) ++n;
+  return n;
+}
+
 std::vector<std::string> tokenTexts(const TokenView& view) {
   std::vector<std::string> out;
   for (size_t k = 0; k < view.tokens.size(); ++k) out.emplace_back(view.text(k));
@@ -195,6 +201,27 @@ TEST(HlslSpliceShiftText, RendersEveryForm) {
             std::string::npos)
       << compensated;
   EXPECT_EQ(compensated.find("\n        float "), std::string::npos) << compensated;
+}
+
+// Halo copies are shifted in the same helper, each from its own x and w; in the select form each
+// copy's statements get their own scope, so the compensated form's fixed temporaries never clash.
+TEST(HlslSpliceShiftText, ShiftsHaloCopiesInTheSameHelper) {
+  ShiftHelper helper{"VSOut", "stereoshift_shift_VSOut", ".pos", {".copy"}};
+  stereoshift::ShiftSpec spec;
+  std::string plain = shiftFunctionText(spec, helper, "\n");
+  EXPECT_NE(plain.find("precise float stereoshift_x1 = stereoshift_v.copy.x + (eyeSign * separation) * "
+                       "(stereoshift_v.copy.w - convergence);"),
+            std::string::npos)
+      << plain;
+  EXPECT_LT(plain.find("stereoshift_v.pos.x = stereoshift_x;"), plain.find("stereoshift_v.copy.x = stereoshift_x1;"));
+
+  spec.form = stereoshift::ShiftForm::Select;
+  spec.compensated = true;
+  std::string select = shiftFunctionText(spec, helper, "\n");
+  EXPECT_EQ(countOf(select, "precise float stereoshift_dh = "), 2) << select;
+  EXPECT_NE(select.find("    {\n        precise float stereoshift_dh = stereoshift_v.copy.w - convergence;"),
+            std::string::npos)
+      << select;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <unistd.h>
@@ -556,5 +557,119 @@ TEST(HlslSplice, CorpusPnTrianglesDomain) {
   EXPECT_COMPILES(r.text, "tese", "DSMain");
 }
 #endif
+
+// ---- vertex shaders ----
+
+HlslSpliceOptions vertexOptions(std::vector<stereoshift::HlslSplicedEntry> entries) {
+  HlslSpliceOptions o;
+  o.vertex = true;
+  o.vertexEntries = std::move(entries);
+  o.cbufferRegister = 1;
+  return o;
+}
+
+const char* kTwoVertexShaders = R"(cbuffer Camera : register(b0) { float4x4 ViewProj; };
+struct VSOut
+{
+    float2 uv : TEXCOORD0;
+    float4 pos : SV_Position;
+    float4 copy : TEXCOORD1;
+};
+VSOut MeshVS(float3 p : POSITION, float2 uv : TEXCOORD0)
+{
+    VSOut o;
+    o.uv = uv;
+    o.pos = mul(ViewProj, float4(p, 1.0));
+    o.copy = o.pos;
+    if (uv.x < 0.0)
+        return o;
+    return o;
+}
+float4 SkyVS(float3 p : POSITION) : SV_Position { return mul(ViewProj, float4(p, 1.0)).xyww; }
+float4 MeshPS(VSOut i) : SV_Target { return i.copy; }
+)";
+
+// Every return of every entry point is shifted; the struct, its member order and the pixel shader
+// stay byte for byte; each entry point of the result compiles.
+TEST(HlslSplice, VertexShiftsEveryReturnOfEachEntryPoint) {
+  HlslSpliceResult r = spliceHlslStereo(kTwoVertexShaders, vertexOptions({{"MeshVS", {".copy"}}, {"SkyVS", {}}}));
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.sites, 3);
+  EXPECT_EQ(countOf(r.text, "return stereoshift_shift_VSOut(o);"), 2) << r.text;
+  EXPECT_NE(r.text.find("{ return stereoshift_shift_position(mul(ViewProj, float4(p, 1.0)).xyww); }"), std::string::npos);
+  EXPECT_NE(r.text.find("struct VSOut\n{\n    float2 uv : TEXCOORD0;\n    float4 pos : SV_Position;\n    float4 copy : "
+                        "TEXCOORD1;\n};\n"),
+            std::string::npos);
+  EXPECT_NE(r.text.find("stereoshift_v.copy.x = stereoshift_x1;"), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("float4 MeshPS(VSOut i) : SV_Target { return i.copy; }"), std::string::npos);
+  EXPECT_EQ(countOf(r.text, "cbuffer StereoParams : register(b1)"), 1);
+  for (const char* entry : {"MeshVS", "SkyVS"}) {
+    CompileResult c = compileHlsl(r.text, "vert", entry);
+    if (c.ran) EXPECT_TRUE(c.ok) << entry << "\n" << c.log << r.text;
+  }
+  CompileResult ps = compileHlsl(r.text, "frag", "MeshPS");
+  if (ps.ran) EXPECT_TRUE(ps.ok) << ps.log;
+}
+
+// `out` parameters are shifted before every return and where the body falls off its end.
+TEST(HlslSplice, VertexShiftsOutParametersBeforeEachReturnAndAtTheEnd) {
+  const char* src = R"(cbuffer Camera : register(b0) { float4x4 ViewProj; };
+void VSMain(float3 p : POSITION, out float4 oPos : SV_POSITION, out float2 oUV : TEXCOORD0)
+{
+    oUV = p.xy;
+    oPos = mul(ViewProj, float4(p, 1.0));
+    if (p.z > 100.0)
+        return;
+}
+)";
+  HlslSpliceResult r = spliceHlslStereo(src, vertexOptions({{"VSMain", {}}}));
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.sites, 2);
+  EXPECT_NE(r.text.find("        { oPos = stereoshift_shift_position(oPos); return; }\n"), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("    oPos = stereoshift_shift_position(oPos);\n}\n"), std::string::npos) << r.text;
+  CompileResult c = compileHlsl(r.text, "vert", "VSMain");
+  if (c.ran) EXPECT_TRUE(c.ok) << c.log << r.text;
+}
+
+// A halo copy the text cannot place, and a name the source already declares: errors with their
+// place, the second one marked as a clash (no route resolves it).
+TEST(HlslSplice, VertexErrorsSayWhereAndWhetherTheyClash) {
+  HlslSpliceResult notMember = spliceHlslStereo(kTwoVertexShaders, vertexOptions({{"MeshVS", {".missing"}}}));
+  ASSERT_FALSE(notMember.ok);
+  EXPECT_FALSE(notMember.clash);
+  EXPECT_NE(notMember.error.find("'missing'"), std::string::npos) << notMember.error;
+  EXPECT_EQ(notMember.line, 8);
+
+  std::string clashing = std::string(kTwoVertexShaders) + "float stereoshift_shift_VSOut;\n";
+  HlslSpliceResult clash = spliceHlslStereo(clashing, vertexOptions({{"MeshVS", {}}}));
+  ASSERT_FALSE(clash.ok);
+  EXPECT_TRUE(clash.clash) << clash.error;
+
+  HlslSpliceResult noPosition = spliceHlslStereo(kTwoVertexShaders, vertexOptions({{"MeshPS", {}}}));
+  ASSERT_FALSE(noPosition.ok);
+  EXPECT_NE(noPosition.error.find("has no SV_Position output"), std::string::npos) << noPosition.error;
+}
+
+// Entry points come from the techniques (with their profile's stage) and from signatures; a
+// function another one calls is a helper, not an entry point.
+TEST(HlslSplice, FindsEntryPointsByTechniqueAndSignature) {
+  const char* src = R"(struct VSOut { float4 pos : SV_Position; };
+VSOut transform(float3 p) { VSOut o; o.pos = float4(p, 1.0); return o; }
+VSOut SceneVS(float3 p : POSITION) { return transform(p); }
+float4 ScenePS(VSOut i) : SV_Target { return 1.0; }
+[numthreads(8, 8, 1)] void Blur(uint3 id : SV_DispatchThreadID) {}
+float4 Plain(float4 c : COLOR) : COLOR { return c; }
+technique11 T { pass P { SetPixelShader(CompileShader(ps_5_0, Plain())); } }
+)";
+  auto found = stereoshift::findHlslEntryPoints(src);
+  ASSERT_EQ(found.size(), 4u);
+  EXPECT_EQ(found[0].name, "SceneVS");
+  EXPECT_EQ(found[0].stage, stereoshift::Stage::Vertex);
+  EXPECT_EQ(found[1].name, "ScenePS");
+  EXPECT_EQ(found[1].stage, stereoshift::Stage::Fragment);
+  EXPECT_EQ(found[2].stage, stereoshift::Stage::Compute);
+  EXPECT_EQ(found[3].name, "Plain");
+  EXPECT_EQ(found[3].foundBy, "technique");
+}
 
 }  // namespace

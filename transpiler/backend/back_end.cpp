@@ -124,6 +124,9 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         break;
       }
       case TargetLanguage::Hlsl: {
+        // HLSL vertex, geometry and domain shaders back to HLSL take the source splice
+        // (splice_route.h); these repairs of SPIRV-Cross's text serve the cross-language route
+        // (GLSL/SPIR-V in) and the HLSL re-emits left: changed pixel shaders, vertex fallbacks.
         spirv_cross::CompilerHLSL compiler(words);
         auto h = compiler.get_hlsl_options();
         h.shader_model = static_cast<uint32_t>(options.targetVersion.value_or(50));

@@ -1,4 +1,4 @@
-// This turns an HLSL geometry or domain shader into its stereo version by splicing text into it
+// This turns an HLSL vertex, geometry or domain shader into its stereo version by splicing text into it
 // (see hlsl_splice.h): checks the options, scans and parses the file, and hands it to the
 // rewriter of its stage; the pieces live in hlsl_splice/.
 #include "transpiler/backend/hlsl_splice.h"
@@ -8,7 +8,9 @@
 #include "transpiler/backend/hlsl_splice/scanner.h"
 #include "transpiler/backend/hlsl_splice/top_level.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -21,7 +23,8 @@ namespace {
 using namespace hlsl_splice;
 
 std::optional<SpliceError> checkOptions(const HlslSpliceOptions& opt) {
-  if (!isValidIdentifier(opt.entryPoint)) {
+  bool entriesListed = opt.vertex && !opt.vertexEntries.empty();  // each checked where it is looked up
+  if (!entriesListed && !isValidIdentifier(opt.entryPoint)) {
     return SpliceError{npos, "invalid entry point name '" + opt.entryPoint + "'"};
   }
   std::vector<std::string> names = {opt.cbufferName, opt.eyeSignName, opt.separationName, opt.convergenceName};
@@ -41,18 +44,118 @@ std::optional<SpliceError> splice(const HlslSpliceOptions& options, const TokenV
                                   int* sites) {
   TopLevel top;
   if (auto err = parseTopLevel(view, top)) return err;
+  SpliceUnit unit{options, view, top, edits};
+  if (options.vertex) {
+    std::vector<HlslSplicedEntry> wanted = options.vertexEntries;
+    if (wanted.empty()) wanted.push_back({options.entryPoint, {}});
+    std::vector<VertexEntry> vertexEntries;
+    for (const auto& w : wanted) {
+      if (!isValidIdentifier(w.name)) return SpliceError{npos, "invalid entry point name '" + w.name + "'"};
+      VertexEntry entry{w, {}};
+      for (const auto& f : top.functions) {
+        if (view.text(f.nameTok) == w.name) entry.definitions.push_back(&f);
+      }
+      if (entry.definitions.empty()) return SpliceError{npos, "entry point '" + w.name + "' not found"};
+      vertexEntries.push_back(std::move(entry));
+    }
+    auto err = rewriteVertex(unit, vertexEntries);
+    *sites = unit.sites;
+    return err;
+  }
   std::vector<const Function*> entries;
   for (const auto& f : top.functions) {
     if (view.text(f.nameTok) == options.entryPoint) entries.push_back(&f);
   }
   if (entries.empty()) return SpliceError{npos, "entry point '" + options.entryPoint + "' not found"};
-  SpliceUnit unit{options, view, top, edits};
   auto err = options.geometry ? rewriteGeometry(unit, entries) : rewriteDomain(unit, entries);
   *sites = unit.sites;
   return err;
 }
 
+// The stage a function's signature says, or Unknown.
+Stage stageOfSignature(const TokenView& view, const TopLevel& top, const Function& f) {
+  bool domain = false, controlPoints = false, threads = false;
+  for (const auto& a : f.attrs) {
+    for (size_t t = a.open + 1; t < a.close; ++t) {
+      if (view.isWord(t, "domain")) domain = true;
+      if (view.isWord(t, "outputcontrolpoints") || view.isWord(t, "patchconstantfunc")) controlPoints = true;
+      if (view.isWord(t, "numthreads")) threads = true;
+    }
+  }
+  if (threads) return Stage::Compute;
+  if (domain) return controlPoints ? Stage::TessControl : Stage::TessEvaluation;
+  for (const auto& p : f.params) {
+    if (!p.streamElement.empty()) return Stage::Geometry;
+  }
+  std::string returnType;
+  for (size_t t = f.typeBegin; t < f.nameTok; ++t) {
+    if (view.isPunct(t, '<')) break;
+    if (view.isIdent(t) && !modifierWords().count(std::string(view.text(t)))) returnType = std::string(view.text(t));
+  }
+  std::string semantic = f.semTok != npos ? lower(view.text(f.semTok)) : "";
+  if (semantic == "sv_position" || top.positionPath(returnType)) return Stage::Vertex;
+  for (const auto& p : f.params) {
+    if (p.isOut && (lower(p.semantic) == "sv_position" || top.positionPath(p.typeName))) return Stage::Vertex;
+  }
+  if (semantic.starts_with("sv_target") || semantic.starts_with("sv_depth")) return Stage::Fragment;
+  for (const auto& p : f.params) {
+    if (p.isOut && lower(p.semantic).starts_with("sv_target")) return Stage::Fragment;
+  }
+  return Stage::Unknown;
+}
+
+Stage stageOfProfile(std::string_view profile) {
+  std::string p = lower(profile);
+  if (p.starts_with("vs_")) return Stage::Vertex;
+  if (p.starts_with("ps_")) return Stage::Fragment;
+  if (p.starts_with("gs_")) return Stage::Geometry;
+  if (p.starts_with("hs_")) return Stage::TessControl;
+  if (p.starts_with("ds_")) return Stage::TessEvaluation;
+  if (p.starts_with("cs_")) return Stage::Compute;
+  return Stage::Unknown;
+}
+
 }  // namespace
+
+std::vector<HlslEntryPoint> findHlslEntryPoints(const std::string& source) {
+  TokenView view(source);
+  TopLevel top;
+  if (view.scan() || parseTopLevel(view, top)) return {};
+  // Techniques first: what they compile, they name with its profile.
+  std::map<std::string, Stage> byTechnique;
+  for (size_t k = 0; k + 5 < view.tokens.size(); ++k) {
+    if (!view.isWord(k, "CompileShader") || !view.isPunct(k + 1, '(') || !view.isIdent(k + 2) ||
+        !view.isPunct(k + 3, ',') || !view.isIdent(k + 4) || !view.isPunct(k + 5, '('))
+      continue;
+    byTechnique.emplace(std::string(view.text(k + 4)), stageOfProfile(view.text(k + 2)));
+  }
+  // Effects 9: `VertexShader = compile vs_3_0 Name();`
+  for (size_t k = 0; k + 3 < view.tokens.size(); ++k) {
+    if (lower(view.text(k)) != "compile" || !view.isIdent(k + 1) || !view.isIdent(k + 2) || !view.isPunct(k + 3, '('))
+      continue;
+    byTechnique.emplace(std::string(view.text(k + 2)), stageOfProfile(view.text(k + 1)));
+  }
+  // A function another function calls is a helper, not an entry point (`VSOut transform(...)`
+  // called by the real entry point has an entry's signature too).
+  std::set<std::string> called;
+  for (const auto& f : top.functions) {
+    for (size_t t = f.bodyOpen + 1; t + 1 < f.bodyClose; ++t) {
+      if (view.isIdent(t) && view.isPunct(t + 1, '(')) called.insert(std::string(view.text(t)));
+    }
+  }
+  std::vector<HlslEntryPoint> found;
+  for (const auto& f : top.functions) {
+    std::string name(view.text(f.nameTok));
+    if (std::any_of(found.begin(), found.end(), [&](const HlslEntryPoint& e) { return e.name == name; })) continue;
+    if (called.count(name) && !byTechnique.count(name)) continue;
+    if (auto it = byTechnique.find(name); it != byTechnique.end() && it->second != Stage::Unknown) {
+      found.push_back({name, it->second, "technique"});
+    } else if (Stage stage = stageOfSignature(view, top, f); stage != Stage::Unknown) {
+      found.push_back({name, stage, "signature"});
+    }
+  }
+  return found;
+}
 
 HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options) {
   HlslSpliceResult result;
@@ -64,6 +167,7 @@ HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOpt
   if (!err) err = splice(options, view, edits, &sites);
   if (err) {
     result.error = err->message;
+    result.clash = err->clash;
     if (err->offset != npos) view.locate(err->offset, result.line, result.column);
     return result;
   }

@@ -1,8 +1,17 @@
-// HLSL source splice: stereo injection for HLSL geometry and domain shaders without SPIR-V.
+// HLSL source splice: stereo injection into HLSL text, for every HLSL shader that comes back as
+// HLSL.
 //
-// The Debian SPIRV-Cross cannot re-emit HLSL geometry/hull/domain shaders, so for those stages the
-// original HLSL text is kept and the clip-space shift is spliced around it:
+// The Debian SPIRV-Cross cannot re-emit HLSL geometry/hull/domain shaders, and what it re-emits of a
+// vertex shader is no drop-in (its output struct `SPIRV_Cross_Output` moves SV_Position last, and
+// D3D links stage outputs by register in declaration order; other entry points of the file are
+// dropped). So the original HLSL text is kept and the clip-space shift is spliced into it:
 //
+//   vertex:   a cbuffer and a helper per shifted type (`T stereoshift_shift_T(T v)`) are inserted
+//             before the first shifted entry point, and every `return e;` of each entry point
+//             becomes `return stereoshift_shift_T(e);` (a float4 `: SV_Position` return value or a
+//             struct with an SV_Position member); `out` parameters carrying SV_Position are shifted
+//             before each return and at the end of the body. Structs, member order, semantics,
+//             packoffsets, registers and attributes stay as written.
 //   geometry: a cbuffer and a helper `T stereoshift_shift_T(T v)` (T = the stream element struct)
 //             are inserted before the first function that appends to a stream, and every
 //             `stream.Append(expr)` becomes `stream.Append(stereoshift_shift_T(expr))`.
@@ -26,12 +35,22 @@
 // not a full HLSL parser.
 #pragma once
 
+#include "passes/shader.h"
 #include "passes/shift_emitter.h"
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace stereoshift {
+
+// One vertex entry point to shift, with the outputs the passes found to be exact copies of its clip
+// position (halo copies), named as the source names them: a member path of the returned struct
+// (".clipCopy") or an `out` parameter ("clipCopy").
+struct HlslSplicedEntry {
+  std::string name;
+  std::vector<std::string> copies;
+};
 
 // Where the shift goes, and the shift itself (the ShiftSpec it extends: cutoff, epsilon, form,
 // fused, compensated, precise and the eye parameter names).
@@ -39,6 +58,10 @@ struct HlslSpliceOptions : ShiftSpec {
   using Cutoff = CutoffMode;  // Epsilon: abs(p.w - 1.0f) > epsilon; Exact: p.w != 1.0f; None: always
   std::string entryPoint;  // e.g. "GSMain", "DSMain", "main"
   bool geometry = true;    // true: geometry shader; false: domain shader (tessellation evaluation)
+  // Vertex shaders: every entry point of `vertexEntries` (or `entryPoint` alone when it is empty)
+  // keeps its text and gets the shift at each of its returns; `geometry` is then ignored.
+  bool vertex = false;
+  std::vector<HlslSplicedEntry> vertexEntries;
   std::string cbufferName = "StereoParams";
   uint32_t cbufferRegister = 0;  // register(b<N>); an error if the source already uses b<N> in space0
   // The epsilon is printed with 9 significant digits (round-trips a float); `precise` computes the
@@ -51,9 +74,25 @@ struct HlslSpliceResult {
   std::string error;  // what went wrong (ok == false)
   int line = 0;       // 1-based location of the problem; 0: no location (whole file)
   int column = 0;     // 1-based byte column; 0: unknown
-  int sites = 0;      // number of shifted outputs: Append calls (geometry) or entry outputs (domain)
+  bool clash = false;  // the error is a clash with the source's names or registers (see SpliceError)
+  int sites = 0;      // shifted outputs: Append calls (geometry), entry outputs (domain), returns (vertex)
 };
 
 HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options);
+
+// An entry point of an HLSL file, as its text shows it: named by a technique's
+// `CompileShader(<profile>, Name(...))` (the profile gives the stage), or a function whose signature
+// says its stage: a stream parameter (geometry), `[domain]` with `[outputcontrolpoints]` (hull),
+// `[domain]` alone (domain), an output carrying SV_Position (vertex), SV_Target (pixel) or
+// `[numthreads]` (compute).
+struct HlslEntryPoint {
+  std::string name;
+  Stage stage = Stage::Unknown;
+  std::string foundBy;  // "technique" or "signature"
+};
+
+// Every entry point of `source` in the order of their definitions (each name once); empty when the
+// text does not scan.
+std::vector<HlslEntryPoint> findHlslEntryPoints(const std::string& source);
 
 }  // namespace stereoshift

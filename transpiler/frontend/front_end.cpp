@@ -1,5 +1,6 @@
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/glslang_log.h"
+#include "transpiler/frontend/hlsl_effects.h"
 #include "transpiler/frontend/source_limits.h"
 #include "transpiler/frontend/language_detect.h"
 #include "transpiler/frontend/legacy_glsl.h"
@@ -624,6 +625,13 @@ std::string chooseHlslEntry(const std::string& text, Stage stage, const std::str
     default: break;
   }
   if (conventional && defines(conventional)) return conventional;
+  // Effect files name their entry points in their techniques: the first one of this stage.
+  for (const auto& [techniqueStage, name] : techniqueEntryPoints(text)) {
+    if (techniqueStage == stage && defines(name)) return name;
+  }
+  // Else the signature says it (`VS`, `mainVS`, `RenderSceneVS`...): the first function of the file
+  // whose outputs carry this stage's system value.
+  if (std::string bySignature = entryPointBySignature(text, stage); !bySignature.empty()) return bySignature;
   return "main";
 }
 
@@ -690,7 +698,9 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
                                   (options.entryPoint.empty() ? "; name it with -e <function>" : ""));
       return result;
     }
-    Attempt a = compileGlslangOnce(input, input.contents, *stage, language, Client::Vulkan, entry, options);
+    // Effect files: glslang parses the HLSL once technique and state blocks are blanked out.
+    Attempt a = compileGlslangOnce(input, blankEffectBlocks(input.contents), *stage, language, Client::Vulkan, entry,
+                                   options);
     diags.append(a.diags);
     if (!a.ok) return result;
     result.ok = true;

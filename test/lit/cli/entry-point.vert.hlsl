@@ -1,5 +1,5 @@
-// -e picks the HLSL entry point among several; the output keeps that name as its entry point.
-// Without -e the stage's conventional name (VSMain) is used when there is no main.
+// -e picks the HLSL entry point among several and restricts the shift to it; the output keeps the
+// whole file, the other entry point as written. Without -e every vertex entry point is shifted.
 // RUN: %stereoshift --verify -e VSShadow %s -o - | %rmchecks | FileCheck %s --check-prefix=SHADOW
 // RUN: %stereoshift --verify --entry-point=VSShadow %s -o - | %rmchecks | FileCheck %s --check-prefix=SHADOW
 // RUN: %stereoshift --verify %s -o - | %rmchecks | FileCheck %s --check-prefix=DEFAULT
@@ -15,11 +15,14 @@ float4 VSShadow(float3 pos : POSITION) : SV_Position
 {
   return mul(LightViewProj, float4(pos, 1.0));
 }
-// SHADOW: mul(LightViewProj,
+// SHADOW: float4 VSMain(float3 pos : POSITION) : SV_Position
+// SHADOW-NEXT: {
+// SHADOW-NEXT: return mul(ViewProj, float4(pos, 1.0));
 // SHADOW: eyeSign * separation
-// SHADOW: SPIRV_Cross_Output VSShadow(SPIRV_Cross_Input stage_input)
-// SHADOW-NOT: VSMain
-// DEFAULT: mul(ViewProj,
-// DEFAULT: SPIRV_Cross_Output VSMain(SPIRV_Cross_Input stage_input)
+// SHADOW: float4 VSShadow(float3 pos : POSITION) : SV_Position
+// SHADOW-NEXT: {
+// SHADOW-NEXT: return stereoshift_shift_position(mul(LightViewProj, float4(pos, 1.0)));
+// DEFAULT: return stereoshift_shift_position(mul(ViewProj, float4(pos, 1.0)));
+// DEFAULT: return stereoshift_shift_position(mul(LightViewProj, float4(pos, 1.0)));
 // MISSING: error: entry point 'NoSuchEntry' not found
 // MISSING: {{^}}1 error generated.

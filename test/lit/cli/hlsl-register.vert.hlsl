@@ -10,8 +10,8 @@ float4 main(float3 pos : POSITION, float2 uv : TEXCOORD0) : SV_Position
   return mul(ViewProj, float4(pos + float3(0, h, 0), 1.0));
 }
 // CHECK: cbuffer Frame : register(b0)
-// CHECK: cbuffer StereoParams : register(b5)
-// CHECK: Texture2D<float4> HeightMap : register(t1);
+// CHECK: Texture2D HeightMap : register(t1);
 // CHECK: SamplerState LinearSampler : register(s1);
+// CHECK: cbuffer StereoParams : register(b5)
 // Textures and samplers (t1, s1) do not take constant-buffer registers.
 // DEFAULT: cbuffer StereoParams : register(b1)

@@ -35,12 +35,15 @@ VSOutput main(VSInput input)
   return output;
 }
 // CHECK: cbuffer ubo : register(b0)
+// CHECK: struct VSOutput
+// CHECK-NEXT: {
+// CHECK-NEXT: float4 Pos : SV_POSITION;
+// CHECK-NEXT: {{\[\[}}vk::location(0)]] float2 UV : TEXCOORD0;
 // CHECK: cbuffer StereoParams : register(b1)
-// CHECK: float2 _entryPointOutput_UV : TEXCOORD0;
-// CHECK: float4 gl_Position : SV_Position;
-// CHECK: if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) >
+// CHECK: if (eyeSign != 0.0f && abs(stereoshift_v.Pos.w - 1.0f) >
 // CHECK: eyeSign * separation
-// CHECK: SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+// CHECK: VSOutput main(VSInput input)
+// CHECK: return stereoshift_shift_VSOutput(output);
 // REPORT: "classification": "perspective",
 // REPORT: "language": "hlsl",
 // REPORT-NEXT: "language_reason": "no #version; HLSL constructs: {{\[\[}}vk::location]], float3, : POSITION0, float2, ... (HLSL {{[0-9]+}}, GLSL 0)",

@@ -10,15 +10,15 @@ cbuffer Frame : register(b0)
   float separation;
 };
 // CHECK: cbuffer Frame : register(b0)
-// CHECK: float separation : packoffset(c4);
+// CHECK: float separation;
 // CHECK: cbuffer StereoParams : register(b1)
 // CHECK-NEXT: {
-// CHECK-NEXT: float eyeSign : packoffset(c0);
-// CHECK-NEXT: float separation_stereo : packoffset(c0.y);
-// CHECK-NEXT: float convergence : packoffset(c0.z);
+// CHECK-NEXT: float eyeSign;
+// CHECK-NEXT: float separation_stereo;
+// CHECK-NEXT: float convergence;
 float4 main(float3 pos : POSITION) : SV_Position
 {
   return mul(WorldViewProj, float4(pos * separation, 1.0));
 }
-// CHECK: pos_1 * separation
-// CHECK: precise float {{_[0-9]+}} = eyeSign * separation_stereo;
+// CHECK: precise float stereoshift_x = stereoshift_v.x + (eyeSign * separation_stereo)
+// CHECK: float4(pos * separation, 1.0)

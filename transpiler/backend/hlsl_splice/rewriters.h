@@ -1,6 +1,7 @@
-// The HLSL splice's two rewriters, and what they share: the geometry rewriter wraps the argument of
-// every stream Append in the shift helper; the domain rewriter renames the entry point and appends
-// a wrapper that shifts its SV_Position outputs. Both declare their helpers through the edit
+// The HLSL splice's three rewriters, and what they share: the vertex rewriter shifts what each
+// entry point returns; the geometry rewriter wraps the argument of every stream Append in the
+// shift helper; the domain rewriter renames the entry point and appends a wrapper that shifts its
+// SV_Position outputs. Both declare their helpers through the edit
 // buffer, in front of the first function that needs them.
 #pragma once
 
@@ -24,6 +25,14 @@ struct SpliceUnit {
   EditBuffer& edits;
   int sites = 0;  // shifted outputs so far
 };
+
+// A vertex entry point to shift: what to shift, and its definitions (more than one under
+// preprocessor conditionals).
+struct VertexEntry {
+  HlslSplicedEntry wanted;
+  std::vector<const Function*> definitions;
+};
+std::optional<SpliceError> rewriteVertex(SpliceUnit& unit, const std::vector<VertexEntry>& entries);
 
 // `entries`: the definitions of the entry point (more than one under preprocessor conditionals).
 std::optional<SpliceError> rewriteGeometry(SpliceUnit& unit, const std::vector<const Function*>& entries);

@@ -36,6 +36,9 @@ struct Span {
 struct SpliceError {
   size_t offset;  // npos: no location
   std::string message;
+  // A clash with the source (a name or the register already taken) that no route resolves, as
+  // opposed to text the splice does not read.
+  bool clash = false;
 };
 
 bool isIdentStart(char c);

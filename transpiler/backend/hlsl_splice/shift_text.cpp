@@ -85,27 +85,36 @@ std::string cbufferText(const HlslSpliceOptions& opt, const std::string& nl) {
 
 std::string shiftFunctionText(const ShiftSpec& spec, const ShiftHelper& helper, const std::string& nl) {
   const std::string v = std::string(kPrefix) + "_v";
-  const std::string p = v + helper.access;
-  const std::string tmp = std::string(kPrefix) + "_x";
   const std::string ind = "    ";
   std::string body;
   auto lines = [&](const std::vector<std::string>& code, const std::string& in) {
     for (const auto& line : code) body += in + line + nl;
   };
-  if (spec.form == ShiftForm::Select) {
-    // Branch-free, like the SPIR-V route's OpSelect: the shift is computed, the cutoff picks.
-    lines(shiftedXStatements(spec, p, tmp), ind);
-    body += ind + p + ".x = (" + conditionText(spec, p) + ") ? " + tmp + " : " + p + ".x;" + nl;
-  } else {
-    body += ind + "if (" + conditionText(spec, p) + ")" + nl + ind + "{" + nl;
-    if (!spec.precise && !spec.compensated && !spec.fused) {
-      body += ind + ind + p + ".x = " + p + ".x + (" + spec.eyeSignName + " * " + spec.separationName + ") * (" + p +
-              ".w - " + spec.convergenceName + ");" + nl;
+  std::vector<std::string> accesses = {helper.access};
+  accesses.insert(accesses.end(), helper.copies.begin(), helper.copies.end());
+  for (size_t k = 0; k < accesses.size(); ++k) {
+    const std::string p = v + accesses[k];
+    // One temporary name per shifted member, so the helper stays one flat block.
+    const std::string tmp = std::string(kPrefix) + "_x" + (k ? std::to_string(k) : std::string());
+    if (spec.form == ShiftForm::Select) {
+      // Branch-free, like the SPIR-V route's OpSelect: the shift is computed, the cutoff picks. A
+      // copy's statements get a scope of their own (the compensated temporaries have fixed names).
+      std::string in = k ? ind + ind : ind;
+      if (k) body += ind + "{" + nl;
+      lines(shiftedXStatements(spec, p, tmp), in);
+      body += in + p + ".x = (" + conditionText(spec, p) + ") ? " + tmp + " : " + p + ".x;" + nl;
+      if (k) body += ind + "}" + nl;
     } else {
-      lines(shiftedXStatements(spec, p, tmp), ind + ind);
-      body += ind + ind + p + ".x = " + tmp + ";" + nl;
+      body += ind + "if (" + conditionText(spec, p) + ")" + nl + ind + "{" + nl;
+      if (!spec.precise && !spec.compensated && !spec.fused) {
+        body += ind + ind + p + ".x = " + p + ".x + (" + spec.eyeSignName + " * " + spec.separationName + ") * (" + p +
+                ".w - " + spec.convergenceName + ");" + nl;
+      } else {
+        lines(shiftedXStatements(spec, p, tmp), ind + ind);
+        body += ind + ind + p + ".x = " + tmp + ";" + nl;
+      }
+      body += ind + "}" + nl;
     }
-    body += ind + "}" + nl;
   }
   return helper.type + " " + helper.function + "(" + helper.type + " " + v + ")" + nl + "{" + nl + body + ind +
          "return " + v + ";" + nl + "}" + nl;

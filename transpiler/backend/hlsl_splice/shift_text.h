@@ -19,6 +19,9 @@ struct ShiftHelper {
   std::string type;      // HLSL type of the helper parameter/return
   std::string function;  // helper name
   std::string access;    // member path inside the value, e.g. ".Position" ("" for a float4)
+  // Further float4 members that hold an exact copy of the clip position (halo copies: the passes
+  // found them equal to it), shifted the same way from their own x and w.
+  std::vector<std::string> copies;
 };
 
 // The cbuffer of the eye parameters.

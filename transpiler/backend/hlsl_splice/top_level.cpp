@@ -405,11 +405,13 @@ std::optional<SpliceError> checkConflicts(const TokenView& view, const TopLevel&
   for (const auto& name : ours) {
     auto it = top.names.find(name);
     if (it != top.names.end()) {
-      return view.errAt(it->second, "'" + name + "' is already declared at file scope (already stereo-injected?)");
+      SpliceError err = view.errAt(it->second, "'" + name + "' is already declared at file scope (already stereo-injected?)");
+      err.clash = true;
+      return err;
     }
     for (const auto& d : view.directives) {
       if (d.name == "define" && d.macroName == name) {
-        return SpliceError{d.begin, "'" + name + "' is already defined as a macro"};
+        return SpliceError{d.begin, "'" + name + "' is already defined as a macro", true};
       }
     }
   }
@@ -421,8 +423,10 @@ std::optional<SpliceError> checkConflicts(const TokenView& view, const TopLevel&
     bool space0 = true;
     if (view.isPunct(k + 3, ',') && view.isIdent(k + 4)) space0 = lower(view.text(k + 4)) == "space0";
     if (space0) {
-      return view.errAt(k + 2, "register(b" + std::to_string(cbufferRegister) +
-                                   ") is already used; choose another cbuffer register");
+      SpliceError err = view.errAt(k + 2, "register(b" + std::to_string(cbufferRegister) +
+                                              ") is already used; choose another cbuffer register");
+      err.clash = true;
+      return err;
     }
   }
   return std::nullopt;

@@ -1,84 +1,51 @@
+// stereoshift-expect: shift
+// Stage-named HLSL skybox vertex shader: rotation-only view from the float4x4 cut to float3x3, cube-map direction out, position .xyww on the far plane.
+
 struct VSInput
 {
-    float3 Pos;
-};
-
-struct VSOutput
-{
-    float4 Pos;
-    float3 UVW;
+[[vk::location(0)]] float3 Pos : POSITION0;
 };
 
 struct UBO
 {
-    column_major float4x4 projection;
-    column_major float4x4 view;
+    float4x4 projection;
+    float4x4 view;
 };
 
-static const VSOutput _21 = { 0.0f.xxxx, 0.0f.xxx };
+[[vk::binding(0, 0)]]
+cbuffer ubo : register(b0) { UBO ubo; }
 
-cbuffer ubo : register(b0)
+struct VSOutput
 {
-    UBO ubo : packoffset(c0);
+    float4 Pos : SV_POSITION;
+[[vk::location(0)]] float3 UVW : TEXCOORD0;
 };
 
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 cbuffer StereoParams : register(b2)
 {
-    float eyeSign : packoffset(c0);
-    float separation : packoffset(c0.y);
-    float convergence : packoffset(c0.z);
+    float eyeSign;
+    float separation;
+    float convergence;
 };
 
-
-static float4 gl_Position;
-static float3 input_Pos;
-static float3 _entryPointOutput_UVW;
-
-struct SPIRV_Cross_Input
+VSOutput stereoshift_shift_VSOutput(VSOutput stereoshift_v)
 {
-    float3 input_Pos : POSITION0;
-};
-
-struct SPIRV_Cross_Output
-{
-    float3 _entryPointOutput_UVW : TEXCOORD0;
-    precise float4 gl_Position : SV_Position;
-};
-
-VSOutput _main(VSInput _input)
-{
-    VSOutput _output = _21;
-    _output.UVW = _input.Pos;
-    float3 rotated = mul(float3x3(ubo.view[0].xyz, ubo.view[1].xyz, ubo.view[2].xyz), _input.Pos);
-    float4 clip = mul(ubo.projection, float4(rotated, 1.0f));
-    _output.Pos = clip.xyww;
-    return _output;
-}
-
-void vert_main()
-{
-    VSInput _input;
-    _input.Pos = input_Pos;
-    VSInput param = _input;
-    VSOutput flattenTemp = _main(param);
-    gl_Position = flattenTemp.Pos;
-    _entryPointOutput_UVW = flattenTemp.UVW;
-    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
+    if (eyeSign != 0.0f && abs(stereoshift_v.Pos.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.Pos.w))
     {
-        precise float _111 = gl_Position.w - convergence;
-        precise float _112 = eyeSign * separation;
-        precise float _113 = _112 * _111;
-        precise float _114 = gl_Position.x + _113;
-        gl_Position.x = _114;
+        precise float stereoshift_x = stereoshift_v.Pos.x + (eyeSign * separation) * (stereoshift_v.Pos.w - convergence);
+        stereoshift_v.Pos.x = stereoshift_x;
     }
+    return stereoshift_v;
 }
+// ---- end stereoshift ----
 
-SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+VSOutput main(VSInput input)
 {
-    input_Pos = stage_input.input_Pos;
-    vert_main();
-    SPIRV_Cross_Output stage_output;
-    stage_output.gl_Position = gl_Position;
-    stage_output._entryPointOutput_UVW = _entryPointOutput_UVW;
-    return stage_output;
+    VSOutput output = (VSOutput)0;
+    output.UVW = input.Pos;
+    float3 rotated = mul((float3x3)ubo.view, input.Pos);
+    float4 clip = mul(ubo.projection, float4(rotated, 1.0));
+    output.Pos = clip.xyww;
+    return stereoshift_shift_VSOutput(output);
 }

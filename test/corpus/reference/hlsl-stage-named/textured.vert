@@ -1,107 +1,58 @@
+// stereoshift-expect: shift
+// Vulkan-sample style HLSL vertex shader in a stage-only .vert file: [[vk::location]] inputs, a UBO struct in a cbuffer at [[vk::binding(0, 0)]], column-vector mul(M, v).
+
 struct VSInput
 {
-    float3 Pos;
-    float3 Normal;
-    float2 UV;
-};
-
-struct VSOutput
-{
-    float4 Pos;
-    float2 UV;
-    float3 Normal;
-    float3 LightVec;
+[[vk::location(0)]] float3 Pos : POSITION0;
+[[vk::location(1)]] float3 Normal : NORMAL0;
+[[vk::location(2)]] float2 UV : TEXCOORD0;
 };
 
 struct UBO
 {
-    column_major float4x4 projection;
-    column_major float4x4 view;
-    column_major float4x4 model;
+    float4x4 projection;
+    float4x4 view;
+    float4x4 model;
     float4 lightPos;
 };
 
-static const VSOutput _23 = { 0.0f.xxxx, 0.0f.xx, 0.0f.xxx, 0.0f.xxx };
+[[vk::binding(0, 0)]]
+cbuffer ubo : register(b0) { UBO ubo; }
 
-cbuffer ubo : register(b0)
+struct VSOutput
 {
-    UBO ubo : packoffset(c0);
+    float4 Pos : SV_POSITION;
+[[vk::location(0)]] float2 UV : TEXCOORD0;
+[[vk::location(1)]] float3 Normal : NORMAL0;
+[[vk::location(2)]] float3 LightVec : TEXCOORD1;
 };
 
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 cbuffer StereoParams : register(b2)
 {
-    float eyeSign : packoffset(c0);
-    float separation : packoffset(c0.y);
-    float convergence : packoffset(c0.z);
+    float eyeSign;
+    float separation;
+    float convergence;
 };
 
-
-static float4 gl_Position;
-static float3 input_Pos;
-static float3 input_Normal;
-static float2 input_UV;
-static float2 _entryPointOutput_UV;
-static float3 _entryPointOutput_Normal;
-static float3 _entryPointOutput_LightVec;
-
-struct SPIRV_Cross_Input
+VSOutput stereoshift_shift_VSOutput(VSOutput stereoshift_v)
 {
-    float3 input_Pos : POSITION0;
-    float3 input_Normal : NORMAL0;
-    float2 input_UV : TEXCOORD0;
-};
-
-struct SPIRV_Cross_Output
-{
-    float2 _entryPointOutput_UV : TEXCOORD0;
-    float3 _entryPointOutput_Normal : NORMAL0;
-    float3 _entryPointOutput_LightVec : TEXCOORD1;
-    precise float4 gl_Position : SV_Position;
-};
-
-VSOutput _main(VSInput _input)
-{
-    VSOutput _output = _23;
-    float4 worldPos = mul(ubo.model, float4(_input.Pos, 1.0f));
-    _output.UV = _input.UV;
-    _output.Normal = mul(float3x3(ubo.model[0].xyz, ubo.model[1].xyz, ubo.model[2].xyz), _input.Normal);
-    _output.LightVec = ubo.lightPos.xyz - worldPos.xyz;
-    _output.Pos = mul(ubo.projection, mul(ubo.view, worldPos));
-    return _output;
-}
-
-void vert_main()
-{
-    VSInput _input;
-    _input.Pos = input_Pos;
-    _input.Normal = input_Normal;
-    _input.UV = input_UV;
-    VSInput param = _input;
-    VSOutput flattenTemp = _main(param);
-    gl_Position = flattenTemp.Pos;
-    _entryPointOutput_UV = flattenTemp.UV;
-    _entryPointOutput_Normal = flattenTemp.Normal;
-    _entryPointOutput_LightVec = flattenTemp.LightVec;
-    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
+    if (eyeSign != 0.0f && abs(stereoshift_v.Pos.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.Pos.w))
     {
-        precise float _143 = gl_Position.w - convergence;
-        precise float _144 = eyeSign * separation;
-        precise float _145 = _144 * _143;
-        precise float _146 = gl_Position.x + _145;
-        gl_Position.x = _146;
+        precise float stereoshift_x = stereoshift_v.Pos.x + (eyeSign * separation) * (stereoshift_v.Pos.w - convergence);
+        stereoshift_v.Pos.x = stereoshift_x;
     }
+    return stereoshift_v;
 }
+// ---- end stereoshift ----
 
-SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+VSOutput main(VSInput input)
 {
-    input_Pos = stage_input.input_Pos;
-    input_Normal = stage_input.input_Normal;
-    input_UV = stage_input.input_UV;
-    vert_main();
-    SPIRV_Cross_Output stage_output;
-    stage_output.gl_Position = gl_Position;
-    stage_output._entryPointOutput_UV = _entryPointOutput_UV;
-    stage_output._entryPointOutput_Normal = _entryPointOutput_Normal;
-    stage_output._entryPointOutput_LightVec = _entryPointOutput_LightVec;
-    return stage_output;
+    VSOutput output = (VSOutput)0;
+    float4 worldPos = mul(ubo.model, float4(input.Pos, 1.0));
+    output.UV = input.UV;
+    output.Normal = mul((float3x3)ubo.model, input.Normal);
+    output.LightVec = ubo.lightPos.xyz - worldPos.xyz;
+    output.Pos = mul(ubo.projection, mul(ubo.view, worldPos));
+    return stereoshift_shift_VSOutput(output);
 }

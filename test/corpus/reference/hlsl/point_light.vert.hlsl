@@ -1,72 +1,47 @@
+// stereoshift-expect: shift
+// D3D11 deferred point-light volume vertex shader: scales a unit sphere to the light radius and projects it.
+
+cbuffer LightVolumeConstants : register(b0)
+{
+    float4x4 ViewProj;
+    float3   LightPosition;
+    float    LightRadius;
+};
+
 struct VSInput
 {
-    float3 Position;
+    float3 Position : POSITION;   // unit icosphere
 };
 
 struct VSOutput
 {
-    float4 Position;
+    float4 Position : SV_Position;
 };
 
-cbuffer LightVolumeConstants : register(b0)
-{
-    column_major float4x4 ViewProj : packoffset(c0);
-    float3 LightPosition : packoffset(c4);
-    float LightRadius : packoffset(c4.w);
-};
-
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 cbuffer StereoParams : register(b2)
 {
-    float eyeSign : packoffset(c0);
-    float separation : packoffset(c0.y);
-    float convergence : packoffset(c0.z);
+    float eyeSign;
+    float separation;
+    float convergence;
 };
 
-
-static float4 gl_Position;
-static float3 input_Position;
-
-struct SPIRV_Cross_Input
+VSOutput stereoshift_shift_VSOutput(VSOutput stereoshift_v)
 {
-    float3 input_Position : POSITION;
-};
-
-struct SPIRV_Cross_Output
-{
-    precise float4 gl_Position : SV_Position;
-};
-
-VSOutput _VSMain(VSInput _input)
-{
-    float3 world = LightPosition + ((_input.Position * LightRadius) * 1.08000004291534423828125f);
-    VSOutput _output;
-    _output.Position = mul(ViewProj, float4(world, 1.0f));
-    return _output;
-}
-
-void vert_main()
-{
-    VSInput _input;
-    _input.Position = input_Position;
-    VSInput param = _input;
-    VSOutput _64 = _VSMain(param);
-    float4 _65 = _64.Position;
-    gl_Position = _65;
-    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
+    if (eyeSign != 0.0f && abs(stereoshift_v.Position.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.Position.w))
     {
-        precise float _93 = gl_Position.w - convergence;
-        precise float _94 = eyeSign * separation;
-        precise float _95 = _94 * _93;
-        precise float _96 = gl_Position.x + _95;
-        gl_Position.x = _96;
+        precise float stereoshift_x = stereoshift_v.Position.x + (eyeSign * separation) * (stereoshift_v.Position.w - convergence);
+        stereoshift_v.Position.x = stereoshift_x;
     }
+    return stereoshift_v;
 }
+// ---- end stereoshift ----
 
-SPIRV_Cross_Output VSMain(SPIRV_Cross_Input stage_input)
+VSOutput VSMain(VSInput input)
 {
-    input_Position = stage_input.input_Position;
-    vert_main();
-    SPIRV_Cross_Output stage_output;
-    stage_output.gl_Position = gl_Position;
-    return stage_output;
+    // Inflate slightly so the low-poly sphere fully covers the true radius.
+    float3 world = LightPosition + input.Position * LightRadius * 1.08;
+    VSOutput output;
+    output.Position = mul(ViewProj, float4(world, 1.0));
+    return stereoshift_shift_VSOutput(output);
 }

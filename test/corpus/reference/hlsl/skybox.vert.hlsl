@@ -1,82 +1,49 @@
+// stereoshift-expect: shift
+// D3D11 skybox vertex shader: camera-centred cube, output position .xyww so the sky sits on the far plane.
+
+cbuffer SkyConstants : register(b0)
+{
+    float4x4 ViewRotationProj;   // projection * view with the translation removed
+    float4   SkyTint;
+};
+
 struct VSInput
 {
-    float3 Position;
+    float3 Position : POSITION;
 };
 
 struct VSOutput
 {
-    float4 Position;
-    float3 Direction;
-    float4 Tint;
+    float4 Position  : SV_Position;
+    float3 Direction : TEXCOORD0;
+    float4 Tint      : COLOR0;
 };
 
-cbuffer SkyConstants : register(b0)
-{
-    column_major float4x4 ViewRotationProj : packoffset(c0);
-    float4 SkyTint : packoffset(c4);
-};
-
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 cbuffer StereoParams : register(b2)
 {
-    float eyeSign : packoffset(c0);
-    float separation : packoffset(c0.y);
-    float convergence : packoffset(c0.z);
+    float eyeSign;
+    float separation;
+    float convergence;
 };
 
-
-static float4 gl_Position;
-static float3 input_Position;
-static float3 _entryPointOutput_Direction;
-static float4 _entryPointOutput_Tint;
-
-struct SPIRV_Cross_Input
+VSOutput stereoshift_shift_VSOutput(VSOutput stereoshift_v)
 {
-    float3 input_Position : POSITION;
-};
-
-struct SPIRV_Cross_Output
-{
-    float3 _entryPointOutput_Direction : TEXCOORD0;
-    float4 _entryPointOutput_Tint : COLOR0;
-    precise float4 gl_Position : SV_Position;
-};
-
-VSOutput _VSMain(VSInput _input)
-{
-    float4 pos = mul(ViewRotationProj, float4(_input.Position, 1.0f));
-    VSOutput _output;
-    _output.Position = pos.xyww;
-    _output.Direction = _input.Position;
-    _output.Tint = SkyTint;
-    return _output;
-}
-
-void vert_main()
-{
-    VSInput _input;
-    _input.Position = input_Position;
-    VSInput param = _input;
-    VSOutput flattenTemp = _VSMain(param);
-    gl_Position = flattenTemp.Position;
-    _entryPointOutput_Direction = flattenTemp.Direction;
-    _entryPointOutput_Tint = flattenTemp.Tint;
-    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
+    if (eyeSign != 0.0f && abs(stereoshift_v.Position.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.Position.w))
     {
-        precise float _101 = gl_Position.w - convergence;
-        precise float _102 = eyeSign * separation;
-        precise float _103 = _102 * _101;
-        precise float _104 = gl_Position.x + _103;
-        gl_Position.x = _104;
+        precise float stereoshift_x = stereoshift_v.Position.x + (eyeSign * separation) * (stereoshift_v.Position.w - convergence);
+        stereoshift_v.Position.x = stereoshift_x;
     }
+    return stereoshift_v;
 }
+// ---- end stereoshift ----
 
-SPIRV_Cross_Output VSMain(SPIRV_Cross_Input stage_input)
+VSOutput VSMain(VSInput input)
 {
-    input_Position = stage_input.input_Position;
-    vert_main();
-    SPIRV_Cross_Output stage_output;
-    stage_output.gl_Position = gl_Position;
-    stage_output._entryPointOutput_Direction = _entryPointOutput_Direction;
-    stage_output._entryPointOutput_Tint = _entryPointOutput_Tint;
-    return stage_output;
+    VSOutput output;
+    float4 pos = mul(ViewRotationProj, float4(input.Position, 1.0));
+    output.Position = pos.xyww;
+    output.Direction = input.Position;
+    output.Tint = SkyTint;
+    return stereoshift_shift_VSOutput(output);
 }
