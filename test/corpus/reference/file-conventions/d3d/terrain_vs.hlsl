@@ -1,78 +1,44 @@
-struct VertexOut
-{
-    float4 PosH;
-    float2 Tex;
-};
-
+// stereoshift-expect: shift
+// Book-style vertex shader named `*_vs.hlsl`: a height-mapped terrain grid, entry point VSMain.
 cbuffer TerrainConstants : register(b0)
 {
-    column_major float4x4 WorldViewProj : packoffset(c0);
-    float HeightScale : packoffset(c4);
-    float3 Padding : packoffset(c4.y);
+    float4x4 WorldViewProj;
+    float HeightScale;
+    float3 Padding;
 };
-
-cbuffer StereoParams : register(b1)
-{
-    float eyeSign : packoffset(c0);
-    float separation : packoffset(c0.y);
-    float convergence : packoffset(c0.z);
-};
-
-Texture2D<float4> HeightMap : register(t0);
+Texture2D HeightMap : register(t0);
 SamplerState PointClamp : register(s0);
 
-static float4 gl_Position;
-static float3 posL;
-static float2 tex;
-static float2 _entryPointOutput_Tex;
-
-struct SPIRV_Cross_Input
+struct VertexOut
 {
-    float3 posL : POSITION;
-    float2 tex : TEXCOORD0;
+    float4 PosH : SV_POSITION;
+    float2 Tex : TEXCOORD0;
 };
 
-struct SPIRV_Cross_Output
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
+cbuffer StereoParams : register(b1)
 {
-    float2 _entryPointOutput_Tex : TEXCOORD0;
-    precise float4 gl_Position : SV_Position;
+    float eyeSign;
+    float separation;
+    float convergence;
 };
 
-VertexOut _VSMain(float3 posL_1, float2 tex_1)
+VertexOut stereoshift_shift_VertexOut(VertexOut stereoshift_v)
 {
-    float height = HeightMap.SampleLevel(PointClamp, tex_1, 0.0f).x * HeightScale;
-    VertexOut vout;
-    vout.PosH = mul(float4(posL_1.x, height, posL_1.z, 1.0f), WorldViewProj);
-    vout.Tex = tex_1;
-    return vout;
-}
-
-void vert_main()
-{
-    float3 posL_1 = posL;
-    float2 tex_1 = tex;
-    float3 param = posL_1;
-    float2 param_1 = tex_1;
-    VertexOut flattenTemp = _VSMain(param, param_1);
-    gl_Position = flattenTemp.PosH;
-    _entryPointOutput_Tex = flattenTemp.Tex;
-    if ((eyeSign != 0.0f) && ((abs(gl_Position.w - 1.0f) > 9.9999997473787516355514526367188e-06f) && (!isinf(gl_Position.w))))
+    if (eyeSign != 0.0f && abs(stereoshift_v.PosH.w - 1.0f) > 9.99999975e-06f && !isinf(stereoshift_v.PosH.w))
     {
-        precise float _117 = gl_Position.w - convergence;
-        precise float _118 = eyeSign * separation;
-        precise float _119 = _118 * _117;
-        precise float _120 = gl_Position.x + _119;
-        gl_Position.x = _120;
+        precise float stereoshift_x = stereoshift_v.PosH.x + (eyeSign * separation) * (stereoshift_v.PosH.w - convergence);
+        stereoshift_v.PosH.x = stereoshift_x;
     }
+    return stereoshift_v;
 }
+// ---- end stereoshift ----
 
-SPIRV_Cross_Output VSMain(SPIRV_Cross_Input stage_input)
+VertexOut VSMain(float3 posL : POSITION, float2 tex : TEXCOORD0)
 {
-    posL = stage_input.posL;
-    tex = stage_input.tex;
-    vert_main();
-    SPIRV_Cross_Output stage_output;
-    stage_output.gl_Position = gl_Position;
-    stage_output._entryPointOutput_Tex = _entryPointOutput_Tex;
-    return stage_output;
+    VertexOut vout;
+    float height = HeightMap.SampleLevel(PointClamp, tex, 0).r * HeightScale;
+    vout.PosH = mul(float4(posL.x, height, posL.z, 1.0f), WorldViewProj);
+    vout.Tex = tex;
+    return stereoshift_shift_VertexOut(vout);
 }
