@@ -71,6 +71,7 @@ class HaloPass final : public Pass {
       auto n = numbers.number(v);
       return n && positionNumbers.count(*n) > 0;
     };
+    exactCopies_.clear();
     std::map<uint32_t, uint32_t> monoStoredTo;  // output -> the mono value its (single) store wrote
     nlohmann::json fixed = nlohmann::json::array();
     if (!positionValues.empty())
@@ -87,7 +88,7 @@ class HaloPass final : public Pass {
             uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
             if (newValue == store.operand(1)) continue;  // not derived from the position
             monoStoredTo[target] = store.operand(1);
-            if (positionValues.count(store.operand(1)))
+            if (isPosition_(store.operand(1)))  // equal by value: the splice may copy the shifted position
               exactCopies_.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
             block.instructions[i].operands[1] = newValue;
             block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());

@@ -143,7 +143,8 @@ HlslSpliceOutcome spliceHlslFile(const SourceFile& input, PassContext& context, 
   std::string compiled = blankEffectBlocks(output);
   for (const auto& [name, stage] : toVerify) {
     Diagnostics verifyDiags;
-    if (!verifyCompiles(compiled, SourceLanguage::Hlsl, stage, name, true, file + " (emitted)", verifyDiags)) {
+    if (!verifyCompiles(compiled, SourceLanguage::Hlsl, stage, name, true, file + " (emitted)", verifyDiags,
+                        &context.options, input.path)) {
       diags.append(verifyDiags);
       diags.error(file, "the stereo HLSL of entry point '" + name + "' does not compile");
       return HlslSpliceOutcome::Failed;

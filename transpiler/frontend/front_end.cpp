@@ -783,7 +783,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
                     bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
-                    const TranspileOptions* environment) {
+                    const TranspileOptions* environment, const std::string& includeFrom) {
   ensureGlslangInitialized();
   glslang::TShader shader(toGlslang(stage));
   const char* strings[] = {text.c_str()};
@@ -793,8 +793,21 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
   int messages = configureEnvironment(shader, stage, language, vulkanSemantics ? Client::Vulkan : Client::AstOnly,
                                       entryPoint, environment);
   // OpenGL GLSL/ESSL is checked as the driver would see it: AST only, the original dialect's rules.
+  // A text spliced into the original (`includeFrom`: the input's path) still names the input's
+  // #include files and macros: they resolve as they did for the input, with the same -D and -I.
+  std::string preamble;
+  if (!includeFrom.empty() && environment) {
+    preamble = buildPreamble(environment->defines, language == SourceLanguage::Glsl);
+    shader.setPreamble(preamble.c_str());
+  }
   glslang::TShader::ForbidIncluder noIncludes;
-  bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), noIncludes);
+  std::optional<RestrictedIncluder> includer;
+  if (!includeFrom.empty())
+    includer.emplace(includeFrom, includeSearchPath(includeFrom, environment ? environment->includeDirs
+                                                                            : std::vector<std::string>{}),
+                     text.size());
+  glslang::TShader::Includer& includes = includer ? static_cast<glslang::TShader::Includer&>(*includer) : noIncludes;
+  bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includes);
   if (ok) {
     glslang::TProgram program;
     program.addShader(&shader);

@@ -37,7 +37,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 // given) carries the conversion's --target-env / --target-spv, so a subgroup shader checks under them.
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
                     bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
-                    const TranspileOptions* environment = nullptr);
+                    const TranspileOptions* environment = nullptr, const std::string& includeFrom = "");
 
 // glslang's process-wide initialisation, done once.
 void ensureGlslangInitialized();

@@ -1,9 +1,13 @@
 // halo by value: an output that recomputes the clip position (the same product, written with the
 // components spelled out) and one derived from the product computed again in a helper function are
-// both the position: each gets the shift the position gets (a select on the same cutoff).
+// both the position: each gets the shift the position gets (a select on the same cutoff). The
+// recomputation is an exact copy by value (what the HLSL splice may copy); the screen UV is derived.
 // RUN: %stereoshift --validate-each --verify %s -o %t.vert --report %t.json
 // RUN: FileCheck %s --input-file %t.json
 // CHECK: "halo": {
+// CHECK-NEXT: "derived_outputs": [
+// CHECK-NEXT: "outScreenUV"
+// CHECK-NEXT: ],
 // CHECK-NEXT: "result": "changed",
 // CHECK-NEXT: "shifted_outputs": [
 // CHECK-NEXT: "outClip",
