@@ -38,7 +38,8 @@
 //     p.x' = p.x - eyeSign*separation*(|p.z| - convergence) / P00
 // with P00 the projection's x scale: 1 / InvP[0][0] when the ray is made by a uniform inverse
 // projection, else P[0][0] of a uniform matrix that re-projects the rebuilt position or whose
-// [0][0] the shader reads; a shader with none of these is reported, not fixed.
+// [0][0] the shader reads; a shader with none of these gets the eye parameter projScaleX (the
+// application sets it to P00) and the report says so.
 #include "passes/pass.h"
 
 #include "passes/analysis/value_flow.h"
@@ -265,6 +266,7 @@ struct Product {
 // Where the view-ray fix takes the projection's x scale P00 from.
 enum class ScaleKind {
   None,
+  Injected,           // none in the shader: the injected eye parameter projScaleX, set by the application
   InverseElement,     // the uniform inverse projection that makes the ray: 1/P00 = InvP[0][0]
   ProjectionElement,  // a uniform projection (re-projecting the position, or read at [0][0]): P00 = P[0][0]
 };
@@ -354,20 +356,18 @@ class DeferredUnprojectionPass final : public Pass {
     for (const auto& r : rays) opaque.insert(r.fixPoint);
     SourceAnalysis besidesFixes(index, hlsl, eyeParameters, opaque);
     std::vector<RayProduct*> fixableRays;
+    bool needsInjectedScale = false;
     for (auto& r : rays) {
       findProjectionScale(index, besidesFixes, products, r);
+      // No uniform inverse projection making the ray, no uniform matrix re-projecting the position
+      // or read at [0][0]: the application supplies P00.
       if (r.scale.kind == ScaleKind::None) {
-        nlohmann::json entry;
-        entry["construct"] = "view ray * depth";
-        entry["form"] = r.form;
-        entry["depth"] = joined(r.depth.textures);
-        entry["reason"] = "no projection scale P00 in the shader (no uniform inverse projection making the ray, "
-                          "no uniform matrix re-projecting the position or read at [0][0]): the view-space x of "
-                          "each eye stays off by eyeSign*separation*(depth - convergence)/P00";
-        rayLeftAlone.push_back(entry);
-        continue;
+        r.scale.kind = ScaleKind::Injected;
+        needsInjectedScale = true;
       }
-      rayFixes.push_back(describeRayFix(r));
+      rayFixes.push_back(describeRayFix(r, ctx.eyeDeclared && ctx.eye.declared > kProjScaleX
+                                               ? ctx.eye.names[kProjScaleX]
+                                               : ctx.options.eye.projScaleXName));
       fixableRays.push_back(&r);
     }
     auto& report = ctx.report["passes"][name()];
@@ -417,7 +417,11 @@ class DeferredUnprojectionPass final : public Pass {
     if (!leftAlone.empty()) report["left_alone"] = leftAlone;
     if (fixed.empty()) return PassResult::Unchanged;
 
-    if (!ensureEyeParams(ctx, kConvergence + 1)) return PassResult::Failed;
+    if (!ensureEyeParams(ctx, needsInjectedScale ? kProjScaleX + 1 : kConvergence + 1)) return PassResult::Failed;
+    if (needsInjectedScale)
+      report["application_fills"] = ctx.eye.names[kProjScaleX] +
+                                    " = P[0][0], the x scale of the projection the G-buffer was drawn with "
+                                    "(no projection matrix in the shader to take it from)";
     for (const auto& p : products)
       if (p.recognised) rewrite(ctx, p);
     for (const RayProduct* r : fixableRays) rewriteRay(ctx, *r);
@@ -553,13 +557,15 @@ class DeferredUnprojectionPass final : public Pass {
     });
   }
 
-  static nlohmann::json describeRayFix(const RayProduct& r) {
+  static nlohmann::json describeRayFix(const RayProduct& r, const std::string& injectedName) {
     nlohmann::json entry;
     entry["construct"] = "view ray * depth";
     entry["form"] = r.form;
     entry["depth"] = joined(r.depth.textures);
     entry["projection_scale"] = r.scale.kind == ScaleKind::InverseElement ? "1 / " + r.scale.name + "[0][0]"
-                                                                           : r.scale.name + "[0][0]";
+                                : r.scale.kind == ScaleKind::Injected
+                                    ? injectedName + " (injected: set by the application)"
+                                    : r.scale.name + "[0][0]";
     entry["fix"] = "p.x - eyeSign*separation*(|p.z| - convergence) / P00, after the last scaling of the product";
     return entry;
   }
@@ -578,6 +584,9 @@ class DeferredUnprojectionPass final : public Pass {
     uint32_t inverseScale;  // 1 / P00
     if (r.scale.kind == ScaleKind::InverseElement) {
       inverseScale = emit(spv::OpCompositeExtract, f, {r.scale.matrixValue, 0, 0});
+    } else if (r.scale.kind == ScaleKind::Injected) {
+      uint32_t p00 = emitLoadEyeParam(ctx, code, kProjScaleX);
+      inverseScale = emit(spv::OpFDiv, f, {m.constantFloat(1.0f), p00});
     } else {
       const Instruction* variable = m.definition(r.scale.root);
       auto storage = static_cast<spv::StorageClass>(variable->operand(0));
