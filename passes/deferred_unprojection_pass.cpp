@@ -32,7 +32,8 @@
 // float vector computed from gl_FragCoord / an input varying and no texel (the ray: interpolated
 // from the full-screen pass's vertex stage, or built here from the pixel and the projection) times
 // a scalar computed from a texel (the depth read back; it may also divide by the ray's own
-// components, `depth / ray.z`). Further scalings of the product by values without a texel
+// components, `depth / ray.z`); one texture weighting vectors from several inputs is a basis
+// (tangent-space normal mapping), not a ray. Further scalings of the product by values without a texel
 // (`ray * depth / ray.z`) are part of it; the fix goes after the last. The pixel's view-space x is
 // corrected to the mono one,
 //     p.x' = p.x - eyeSign*separation*(|p.z| - convergence) / P00
@@ -484,6 +485,15 @@ class DeferredUnprojectionPass final : public Pass {
         r.fixPoint = user->resultId;
       }
       rays.push_back(std::move(r));
+    });
+    // A view ray meets its depth once. One texture weighting vectors from different inputs is a
+    // basis combination (a tangent-space normal, `tn.x * T + tn.y * B + tn.z * N`), not a position.
+    std::map<std::string, std::set<std::string>> rayInputsByTexture;
+    for (const auto& r : rays)
+      for (const auto& texture : r.depth.textures) rayInputsByTexture[texture].insert(joined(r.ray.inputs));
+    std::erase_if(rays, [&](const RayProduct& r) {
+      return std::any_of(r.depth.textures.begin(), r.depth.textures.end(),
+                         [&](const std::string& texture) { return rayInputsByTexture[texture].size() > 1; });
     });
     return rays;
   }
