@@ -464,8 +464,8 @@ class DeferredUnprojectionPass final : public Pass {
       if (!(x.fragCoord || x.varying) || x.texel || x.other || r.ray.texel || r.ray.other) return;
       // The depth: read back from a texture; beside the texel only constants, uniforms and the
       // ray's own inputs (`depth / ray.z`), never another per-pixel value.
-      if (!r.depth.texel || r.depth.other || r.depth.fragCoord) return;
-      if (r.depth.varying && !std::includes(r.ray.inputs.begin(), r.ray.inputs.end(), r.depth.inputs.begin(),
+      if (!r.depth.texel || r.depth.other) return;
+      if ((r.depth.varying || r.depth.fragCoord) && !std::includes(r.ray.inputs.begin(), r.ray.inputs.end(), r.depth.inputs.begin(),
                                             r.depth.inputs.end()))
         return;
       bool computedHere = !z.fragCoord && !z.varying;  // `vec3(ndc * tanHalfFov * aspect, -1)`
