@@ -40,7 +40,9 @@
 // with P00 the projection's x scale: 1 / InvP[0][0] when the ray is made by a uniform inverse
 // projection, else P[0][0] of a uniform matrix that re-projects the rebuilt position or whose
 // [0][0] the shader reads; a shader with none of these gets the eye parameter projScaleX (the
-// application sets it to P00) and the report says so.
+// application sets it to P00) and the report says so, except for an interpolated ray: without a
+// projection in the shader it cannot be told from a colour or normal scaled by a texel, and is
+// reported, not fixed.
 #include "passes/pass.h"
 
 #include "passes/analysis/value_flow.h"
@@ -286,6 +288,7 @@ struct RayProduct {
   uint32_t product = 0;   // the OpVectorTimesScalar
   uint32_t fixPoint = 0;  // the product, or the last scaling of it by values without a texel
   uint32_t components = 0;
+  bool interpolated = false;  // the ray is an input varying, not made in this shader
   Sources ray, depth;
   std::string form;
   ProjectionScale scale;
@@ -362,6 +365,19 @@ class DeferredUnprojectionPass final : public Pass {
       findProjectionScale(index, besidesFixes, products, r);
       // No uniform inverse projection making the ray, no uniform matrix re-projecting the position
       // or read at [0][0]: the application supplies P00.
+      // An interpolated vector times a texel with no projection anywhere in the shader is as
+      // likely a colour times a mask or occlusion as a view ray times a depth: reported, not fixed.
+      if (r.scale.kind == ScaleKind::None && r.interpolated) {
+        nlohmann::json entry;
+        entry["construct"] = "interpolated vector * texel";
+        entry["form"] = r.form;
+        entry["depth"] = joined(r.depth.textures);
+        entry["reason"] = "no projection in the shader to tell a view ray (frustum corners) from a colour or "
+                          "normal scaled by a texel: if it rebuilds a view-space position, its x is off by "
+                          "eyeSign*separation*(depth - convergence)/P00 per eye; check by eye";
+        rayLeftAlone.push_back(entry);
+        continue;
+      }
       if (r.scale.kind == ScaleKind::None) {
         r.scale.kind = ScaleKind::Injected;
         needsInjectedScale = true;
@@ -470,7 +486,11 @@ class DeferredUnprojectionPass final : public Pass {
         return;
       bool computedHere = !z.fragCoord && !z.varying;  // `vec3(ndc * tanHalfFov * aspect, -1)`
       bool fromInverse = !r.ray.products.empty();      // `invProj * vec4(ndc, 1, 1)`
-      if (computedHere || fromInverse)
+      r.interpolated = !computedHere && !fromInverse;
+      // An interpolated ray is a vec3 direction; an interpolated vec4 times a texel is a colour
+      // times a mask (text, sprites).
+      if (r.interpolated && components != 3) return;
+      if (!r.interpolated)
         r.form = "view ray computed from " + joined(r.ray.inputs) + (fromInverse ? " and an inverse projection" : "");
       else
         r.form = "view ray interpolated from the vertex stage (" + joined(r.ray.inputs) + ")";
