@@ -27,6 +27,22 @@
 //   x, y: computed from gl_FragCoord or an input varying (fragment stage), uniforms and constants,
 //      no texel;
 //   the matrix: computed from uniform data only.
+//
+// Second form, the view ray (docs/stereo-math.md section 4, "view rays"): `p = ray * depth`, a
+// float vector computed from gl_FragCoord / an input varying and no texel (the ray: interpolated
+// from the full-screen pass's vertex stage, or built here from the pixel and the projection) times
+// a scalar computed from a texel (the depth read back; it may also divide by the ray's own
+// components, `depth / ray.z`); one texture weighting vectors from several inputs is a basis
+// (tangent-space normal mapping), not a ray. Further scalings of the product by values without a texel
+// (`ray * depth / ray.z`) are part of it; the fix goes after the last. The pixel's view-space x is
+// corrected to the mono one,
+//     p.x' = p.x - eyeSign*separation*(|p.z| - convergence) / P00
+// with P00 the projection's x scale: 1 / InvP[0][0] when the ray is made by a uniform inverse
+// projection, else P[0][0] of a uniform matrix that re-projects the rebuilt position or whose
+// [0][0] the shader reads; a shader with none of these gets the eye parameter projScaleX (the
+// application sets it to P00) and the report says so, except for an interpolated ray: without a
+// projection in the shader it cannot be told from a colour or normal scaled by a texel, and is
+// reported, not fixed.
 #include "passes/pass.h"
 
 #include "passes/analysis/value_flow.h"
@@ -250,6 +266,34 @@ struct Product {
   std::string reason;
 };
 
+// Where the view-ray fix takes the projection's x scale P00 from.
+enum class ScaleKind {
+  None,
+  Injected,           // none in the shader: the injected eye parameter projScaleX, set by the application
+  InverseElement,     // the uniform inverse projection that makes the ray: 1/P00 = InvP[0][0]
+  ProjectionElement,  // a uniform projection (re-projecting the position, or read at [0][0]): P00 = P[0][0]
+};
+
+struct ProjectionScale {
+  ScaleKind kind = ScaleKind::None;
+  uint32_t matrixValue = 0;  // InverseElement: the loaded matrix, in the fix point's function
+  uint32_t root = 0;         // ProjectionElement: the uniform variable and the path to the matrix
+  AccessPath path;
+  std::string name;
+};
+
+// One `ray * depth` product that rebuilds a view-space position.
+struct RayProduct {
+  spirv::Function* function = nullptr;
+  uint32_t product = 0;   // the OpVectorTimesScalar
+  uint32_t fixPoint = 0;  // the product, or the last scaling of it by values without a texel
+  uint32_t components = 0;
+  bool interpolated = false;  // the ray is an input varying, not made in this shader
+  Sources ray, depth;
+  std::string form;
+  ProjectionScale scale;
+};
+
 class DeferredUnprojectionPass final : public Pass {
  public:
   const char* name() const override { return "deferred-unprojection"; }
@@ -309,8 +353,43 @@ class DeferredUnprojectionPass final : public Pass {
     for (const auto& p : products)
       if (p.recognised) fixedResults.insert(p.result);
 
+    nlohmann::json rayFixes = nlohmann::json::array(), rayLeftAlone = nlohmann::json::array();
+    // The view-ray form, on the same index: each ray x depth product, with the projection scale.
+    std::vector<RayProduct> rays = findViewRays(m, index, flow, fixedResults);
+    std::set<uint32_t> opaque = fixedResults;
+    for (const auto& r : rays) opaque.insert(r.fixPoint);
+    SourceAnalysis besidesFixes(index, hlsl, eyeParameters, opaque);
+    std::vector<RayProduct*> fixableRays;
+    bool needsInjectedScale = false;
+    for (auto& r : rays) {
+      findProjectionScale(index, besidesFixes, products, r);
+      // No uniform inverse projection making the ray, no uniform matrix re-projecting the position
+      // or read at [0][0]: the application supplies P00.
+      // An interpolated vector times a texel with no projection anywhere in the shader is as
+      // likely a colour times a mask or occlusion as a view ray times a depth: reported, not fixed.
+      if (r.scale.kind == ScaleKind::None && r.interpolated) {
+        nlohmann::json entry;
+        entry["construct"] = "interpolated vector * texel";
+        entry["form"] = r.form;
+        entry["depth"] = joined(r.depth.textures);
+        entry["reason"] = "no projection in the shader to tell a view ray (frustum corners) from a colour or "
+                          "normal scaled by a texel: if it rebuilds a view-space position, its x is off by "
+                          "eyeSign*separation*(depth - convergence)/P00 per eye; check by eye";
+        rayLeftAlone.push_back(entry);
+        continue;
+      }
+      if (r.scale.kind == ScaleKind::None) {
+        r.scale.kind = ScaleKind::Injected;
+        needsInjectedScale = true;
+      }
+      rayFixes.push_back(describeRayFix(r, ctx.eyeDeclared && ctx.eye.declared > kProjScaleX
+                                               ? ctx.eye.names[kProjScaleX]
+                                               : ctx.options.eye.projScaleXName));
+      fixableRays.push_back(&r);
+    }
     auto& report = ctx.report["passes"][name()];
     nlohmann::json fixed = nlohmann::json::array(), leftAlone = nlohmann::json::array();
+    std::vector<const Product*> reprojections;
     for (const auto& p : products) {
       std::string matrixName = joined(p.matrixSources.uniforms);
       if (p.recognised) {
@@ -324,24 +403,293 @@ class DeferredUnprojectionPass final : public Pass {
       nlohmann::json entry;
       entry["construct"] = "matrix * vector";
       entry["matrix"] = p.matrixSources.uniform ? matrixName : std::string("(not uniform)");
-      entry["reason"] = followsFix ? "computed from a corrected unprojection: per-eye through it" : p.reason;
+      // A product that makes a fixed view ray, or re-projects a fixed view-ray position, is part
+      // of that fix: per-eye through it.
+      bool makesRay = std::any_of(fixableRays.begin(), fixableRays.end(),
+                                  [&](const RayProduct* r) { return r->ray.products.count(p.result) > 0; });
+      bool followsRay = std::any_of(fixableRays.begin(), fixableRays.end(), [&](const RayProduct* r) {
+        return besidesFixes.value(p.vector).products.count(r->fixPoint) > 0;
+      });
+      // A re-projection of a corrected (mono) view-space position back to this eye's screen (SSAO
+      // samples, screen-space reflections) must land where this eye's depth buffer has it: it gets
+      // the shift of docs/stereo-math.md section 1, as the G-buffer pass's position did.
+      if (followsRay && !followsFix && isUniformOnly(p.matrixSources)) {
+        entry["construct"] = "matrix * view-ray position";
+        entry["fix"] = "x + eyeSign*separation*(w - convergence): back to this eye's screen";
+        fixed.push_back(entry);
+        reprojections.push_back(&p);
+        continue;
+      }
+      entry["reason"] = followsFix   ? "computed from a corrected unprojection: per-eye through it"
+                        : makesRay   ? "makes a view ray: corrected where the ray meets the depth"
+                        : followsRay ? "computed from a corrected view-ray position: per-eye through it"
+                                     : p.reason;
       leftAlone.push_back(entry);
     }
-    SourceAnalysis besidesFixes(index, hlsl, eyeParameters, fixedResults);
+    for (auto& entry : rayFixes) fixed.push_back(entry);
+    for (auto& entry : rayLeftAlone) leftAlone.push_back(entry);
     reportFragCoordUses(ctx, index, besidesFixes, leftAlone);
     reportReflections(ctx, leftAlone);
     if (!fixed.empty()) report["fixed"] = fixed;
     if (!leftAlone.empty()) report["left_alone"] = leftAlone;
     if (fixed.empty()) return PassResult::Unchanged;
 
-    if (!ensureEyeParams(ctx, kConvergence + 1)) return PassResult::Failed;
+    if (!ensureEyeParams(ctx, needsInjectedScale ? kProjScaleX + 1 : kConvergence + 1)) return PassResult::Failed;
+    if (needsInjectedScale)
+      report["application_fills"] = ctx.eye.names[kProjScaleX] +
+                                    " = P[0][0], the x scale of the projection the G-buffer was drawn with "
+                                    "(no projection matrix in the shader to take it from)";
     for (const auto& p : products)
       if (p.recognised) rewrite(ctx, p);
+    for (const RayProduct* r : fixableRays) rewriteRay(ctx, *r);
+    for (const Product* p : reprojections) rewriteReprojection(ctx, *p);
     m.invalidateDefinitions();
     return PassResult::Changed;
   }
 
  private:
+  // Every `ray * depth` product (OpVectorTimesScalar of a float vec3 / vec4) whose vector is a view
+  // ray and whose scalar a depth read back: see the file comment. Products computed from an already
+  // fixed unprojection are per-eye through it and skipped.
+  static std::vector<RayProduct> findViewRays(spirv::Module& m, const ValueFlow& index, SourceAnalysis& flow,
+                                              const std::set<uint32_t>& fixedResults) {
+    std::vector<RayProduct> rays;
+    auto floatVectorSize = [&](uint32_t type) -> uint32_t {
+      const Instruction* vector = m.definition(type);
+      if (!vector || vector->opcode != spv::OpTypeVector) return 0;
+      const Instruction* component = m.definition(vector->operand(0));
+      bool isFloat32 = component && component->opcode == spv::OpTypeFloat && component->operand(0) == 32;
+      return isFloat32 ? vector->operand(1) : 0;
+    };
+    auto touchesFix = [&](const Sources& s) {
+      return std::any_of(s.products.begin(), s.products.end(), [&](uint32_t r) { return fixedResults.count(r) > 0; });
+    };
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, spirv::Function& fn, const spirv::Block&) {
+      if (inst.opcode != spv::OpVectorTimesScalar) return;
+      uint32_t components = floatVectorSize(inst.typeId);
+      if (components != 3 && components != 4) return;  // a position has at least x, y, z
+      RayProduct r;
+      r.function = &fn;
+      r.product = r.fixPoint = inst.resultId;
+      r.components = components;
+      r.ray = flow.value(inst.operand(0));
+      r.depth = flow.value(inst.operand(1));
+      Sources x = flow.value(inst.operand(0), {0}), z = flow.value(inst.operand(0), {2});
+      if (r.ray.eyeParameter || r.depth.eyeParameter || touchesFix(r.ray) || touchesFix(r.depth)) return;
+      // The ray: per pixel (its x from the pixel position or an interpolated input), no texel.
+      if (!(x.fragCoord || x.varying) || x.texel || x.other || r.ray.texel || r.ray.other) return;
+      // The depth: read back from a texture; beside the texel only constants, uniforms and the
+      // ray's own inputs (`depth / ray.z`), never another per-pixel value.
+      if (!r.depth.texel || r.depth.other) return;
+      if ((r.depth.varying || r.depth.fragCoord) && !std::includes(r.ray.inputs.begin(), r.ray.inputs.end(), r.depth.inputs.begin(),
+                                            r.depth.inputs.end()))
+        return;
+      bool computedHere = !z.fragCoord && !z.varying;  // `vec3(ndc * tanHalfFov * aspect, -1)`
+      bool fromInverse = !r.ray.products.empty();      // `invProj * vec4(ndc, 1, 1)`
+      r.interpolated = !computedHere && !fromInverse;
+      // An interpolated ray is a vec3 direction; an interpolated vec4 times a texel is a colour
+      // times a mask (text, sprites).
+      if (r.interpolated && components != 3) return;
+      if (!r.interpolated)
+        r.form = "view ray computed from " + joined(r.ray.inputs) + (fromInverse ? " and an inverse projection" : "");
+      else
+        r.form = "view ray interpolated from the vertex stage (" + joined(r.ray.inputs) + ")";
+      // Scalings that follow belong to the rebuilt position (`ray * depth / ray.z`).
+      for (int step = 0; step < 8; ++step) {
+        const auto& uses = index.defUse().uses(r.fixPoint);
+        if (uses.size() != 1 || uses[0].operand != 0) break;
+        const Instruction* user = uses[0].user;
+        bool scales = user->opcode == spv::OpVectorTimesScalar ||
+                      ((user->opcode == spv::OpFDiv || user->opcode == spv::OpFMul) && user->typeId == inst.typeId);
+        if (!scales || flow.value(user->operand(1)).texel) break;
+        r.fixPoint = user->resultId;
+      }
+      rays.push_back(std::move(r));
+    });
+    // A view ray meets its depth once. One texture weighting vectors from different inputs is a
+    // basis combination (a tangent-space normal, `tn.x * T + tn.y * B + tn.z * N`), not a position.
+    std::map<std::string, std::set<std::string>> rayInputsByTexture;
+    for (const auto& r : rays)
+      for (const auto& texture : r.depth.textures) rayInputsByTexture[texture].insert(joined(r.ray.inputs));
+    std::erase_if(rays, [&](const RayProduct& r) {
+      return std::any_of(r.depth.textures.begin(), r.depth.textures.end(),
+                         [&](const std::string& texture) { return rayInputsByTexture[texture].size() > 1; });
+    });
+    return rays;
+  }
+
+  // The projection's x scale for a view ray, from what the shader already has (file comment).
+  static void findProjectionScale(const ValueFlow& index, SourceAnalysis& besidesFixes,
+                                  const std::vector<Product>& products, RayProduct& r) {
+    const spirv::Module& m = index.module();
+    // 1. The inverse projection that makes the ray, when its matrix is at hand where the fix goes.
+    for (const auto& p : products) {
+      if (!r.ray.products.count(p.result) || !p.matrixSources.uniform || p.matrixSources.texel ||
+          p.matrixSources.fragCoord || p.matrixSources.varying || p.matrixSources.other)
+        continue;
+      if (index.defUse().definingFunction(p.matrix) != r.function) continue;
+      r.scale = {ScaleKind::InverseElement, p.matrix, 0, {}, joined(p.matrixSources.uniforms)};
+      return;
+    }
+    auto uniformMatrix = [&](uint32_t matrixValue, ProjectionScale& out) {
+      const Instruction* load = index.definition(matrixValue);
+      if (!load || load->opcode != spv::OpLoad) return false;
+      auto target = index.resolvePointer(load->operand(0));
+      if (!target || std::count(target->path.begin(), target->path.end(), kAnyIndex)) return false;
+      const Instruction* variable = m.definition(target->root);
+      if (!variable || variable->opcode != spv::OpVariable) return false;
+      auto storage = static_cast<spv::StorageClass>(variable->operand(0));
+      if (storage != spv::StorageClassUniform && storage != spv::StorageClassUniformConstant &&
+          storage != spv::StorageClassPushConstant)
+        return false;
+      out = {ScaleKind::ProjectionElement, 0, target->root, target->path, describe(m, target->root, target->path)};
+      return true;
+    };
+    // 2. A uniform matrix that re-projects the rebuilt position (SSAO's sample projection).
+    for (const auto& p : products)
+      if (besidesFixes.value(p.vector).products.count(r.fixPoint) && uniformMatrix(p.matrix, r.scale)) return;
+    // 3. A uniform matrix whose [0][0] the shader reads (`proj[0][0]`, a radius in pixels).
+    bool found = false;
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+      if (found) return;
+      if (inst.opcode == spv::OpCompositeExtract && inst.operands.size() == 3 && inst.operand(1) == 0 &&
+          inst.operand(2) == 0) {
+        const Instruction* source = index.definition(inst.operand(0));
+        const Instruction* type = source ? m.definition(source->typeId) : nullptr;
+        if (type && type->opcode == spv::OpTypeMatrix && type->operand(1) == 4) found = uniformMatrix(inst.operand(0), r.scale);
+      } else if (inst.opcode == spv::OpLoad) {
+        auto target = index.resolvePointer(inst.operand(0));
+        if (!target || target->path.size() < 2 || target->path[target->path.size() - 1] != 0 ||
+            target->path[target->path.size() - 2] != 0)
+          return;
+        AccessPath toMatrix(target->path.begin(), target->path.end() - 2);
+        if (std::count(toMatrix.begin(), toMatrix.end(), kAnyIndex)) return;
+        // The type at `toMatrix` must be a mat4: walk the variable's type down the path.
+        const Instruction* variable = m.definition(target->root);
+        if (!variable || variable->opcode != spv::OpVariable) return;
+        auto storage = static_cast<spv::StorageClass>(variable->operand(0));
+        if (storage != spv::StorageClassUniform && storage != spv::StorageClassUniformConstant &&
+            storage != spv::StorageClassPushConstant)
+          return;
+        uint32_t type = m.pointeeType(variable->typeId);
+        for (uint32_t step : toMatrix) {
+          const Instruction* t = m.definition(type);
+          if (!t) return;
+          if (t->opcode == spv::OpTypeStruct) type = t->operand(step);
+          else if (t->opcode == spv::OpTypeArray || t->opcode == spv::OpTypeRuntimeArray) type = t->operand(0);
+          else return;
+        }
+        const Instruction* t = m.definition(type);
+        if (!t || t->opcode != spv::OpTypeMatrix || t->operand(1) != 4) return;
+        r.scale = {ScaleKind::ProjectionElement, 0, target->root, toMatrix, describe(m, target->root, toMatrix)};
+        found = true;
+      }
+    });
+  }
+
+  static nlohmann::json describeRayFix(const RayProduct& r, const std::string& injectedName) {
+    nlohmann::json entry;
+    entry["construct"] = "view ray * depth";
+    entry["form"] = r.form;
+    entry["depth"] = joined(r.depth.textures);
+    entry["projection_scale"] = r.scale.kind == ScaleKind::InverseElement ? "1 / " + r.scale.name + "[0][0]"
+                                : r.scale.kind == ScaleKind::Injected
+                                    ? injectedName + " (injected: set by the application)"
+                                    : r.scale.name + "[0][0]";
+    entry["fix"] = "p.x - eyeSign*separation*(|p.z| - convergence) / P00, after the last scaling of the product";
+    return entry;
+  }
+
+  // p' = eyeSign != 0 ? p with x - (eyeSign*separation)*(|p.z| - convergence)*(1/P00) : p.
+  static void rewriteRay(PassContext& ctx, const RayProduct& r) {
+    auto& m = ctx.module;
+    uint32_t f = m.typeFloat(32), boolType = m.typeBool();
+    uint32_t vectorType = m.typeVector(f, r.components), boolVector = m.typeVector(boolType, r.components);
+    std::vector<Instruction> code;
+    auto emit = [&](spv::Op op, uint32_t type, std::vector<uint32_t> operands) {
+      uint32_t id = m.takeId();
+      code.emplace_back(op, type, id, std::move(operands));
+      return id;
+    };
+    uint32_t inverseScale;  // 1 / P00
+    if (r.scale.kind == ScaleKind::InverseElement) {
+      inverseScale = emit(spv::OpCompositeExtract, f, {r.scale.matrixValue, 0, 0});
+    } else if (r.scale.kind == ScaleKind::Injected) {
+      uint32_t p00 = emitLoadEyeParam(ctx, code, kProjScaleX);
+      inverseScale = emit(spv::OpFDiv, f, {m.constantFloat(1.0f), p00});
+    } else {
+      const Instruction* variable = m.definition(r.scale.root);
+      auto storage = static_cast<spv::StorageClass>(variable->operand(0));
+      std::vector<uint32_t> chain = {r.scale.root};
+      for (uint32_t step : r.scale.path) chain.push_back(m.constantInt(static_cast<int32_t>(step)));
+      chain.push_back(m.constantInt(0));
+      chain.push_back(m.constantInt(0));
+      uint32_t pointer = emit(spv::OpAccessChain, m.typePointer(storage, f), chain);
+      uint32_t p00 = emit(spv::OpLoad, f, {pointer});
+      inverseScale = emit(spv::OpFDiv, f, {m.constantFloat(1.0f), p00});
+    }
+    uint32_t eyeSign = emitLoadEyeParam(ctx, code, kEyeSign);
+    uint32_t separation = emitLoadEyeParam(ctx, code, kSeparation);
+    uint32_t convergence = emitLoadEyeParam(ctx, code, kConvergence);
+    // |p.z| is the eye depth w for both handednesses (-z in OpenGL view space, z in Direct3D's).
+    uint32_t z = emit(spv::OpCompositeExtract, f, {r.fixPoint, 2});
+    uint32_t negated = emit(spv::OpFNegate, f, {z});
+    uint32_t behind = emit(spv::OpFOrdLessThan, boolType, {z, m.constantFloat(0.0f)});
+    uint32_t depth = emit(spv::OpSelect, f, {behind, negated, z});
+    uint32_t parallax = emit(spv::OpFSub, f, {depth, convergence});
+    uint32_t scale = emitEyeScale(ctx, code, eyeSign, separation);
+    uint32_t offset = emit(spv::OpFMul, f, {scale, parallax});
+    uint32_t viewOffset = emit(spv::OpFMul, f, {offset, inverseScale});
+    uint32_t x = emit(spv::OpCompositeExtract, f, {r.fixPoint, 0});
+    uint32_t correctedX = emit(spv::OpFSub, f, {x, viewOffset});
+    uint32_t corrected = emit(spv::OpCompositeInsert, vectorType, {correctedX, r.fixPoint, 0});
+    uint32_t stereo = emitStereoGuard(ctx, code, eyeSign);
+    std::vector<uint32_t> lanes(r.components, stereo);
+    uint32_t stereoVector = emit(spv::OpCompositeConstruct, boolVector, lanes);
+    uint32_t chosen = emit(spv::OpSelect, vectorType, {stereoVector, corrected, r.fixPoint});
+
+    spirv::replaceAllUses(m, r.fixPoint, chosen);
+    for (auto& block : r.function->blocks)
+      for (size_t i = 0; i < block.instructions.size(); ++i)
+        if (block.instructions[i].resultId == r.fixPoint) {
+          block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
+          m.invalidateDefinitions();
+          return;
+        }
+  }
+
+  static bool isUniformOnly(const Sources& s) {
+    return s.uniform && !s.fragCoord && !s.varying && !s.texel && !s.other;
+  }
+
+  // q' = eyeSign != 0 ? q with x + eyeSign*separation*(q.w - convergence) : q.
+  static void rewriteReprojection(PassContext& ctx, const Product& p) {
+    auto& m = ctx.module;
+    uint32_t f = m.typeFloat(32), v4 = m.typeVector(f, 4), bool4 = m.typeVector(m.typeBool(), 4);
+    std::vector<Instruction> code;
+    auto emit = [&](spv::Op op, uint32_t type, std::vector<uint32_t> operands) {
+      uint32_t id = m.takeId();
+      code.emplace_back(op, type, id, std::move(operands));
+      return id;
+    };
+    uint32_t x = emit(spv::OpCompositeExtract, f, {p.result, 0});
+    uint32_t w = emit(spv::OpCompositeExtract, f, {p.result, 3});
+    uint32_t shiftedX = emitShiftedX(ctx, code, x, w);
+    uint32_t shifted = emit(spv::OpCompositeInsert, v4, {shiftedX, p.result, 0});
+    uint32_t eyeSign = emitLoadEyeParam(ctx, code, kEyeSign);
+    uint32_t stereo = emitStereoGuard(ctx, code, eyeSign);
+    uint32_t stereo4 = emit(spv::OpCompositeConstruct, bool4, {stereo, stereo, stereo, stereo});
+    uint32_t chosen = emit(spv::OpSelect, v4, {stereo4, shifted, p.result});
+    spirv::replaceAllUses(m, p.result, chosen);
+    for (auto& block : p.function->blocks)
+      for (size_t i = 0; i < block.instructions.size(); ++i)
+        if (block.instructions[i].resultId == p.result) {
+          block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
+          m.invalidateDefinitions();
+          return;
+        }
+  }
+
   static void classify(SourceAnalysis& flow, Product& p) {
     p.matrixSources = flow.value(p.matrix);
     p.vectorSources = flow.value(p.vector);

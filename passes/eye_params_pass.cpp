@@ -83,12 +83,15 @@ const std::string& wantedName(const EyeParamOptions& o, int which) {
     case kHudDepth: return o.hudDepthName;
     case kEyeOffsetX: return o.eyeOffsetXName;
     case kEyeOffsetY: return o.eyeOffsetYName;
+    case kProjScaleX: return o.projScaleXName;
     default: return o.eyeOffsetZName;
   }
 }
 
 // Mono until the application sets them: eyeSign 0, convergence 1, HUD at depth 1, no offset.
-float defaultValue(int which) { return which == kConvergence || which == kHudDepth ? 1.0f : 0.0f; }
+float defaultValue(int which) {
+  return which == kConvergence || which == kHudDepth || which == kProjScaleX ? 1.0f : 0.0f;
+}
 
 // Picks the source and checks it fits the shader; the first declaration only.
 bool chooseSource(PassContext& ctx) {

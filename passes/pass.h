@@ -45,6 +45,7 @@ enum EyeParam : int {
   kEyeOffsetX,   // world-space offset of this eye's centre from the mono camera (per-eye view
   kEyeOffsetY,   // vectors when the shader has no matrix to derive it from)
   kEyeOffsetZ,
+  kProjScaleX,   // the projection's x scale P00, for view-ray deferred lighting without a projection
   kEyeParamCount
 };
 

@@ -47,7 +47,7 @@ const std::vector<PassInfo>& passRegistry() {
        "needs itself; it reads detection's classification and clip positions",
        {"clip-position-detection"}, kClipPositionAnalysis | kFoldedCopyAnalysis, kNoAnalyses},
       {"deferred-unprojection", createDeferredUnprojectionPass,
-       "makes InvM * vec4(ndc, depth, 1) position reconstruction (deferred lighting) per eye",
+       "makes position reconstruction in deferred lighting per eye: InvM * vec4(ndc, depth, 1) and viewRay * depth",
        "on (--no-deferred-unprojection turns it off)",
        "independent of the shift, like per-eye-view; last, as it needs nothing the others decide",
        {}, kNoAnalyses, kNoAnalyses},

@@ -49,6 +49,7 @@ struct EyeParamOptions {
   std::string eyeOffsetXName = "eyeOffsetX";    // declared only for per-eye view vectors that have
   std::string eyeOffsetYName = "eyeOffsetY";    // no matrix to derive the eye centre from
   std::string eyeOffsetZName = "eyeOffsetZ";
+  std::string projScaleXName = "projScaleX";    // declared only for view rays with no projection at hand
   std::optional<uint32_t> descriptorSet;  // default 0
   std::optional<uint32_t> binding;        // default: first binding unused in the set
   std::optional<uint32_t> hlslRegister;   // cbuffer register b<N>; default: first unused

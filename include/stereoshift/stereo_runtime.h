@@ -23,7 +23,7 @@
 
 namespace stereoshift::runtime {
 
-// The injected eye parameters, member i at byte offset 4*i (std140 / cbuffer packing of 7 floats).
+// The injected eye parameters, member i at byte offset 4*i (std140 / cbuffer packing of 8 floats).
 // A shader declares a prefix: the shift needs the first three, HUD-at-depth four, per-eye view
 // vectors without a matrix to derive them from all seven. Upload this struct to the `StereoParams`
 // block (or set the loose uniforms / specialization constants of the same names).
@@ -35,8 +35,9 @@ struct StereoParams {
   float eyeOffsetX = 0.0f;   // world-space offset of this eye's centre from the mono camera
   float eyeOffsetY = 0.0f;
   float eyeOffsetZ = 0.0f;
+  float projScaleX = 1.0f;   // the projection's x scale P[0][0] (view-ray deferred lighting without one)
 };
-static_assert(sizeof(StereoParams) == 7 * sizeof(float), "StereoParams must be 7 tightly packed floats");
+static_assert(sizeof(StereoParams) == 8 * sizeof(float), "StereoParams must be 8 tightly packed floats");
 
 template <class T>
 using Mat4 = std::array<T, 16>;

@@ -17,6 +17,10 @@
 // PNGs of each eye (truth, fix, baseline) and a red/cyan anaglyph of the fix are written for a person.
 // Both checks run for the GLSL lighting shader and for its HLSL relative (kLightingHlsl, through
 // glslang's HLSL front end), with the same scene, matrices and bounds.
+// A third check covers the view-ray form (docs/stereo-math.md section 4, view rays): the lighting
+// shader kViewRayFrag rebuilds the view-space point as ray * (linearDepth / -ray.z) with the ray
+// from gl_FragCoord through the inverse projection; the G-buffer's depth of each eye, linearised,
+// is read back, and the rebuilt point of fix and mono baseline is compared with the exact one.
 #include "transpiler/verify/stereo_verify.h"
 #include "transpiler/frontend/front_end.h"
 
@@ -164,6 +168,28 @@ float4 main(PSInput input) : SV_Target
     float pattern = 0.7 + 0.3 * sin(4.0 * p.x) * sin(4.0 * p.y + 3.0 * p.z);
     return float4(albedo * pattern * (0.3 + LightColor.rgb * ndl * atten * atten), 1.0);
 #endif
+}
+)";
+
+// The view-ray form: the pixel's far-plane point through the inverse projection is the ray, scaled
+// so that its z is the linear view depth the G-buffer stores (a positive depth; view space -z).
+// The uniform block shares FrameUBO's first two members, so renderLighting() feeds it.
+const char* kViewRayFrag = R"(#version 450
+layout(set = 0, binding = 0) uniform FrameUBO {
+    mat4 invProjection;
+    vec4 viewportSize;   // xy = pixels, zw = 1 / pixels
+} frame;
+layout(set = 1, binding = 2) uniform sampler2D gLinearDepth;
+layout(location = 0) in vec2 inUV;
+layout(location = 0) out vec4 outColor;
+void main()
+{
+    vec2 ndc = gl_FragCoord.xy * frame.viewportSize.zw * 2.0 - 1.0;
+    vec4 farPoint = frame.invProjection * vec4(ndc, 1.0, 1.0);
+    vec3 ray = farPoint.xyz / farPoint.w;
+    float linearDepth = texelFetch(gLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    vec3 viewPos = ray * (linearDepth / -ray.z);
+    outColor = unpackUnorm4x8(floatBitsToUint(viewPos[POSITION_COMPONENT]));
 }
 )";
 
@@ -606,6 +632,81 @@ TEST_F(DeferredRender, HlslLightingShaderFixedByExecution) {
   EXPECT_FALSE(pass.contains("left_alone")) << pass.dump(2);
   checkRebuiltPositions("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl");
   checkLitImage("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl", "deferred_hlsl");
+}
+
+// The view-ray form: per eye, the G-buffer depth drawn with that eye's stereo projection, made
+// linear (the positive view depth d = -z_view, in double from the Vulkan depth), read back by
+// kViewRayFrag with the mono inverse projection: stereoshift's version with the eye parameters
+// (fix) and the original (mono baseline). The exact point is the mono-view-space surface point the
+// pixel shows: the stereo inverse projection of (pixel-centre NDC, depth). Measured relative
+// errors |p - p_exact| / |p_exact| (max over pixels, lavapipe): fix 1.11e-7 (left eye) and
+// 1.15e-7 (right), about one fp32 ulp; mono baseline 0.037 and 0.035. Asserted: the fix within
+// kViewRayBound = 5e-7 (four ulps) everywhere; the baseline, off by e*S*(d - C)/p00 in x, beyond
+// 1000 times that bound at nine pixels out of ten (it is right only near the convergence depth).
+TEST_F(DeferredRender, ViewRayPositionWithinBoundOfTheTruePosition) {
+  constexpr double kViewRayBound = 5e-7;
+  const Mat4 monoInverseProjection = inverse(projection(0));
+  const Mat4 mono = projection(0);
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    const Mat4 stereoInverseProjection = inverse(projection(eye));
+    GBuffer linear = g;
+    for (size_t i = 0; i < g.depthValues.size(); ++i) {
+      double zNdc = g.depthValues[i];
+      // Vulkan depth: z_ndc = -p22 - p32 / z_view, so d = -z_view = p32 / (z_ndc + p22).
+      linear.depth.rgba[4 * i] = g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (zNdc + mono[10]));
+    }
+    std::array<RenderResult, 3> fixedPosition, baseline;
+    nlohmann::json report;
+    for (int component = 0; component < 3; ++component) {
+      TranspileOptions options;
+      options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
+      auto original = compileOriginal("view_ray.frag", kViewRayFrag, options);
+      Transpiled transpiled = compileTranspiled("view_ray.frag", kViewRayFrag, options);
+      report = transpiled.report["passes"]["deferred-unprojection"];
+      fixedPosition[component] = renderLighting(linear, transpiled.spirv, monoInverseProjection, &transpiled, eye);
+      baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye);
+      ASSERT_TRUE(fixedPosition[component].ok() && baseline[component].ok());
+    }
+    ASSERT_TRUE(report.contains("fixed")) << report.dump(2);
+    EXPECT_EQ(report["fixed"][0].value("projection_scale", ""), "1 / frame.invProjection[0][0]") << report.dump(2);
+    auto bitsAt = [](const RenderResult& r, size_t pixel) {
+      uint32_t bits = 0;
+      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
+      float f;
+      std::memcpy(&f, &bits, 4);
+      return double(f);
+    };
+    double worstFix = 0, worstBaseline = 0;
+    size_t pixels = 0, baselineWrong = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        size_t i = size_t(y) * kSize + x;
+        if (g.depthValues[i] >= 1.0f) continue;
+        ++pixels;
+        std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
+        std::array<double, 4> exact{};
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c < 4; ++c) exact[r] += stereoInverseProjection[c * 4 + r] * v[c];
+        double length = 0, fixError = 0, baselineError = 0;
+        for (int c = 0; c < 3; ++c) {
+          double p = exact[c] / exact[3];
+          length += p * p;
+          fixError = std::max(fixError, std::abs(bitsAt(fixedPosition[c], i) - p));
+          baselineError = std::max(baselineError, std::abs(bitsAt(baseline[c], i) - p));
+        }
+        length = std::sqrt(length);
+        worstFix = std::max(worstFix, fixError / length);
+        worstBaseline = std::max(worstBaseline, baselineError / length);
+        baselineWrong += baselineError / length > 1000 * kViewRayBound;
+      }
+    std::cout << std::setprecision(3) << "[view ray] eye " << eye << ": view-space position over " << pixels
+              << " pixels, max |p - p_exact| / |p_exact|: fix " << worstFix << ", mono baseline " << worstBaseline
+              << "; baseline beyond 1000x the fix bound at " << baselineWrong << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_LT(worstFix, kViewRayBound) << "eye " << eye;
+    EXPECT_GT(baselineWrong, pixels * 9 / 10) << "eye " << eye << ": the mono baseline should be wrong";
+  }
 }
 
 }  // namespace

@@ -168,6 +168,173 @@ const char* kModelTransform = R"(
                OpFunctionEnd
 )";
 
+// The view-ray form (docs/stereo-math.md section 4, view rays):
+// layout(set = 0, binding = 0) uniform Camera { mat4 projection; } camera;
+// layout(set = 0, binding = 1) uniform sampler2D linearDepth;
+// layout(location = 0) in vec2 inUV;
+// layout(location = 1) in vec3 inViewRay;
+// layout(location = 0) out vec4 outViewPos;
+// void main() {
+//   vec3 p = inViewRay * texture(linearDepth, inUV).r;
+//   outViewPos = vec4(p, camera.projection[0][0]);
+// }
+const char* kViewRay = R"(
+               OpCapability Shader
+          %1 = OpExtInstImport "GLSL.std.450"
+               OpMemoryModel Logical GLSL450
+               OpEntryPoint Fragment %4 "main" %11 %20 %29
+               OpExecutionMode %4 OriginUpperLeft
+               OpSource GLSL 450
+               OpName %4 "main"
+               OpName %9 "p"
+               OpName %11 "inViewRay"
+               OpName %16 "linearDepth"
+               OpName %20 "inUV"
+               OpName %29 "outViewPos"
+               OpName %32 "Camera"
+               OpMemberName %32 0 "projection"
+               OpName %34 "camera"
+               OpDecorate %11 Location 1
+               OpDecorate %16 DescriptorSet 0
+               OpDecorate %16 Binding 1
+               OpDecorate %20 Location 0
+               OpDecorate %29 Location 0
+               OpMemberDecorate %32 0 ColMajor
+               OpMemberDecorate %32 0 Offset 0
+               OpMemberDecorate %32 0 MatrixStride 16
+               OpDecorate %32 Block
+               OpDecorate %34 DescriptorSet 0
+               OpDecorate %34 Binding 0
+          %2 = OpTypeVoid
+          %3 = OpTypeFunction %2
+          %6 = OpTypeFloat 32
+          %7 = OpTypeVector %6 3
+          %8 = OpTypePointer Function %7
+         %10 = OpTypePointer Input %7
+         %11 = OpVariable %10 Input
+         %13 = OpTypeImage %6 2D 0 0 0 1 Unknown
+         %14 = OpTypeSampledImage %13
+         %15 = OpTypePointer UniformConstant %14
+         %16 = OpVariable %15 UniformConstant
+         %18 = OpTypeVector %6 2
+         %19 = OpTypePointer Input %18
+         %20 = OpVariable %19 Input
+         %22 = OpTypeVector %6 4
+         %24 = OpTypeInt 32 0
+         %25 = OpConstant %24 0
+         %28 = OpTypePointer Output %22
+         %29 = OpVariable %28 Output
+         %31 = OpTypeMatrix %22 4
+         %32 = OpTypeStruct %31
+         %33 = OpTypePointer Uniform %32
+         %34 = OpVariable %33 Uniform
+         %35 = OpTypeInt 32 1
+         %36 = OpConstant %35 0
+         %37 = OpTypePointer Uniform %6
+          %4 = OpFunction %2 None %3
+          %5 = OpLabel
+          %9 = OpVariable %8 Function
+         %12 = OpLoad %7 %11
+         %17 = OpLoad %14 %16
+         %21 = OpLoad %18 %20
+         %23 = OpImageSampleImplicitLod %22 %17 %21
+         %26 = OpCompositeExtract %6 %23 0
+         %27 = OpVectorTimesScalar %7 %12 %26
+               OpStore %9 %27
+         %30 = OpLoad %7 %9
+         %38 = OpAccessChain %37 %34 %36 %36 %25
+         %39 = OpLoad %6 %38
+         %40 = OpCompositeExtract %6 %30 0
+         %41 = OpCompositeExtract %6 %30 1
+         %42 = OpCompositeExtract %6 %30 2
+         %43 = OpCompositeConstruct %22 %40 %41 %42 %39
+               OpStore %29 %43
+               OpReturn
+               OpFunctionEnd
+)";
+
+// Not a view ray: an interpolated colour scaled by the fragment's own depth (no texel), in a
+// shader that reads projection[0][0] all the same.
+// layout(set = 0, binding = 0) uniform Material { mat4 projection; float fogDensity; } material;
+// layout(location = 0) in vec3 inColor;
+// layout(location = 0) out vec4 outColor;
+// void main() {
+//   vec3 c = inColor * (gl_FragCoord.z * material.fogDensity);
+//   outColor = vec4(c, material.projection[0][0]);
+// }
+const char* kScaledColour = R"(
+               OpCapability Shader
+          %1 = OpExtInstImport "GLSL.std.450"
+               OpMemoryModel Logical GLSL450
+               OpEntryPoint Fragment %4 "main" %11 %15 %33
+               OpExecutionMode %4 OriginUpperLeft
+               OpSource GLSL 450
+               OpName %4 "main"
+               OpName %9 "c"
+               OpName %11 "inColor"
+               OpName %15 "gl_FragCoord"
+               OpName %22 "Material"
+               OpMemberName %22 0 "projection"
+               OpMemberName %22 1 "fogDensity"
+               OpName %24 "material"
+               OpName %33 "outColor"
+               OpDecorate %11 Location 0
+               OpDecorate %15 BuiltIn FragCoord
+               OpMemberDecorate %22 0 ColMajor
+               OpMemberDecorate %22 0 Offset 0
+               OpMemberDecorate %22 0 MatrixStride 16
+               OpMemberDecorate %22 1 Offset 64
+               OpDecorate %22 Block
+               OpDecorate %24 DescriptorSet 0
+               OpDecorate %24 Binding 0
+               OpDecorate %33 Location 0
+          %2 = OpTypeVoid
+          %3 = OpTypeFunction %2
+          %6 = OpTypeFloat 32
+          %7 = OpTypeVector %6 3
+          %8 = OpTypePointer Function %7
+         %10 = OpTypePointer Input %7
+         %11 = OpVariable %10 Input
+         %13 = OpTypeVector %6 4
+         %14 = OpTypePointer Input %13
+         %15 = OpVariable %14 Input
+         %16 = OpTypeInt 32 0
+         %17 = OpConstant %16 2
+         %18 = OpTypePointer Input %6
+         %21 = OpTypeMatrix %13 4
+         %22 = OpTypeStruct %21 %6
+         %23 = OpTypePointer Uniform %22
+         %24 = OpVariable %23 Uniform
+         %25 = OpTypeInt 32 1
+         %26 = OpConstant %25 1
+         %27 = OpTypePointer Uniform %6
+         %32 = OpTypePointer Output %13
+         %33 = OpVariable %32 Output
+         %35 = OpConstant %25 0
+         %36 = OpConstant %16 0
+          %4 = OpFunction %2 None %3
+          %5 = OpLabel
+          %9 = OpVariable %8 Function
+         %12 = OpLoad %7 %11
+         %19 = OpAccessChain %18 %15 %17
+         %20 = OpLoad %6 %19
+         %28 = OpAccessChain %27 %24 %26
+         %29 = OpLoad %6 %28
+         %30 = OpFMul %6 %20 %29
+         %31 = OpVectorTimesScalar %7 %12 %30
+               OpStore %9 %31
+         %34 = OpLoad %7 %9
+         %37 = OpAccessChain %27 %24 %35 %35 %36
+         %38 = OpLoad %6 %37
+         %39 = OpCompositeExtract %6 %34 0
+         %40 = OpCompositeExtract %6 %34 1
+         %41 = OpCompositeExtract %6 %34 2
+         %42 = OpCompositeConstruct %13 %39 %40 %41 %38
+               OpStore %33 %42
+               OpReturn
+               OpFunctionEnd
+)";
+
 TEST(DeferredUnprojectionPass, MakesTheReconstructionPerEye) {
   SinglePassRun run = runSinglePass(kUnprojection, "deferred-unprojection");
   ASSERT_TRUE(run.ok) << run.diagnostics;
@@ -183,6 +350,29 @@ TEST(DeferredUnprojectionPass, MakesTheReconstructionPerEye) {
 
 TEST(DeferredUnprojectionPass, LeavesAModelTransformAlone) {
   SinglePassRun run = runSinglePass(kModelTransform, "deferred-unprojection");
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Unchanged);
+  EXPECT_EQ(run.disassembly.find("StereoParams"), std::string::npos);
+  EXPECT_EQ(run.disassembly.find("OpSelect"), std::string::npos);
+}
+
+TEST(DeferredUnprojectionPass, CorrectsTheViewXOfAViewRayTimesADepthRead) {
+  SinglePassRun run = runSinglePass(kViewRay, "deferred-unprojection");
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Changed);
+  // p.x - (eyeSign*separation)*(|p.z| - convergence) * (1 / projection[0][0]), selected when
+  // eyeSign != 0, and stored where p was.
+  EXPECT_TRUE(containsInOrder(run.disassembly, {
+      "OpVectorTimesScalar %v3float", "OpAccessChain %_ptr_Uniform_float %camera", "OpLoad %float",
+      "OpFDiv %float %float_1", "OpCompositeExtract %float", "OpFNegate %float", "OpFOrdLessThan %bool",
+      "OpSelect %float", "OpFSub %float", "OpFMul %float", "OpFMul %float", "OpFMul %float",
+      "OpCompositeExtract %float", "OpFSub %float", "OpCompositeInsert %v3float", "OpFUnordNotEqual %bool",
+      "OpSelect %v3float", "OpStore %p"}))
+      << run.disassembly;
+}
+
+TEST(DeferredUnprojectionPass, LeavesAVectorScaledByADepthThatIsNoTexelAlone) {
+  SinglePassRun run = runSinglePass(kScaledColour, "deferred-unprojection");
   ASSERT_TRUE(run.ok) << run.diagnostics;
   EXPECT_EQ(run.result, PassResult::Unchanged);
   EXPECT_EQ(run.disassembly.find("StereoParams"), std::string::npos);

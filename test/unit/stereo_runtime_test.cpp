@@ -64,7 +64,7 @@ M lookFrom(const Vec3<double>& eye, double yaw, double pitch) {
 constexpr double kS = 0.065, kC = 3.5;
 
 TEST(StereoRuntime, StereoParamsMatchesTheInjectedBlockLayout) {
-  EXPECT_EQ(sizeof(StereoParams), 28u);
+  EXPECT_EQ(sizeof(StereoParams), 32u);
   EXPECT_EQ(offsetof(StereoParams, eyeSign), 0u);
   EXPECT_EQ(offsetof(StereoParams, separation), 4u);
   EXPECT_EQ(offsetof(StereoParams, convergence), 8u);
@@ -72,6 +72,7 @@ TEST(StereoRuntime, StereoParamsMatchesTheInjectedBlockLayout) {
   EXPECT_EQ(offsetof(StereoParams, eyeOffsetX), 16u);
   EXPECT_EQ(offsetof(StereoParams, eyeOffsetY), 20u);
   EXPECT_EQ(offsetof(StereoParams, eyeOffsetZ), 24u);
+  EXPECT_EQ(offsetof(StereoParams, projScaleX), 28u);
   StereoParams mono;
   EXPECT_EQ(mono.eyeSign, 0.0f);  // mono until the application says otherwise
 }
