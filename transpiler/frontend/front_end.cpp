@@ -590,6 +590,12 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
     if (!attempt.diags.hasErrors()) attempt.diags.error(input.path, "glslang could not link the shader");
     return attempt;
   }
+  // glslang links an HLSL shader whose entry point is missing, with only a warning, into a module
+  // without one.
+  if (language == SourceLanguage::Hlsl && std::strstr(program.getInfoLog(), "Entry point not found")) {
+    attempt.diags.error(input.path, "Entry point not found: '" + entry + "'");
+    return attempt;
+  }
   glslang::SpvOptions spvOptions;
   spvOptions.generateDebugInfo = false;
   spvOptions.disableOptimizer = true;
@@ -605,6 +611,21 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   return attempt;
 }
 
+// The entry-point name samples use for `stage` (VSMain, PSMain, ...), null where there is none.
+const char* conventionalHlslEntry(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "VSMain";
+    case Stage::Fragment: return "PSMain";
+    case Stage::Geometry: return "GSMain";
+    case Stage::TessControl: return "HSMain";
+    case Stage::TessEvaluation: return "DSMain";
+    case Stage::Compute: return "CSMain";
+    case Stage::Mesh: return "MSMain";
+    case Stage::Task: return "ASMain";
+    default: return nullptr;
+  }
+}
+
 // HLSL entry point: -e, else `main`, else the stage-conventional name found in the source.
 std::string chooseHlslEntry(const std::string& text, Stage stage, const std::string& requested) {
   if (!requested.empty()) return requested;
@@ -612,18 +633,7 @@ std::string chooseHlslEntry(const std::string& text, Stage stage, const std::str
     return mentionsFunction(text, name);
   };
   if (defines("main")) return "main";
-  const char* conventional = nullptr;
-  switch (stage) {
-    case Stage::Vertex: conventional = "VSMain"; break;
-    case Stage::Fragment: conventional = "PSMain"; break;
-    case Stage::Geometry: conventional = "GSMain"; break;
-    case Stage::TessControl: conventional = "HSMain"; break;
-    case Stage::TessEvaluation: conventional = "DSMain"; break;
-    case Stage::Compute: conventional = "CSMain"; break;
-    case Stage::Mesh: conventional = "MSMain"; break;
-    case Stage::Task: conventional = "ASMain"; break;
-    default: break;
-  }
+  const char* conventional = conventionalHlslEntry(stage);
   if (conventional && defines(conventional)) return conventional;
   // Effect files name their entry points in their techniques: the first one of this stage.
   for (const auto& [techniqueStage, name] : techniqueEntryPoints(text)) {
@@ -693,14 +703,37 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
 
   if (language == SourceLanguage::Hlsl) {
     std::string entry = chooseHlslEntry(input.contents, *stage, options.entryPoint);
-    if (!mentionsFunction(input.contents, entry)) {
+    // The text names its entry point, or the entry comes from an #include or a macro (`ENTRY(main)`),
+    // which only glslang's preprocessor sees: then `main` and the stage's conventional name are tried
+    // on the preprocessed shader (glslang links without an entry point, with a warning, when the name
+    // is missing).
+    std::vector<std::string> candidates = {entry};
+    if (!mentionsFunction(input.contents, entry) && options.entryPoint.empty()) {
+      candidates = {"main"};
+      if (const char* conventional = conventionalHlslEntry(*stage)) candidates.push_back(conventional);
+    }
+    auto entryMissing = [](const Diagnostics& d) {
+      return std::any_of(d.all().begin(), d.all().end(), [](const Diagnostic& x) {
+        return x.message.find("Entry point not found") != std::string::npos;
+      });
+    };
+    // Effect files: glslang parses the HLSL once technique and state blocks are blanked out.
+    std::string blanked = blankEffectBlocks(input.contents);
+    Attempt a;
+    bool found = false;
+    for (const auto& candidate : candidates) {
+      a = compileGlslangOnce(input, blanked, *stage, language, Client::Vulkan, candidate, options);
+      if (!entryMissing(a.diags)) {
+        entry = candidate;
+        found = true;
+        break;
+      }
+    }
+    if (!found) {
       diags.error(input.path, "entry point '" + entry + "' not found" +
                                   (options.entryPoint.empty() ? "; name it with -e <function>" : ""));
       return result;
     }
-    // Effect files: glslang parses the HLSL once technique and state blocks are blanked out.
-    Attempt a = compileGlslangOnce(input, blankEffectBlocks(input.contents), *stage, language, Client::Vulkan, entry,
-                                   options);
     diags.append(a.diags);
     if (!a.ok) return result;
     result.ok = true;
