@@ -22,7 +22,7 @@ class DomainRewriter : Rewriter {
       for (const auto& sh : shifts) {
         if (sh.function == fn) return sh;
       }
-      shifts.push_back({access.empty() ? std::string("float4") : type, fn, access});
+      shifts.push_back({access.empty() ? std::string("float4") : type, fn, access, {}});
       return shifts.back();
     };
     std::string mono = opt_.entryPoint + "_" + kPrefix + "_mono";

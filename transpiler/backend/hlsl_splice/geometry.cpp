@@ -45,7 +45,7 @@ class GeometryRewriter : Rewriter {
     }
     std::optional<std::string> path = positionPath(elem);
     if (!path) return errAt(sd->nameTok, "struct '" + elem + "' has no member with semantic SV_Position");
-    ShiftHelper shift{elem, std::string(kPrefix) + "_shift_" + elem, *path};
+    ShiftHelper shift{elem, std::string(kPrefix) + "_shift_" + elem, *path, {}};
 
     // Names that are not streams: AppendStructuredBuffer<T> objects.
     std::set<std::string> buffers;
