@@ -288,4 +288,17 @@ bool isPreRasterization(Stage stage) {
          stage == Stage::Geometry || stage == Stage::Mesh;
 }
 
+Stage stageFromHlslProfile(std::string_view profile) {
+  if (profile.size() < 3 || profile[2] != '_') return Stage::Unknown;
+  std::string kind;
+  for (char c : profile.substr(0, 2)) kind += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (kind == "vs") return Stage::Vertex;
+  if (kind == "ps") return Stage::Fragment;
+  if (kind == "gs") return Stage::Geometry;
+  if (kind == "hs") return Stage::TessControl;
+  if (kind == "ds") return Stage::TessEvaluation;
+  if (kind == "cs") return Stage::Compute;
+  return Stage::Unknown;
+}
+
 }  // namespace stereoshift

@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace stereoshift {
@@ -170,6 +171,8 @@ bool isIncludeOnlyName(const std::string& path);
 std::string pipelineKey(const std::string& path, const std::map<std::string, Stage>& extraExtensions = {});
 std::optional<Stage> stageFromPath(const std::string& path, const std::map<std::string, Stage>& extraExtensions = {});
 std::optional<Stage> stageFromName(const std::string& name);  // vert, frag, vertex, ...
+// The stage of an HLSL compile profile (`vs_5_0`, `ps_4_0_level_9_1`, `cs_6_0`; any case), Unknown otherwise.
+Stage stageFromHlslProfile(std::string_view profile);
 // "vulkan1.2" -> TargetEnv::Vulkan1_2 ("opengl" and "opengl4.5" -> OpenGL45); nullopt when unknown.
 std::optional<TargetEnv> targetEnvFromName(const std::string& name);
 const char* targetEnvName(TargetEnv env);

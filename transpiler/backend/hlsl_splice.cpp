@@ -104,17 +104,6 @@ Stage stageOfSignature(const TokenView& view, const TopLevel& top, const Functio
   return Stage::Unknown;
 }
 
-Stage stageOfProfile(std::string_view profile) {
-  std::string p = lower(profile);
-  if (p.starts_with("vs_")) return Stage::Vertex;
-  if (p.starts_with("ps_")) return Stage::Fragment;
-  if (p.starts_with("gs_")) return Stage::Geometry;
-  if (p.starts_with("hs_")) return Stage::TessControl;
-  if (p.starts_with("ds_")) return Stage::TessEvaluation;
-  if (p.starts_with("cs_")) return Stage::Compute;
-  return Stage::Unknown;
-}
-
 }  // namespace
 
 std::vector<HlslEntryPoint> findHlslEntryPoints(const std::string& source) {
@@ -127,13 +116,13 @@ std::vector<HlslEntryPoint> findHlslEntryPoints(const std::string& source) {
     if (!view.isWord(k, "CompileShader") || !view.isPunct(k + 1, '(') || !view.isIdent(k + 2) ||
         !view.isPunct(k + 3, ',') || !view.isIdent(k + 4) || !view.isPunct(k + 5, '('))
       continue;
-    byTechnique.emplace(std::string(view.text(k + 4)), stageOfProfile(view.text(k + 2)));
+    byTechnique.emplace(std::string(view.text(k + 4)), stageFromHlslProfile(view.text(k + 2)));
   }
   // Effects 9: `VertexShader = compile vs_3_0 Name();`
   for (size_t k = 0; k + 3 < view.tokens.size(); ++k) {
     if (lower(view.text(k)) != "compile" || !view.isIdent(k + 1) || !view.isIdent(k + 2) || !view.isPunct(k + 3, '('))
       continue;
-    byTechnique.emplace(std::string(view.text(k + 2)), stageOfProfile(view.text(k + 1)));
+    byTechnique.emplace(std::string(view.text(k + 2)), stageFromHlslProfile(view.text(k + 1)));
   }
   // A function another function calls is a helper, not an entry point (`VSOut transform(...)`
   // called by the real entry point has an entry's signature too).

@@ -105,17 +105,6 @@ class EffectText {
   std::vector<Word> words_;
 };
 
-Stage stageOfProfile(std::string_view profile) {
-  std::string p = lowered(profile);
-  if (p.starts_with("vs_")) return Stage::Vertex;
-  if (p.starts_with("ps_")) return Stage::Fragment;
-  if (p.starts_with("gs_")) return Stage::Geometry;
-  if (p.starts_with("hs_")) return Stage::TessControl;
-  if (p.starts_with("ds_")) return Stage::TessEvaluation;
-  if (p.starts_with("cs_")) return Stage::Compute;
-  return Stage::Unknown;
-}
-
 }  // namespace
 
 std::string blankEffectBlocks(const std::string& text) {
@@ -167,7 +156,7 @@ std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const std::strin
   EffectText e(text);
   std::vector<std::pair<Stage, std::string>> found;
   auto add = [&](std::string_view profile, std::string_view name) {
-    Stage stage = stageOfProfile(profile);
+    Stage stage = stageFromHlslProfile(profile);
     if (stage == Stage::Unknown) return;
     for (const auto& f : found) {
       if (f.second == name) return;
