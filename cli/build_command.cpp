@@ -18,6 +18,8 @@
 #include "cli/build_report.h"
 #include "cli/build_schedule.h"
 
+#include <CLI/CLI.hpp>
+
 #include <iostream>
 
 namespace fs = std::filesystem;

@@ -6,6 +6,8 @@
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/language_detect.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <map>

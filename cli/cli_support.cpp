@@ -3,6 +3,8 @@
 #include "cli/worker_pool.h"
 #include "passes/pass_registry.h"
 
+#include <CLI/CLI.hpp>
+
 #include <sys/stat.h>
 #include <unistd.h>
 

@@ -4,7 +4,6 @@
 
 #include "transpiler/stereoshift.h"
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -13,6 +12,13 @@
 #include <ostream>
 #include <string>
 #include <vector>
+
+// CLI11 is declared, not included: it is the heaviest header of the tool (every translation unit that
+// included it paid for its parser again), and only the files that register or parse options need it.
+namespace CLI {
+class App;
+class ParseError;
+}  // namespace CLI
 
 namespace stereoshift {
 

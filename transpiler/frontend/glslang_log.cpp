@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <charconv>
-#include <regex>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 namespace stereoshift {
 
@@ -42,37 +43,79 @@ std::string trim(std::string s) {
   return first == std::string::npos ? std::string() : s.substr(first);
 }
 
+// One line of glslang's log, taken apart by hand: the format needs no backtracking, and std::regex
+// costs seconds of compile time per use (more under the sanitizers) and is slow to run. glslang
+// writes two forms:
+//   ERROR: <file>:<line>: '<token>' : <message>     (located)
+//   ERROR: <message>                                (plain; also WARNING)
+// The file is the shortest prefix followed by ":<digits>: '", the token runs to the first "' : " after
+// its opening quote, as glslang never puts that sequence in a file name. A line with a carriage return
+// is not glslang's (it writes \n only) and is skipped.
+struct LogLine {
+  bool error = false;
+  bool located = false;
+  std::string file, digits, token, message;
+};
+
+std::optional<LogLine> splitLogLine(const std::string& line) {
+  LogLine out;
+  std::string_view rest(line);
+  if (rest.find('\r') != std::string_view::npos) return std::nullopt;
+  if (rest.starts_with("ERROR: ")) {
+    out.error = true;
+    rest.remove_prefix(7);
+  } else if (rest.starts_with("WARNING: ")) {
+    rest.remove_prefix(9);
+  } else {
+    return std::nullopt;
+  }
+  for (size_t colon = rest.find(':'); colon != std::string_view::npos; colon = rest.find(':', colon + 1)) {
+    size_t digitsEnd = colon + 1;
+    while (digitsEnd < rest.size() && rest[digitsEnd] >= '0' && rest[digitsEnd] <= '9') ++digitsEnd;
+    if (digitsEnd == colon + 1 || rest.substr(digitsEnd, 3) != ": '") continue;
+    size_t tokenStart = digitsEnd + 3;
+    size_t tokenEnd = rest.find("' : ", tokenStart);
+    if (tokenEnd == std::string_view::npos) break;  // no later candidate can have one either
+    out.located = true;
+    out.file = std::string(rest.substr(0, colon));
+    out.digits = std::string(rest.substr(colon + 1, digitsEnd - colon - 1));
+    out.token = std::string(rest.substr(tokenStart, tokenEnd - tokenStart));
+    out.message = std::string(rest.substr(tokenEnd + 4));
+    return out;
+  }
+  out.message = std::string(rest);
+  return out;
+}
+
 }  // namespace
 
 void parseGlslangLog(const std::string& log, const std::string& mainFile,
                      const std::vector<std::pair<std::string, std::string>>& sources, Diagnostics& out) {
-  // ERROR: <file>:<line>: '<token>' : <message>
-  static const std::regex located(R"(^(ERROR|WARNING): (.*?):(\d+): '(.*?)' : (.*)$)");
-  static const std::regex plain(R"(^(ERROR|WARNING): (.*)$)");
   std::istringstream in(log);
   std::string line;
   while (std::getline(in, line)) {
-    std::smatch m;
-    if (std::regex_match(line, m, located)) {
-      std::string file = m[2];
+    std::optional<LogLine> parsed = splitLogLine(line);
+    if (!parsed) continue;
+    if (parsed->located) {
+      std::string file = parsed->file;
       // Total: a line number past int (glslang's own type) reads as 0, "whole file", never throws.
       int lineNo = 0;
-      const std::string digits = m[3];
+      const std::string& digits = parsed->digits;
       if (std::from_chars(digits.data(), digits.data() + digits.size(), lineNo).ec != std::errc()) lineNo = 0;
-      std::string token = m[4];
-      std::string message = trim(m[5]);
+      const std::string& token = parsed->token;
+      std::string message = trim(parsed->message);
       if (message == "compilation terminated") continue;  // glslang's follow-up to the real error
       if (file == "0" || file.empty()) file = mainFile;
       int column = 1;
       for (const auto& [name, text] : sources)
         if (name == file) column = columnOf(lineOf(text, lineNo), token);
       std::string full = token.empty() ? message : "'" + token + "' : " + message;
-      Diagnostic d{m[1] == "ERROR" ? Severity::Error : Severity::Warning, file, lineNo, column, full};
+      Diagnostic d{parsed->error ? Severity::Error : Severity::Warning, file, lineNo, column, full};
       out.add(std::move(d));
-    } else if (std::regex_match(line, m, plain)) {
-      std::string message = trim(m[2]);
+    } else {
+      std::string message = trim(parsed->message);
       if (message.find("compilation errors.") != std::string::npos) continue;  // summary line
-      if (m[1] == "ERROR")
+      if (parsed->error)
         out.error(mainFile, message);
       else
         out.warning(mainFile, message);
