@@ -48,8 +48,7 @@ case "$mode" in
     sanitize_dir="${STEREOSHIFT_SANITIZE_BUILD_DIR:-build-sanitize}"
     cmake -S . -B "$sanitize_dir" -G Ninja "${build_type[@]}" -DBUILD_TESTING=ON \
           -DCMAKE_CXX_COMPILER=clang++-14 -DSTEREOSHIFT_SANITIZE=ON >/dev/null
-    cmake --build "$sanitize_dir" --parallel "$(nproc)" --target stereoshift stereoshift_unit_tests \
-          worker_pool_tests stereo_runtime_tests stage_rule_tests stereoshift_fuzz_targets fuzz_seeds
+    cmake --build "$sanitize_dir" --parallel "$(nproc)" --target stereoshift_sanitizer_suite
     ctest --test-dir "$sanitize_dir" --output-on-failure --parallel "$(nproc)" \
           -R '^(unit|unit[.].*|lit|corpus|fuzz[.]regressions[.].*)$'
     # Each fuzz target from the seeds (corpus/, the lit tests) for a fixed number of inputs with a fixed
