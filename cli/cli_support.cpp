@@ -711,7 +711,7 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
       {"eye",
        {{"source", static_cast<int>(e.source)}, {"blockName", e.blockName}, {"instanceName", e.instanceName},
         {"names", {e.eyeSignName, e.separationName, e.convergenceName, e.hudDepthName, e.eyeOffsetXName,
-                   e.eyeOffsetYName, e.eyeOffsetZName}},
+                   e.eyeOffsetYName, e.eyeOffsetZName, e.projScaleXName}},
         {"set", opt(e.descriptorSet)}, {"binding", opt(e.binding)}, {"hlslRegister", opt(e.hlslRegister)},
         {"glBinding", opt(e.glBinding)}, {"specIdBase", e.specIdBase}}},
       {"cutoff", static_cast<int>(t.cutoff)},
