@@ -840,7 +840,13 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
                                                                             : std::vector<std::string>{}),
                      text.size());
   glslang::TShader::Includer& includes = includer ? static_cast<glslang::TShader::Includer&>(*includer) : noIncludes;
-  bool ok = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includes);
+  bool parsed = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includes);
+  return linkParsedShader(shader, parsed, messages, displayName, text, diags);
+}
+
+bool linkParsedShader(glslang::TShader& shader, bool parsed, int messages, const std::string& displayName,
+                      const std::string& text, Diagnostics& diags) {
+  bool ok = parsed;
   if (ok) {
     glslang::TProgram program;
     program.addShader(&shader);

@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace glslang {
+class TShader;
+}  // namespace glslang
+
 namespace stereoshift {
 
 struct FrontEndResult {
@@ -41,5 +45,11 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
 
 // glslang's process-wide initialisation, done once.
 void ensureGlslangInitialized();
+
+// The tail of every re-compile (verifyCompiles, verifyLegacyCompiles): links the shader, parsed or
+// not (`parsed`: what TShader::parse returned), alone and turns glslang's log into diagnostics on
+// `displayName`; a failure without a log line still says that the emitted shader does not compile.
+bool linkParsedShader(glslang::TShader& shader, bool parsed, int messages, const std::string& displayName,
+                      const std::string& text, Diagnostics& diags);
 
 }  // namespace stereoshift

@@ -1,7 +1,6 @@
 // This turns ESSL 100 and desktop GLSL 110-150 into ESSL 310 / GLSL 330 for analysis: see legacy_glsl.h.
 #include "transpiler/frontend/legacy_glsl.h"
 
-#include "transpiler/frontend/glslang_log.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -483,17 +482,8 @@ bool verifyLegacyCompiles(const std::string& text, Stage stage, int version, boo
   // prints its whole built-in text to stdout and fails).
   EProfile profile = es ? EEsProfile : (version >= 150 ? ECoreProfile : ENoProfile);
   glslang::TShader::ForbidIncluder noIncludes;
-  bool ok = shader.parse(GetDefaultResources(), version, profile, false, false, EShMsgDefault, noIncludes);
-  if (ok) {
-    glslang::TProgram program;
-    program.addShader(&shader);
-    ok = program.link(EShMsgDefault);
-    if (!ok) parseGlslangLog(program.getInfoLog(), displayName, {{displayName, text}}, diags);
-  } else {
-    parseGlslangLog(shader.getInfoLog(), displayName, {{displayName, text}}, diags);
-  }
-  if (!ok && !diags.hasErrors()) diags.error(displayName, "emitted shader does not compile");
-  return ok;
+  bool parsed = shader.parse(GetDefaultResources(), version, profile, false, false, EShMsgDefault, noIncludes);
+  return linkParsedShader(shader, parsed, EShMsgDefault, displayName, text, diags);
 }
 
 }  // namespace stereoshift
