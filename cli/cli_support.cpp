@@ -166,7 +166,7 @@ void printErrorSummary(int errors) {
 
 
 void addConversionOptions(CLI::App& app, CliOptions& o) {
-  app.add_option("-S,--stage", o.stage, "Shader stage when the extension does not say: vert, tesc, tese, geom, frag, comp, mesh, task");
+  app.add_option("-S,--stage", o.stage, "Shader stage when the extension does not say: vert, tesc, tese, geom, frag, comp, mesh, task, rgen, rint, rahit, rchit, rmiss, rcall");
   app.add_option("-x,--language", o.language,
                  "Language of the input, whatever its file name says: glsl or hlsl (default: the name's .hlsl/.fx/.glsl "
                  "extension, else the content)");

@@ -231,7 +231,7 @@ class Loader {
         ok = false;
       } else if (!decided) {
         error(locationOf(stage), "[stages]: extension '" + extension +
-                                     "' needs a stage name (vert, tesc, tese, geom, frag, comp, mesh, task)");
+                                     "' needs a stage name (vert, tesc, tese, geom, frag, comp, mesh, task, rgen, rint, rahit, rchit, rmiss, rcall)");
         ok = false;
       } else {
         manifest->stageExtensions[extension] = *decided;

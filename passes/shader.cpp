@@ -208,7 +208,7 @@ std::string stageHint(const std::string& path) {
   std::string file = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
   std::string why = isIncludeOnlyName(path) ? "'" + file + "' is named as an include file, not a shader stage"
                                             : "cannot tell the shader stage of '" + file + "'";
-  return why + ": give it with -S <stage> (vert, tesc, tese, geom, frag, comp, mesh, task), put "
+  return why + ": give it with -S <stage> (vert, tesc, tese, geom, frag, comp, mesh, task, rgen, rint, rahit, rchit, rmiss, rcall), put "
                "`#pragma shader_stage(vertex)` (or fragment, compute, ...) in the text, or name the file by "
                "its stage (name.vert, name.frag.glsl, nameVS.hlsl, name_ps.hlsl)";
 }
@@ -242,6 +242,13 @@ std::optional<Stage> stageFromName(const std::string& raw) {
   if (n == "comp" || n == "compute" || n == "cs") return Stage::Compute;
   if (n == "mesh" || n == "ms") return Stage::Mesh;
   if (n == "task" || n == "as" || n == "amplification") return Stage::Task;
+  // glslc's names of the ray-tracing stages (and their long forms).
+  if (n == "rgen" || n == "raygen") return Stage::RayGen;
+  if (n == "rint" || n == "intersect" || n == "intersection") return Stage::Intersection;
+  if (n == "rahit" || n == "anyhit") return Stage::AnyHit;
+  if (n == "rchit" || n == "closesthit") return Stage::ClosestHit;
+  if (n == "rmiss" || n == "miss") return Stage::Miss;
+  if (n == "rcall" || n == "callable") return Stage::Callable;
   return std::nullopt;
 }
 
@@ -279,8 +286,19 @@ const char* stageName(Stage stage) {
     case Stage::Compute: return "comp";
     case Stage::Task: return "task";
     case Stage::Mesh: return "mesh";
+    case Stage::RayGen: return "rgen";
+    case Stage::Intersection: return "rint";
+    case Stage::AnyHit: return "rahit";
+    case Stage::ClosestHit: return "rchit";
+    case Stage::Miss: return "rmiss";
+    case Stage::Callable: return "rcall";
     default: return "unknown";
   }
+}
+
+bool isRayTracing(Stage stage) {
+  return stage == Stage::RayGen || stage == Stage::Intersection || stage == Stage::AnyHit ||
+         stage == Stage::ClosestHit || stage == Stage::Miss || stage == Stage::Callable;
 }
 
 bool isPreRasterization(Stage stage) {

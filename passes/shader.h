@@ -13,7 +13,13 @@
 
 namespace stereoshift {
 
-enum class Stage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute, Task, Mesh, Unknown };
+// The ray-tracing stages (GL_EXT_ray_tracing) draw nothing a camera projects: they are recognised so that
+// a tree's ray-tracing shaders are classified and copied like compute shaders, never dropped.
+enum class Stage {
+  Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute, Task, Mesh,
+  RayGen, Intersection, AnyHit, ClosestHit, Miss, Callable,
+  Unknown
+};
 enum class SourceLanguage { Glsl, Hlsl, Spirv };
 // How the input language was decided: a language extension in the file name (.hlsl, .fx, .glsl),
 // the -x flag, or the text itself (#version, HLSL-only constructs, the SPIR-V magic number).
@@ -178,4 +184,6 @@ std::optional<TargetEnv> targetEnvFromName(const std::string& name);
 const char* targetEnvName(TargetEnv env);
 const char* stageName(Stage stage);
 bool isPreRasterization(Stage stage);
+// rgen, rint, rahit, rchit, rmiss, rcall.
+bool isRayTracing(Stage stage);
 }  // namespace stereoshift

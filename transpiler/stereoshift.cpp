@@ -58,6 +58,12 @@ Stage stageFromModel(spv::ExecutionModel model) {
     case spv::ExecutionModelGLCompute: return Stage::Compute;
     case spv::ExecutionModelTaskEXT: case spv::ExecutionModelTaskNV: return Stage::Task;
     case spv::ExecutionModelMeshEXT: case spv::ExecutionModelMeshNV: return Stage::Mesh;
+    case spv::ExecutionModelRayGenerationKHR: return Stage::RayGen;
+    case spv::ExecutionModelIntersectionKHR: return Stage::Intersection;
+    case spv::ExecutionModelAnyHitKHR: return Stage::AnyHit;
+    case spv::ExecutionModelClosestHitKHR: return Stage::ClosestHit;
+    case spv::ExecutionModelMissKHR: return Stage::Miss;
+    case spv::ExecutionModelCallableKHR: return Stage::Callable;
     default: return Stage::Unknown;
   }
 }

@@ -40,6 +40,12 @@ EShLanguage toGlslang(Stage stage) {
     case Stage::Compute: return EShLangCompute;
     case Stage::Task: return EShLangTask;
     case Stage::Mesh: return EShLangMesh;
+    case Stage::RayGen: return EShLangRayGen;
+    case Stage::Intersection: return EShLangIntersect;
+    case Stage::AnyHit: return EShLangAnyHit;
+    case Stage::ClosestHit: return EShLangClosestHit;
+    case Stage::Miss: return EShLangMiss;
+    case Stage::Callable: return EShLangCallable;
     default: return EShLangVertex;
   }
 }
@@ -540,9 +546,14 @@ int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage l
   // Vulkan attempt, and an OpenGL GLSL shader of the same run keeps 1.0.
   const bool openGLRules = language == SourceLanguage::Glsl && client == Client::OpenGL;
   int spirvMinor = openGLRules ? 0 : options && options->targetSpv ? *options->targetSpv : env ? defaultSpirvMinor(*env) : 0;
-  // Mesh and task shaders exist only from SPIR-V 1.4 / Vulkan 1.3 on.
+  // Mesh and task shaders exist only from SPIR-V 1.4 / Vulkan 1.3 on, ray-tracing ones from SPIR-V 1.4
+  // / Vulkan 1.2 on.
   if (stage == Stage::Mesh || stage == Stage::Task) {
     if (!env || *env != TargetEnv::Vulkan1_3) shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+    spirvMinor = std::max(spirvMinor, 4);
+  } else if (isRayTracing(stage)) {
+    if (!env || (*env != TargetEnv::Vulkan1_2 && *env != TargetEnv::Vulkan1_3))
+      shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
     spirvMinor = std::max(spirvMinor, 4);
   }
   shader.setEnvTarget(glslang::EShTargetSpv, spirvVersion(spirvMinor));
