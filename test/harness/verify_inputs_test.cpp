@@ -116,6 +116,22 @@ TEST_F(VerifyInputs, ShadowCoordinateIsNotReportedAsAHalo) {
   for (const auto& p : r.problems) EXPECT_EQ(p.find("halo"), std::string::npos) << p;
 }
 
+// D3D registers: b0, t0 and s0 are three namespaces that glslang maps onto one binding; verify
+// moves each register class to its own binding range (original and transpiled alike), register
+// spaces becoming descriptor sets. Both shaders were refused before ("shares its binding").
+TEST_F(VerifyInputs, D3dRegisterClassesAreBoundApart) {
+  for (const char* file : {"d3d_registers.vert.hlsl", "cbuffer_spaces_skinned.vert.hlsl"}) expectVerified(verify({file}), file);
+}
+
+// Pre-rasterization shaders in tutorial / SDK conventions: skinning with integer bone ids,
+// instancing with a mat4 attribute, a lone tessellated-terrain evaluation stage with a height map,
+// geometry billboards and a one-pass shadow cube map (gl_Layer).
+TEST_F(VerifyInputs, TutorialAndSampleConventions) {
+  for (const char* file : {"skinned_mesh.vert", "instanced_asteroids.vert", "terrain_heightmap.tese",
+                           "sprite_billboards.geom", "shadow_cubemap.geom"})
+    expectVerified(verify({file}), file);
+}
+
 // Halo by value on the driver: outputs that recompute the clip position (inline and through a
 // helper) and a position read back from its varying (a mirror's projective lookup) carry, per eye
 // and vertex, bit for bit the shifted x of gl_Position (verify compares each copy with the captured

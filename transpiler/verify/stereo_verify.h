@@ -19,6 +19,10 @@ struct StageModules {
   std::vector<uint32_t> transpiled;  // SPIR-V after stereoshift's passes
   std::string entry = "main";
   std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
+  // HLSL with D3D registers (no [[vk::binding]]): b, t, s and u are separate namespaces that glslang
+  // maps onto one Vulkan binding space (cbuffer b0 and Texture2D t0 both become binding 0); the
+  // harness moves each class to its own range before binding.
+  bool d3dRegisters = false;
 };
 
 struct VerifySettings {
