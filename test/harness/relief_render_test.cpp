@@ -194,7 +194,7 @@ TEST(ReliefRender, PerEyeCameraMatchesGroundTruth) {
   options.validateEach = true;
 
   std::vector<uint32_t> original[2];
-  for (int i = 0; i < 2; ++i) {
+  for (size_t i = 0; i < sources.size(); ++i) {
     Diagnostics diags;
     FrontEndResult front = compileToSpirv(sources[i], options, diags);
     ASSERT_TRUE(front.ok) << diags.format();
@@ -478,7 +478,7 @@ bool floorForInputs(const spirv::Module& vertex, VertexBuffer* out, std::string*
 // camera position, by the names the shader uses, from (view, projection, camera position).
 struct TutorialCase {
   std::string name;
-  std::vector<std::string> files;  // vertex, fragment (under corpus/relief-tutorial/)
+  std::vector<std::string> files;  // vertex, [geometry,] fragment (under corpus/relief-tutorial/)
   std::function<std::map<std::string, Words>(const M& view, const M& proj, const rt::Vec3<double>& camera)> camera;
   std::map<std::string, Words> material;  // height scale, layers, mapping mode, light
 };
@@ -502,15 +502,16 @@ void renderTutorialCase(VulkanContext& context, const TutorialCase& c) {
   options.validateEach = true;
 
   std::vector<TranspileResult> converted = transpilePipeline(sources, options);
-  ASSERT_EQ(converted.size(), 2u);
+  ASSERT_EQ(converted.size(), sources.size());
   for (const auto& r : converted) ASSERT_TRUE(r.ok) << r.diagnostics.format();
-  // The tutorial form is fixed in the vertex stage: the fragment stage only reads the varyings.
+  // The tutorial form is fixed in the vertex stage (in front of a geometry stage too): the later
+  // stages only pass on or read the varyings.
   ASSERT_EQ(converted[0].report["passes"]["per-eye-view"]["result"], "changed") << converted[0].report.dump(2);
 
   // Original and fixed modules, each through the harness's OpenGL-to-Vulkan rewrite (loose uniforms
   // into one block per stage, a no-op for Vulkan GLSL and HLSL).
   std::vector<spirv::Module> original, fixed;
-  for (int i = 0; i < 2; ++i) {
+  for (size_t i = 0; i < sources.size(); ++i) {
     Diagnostics diags;
     FrontEndResult front = compileToSpirv(sources[i], options, diags);
     ASSERT_TRUE(front.ok) << diags.format();
@@ -518,10 +519,14 @@ void renderTutorialCase(VulkanContext& context, const TutorialCase& c) {
     auto a = spirv::Module::parse(front.spirv, &error);
     auto b = spirv::Module::parse(words(converted[i].output), &error);
     ASSERT_TRUE(a && b) << error;
-    convertOpenGLForVulkan(*a, 16 + i, &error);
+    convertOpenGLForVulkan(*a, 16 + uint32_t(i), &error);
     ASSERT_TRUE(error.empty()) << error;
-    convertOpenGLForVulkan(*b, 16 + i, &error);
+    convertOpenGLForVulkan(*b, 16 + uint32_t(i), &error);
     ASSERT_TRUE(error.empty()) << error;
+    if (front.info.language == SourceLanguage::Hlsl && !front.info.vulkanBindings) {  // b1 and t1 apart
+      separateRegisterClasses(*a);
+      separateRegisterClasses(*b);
+    }
     original.push_back(std::move(*a));
     fixed.push_back(std::move(*b));
   }
@@ -543,8 +548,13 @@ void renderTutorialCase(VulkanContext& context, const TutorialCase& c) {
     RenderRequest request;
     request.width = request.height = kSize;
     Draw draw;
-    draw.pipeline.stages = {{VK_SHADER_STAGE_VERTEX_BIT, modules[0].encode(), modules[0].entryPointName()},
-                            {VK_SHADER_STAGE_FRAGMENT_BIT, modules[1].encode(), modules[1].entryPointName()}};
+    for (const auto& m : modules) {
+      auto model = m.executionModel();
+      VkShaderStageFlagBits stage = model == spv::ExecutionModelVertex     ? VK_SHADER_STAGE_VERTEX_BIT
+                                    : model == spv::ExecutionModelGeometry ? VK_SHADER_STAGE_GEOMETRY_BIT
+                                                                           : VK_SHADER_STAGE_FRAGMENT_BIT;
+      draw.pipeline.stages.push_back({stage, m.encode(), m.entryPointName()});
+    }
     draw.pipeline.vertices = quad;
     draw.pipeline.vertexCount = 6;
     draw.pipeline.uniformBuffers = resources.buffers;
@@ -626,6 +636,12 @@ TEST(ReliefRender, TutorialFormMatchesGroundTruth) {
                                         {"lightPos", floats({kLight[0], kLight[1], kLight[2], 1})},
                                         {"cameraPos", floats({camera[0], camera[1], camera[2], 1})}};
   };
+  // Through a geometry stage (the LearnOpenGL "explode" effect, GLSL 330): at time = -pi/2 the
+  // triangles are not pushed out (sin = -1), so the truth is the same floor.
+  cases.push_back({"gl330_explode_parallax_geometry",
+                   {"gl330/explode_parallax.vert", "gl330/explode_parallax.geom", "gl330/explode_parallax.frag"},
+                   looseCamera,
+                   {{"heightScale", floats({kHeightScale})}, {"time", floats({-M_PI / 2})}}});
   for (int mode : {1, 3})
     cases.push_back({mode == 1 ? "vk450_parallax_plain" : "vk450_parallax_occlusion",
                      {"vk450/parallax.vert", "vk450/parallax.frag"},
@@ -634,6 +650,16 @@ TEST(ReliefRender, TutorialFormMatchesGroundTruth) {
                       {"parallaxBias", floats({-0.02})},
                       {"numLayers", floats({48})},
                       {"mappingMode", integer(mode)}}});
+  // D3D-style HLSL: one cbuffer with the world and view-projection matrices and the eye position,
+  // an output struct; the pixel shader ray-marches with SampleGrad.
+  cases.push_back({"hlsl_parallax_occlusion",
+                   {"hlsl/parallax.vert.hlsl", "hlsl/parallax.frag.hlsl"},
+                   [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
+                     return std::map<std::string, Words>{{"gWorld", floats(identity)},
+                                                         {"gViewProj", floats(rt::multiply(proj, view))},
+                                                         {"gEyePosW", floats({camera[0], camera[1], camera[2]})}};
+                   },
+                   {{"gHeightScale", floats({kHeightScale})}, {"gMinSamples", integer(8)}, {"gMaxSamples", integer(32)}}});
   for (const auto& c : cases) renderTutorialCase(*context, c);
 }
 

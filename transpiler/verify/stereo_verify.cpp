@@ -739,11 +739,16 @@ void matchInvariance(Module& original, const Module& transpiled) {
   for (auto [structId, member] : memberBuiltIns) original.decorateMember(structId, member, spv::DecorationInvariant);
 }
 
-// D3D's register classes, each moved to its own range of Vulkan bindings (what glslang's
-// --shift-{cbuffer,sampler,uav,texture}-binding do at compile time): b (constant buffers) 0-15,
-// s (samplers) 16-31, u (unordered access: RW buffers and textures) 32-95, t (shader resources:
-// textures, read-only structured / byte-address buffers) 96 and up. Original and transpiled copies
-// get the same moves, so the injected cbuffer (a b register) stays where the conversion put it.
+double ulpOf(double magnitude) {
+  float m = static_cast<float>(std::max(magnitude, double(FLT_MIN)));
+  return double(std::nextafter(m, INFINITY)) - double(m);
+}
+
+}  // namespace
+
+// See stereo_verify.h. The ranges: b (constant buffers) 0-15, s (samplers) 16-31, u (unordered
+// access: RW buffers and textures) 32-95, t (shader resources: textures, read-only structured /
+// byte-address buffers) 96 and up.
 void separateRegisterClasses(Module& m) {
   constexpr uint32_t kSamplerShift = 16, kUavShift = 32, kTextureShift = 96;
   std::map<uint32_t, uint32_t> shiftOf;
@@ -771,13 +776,6 @@ void separateRegisterClasses(Module& m) {
     if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationBinding))
       if (auto it = shiftOf.find(inst.operand(0)); it != shiftOf.end()) inst.operands[2] += it->second;
 }
-
-double ulpOf(double magnitude) {
-  float m = static_cast<float>(std::max(magnitude, double(FLT_MIN)));
-  return double(std::nextafter(m, INFINITY)) - double(m);
-}
-
-}  // namespace
 
 bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
                        std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags) {
