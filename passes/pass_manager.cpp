@@ -70,4 +70,6 @@ bool nextStageFactsMatter(const spirv::Module& shiftedStage, const TranspileOpti
 
 NextStageFacts analyseNextStage(PassContext& consumer) { return analyseStageInputs(consumer); }
 
+NextStageFacts carryNextStageFacts(PassContext& middle) { return carryStageFacts(middle); }
+
 }  // namespace stereoshift

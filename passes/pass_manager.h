@@ -25,5 +25,8 @@ bool nextStageFactsMatter(const spirv::Module& shiftedStage, const TranspileOpti
 // The facts of the consuming (fragment) stage whose context this is; its folded copy stays cached in
 // `consumer` for that stage's own passes. Changes nothing.
 NextStageFacts analyseNextStage(PassContext& consumer);
+// The facts carried back through a stage between (geometry, tessellation) whose own consumer is
+// `middle.nextStage`: what the stage before must know about the outputs it writes to `middle`.
+NextStageFacts carryNextStageFacts(PassContext& middle);
 
 }  // namespace stereoshift

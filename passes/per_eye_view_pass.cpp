@@ -878,6 +878,10 @@ InterfaceSlot interfaceSlot(const Module& m, uint32_t variable, int64_t member) 
   }
   uint32_t block = m.pointeeType(m.definition(variable)->typeId);
   const Instruction* def = m.definition(block);
+  while (def && def->opcode == spv::OpTypeArray) {  // a per-vertex array (`gs_in[]`): its element block
+    block = def->operand(0);
+    def = m.definition(block);
+  }
   auto index = static_cast<uint32_t>(member);
   slot.blockName = m.name(block);
   slot.name = m.memberName(block, index);
@@ -1295,7 +1299,21 @@ bool hasVectorSubtraction(const Module& m) {
   });
 }
 
-NextStageFacts analyseStageInputs(PassContext& ctx) {
+namespace {
+
+// The interface type of a stage input: a geometry / tessellation stage reads its per-vertex inputs
+// as arrays (`in VS_OUT { ... } gs_in[];`, `in vec3 vNormal[]`), one element a vertex.
+uint32_t perVertexType(const Module& m, uint32_t variableType) {
+  const Instruction* def = m.definition(variableType);
+  while (def && (def->opcode == spv::OpTypeArray || def->opcode == spv::OpTypeRuntimeArray)) def = m.definition(def->operand(0));
+  return def ? def->resultId : 0;
+}
+
+// Every stage input (a loose variable, or one member of an input block), each described by
+// `analyse` from the values that read it.
+using DescribeInput = std::function<void(StageInputUse&, FlowQueries&, const std::map<uint32_t, uint8_t>&)>;
+
+NextStageFacts describeStageInputs(PassContext& ctx, const DescribeInput& analyse) {
   NextStageFacts facts;
   facts.file = ctx.file;
   facts.linkByName = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
@@ -1303,22 +1321,10 @@ NextStageFacts analyseStageInputs(PassContext& ctx) {
   const Module& m = folded ? *folded : ctx.module;  // global ids are shared
   std::optional<FlowQueries> flow;
   if (folded) flow.emplace(*folded);
-  // What one input (a loose variable, or one member of an input block) does here.
-  auto analyse = [&](StageInputUse& use, const std::map<uint32_t, uint8_t>& asRead) {
-    if (!flow) return;
-    auto sinks = flow->follow(asRead);
-    use.read = sinks.anyUse;
-    use.feedsTexcoordAsDirection = (sinks.texcoord & kOffset) != 0;
-    for (uint32_t difference : sinks.subtractions)
-      if (flow->follow({{difference, kDerived}}).texcoord & kOffset) use.subtractedForOffset = true;
-    std::map<uint32_t, uint8_t> asDirection;
-    for (const auto& [id, f] : asRead) asDirection[id] = f | kDirection;
-    use.feedsTexcoord = (flow->follow(asDirection).texcoord & kOffset) != 0;
-  };
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassInput) continue;
     if (m.hasDecoration(inst.resultId, spv::DecorationBuiltIn)) continue;
-    const Instruction* block = m.definition(m.pointeeType(inst.typeId));
+    const Instruction* block = m.definition(perVertexType(m, m.pointeeType(inst.typeId)));
     bool isBlock = block && block->opcode == spv::OpTypeStruct && m.hasDecoration(block->resultId, spv::DecorationBlock);
     if (!isBlock) {
       StageInputUse use;
@@ -1327,12 +1333,15 @@ NextStageFacts analyseStageInputs(PassContext& ctx) {
         use.location = *location;
         use.hasLocation = true;
       }
-      analyse(use, {{inst.resultId, kDerived}});
+      if (flow) analyse(use, *flow, {{inst.resultId, kDerived}});
       facts.inputs.push_back(use);
       continue;
     }
     // `in VS_OUT { ... } fs_in;`: member by member, each from the loads that read it (a load of the
-    // whole block reads them all).
+    // whole block reads them all). Behind the vertex index of an arrayed input (`gs_in[i].member`),
+    // the member is the chain's second index.
+    const bool arrayed = block->resultId != m.pointeeType(inst.typeId);
+    const size_t memberOperand = arrayed ? 2 : 1;
     for (uint32_t member = 0; member < block->operands.size(); ++member) {
       InterfaceSlot slot = interfaceSlot(m, inst.resultId, member);
       if (slot.builtin) continue;
@@ -1347,15 +1356,52 @@ NextStageFacts analyseStageInputs(PassContext& ctx) {
       spirv::forEachFunctionInstruction(m, [&](const Instruction& load, const spirv::Function&, const spirv::Block&) {
         if (load.opcode != spv::OpLoad || m.rootVariable(load.operand(0)) != inst.resultId) return;
         const Instruction* chain = m.definition(load.operand(0));
-        bool whole = chain && chain->opcode == spv::OpVariable;
-        bool thisMember = chain && (chain->opcode == spv::OpAccessChain || chain->opcode == spv::OpInBoundsAccessChain) &&
-                          chain->operands.size() >= 2 && constantValue(m, chain->operand(1)) == member;
+        bool isChain = chain && (chain->opcode == spv::OpAccessChain || chain->opcode == spv::OpInBoundsAccessChain);
+        bool whole = chain && (chain->opcode == spv::OpVariable || (arrayed && isChain && chain->operands.size() == 2));
+        bool thisMember = isChain && chain->operands.size() > memberOperand &&
+                          constantValue(m, chain->operand(memberOperand)) == member;
         if (whole || thisMember) loads[load.resultId] = kDerived;
       });
-      if (!loads.empty()) analyse(use, loads);
+      if (!loads.empty() && flow) analyse(use, *flow, loads);
       facts.inputs.push_back(use);
     }
   }
+  return facts;
+}
+
+}  // namespace
+
+NextStageFacts analyseStageInputs(PassContext& ctx) {
+  return describeStageInputs(ctx, [](StageInputUse& use, FlowQueries& flow, const std::map<uint32_t, uint8_t>& asRead) {
+    auto sinks = flow.follow(asRead);
+    use.read = sinks.anyUse;
+    use.feedsTexcoordAsDirection = (sinks.texcoord & kOffset) != 0;
+    for (uint32_t difference : sinks.subtractions)
+      if (flow.follow({{difference, kDerived}}).texcoord & kOffset) use.subtractedForOffset = true;
+    std::map<uint32_t, uint8_t> asDirection;
+    for (const auto& [id, f] : asRead) asDirection[id] = f | kDirection;
+    use.feedsTexcoord = (flow.follow(asDirection).texcoord & kOffset) != 0;
+  });
+}
+
+NextStageFacts carryStageFacts(PassContext& ctx) {
+  if (!ctx.nextStage) return {};
+  NextStageFacts facts = describeStageInputs(
+      ctx, [&](StageInputUse& use, FlowQueries& flow, const std::map<uint32_t, uint8_t>& asRead) {
+        auto sinks = flow.follow(asRead);
+        use.read = sinks.anyUse;
+        // What the stage after does with the outputs this input is written to (a pass-through, or
+        // arithmetic on the way) is what it does with this input.
+        for (const auto& [output, flags] : sinks.outputs) {
+          const StageInputUse* after = consumerOf(ctx, flow.module(), output);
+          if (!after) continue;
+          use.read |= after->read;
+          use.feedsTexcoord |= after->feedsTexcoord;
+          use.feedsTexcoordAsDirection |= after->feedsTexcoordAsDirection;
+          use.subtractedForOffset |= after->subtractedForOffset;
+        }
+      });
+  facts.file = ctx.nextStage->file + " (through " + ctx.file + ")";
   return facts;
 }
 

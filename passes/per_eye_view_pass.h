@@ -14,6 +14,11 @@ struct PassContext;
 // shared folded copy of the context's module; changes nothing.
 NextStageFacts analyseStageInputs(PassContext& context);
 
+// The same facts for a stage between (geometry, tessellation) whose outputs the context's nextStage
+// describes: each input gets the uses of the outputs it is written to, so a vertex shader learns
+// what the fragment stage does with a view vector a geometry stage passes on.
+NextStageFacts carryStageFacts(PassContext& context);
+
 // Whether the module subtracts vec3/vec4 values anywhere: a view vector (`camera - P`) needs one, and
 // inlining and folding never create one, so without it per-eye-view has nothing to look at.
 bool hasVectorSubtraction(const spirv::Module& module);

@@ -332,10 +332,16 @@ std::optional<NextStageFacts> fragmentStageFacts(const std::vector<SourceFile>& 
   // The facts serve per-eye-view in the last pre-rasterization stage, which looks no further when that
   // stage has no vector subtraction: then the fragment stage's folded copy (an optimizer run, most of
   // a typical fragment shader's cost) is not worth making for them.
+  // (Any pre-rasterization stage: a geometry or tessellation stage may pass the view vector on.)
   {
-    auto& shifted = compiled[static_cast<size_t>(last)];
-    const spirv::Module* module = shifted ? parsedModule(*shifted) : nullptr;
-    if (module && !nextStageFactsMatter(*module, options)) return std::nullopt;
+    bool matter = false;
+    for (size_t i = 0; i < stages.size(); ++i) {
+      auto kind = decideStage(stages[i].path, stages[i].contents, options.stage, options.stageExtensions).stage;
+      if (kind == Stage::Fragment || kind == Stage::Compute) continue;
+      const spirv::Module* module = compiled[i] ? parsedModule(*compiled[i]) : nullptr;
+      matter |= !module || nextStageFactsMatter(*module, options);
+    }
+    if (!matter) return std::nullopt;
   }
   for (size_t i = 0; i < stages.size(); ++i) {
     auto kind = decideStage(stages[i].path, stages[i].contents, options.stage, options.stageExtensions).stage;
@@ -411,11 +417,43 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     }
   }
   std::optional<NextStageFacts> fragmentFacts = fragmentStageFacts(stages, compiled, options, last);
+  // The last pre-rasterization stage gets the fragment stage's facts; a stage before it gets them
+  // carried back through the stages between (a geometry stage passing TangentViewPos on).
+  std::vector<std::optional<NextStageFacts>> stageFacts(stages.size());
+  if (fragmentFacts) {
+    stageFacts[static_cast<size_t>(last)] = std::move(fragmentFacts);
+    auto order = [&](size_t i) {  // pipeline order of the pre-rasterization stages, -1 for the others
+      auto stage = decideStage(stages[i].path, stages[i].contents, options.stage, options.stageExtensions).stage;
+      if (!stage) return -1;
+      switch (*stage) {
+        case Stage::Vertex: return 0;
+        case Stage::TessControl: return 1;
+        case Stage::TessEvaluation: return 2;
+        case Stage::Geometry: return 3;
+        default: return -1;
+      }
+    };
+    for (size_t after = static_cast<size_t>(last);;) {
+      std::optional<size_t> before;
+      for (size_t i = 0; i < stages.size(); ++i)
+        if (order(i) >= 0 && order(i) < order(after) && (!before || order(i) > order(*before))) before = i;
+      spirv::Module* module = compiled[after] ? parsedModule(*compiled[after]) : nullptr;
+      if (!before || !module) break;
+      nlohmann::json scratch;
+      Diagnostics ignored;
+      PassContext ctx{*module, options, compiled[after]->front.info, ignored, stages[after].path, scratch};
+      ctx.nextStage = &*stageFacts[after];
+      stageFacts[*before] = carryNextStageFacts(ctx);
+      compiled[after]->folded = std::move(ctx.folded);  // the stage's own passes reuse it
+      compiled[after]->foldTried = ctx.foldTried;
+      after = *before;
+    }
+  }
   std::vector<TranspileResult> results;
   for (size_t i = 0; i < stages.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
-    const NextStageFacts* facts = static_cast<int>(i) == last && fragmentFacts ? &*fragmentFacts : nullptr;
+    const NextStageFacts* facts = stageFacts[i] ? &*stageFacts[i] : nullptr;
     results.push_back(transpileStage(stages[i], stageOptions, facts, compiled[i] ? &*compiled[i] : nullptr));
   }
   return results;

@@ -25,8 +25,9 @@ EXPECTED_CLASSIFICATION = {
     "fragment": {"no-position-stage"},
     "compute": {"no-position-stage"},
     "deferred-unproject": {"no-position-stage"},
-    # per-eye view vectors live in vertex (shifted) or fragment (untouched) shaders
-    "per-eye-view": {"perspective", "no-position-stage"},
+    # per-eye view vectors live in vertex (shifted, or intermediate in front of a geometry stage that
+    # passes them on) or fragment (untouched) shaders
+    "per-eye-view": {"perspective", "intermediate-stage", "no-position-stage"},
     "already-stereo": {"already-stereo"},  # multiview shaders (gl_ViewIndex, gl_ViewID_OVR, SV_ViewID)
 }
 

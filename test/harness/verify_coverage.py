@@ -4,7 +4,10 @@
 get the perspective shift, how many of those `verify` can run, how many pass, and why the rest
 could not run or failed, grouped by reason (names and numbers taken out so alike reasons group).
 
-  python3 test/harness/verify_coverage.py --stereoshift build/stereoshift [--root corpus] [-v]
+  python3 test/harness/verify_coverage.py --stereoshift build/stereoshift [--root DIR ...] [-v]
+
+Default roots: corpus/ and test/harness/shaders/verify/ (shaders written for verify in the manner of
+public tutorials and SDK samples: every resource kind, input shape and lone stage).
 
 Exit status 0 whatever the figures: this measures, it does not judge.
 """
@@ -43,23 +46,26 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     here = os.path.dirname(os.path.abspath(__file__))
     ap.add_argument("--stereoshift", default=os.path.join(here, "..", "..", "build", "stereoshift"))
-    ap.add_argument("--root", default=os.path.join(here, "..", "..", "corpus"))
+    ap.add_argument("--root", action="append", help="a shader tree (repeatable); default: corpus and shaders/verify")
     ap.add_argument("--timeout", type=float, default=120)
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per shader")
     args = ap.parse_args()
+    roots = args.root or [os.path.join(here, "..", "..", "corpus"), os.path.join(here, "shaders", "verify")]
 
-    shaders = []
-    for dirpath, dirs, files in os.walk(args.root):
-        dirs[:] = [d for d in dirs if d != "include"]  # include/ folders hold headers, not shaders
-        for f in sorted(files):
-            if stage_of(f):
-                shaders.append(os.path.join(dirpath, f))
-    shaders.sort()
+    shaders = []  # (root, path)
+    for root in roots:
+        found = []
+        for dirpath, dirs, files in os.walk(root):
+            dirs[:] = [d for d in dirs if d != "include"]  # include/ folders hold headers, not shaders
+            for f in sorted(files):
+                if stage_of(f):
+                    found.append((root, os.path.join(dirpath, f)))
+        shaders += sorted(found)
 
     perspective = ran = passed = 0
     cannot_run, failed, other = Counter(), Counter(), Counter()
-    for path in shaders:
-        rel = os.path.relpath(path, args.root)
+    for root, path in shaders:
+        rel = os.path.join(os.path.basename(os.path.normpath(root)), os.path.relpath(path, root))
         try:
             # An include/ folder beside the shader is its #include search path (as corpus/check.sh does).
             include = os.path.join(os.path.dirname(path), "include")

@@ -20,13 +20,12 @@ namespace {
 class VerifyInputs : public VulkanSuite<> {
  protected:
   // Builds the given shaders (pipeline order) and runs verify on them.
-  VerifyResult verify(const std::vector<std::string>& files) {
+  VerifyResult verify(const std::vector<std::string>& files, const TranspileOptions& options = {}) {
     std::vector<SourceFile> sources;
     for (const auto& f : files) {
       sources.push_back({std::string(VERIFY_SHADER_DIR) + "/" + f, {}});
       EXPECT_TRUE(readFile(sources.back().path, &sources.back().contents)) << f;
     }
-    TranspileOptions options;
     std::vector<StageModules> stages;
     std::string classification;
     Diagnostics diags;
@@ -115,6 +114,43 @@ TEST_F(VerifyInputs, ShadowCoordinateIsNotReportedAsAHalo) {
   EXPECT_TRUE(r.otherOutputsUnchanged);
   EXPECT_EQ(r.haloComponentsChanged, 0u);
   for (const auto& p : r.problems) EXPECT_EQ(p.find("halo"), std::string::npos) << p;
+}
+
+// D3D registers: b0, t0 and s0 are three namespaces that glslang maps onto one binding; verify
+// moves each register class to its own binding range (original and transpiled alike), register
+// spaces becoming descriptor sets. Both shaders were refused before ("shares its binding").
+TEST_F(VerifyInputs, D3dRegisterClassesAreBoundApart) {
+  for (const char* file : {"d3d_registers.vert.hlsl", "cbuffer_spaces_skinned.vert.hlsl"}) expectVerified(verify({file}), file);
+}
+
+// Pre-rasterization shaders in tutorial / SDK conventions: skinning with integer bone ids,
+// instancing with a mat4 attribute, a lone tessellated-terrain evaluation stage with a height map,
+// geometry billboards and a one-pass shadow cube map (gl_Layer).
+TEST_F(VerifyInputs, TutorialAndSampleConventions) {
+  for (const char* file : {"skinned_mesh.vert", "instanced_asteroids.vert", "terrain_heightmap.tese",
+                           "sprite_billboards.geom", "shadow_cubemap.geom"})
+    expectVerified(verify({file}), file);
+}
+
+// Halo by value on the driver: outputs that recompute the clip position (inline and through a
+// helper) and a position read back from its varying (a mirror's projective lookup) carry, per eye
+// and vertex, bit for bit the shifted x of gl_Position (verify compares each copy with the captured
+// position). With the halo pass off the same shaders fail as stale copies: the check can fail.
+TEST_F(VerifyInputs, RecomputedAndReadBackPositionsCarryTheShift) {
+  for (const auto& [file, copies] : std::vector<std::pair<std::string, uint32_t>>{{"halo_recomputed.vert", 2},
+                                                                                {"halo_read_back.vert", 1}}) {
+    VerifyResult r = verify({file});
+    expectVerified(r, file);
+    // Each copy's x moved in both eyes on every vertex past the cutoff, and only those components.
+    EXPECT_EQ(r.haloComponentsChanged, 2 * copies * (r.vertices - r.cutoffVertices)) << file;
+    TranspileOptions noHalo;
+    noHalo.haloFix = false;
+    VerifyResult mono = verify({file}, noHalo);
+    ASSERT_TRUE(mono.error.empty()) << file << ": " << mono.error;
+    EXPECT_FALSE(mono.ok) << file << ": a mono copy of the position went unnoticed";
+    ASSERT_FALSE(mono.problems.empty()) << file;
+    EXPECT_NE(mono.problems.front().find("halo"), std::string::npos) << mono.problems.front();
+  }
 }
 
 }  // namespace

@@ -746,6 +746,37 @@ double ulpOf(double magnitude) {
 
 }  // namespace
 
+// See stereo_verify.h. The ranges: b (constant buffers) 0-15, s (samplers) 16-31, u (unordered
+// access: RW buffers and textures) 32-95, t (shader resources: textures, read-only structured /
+// byte-address buffers) 96 and up.
+void separateRegisterClasses(Module& m) {
+  constexpr uint32_t kSamplerShift = 16, kUavShift = 32, kTextureShift = 96;
+  std::map<uint32_t, uint32_t> shiftOf;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable) continue;
+    auto storage = static_cast<spv::StorageClass>(inst.operand(0));
+    uint32_t type = m.pointeeType(inst.typeId);
+    const Instruction* def = m.definition(type);
+    while (def && (def->opcode == spv::OpTypeArray || def->opcode == spv::OpTypeRuntimeArray)) def = m.definition(def->operand(0));
+    if (!def) continue;
+    if (storage == spv::StorageClassUniform || storage == spv::StorageClassStorageBuffer) {
+      bool buffer = storage == spv::StorageClassStorageBuffer || m.hasDecoration(def->resultId, spv::DecorationBufferBlock);
+      if (!buffer) continue;  // a cbuffer: b, unmoved
+      bool readOnly = m.hasDecoration(inst.resultId, spv::DecorationNonWritable) ||
+                      (def->opcode == spv::OpTypeStruct && !def->operands.empty() &&
+                       m.hasMemberDecoration(def->resultId, 0, spv::DecorationNonWritable));
+      shiftOf[inst.resultId] = readOnly ? kTextureShift : kUavShift;
+    } else if (storage == spv::StorageClassUniformConstant) {
+      if (def->opcode == spv::OpTypeSampler) shiftOf[inst.resultId] = kSamplerShift;
+      else if (def->opcode == spv::OpTypeImage) shiftOf[inst.resultId] = def->operand(5) == 2 ? kUavShift : kTextureShift;
+      else if (def->opcode == spv::OpTypeSampledImage) shiftOf[inst.resultId] = kTextureShift;
+    }
+  }
+  for (auto& inst : m.annotations)
+    if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationBinding))
+      if (auto it = shiftOf.find(inst.operand(0)); it != shiftOf.end()) inst.operands[2] += it->second;
+}
+
 bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
                        std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags) {
   std::vector<const SourceFile*> ordered;
@@ -786,8 +817,11 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     // the eyes by design, like re-derived halo outputs; eyeSign = 0 still has to be bit for bit.
     for (const auto& n : result.report["passes"]["per-eye-view"].value("per_eye_outputs", nlohmann::json::array()))
       halo.push_back(n.get<std::string>());
+    // The front end's rule (SourceInfo::vulkanBindings): HLSL written for Vulkan says [[vk::binding]].
+    const bool d3dRegisters = result.report.value("language", "") == "hlsl" &&
+                              ordered[i]->contents.find("vk::binding") == std::string::npos;
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
-                       original->entryPointName(), std::move(halo)});
+                       original->entryPointName(), std::move(halo), d3dRegisters});
   }
   return true;
 }
@@ -807,6 +841,10 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     if (!a || !b) {
       result.error = "unparsable SPIR-V: " + error;
       return result;
+    }
+    if (s.d3dRegisters) {
+      separateRegisterClasses(*a);
+      separateRegisterClasses(*b);
     }
     // OpenGL shaders run through the same Vulkan-compatible rewrite, original and transpiled alike.
     const uint32_t blockBinding = 16 + static_cast<uint32_t>(originals.size());

@@ -5,6 +5,7 @@
 
 #include "transpiler/verify/vk_harness.h"
 #include "transpiler/stereoshift.h"
+#include "passes/ir/module.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,10 @@ struct StageModules {
   std::vector<uint32_t> transpiled;  // SPIR-V after stereoshift's passes
   std::string entry = "main";
   std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
+  // HLSL with D3D registers (no [[vk::binding]]): b, t, s and u are separate namespaces that glslang
+  // maps onto one Vulkan binding space (cbuffer b0 and Texture2D t0 both become binding 0); the
+  // harness moves each class to its own range before binding.
+  bool d3dRegisters = false;
 };
 
 struct VerifySettings {
@@ -51,6 +56,12 @@ struct VerifyResult {
   std::vector<std::string> problems;
   nlohmann::json json() const;
 };
+
+// D3D's register classes, each moved to its own range of Vulkan bindings (what glslang's
+// --shift-{cbuffer,sampler,uav,texture}-binding do at compile time), for HLSL without
+// [[vk::binding]]. Apply it to an original and its transpiled copy alike: the injected cbuffer
+// (a b register) stays where the conversion put it.
+void separateRegisterClasses(spirv::Module& module);
 
 // Compiles the pre-rasterization stages of `sources` (fragment / compute are dropped) both as the
 // original SPIR-V and through stereoshift's passes (only the last stage shifted), in pipeline order.
