@@ -128,3 +128,85 @@ TEST_F(Reproject, DepthEncodingsGiveNoStriations) {
 }
 
 }  // namespace
+
+namespace {
+
+// The numbers behind the pictures: source images made on the host whose colour names the source
+// column (R = x mod 256, G = x / 256) over a depth plane (constant w = 7) and a depth ramp (a plane
+// slanted in depth: 1/w affine in x, w from 3 to 20), encoded by each kind the pass reads. For each
+// target pixel the column the pass took must be the one containing the exact reprojection q, the
+// solution of q + k*(1 - C/w(q)) = P with 1/w(q) continuous: its centre within half a pixel of q (and
+// a twentieth more, the ramp's own change of depth across the texel the search reads it from).
+struct Encoding {
+  const char* name;
+  ReprojectDepth kind;
+  bool reversed;
+};
+
+float encode(const Encoding& e, double w, double n, double f) {
+  if (e.kind == ReprojectDepth::Linear) return float(w);
+  // Window depth in [0, 1], affine in 1/w: 0 at the near plane (1 with reversed-Z), 1 at the far one.
+  double d = (1.0 / n - 1.0 / w) / (1.0 / n - 1.0 / f);
+  return float(e.reversed ? 1.0 - d : d);
+}
+
+TEST_F(Reproject, SolvedPositionsWithinHalfAPixelForEveryEncoding) {
+  ASSERT_TRUE(context_) << setupError_;
+  const double n = 0.1, f = 50.0;
+  const Encoding encodings[] = {{"linear", ReprojectDepth::Linear, false},
+                                {"zero-to-one", ReprojectDepth::ZeroToOne, false},
+                                {"zero-to-one reversed", ReprojectDepth::ZeroToOne, true},
+                                {"minus-one-to-one", ReprojectDepth::MinusOneToOne, false},
+                                {"minus-one-to-one reversed", ReprojectDepth::MinusOneToOne, true}};
+  for (const Encoding& e : encodings)
+    for (bool ramp : {false, true})
+      for (double sourceSign : {-1.0, 1.0}) {
+        ReprojectOptions options;
+        options.source = sourceSign < 0 ? ReprojectSource::LeftEye : ReprojectSource::RightEye;
+        options.depth = e.kind;
+        options.reversedZ = e.reversed;
+        options.nearPlane = n;
+        options.farPlane = f;
+        options.target = TargetLanguage::Spirv;
+        Pass pass = makePass(options);
+        ASSERT_TRUE(pass.error.empty()) << pass.error;
+        // 1/w(x) = a + b*x at continuous x (texel centres at column + 0.5).
+        const double a = ramp ? 1.0 / 3.0 : 1.0 / 7.0, b = ramp ? (1.0 / 20.0 - 1.0 / 3.0) / kWidth : 0.0;
+        RenderResult source;
+        source.width = kWidth;
+        source.height = kHeight;
+        source.pixels.resize(size_t(kWidth) * kHeight * 4);
+        source.depth.resize(size_t(kWidth) * kHeight);
+        for (uint32_t y = 0; y < kHeight; ++y)
+          for (uint32_t x = 0; x < kWidth; ++x) {
+            uint8_t* p = &source.pixels[(size_t(y) * kWidth + x) * 4];
+            p[0] = uint8_t(x & 255);
+            p[1] = uint8_t(x >> 8);
+            p[2] = 0;
+            p[3] = 255;
+            source.depth[size_t(y) * kWidth + x] = encode(e, 1.0 / (a + b * (x + 0.5)), n, f);
+          }
+        const double target = -sourceSign;
+        RenderResult out = reproject(*context_, pass, source, target);
+        ASSERT_TRUE(out.ok()) << out.error;
+        const double k = (target - sourceSign) * kSeparation * 0.5 * kWidth;
+        double worst = 0;
+        int checked = 0;
+        for (uint32_t x = 0; x < kWidth; ++x) {
+          const double P = x + 0.5;
+          const double q = (P - k + k * kConvergence * a) / (1.0 - k * kConvergence * b);
+          if (q < 1.0 || q > kWidth - 1.0) continue;  // the source does not see it: screen edge
+          const uint8_t* got = out.pixel(x, kHeight / 2);
+          const double taken = got[0] + 256.0 * got[1] + 0.5;
+          worst = std::max(worst, std::abs(taken - q));
+          ++checked;
+        }
+        const std::string what = std::string(e.name) + (ramp ? " ramp" : " plane") + (sourceSign < 0 ? " L->R" : " R->L");
+        EXPECT_GT(checked, int(kWidth) / 2) << what;
+        EXPECT_LE(worst, 0.55) << what << ": a solved position is off the exact reprojection";
+        for (uint32_t y = 0; y < kHeight; ++y)
+          ASSERT_EQ(0, std::memcmp(out.pixel(0, y), out.pixel(0, 0), kWidth * 4)) << what << ": rows differ";
+      }
+}
+
+}  // namespace
