@@ -23,7 +23,7 @@ struct ReprojectCliOptions {
   std::string sourceEye = "left";
   std::string depth = "zero-to-one", nearPlane = "0.1", farPlane = "inf", depthCoefficients;
   bool reversedZ = false;
-  std::string samples = "16", searchNear = "0.5", refine = "bisection", refineSteps = "3";
+  std::string samples = "8", searchNear = "0.5", refine = "bisection", refineSteps = "3";
   std::string colour = "nearest", fill = "background";
   bool mask = false;
   std::string colourBinding = "0", depthBinding = "1";

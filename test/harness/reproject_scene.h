@@ -140,10 +140,12 @@ inline std::vector<uint8_t> eyeBlock(double eyeSign) {
 }
 
 // The scene as the stereo-shifted shaders draw it for `eyeSign`, colour and depth.
-inline RenderResult renderEye(VulkanContext& context, const Scene& scene, double eyeSign, const DepthSetup& depth) {
+// `scale` > 1 draws it `scale` times larger each way (the benchmark, so that pixel work dominates).
+inline RenderResult renderEye(VulkanContext& context, const Scene& scene, double eyeSign, const DepthSetup& depth,
+                              uint32_t scale = 1) {
   RenderRequest request;
-  request.width = kWidth;
-  request.height = kHeight;
+  request.width = kWidth * scale;
+  request.height = kHeight * scale;
   request.readDepth = true;
   request.clearDepth = depth.reversed ? 0.0f : 1.0f;
   Draw draw;
@@ -189,15 +191,17 @@ inline Pass makePass(const ReprojectOptions& options) {
 }
 
 // The reprojection pass run on `source`'s colour and depth for the eye `eyeSign`.
+// The pass's target has the source's size.
 inline RenderResult reproject(VulkanContext& context, const Pass& pass, const RenderResult& source, double eyeSign) {
-  SampledTexture colour{0, 0, kWidth, kHeight, {}}, depth{0, 1, kWidth, kHeight, {}};
-  colour.rgba.resize(size_t(kWidth) * kHeight * 4);
+  const uint32_t width = source.width, height = source.height;
+  SampledTexture colour{0, 0, width, height, {}}, depth{0, 1, width, height, {}};
+  colour.rgba.resize(size_t(width) * height * 4);
   for (size_t i = 0; i < colour.rgba.size(); ++i) colour.rgba[i] = float(source.pixels[i] / 255.0);
-  depth.rgba.reserve(size_t(kWidth) * kHeight * 4);
+  depth.rgba.reserve(size_t(width) * height * 4);
   for (float d : source.depth) depth.rgba.insert(depth.rgba.end(), {d, 0.0f, 0.0f, 1.0f});
   RenderRequest request;
-  request.width = kWidth;
-  request.height = kHeight;
+  request.width = width;
+  request.height = height;
   Draw draw;
   draw.depthTest = false;
   draw.depthWrite = false;

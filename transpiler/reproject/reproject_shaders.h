@@ -53,7 +53,7 @@ struct ReprojectOptions {
   // The search: `samples` candidates for parallax factors t = 1 - C/w from -searchNear (in front of
   // the screen) to 1 (infinitely far), i.e. source positions P - k*t over [P - s, P + s*searchNear]
   // for a maximum parallax s = |k| (the seed article's [P - s/2, P + s] with its own range).
-  int samples = 16;
+  int samples = 8;
   double searchNear = 0.5;
   ReprojectRefinement refinement = ReprojectRefinement::Bisection;
   int refinementSteps = 3;
