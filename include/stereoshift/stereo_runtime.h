@@ -214,7 +214,7 @@ T parallax(T eyeSign, T separation, T convergence, T w) {
 
 
 // =====================================================================================================
-// ---- depth reprojection: the widened source view (docs/stereo-math.md section 7) ----------------------
+// ---- depth reprojection: the widened source view (docs/stereo-math.md section 5) ----------------------
 // =====================================================================================================
 //
 // A view synthesized by `stereoshift reproject` shows, near its left and right edges, points the

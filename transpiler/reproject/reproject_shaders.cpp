@@ -169,7 +169,7 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
     << (o.source == ReprojectSource::Centre ? "centre (mono) view" : std::string(reprojectSourceName(o.source)) + " eye")
     << "'s colour and depth.\n"
        "// For each pixel it searches this row of the source for the surface point that lands on it\n"
-       "// (docs/stereo-math.md section 7).\n";
+       "// (docs/stereo-math.md section 5).\n";
   auto binding = [&](uint32_t b) {
     return gl ? "layout(binding = " + std::to_string(b) + ") "
               : "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(b) + ") ";

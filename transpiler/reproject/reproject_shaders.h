@@ -4,7 +4,7 @@
 // a full-screen-triangle vertex shader and the reprojection fragment shader, in any output language.
 // The shaders are written as Vulkan GLSL here and then go through the same front end, validation and
 // back end as every converted shader (transpile()), so each output is compiled and checked the same
-// way. The maths is docs/stereo-math.md section 7.
+// way. The maths is docs/stereo-math.md section 5.
 #pragma once
 
 #include "passes/diagnostics.h"
