@@ -196,13 +196,6 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
     return 1;
   }
 
-  std::error_code ec;
-  fs::create_directories(c.outputDir, ec);
-  if (ec) {
-    std::cerr << c.outputDir << ": error: cannot create the output directory: " << ec.message() << "\n";
-    printErrorSummary(1);
-    return 1;
-  }
   nlohmann::json report;
   report["tool"] = std::string("stereoshift ") + version();
   report["options"] = describeReprojectOptions(base);
@@ -223,6 +216,14 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
   if (errors) {
     std::cerr << "stereoshift: error: nothing was written\n";
     printErrorSummary(errors);
+    return 1;
+  }
+  // Only now: a failed generation leaves no directory behind either.
+  std::error_code ec;
+  fs::create_directories(c.outputDir, ec);
+  if (ec) {
+    std::cerr << c.outputDir << ": error: cannot create the output directory: " << ec.message() << "\n";
+    printErrorSummary(1);
     return 1;
   }
   std::string reportPath = c.reportPath.empty() ? (fs::path(c.outputDir) / "reproject-report.json").string() : c.reportPath;
