@@ -3,8 +3,10 @@
 //   stereoshift [options] <input> -o <output>          one shader
 //   stereoshift [options] --pipeline a.vert,a.geom,a.frag -o <dir>   one pipeline
 //   stereoshift build <src-dir | scene.toml> -o <out-dir> [options]   a whole tree or scene
+//   stereoshift reproject -o <dir> [--target LANG ...] [options]      the depth-reprojection pass
 #include "cli/build_command.h"
 #include "cli/cli_support.h"
+#include "cli/reproject_command.h"
 #include "cli/verify_command.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
@@ -52,11 +54,16 @@ int main(int argc, char** argv) {
   verify->add_option("--convergence", verifyOptions.convergence, "Convergence used for the check")->capture_default_str();
   verify->add_flag("--json", verifyOptions.json, "Machine-readable result");
 
+  ReprojectCliOptions reprojectOptions;
+  auto* reproject = addReprojectCommand(app, reprojectOptions);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return reportParseError(app, e, std::cerr);
   }
+
+  if (*reproject) return runReprojectCommand(reprojectOptions);
 
   if (*verify) {
     if (auto error = finishOptions(v)) {

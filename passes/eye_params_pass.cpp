@@ -296,4 +296,6 @@ class EyeParamsPass final : public Pass {
 
 std::unique_ptr<Pass> createEyeParamsPass() { return std::make_unique<EyeParamsPass>(); }
 
+float eyeParamDefaultValue(int which) { return defaultValue(which); }
+
 }  // namespace stereoshift

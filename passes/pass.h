@@ -49,6 +49,10 @@ enum EyeParam : int {
   kEyeParamCount
 };
 
+// The value a parameter has until the application sets it (a specialization constant's default):
+// mono, eyeSign 0, convergence 1. Generated shaders that declare the parameters use the same.
+float eyeParamDefaultValue(int which);
+
 // Ids of the injected eye parameters.
 struct EyeParams {
   EyeSource source = EyeSource::UniformBlock;

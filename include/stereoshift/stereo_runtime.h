@@ -212,4 +212,44 @@ T parallax(T eyeSign, T separation, T convergence, T w) {
   return eyeSign * separation * (T(1) - convergence / w);
 }
 
+
+// =====================================================================================================
+// ---- depth reprojection: the widened source view (docs/stereo-math.md section 5) ----------------------
+// =====================================================================================================
+//
+// A view synthesized by `stereoshift reproject` shows, near its left and right edges, points the
+// source view did not have on screen: the target pixel at NDC x reads the source between
+// x - |de|*S (infinitely far) and x + |de|*S*r (r = --search-near, in front of the screen), where de is
+// the eye-sign difference (2 from one eye to the other, 1 from the centre view). The fix the seed
+// article gives: render the source with a horizontal field of view widened by that margin, into a
+// target widened by the same number of pixels, so the edge pixels fall inside it; the final image is
+// the central `width` columns. Pixel density is kept (P00 scaled by width / widenedWidth) and the
+// shift must be too, so the source and the pass both use separation * separationScale.
+template <class T>
+struct WidenedSourceView {
+  Mat4<T> projection;      // the mono projection with P00 scaled: render the source with it
+  int widenedWidth = 0;    // columns of the source (and the pass's) target
+  int columnsEachSide = 0; // the final image is columns [columnsEachSide, columnsEachSide + width)
+  T separationScale = 1;   // width / widenedWidth: the separation to use for the widened render
+  T extraPixelCost = 0;    // (widenedWidth - width) / width: extra pixels drawn, as a fraction
+};
+
+// `projection`: the mono projection (GL column-major, or the D3D row-major scalars: P00 is element 0
+// in both readings, and a symmetric frustum is assumed, as P02 = 0 keeps the widening centred);
+// `width`: the final image's columns; `eyeSignDifference`: |e_target - e_source|.
+template <class T>
+WidenedSourceView<T> widenedSourceView(const Mat4<T>& projection, int width, T eyeSignDifference, T separation,
+                                       T searchNear = T(0.5)) {
+  WidenedSourceView<T> view;
+  const T reach = std::fabs(eyeSignDifference) * std::fabs(separation) * (searchNear > T(1) ? searchNear : T(1));
+  // reach is in NDC of the final view: width/2 pixels per unit.
+  view.columnsEachSide = static_cast<int>(std::ceil(static_cast<double>(reach) * width / 2.0));
+  view.widenedWidth = width + 2 * view.columnsEachSide;
+  view.separationScale = T(width) / T(view.widenedWidth);
+  view.projection = projection;
+  view.projection[0] = projection[0] * view.separationScale;
+  view.extraPixelCost = T(view.widenedWidth - width) / T(width);
+  return view;
+}
+
 }  // namespace stereoshift::runtime

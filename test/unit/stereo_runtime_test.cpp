@@ -225,3 +225,34 @@ TEST(StereoRuntime, ComfortableDepthRange) {
 }
 
 }  // namespace
+
+// The widened source view for depth reprojection: a point at the final view's edge, shifted by the
+// largest parallax the search reads, lands inside the widened image at the same pixel density; the
+// central columns are the original view.
+TEST(StereoRuntime, WidenedSourceViewCoversTheLargestParallaxAtTheEdges) {
+  const M p = glPerspective(1.0, 16.0 / 9.0, 0.1, 100.0, 0.0);
+  const int width = 1280;
+  const double separation = 0.06, convergence = 3.0;
+  for (double difference : {2.0, 1.0}) {
+    WidenedSourceView<double> v = widenedSourceView(p, width, difference, separation, 0.5);
+    // Margin: |de|*S NDC of the final view, width/2 pixels per NDC unit, rounded up.
+    EXPECT_EQ(v.columnsEachSide, int(std::ceil(difference * separation * width / 2)));
+    EXPECT_EQ(v.widenedWidth, width + 2 * v.columnsEachSide);
+    EXPECT_DOUBLE_EQ(v.extraPixelCost, 2.0 * v.columnsEachSide / width);
+    // Same pixel density: a view-space point maps to the same pixel offset from the centre.
+    const V4 point = {0.7, 0.2, -5.0, 1.0};
+    const V4 mono = transform(p, point), wide = transform(v.projection, point);
+    EXPECT_NEAR(mono[0] / mono[3] * width / 2, wide[0] / wide[3] * v.widenedWidth / 2, 1e-9);
+    // The shift in pixels is the same with the scaled separation in the widened render.
+    const double w = 40.0;
+    EXPECT_NEAR(difference * separation * (1 - convergence / w) * width / 2,
+                difference * separation * v.separationScale * (1 - convergence / w) * v.widenedWidth / 2, 1e-9);
+    // The final view's right edge (NDC 1), read from the farthest source point (x - |de|*S), and its
+    // left edge read at x + |de|*S: both inside the widened source.
+    const double rightEdgeSource = width / 2.0 + difference * separation * width / 2.0;  // pixels from the centre
+    EXPECT_LE(rightEdgeSource, v.widenedWidth / 2.0);
+  }
+  // A search reaching farther in front than behind widens by that reach.
+  WidenedSourceView<double> nearer = widenedSourceView(p, width, 2.0, separation, 1.5);
+  EXPECT_EQ(nearer.columnsEachSide, int(std::ceil(2.0 * separation * 1.5 * width / 2)));
+}
