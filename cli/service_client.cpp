@@ -194,11 +194,13 @@ std::optional<int> runThroughService(int argc, char** argv, const ServiceOptions
     return std::nullopt;
   }
   std::string why;
-  auto paths = servicePaths(*identity, &why);
+  bool unsafe = false;
+  auto paths = servicePaths(*identity, &why, &unsafe);
   if (!paths) {
     // A directory that is not private is a warning in any case: it is how another user could
     // reach this user's server, and it stays until someone fixes it.
-    std::cerr << "stereoshift: warning: not using the conversion service: " << why << "; converting in-process\n";
+    if (unsafe) std::cerr << "stereoshift: warning: not using the conversion service: " << why << "; converting in-process\n";
+    else note(why + "; converting in-process");
     return std::nullopt;
   }
 

@@ -215,7 +215,8 @@ std::optional<std::string> serverIdentity() {
   return std::string(hex);
 }
 
-std::optional<ServicePaths> servicePaths(const std::string& identity, std::string* why) {
+std::optional<ServicePaths> servicePaths(const std::string& identity, std::string* why, bool* unsafe) {
+  *unsafe = false;
   std::string directory;
   if (const char* own = std::getenv("STEREOSHIFT_SERVICE_DIR"); own && *own) {
     directory = own;
@@ -235,6 +236,7 @@ std::optional<ServicePaths> servicePaths(const std::string& identity, std::strin
     *why = "cannot examine the service directory '" + directory + "': " + std::strerror(errno);
     return std::nullopt;
   }
+  *unsafe = true;
   if (!S_ISDIR(s.st_mode)) {
     *why = "the service directory '" + directory + "' is not a directory (a symbolic link or a file)";
     return std::nullopt;
@@ -249,6 +251,7 @@ std::optional<ServicePaths> servicePaths(const std::string& identity, std::strin
     *why = "the service directory '" + directory + "' has mode " + mode + "; it must be private to its owner (0700)";
     return std::nullopt;
   }
+  *unsafe = false;
   // A Unix socket's path is limited (108 bytes on Linux, including the terminating zero).
   std::string socket = directory + "/" + identity + ".sock";
   if (socket.size() >= 108) {

@@ -59,7 +59,8 @@ struct ServicePaths {
 // The paths for `identity`, creating the directory (mode 0700) when it is missing:
 // $STEREOSHIFT_SERVICE_DIR, else $XDG_RUNTIME_DIR/stereoshift, else /tmp/stereoshift-<uid>. A
 // directory that exists but is not a real directory owned by this user with mode 0700 (or
-// stricter) is refused: `why` says what is wrong, and no server is used.
-std::optional<ServicePaths> servicePaths(const std::string& identity, std::string* why);
+// stricter) is refused: `why` says what is wrong, `unsafe` whether it is a directory others could
+// reach (rather than one that cannot be made or a socket path that is too long), and no server is used.
+std::optional<ServicePaths> servicePaths(const std::string& identity, std::string* why, bool* unsafe);
 
 }  // namespace stereoshift
