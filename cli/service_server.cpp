@@ -175,7 +175,8 @@ class Server {
       reapWorkers();
       if (inodeOf(settings_.paths.socket) != socketInode_) leave("its socket was removed or replaced", false);
       double idle = std::chrono::duration<double>(Clock::now() - lastRequest_).count();
-      if (workers_ == 0 && idle >= settings_.idleSeconds) leave("idle", true);
+      // Workers in flight need no server: each holds its own connection and ends on its own.
+      if (idle >= settings_.idleSeconds) leave("idle", true);
       double wait = std::max(0.0, settings_.idleSeconds - idle);
       acceptPending(static_cast<int>(std::min(1000.0, wait * 1000) + 1));
     }
