@@ -6,6 +6,7 @@
 #include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <unistd.h>
 
@@ -178,7 +179,13 @@ void addServiceOptions(CLI::App& app, ServiceOptions& options) {
   app.add_flag("--no-service", options.off, "Convert in this process, whatever STEREOSHIFT_SERVICE says")->excludes(on);
   app.add_option("--service-idle", options.idleSeconds,
                  "Seconds a conversion server started by this command waits for requests before it exits (default 300; also STEREOSHIFT_SERVICE_IDLE)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            char* end = nullptr;
+            double value = std::strtod(text.c_str(), &end);
+            return end && *end == '\0' && value > 0 ? std::string() : "'" + text + "' is not a number of seconds > 0";
+          },
+          "SECONDS"));
 }
 
 bool serviceWanted(const ServiceOptions& options) {
@@ -211,6 +218,9 @@ std::optional<int> runThroughService(int argc, char** argv, const ServiceOptions
   request.workingDirectory = std::filesystem::current_path(ec).string();
   if (ec) return std::nullopt;
   request.environment = serviceEnvironment();
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  request.fileModeMask = static_cast<unsigned>(mask);
   bool readsInput = false;
   for (const auto& path : command.pipeline.empty() ? command.inputs : splitCommas(command.pipeline)) readsInput |= path == "-";
   for (const auto& path : command.inputs) readsInput |= path == "-";

@@ -98,6 +98,7 @@ std::string encodeRequest(const ServiceRequest& r) {
   putString(wire, std::to_string(r.arguments.size()));
   for (const auto& a : r.arguments) putString(wire, a);
   putString(wire, r.workingDirectory);
+  putString(wire, std::to_string(r.fileModeMask));
   putString(wire, std::to_string(r.environment.size()));
   for (const auto& [name, value] : r.environment) {
     putString(wire, name);
@@ -120,7 +121,10 @@ bool decodeRequest(const std::string& wire, ServiceRequest* r) {
     if (!getString(wire, at, &text)) return false;
     r->arguments.push_back(text);
   }
-  if (!getString(wire, at, &r->workingDirectory) || !getNumber(wire, at, &count) || count < 0) return false;
+  long long mask = 0;
+  if (!getString(wire, at, &r->workingDirectory) || !getNumber(wire, at, &mask) || mask < 0 || mask > 0777) return false;
+  r->fileModeMask = static_cast<unsigned>(mask);
+  if (!getNumber(wire, at, &count) || count < 0) return false;
   r->environment.clear();
   for (long long i = 0; i < count; ++i) {
     std::string name;

@@ -19,6 +19,7 @@ struct ServiceRequest {
   std::string identity;  // the client's serverIdentity(): the server refuses any other
   std::vector<std::string> arguments;  // argv, argv[0] included
   std::string workingDirectory;
+  unsigned fileModeMask = 022;  // the client's umask: outputs get the modes they get in-process
   // Each variable the CLI reads (serviceEnvironmentNames) with its value, or none when unset.
   std::vector<std::pair<std::string, std::optional<std::string>>> environment;
   std::optional<std::string> standardInput;  // the bytes of stdin, when an input is '-'

@@ -133,6 +133,7 @@ std::string readWhole(int fd) {
       request.identity != settings.identity || ::chdir(request.workingDirectory.c_str()) != 0)
     ::_exit(0);
   applyServiceEnvironment(request.environment);
+  ::umask(static_cast<mode_t>(request.fileModeMask));
 
   int input = request.standardInput ? memoryFile("stereoshift-stdin", *request.standardInput) : ::open("/dev/null", O_RDONLY);
   int output = ::memfd_create("stereoshift-stdout", MFD_CLOEXEC);
@@ -303,8 +304,7 @@ bool startServer(int listeningFd, const ServerSettings& settings, CommandLineEnt
     pid_t server = ::fork();
     if (server != 0) ::_exit(server < 0 ? 1 : 0);
     detachDescriptors(listeningFd);
-    ::chdir("/");
-    ::umask(077);
+    (void)!::chdir("/");
     ::signal(SIGPIPE, SIG_IGN);
     ::signal(SIGHUP, SIG_IGN);
     ::signal(SIGINT, SIG_IGN);  // a Ctrl-C in the terminal of the build that started it is not for the server

@@ -160,7 +160,8 @@ class Scratch:
                 data = p.read_bytes()
                 if p.suffix == ".json":
                     data = json.dumps(without_timings(json.loads(data)), sort_keys=True).encode()
-                found[p.relative_to(self.work).as_posix()] = data
+                # The mode too: a worker must create files as the command would (its umask).
+                found[p.relative_to(self.work).as_posix()] = (oct(p.stat().st_mode), data)
         return found
 
     def clear_outputs(self):
@@ -411,6 +412,8 @@ def main():
     parser.add_argument("--stereoshift", required=True)
     parser.add_argument("--case", required=True, choices=sorted(CASES))
     args = parser.parse_args()
+    # Not the common 022: a worker that created files with any mask but its client's would show.
+    os.umask(0o027)
     s = Scratch(Path(args.stereoshift).resolve())
     try:
         CASES[args.case](s)
