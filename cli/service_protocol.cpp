@@ -5,6 +5,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -49,9 +50,11 @@ bool getNumber(const std::string& wire, size_t& at, long long* value) {
   return errno == 0 && end && *end == '\0';
 }
 
+// To a socket: a peer that went away (a server killed, a client given up) is an error to handle,
+// never a SIGPIPE that ends this process.
 bool writeAll(int fd, const char* data, size_t size) {
   while (size > 0) {
-    ssize_t n = ::write(fd, data, size);
+    ssize_t n = ::send(fd, data, size, MSG_NOSIGNAL);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return false;
     data += n;
@@ -159,7 +162,9 @@ bool sendMessage(int fd, const std::string& bytes) {
   uint64_t size = bytes.size();
   char header[8];
   for (int i = 0; i < 8; ++i) header[i] = static_cast<char>((size >> (8 * i)) & 0xff);
-  return writeAll(fd, header, sizeof header) && writeAll(fd, bytes.data(), bytes.size());
+  std::string message(header, sizeof header);
+  message += bytes;
+  return writeAll(fd, message.data(), message.size());
 }
 
 bool receiveMessage(int fd, std::string* bytes, double timeoutSeconds) {

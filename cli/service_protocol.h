@@ -35,7 +35,7 @@ bool decodeRequest(const std::string& bytes, ServiceRequest* request);
 std::string encodeAnswer(const ServiceAnswer& answer);
 bool decodeAnswer(const std::string& bytes, ServiceAnswer* answer);
 
-// One length-prefixed message. receiveMessage gives up (false) at end of stream, on a message
+// One length-prefixed message on a socket (a peer gone is `false`, not SIGPIPE). receiveMessage gives up (false) at end of stream, on a message
 // larger than the protocol allows, or when `timeoutSeconds` (> 0) pass before it is complete.
 bool sendMessage(int fd, const std::string& bytes);
 bool receiveMessage(int fd, std::string* bytes, double timeoutSeconds);

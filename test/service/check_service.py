@@ -342,11 +342,22 @@ def case_killed(s):
     with concurrent.futures.ThreadPoolExecutor(max_workers=1) as pool:
         future = pool.submit(s.run, COMMANDS[2][1], True)
         connection, _ = liar.accept()
-        connection.recv(1 << 16)
+        connection.recv(8)  # answers before the request is read: the client must survive the closed socket
         connection.sendall(b"\x10\x00\x00\x00\x00\x00\x00\x00not an answer!!!")
         connection.close()
         result = future.result()
+        # A request larger than the socket's buffer (2 MB on stdin), closed on without a word: the
+        # client is still writing when the socket goes, and must survive that (no SIGPIPE death).
+        big = s.work / "big.vert"
+        big.write_text((s.work / "es/sprite.vert").read_text() + "// " + "x" * (2 << 20) + "\n")
+        expected_big = s.run(["-", "-S", "vert", "-o", "-"], service=False, stdin_file="big.vert")
+        future = pool.submit(s.run, ["-", "-S", "vert", "-o", "-"], True, "big.vert")
+        connection, _ = liar.accept()
+        connection.close()
+        result_big = future.result()
     liar.close()
+    check(result_big[:3] == expected_big[:3] and result_big[0] == 0 and not result_big[3],
+          f"a server gone mid-request: the command did not convert in-process alike: {result_big[0]} {result_big[2]!r}")
     check(result[0] == 0 and not result[3], f"a garbage answer was believed, or the fall-back failed: {result}")
     check(s.outputs().get("out/sprite.vert") == expected_outputs.get("out/sprite.vert"),
           "the in-process fall-back after a garbage answer wrote other bytes")
