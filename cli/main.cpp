@@ -7,6 +7,7 @@
 #include "cli/build_command.h"
 #include "cli/cli_support.h"
 #include "cli/reproject_command.h"
+#include "cli/service_client.h"
 #include "cli/verify_command.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
@@ -24,7 +25,12 @@
 namespace fs = std::filesystem;
 using namespace stereoshift;
 
-int main(int argc, char** argv) {
+// main's body, also what a conversion-service worker runs for each request (cli/service_server.h).
+static int runCommandLine(int argc, char** argv);
+
+int main(int argc, char** argv) { return runCommandLine(argc, argv); }
+
+static int runCommandLine(int argc, char** argv) {
   CLI::App app{"stereoshift: converts mono shaders (GLSL, ESSL, HLSL, SPIR-V) into stereoscopic ones"};
   app.set_version_flag("--version", std::string("stereoshift ") + version());
   CliOptions o;
@@ -36,6 +42,8 @@ int main(int argc, char** argv) {
                  "Write the outputs' dependencies (the inputs and every #included file) as a Makefile-style depfile");
   app.add_option("--timeout", o.timeoutSeconds, "Seconds the conversion may take before it is stopped and reported (0: no limit)")
       ->capture_default_str();
+  ServiceOptions serviceOptions;
+  addServiceOptions(app, serviceOptions);
 
   CliOptions b;
   BuildCommandOptions buildOptions;
@@ -110,5 +118,7 @@ int main(int argc, char** argv) {
     printErrorSummary(1);
     return 2;
   }
+  if (serviceWanted(serviceOptions))
+    if (auto status = runThroughService(argc, argv, serviceOptions, o, &runCommandLine)) return *status;
   return runConvertCommand(o, paths);
 }

@@ -12,6 +12,7 @@
 #     [TARGET_SPV spv1.0 ... spv1.6]   (--target-spv)
 #     [STAGE_EXTENSIONS <ext>=<stage>...]   (--stage-ext: vp=vert fp=frag)
 #     [OPTIONS <stereoshift option>...]
+#     [NO_SERVICE]                     (convert each pipeline in its own process)
 #     [OUTPUTS_VAR <variable>])
 #
 # SOURCES: stages that share a directory and the name without the stage part (lit.vert + lit.frag,
@@ -20,6 +21,12 @@
 # the whole pipeline; a lone shader is a pipeline of one. Each output keeps its source's file name
 # and its path relative to BASE_DIR, under OUTPUT_DIR. Every command writes a depfile (the stages and
 # every #included file), so an edit to a header reruns exactly the pipelines that include it.
+#
+# The per-pipeline commands go through stereoshift's conversion service (`--service`): a per-user
+# server that keeps glslang initialised, started by the first command and shared by every Ninja or
+# make job, so each command costs milliseconds instead of glslang's ~0.1 s set-up. Its outputs are
+# byte for byte the in-process ones, and a command whose server cannot be reached converts
+# in-process. NO_SERVICE, or -DSTEREOSHIFT_USE_SERVICE=OFF for the whole project, turns it off.
 #
 # MANIFEST: one `stereoshift build <manifest>` command (incremental on its own, with a content-hash
 # cache in OUTPUT_DIR) whose declared output is OUTPUT_DIR/stereoshift-report.json.
@@ -45,13 +52,15 @@ include_guard(GLOBAL)
 cmake_policy(PUSH)
 cmake_policy(SET CMP0116 NEW)
 
+option(STEREOSHIFT_USE_SERVICE "stereoshift_add_shaders: convert SOURCES through stereoshift's warm conversion service" ON)
+
 function(stereoshift_add_shaders target)
   # (Inside the function: the module is included once, and variables would not reach other directories.)
   set(target_languages glsl essl hlsl msl spirv spirv-asm)
   # Options the function decides itself: a caller's copy would name other outputs than the declared ones.
   set(reserved_options -o --output --depfile --pipeline --report)
   cmake_parse_arguments(PARSE_ARGV 1 arg
-    ""
+    "NO_SERVICE"
     "OUTPUT_DIR;BASE_DIR;MANIFEST;TARGET_LANGUAGE;LANGUAGE;TARGET_ENV;TARGET_SPV;OUTPUTS_VAR"
     "SOURCES;INCLUDE_DIRS;DEFINES;OPTIONS;STAGE_EXTENSIONS")
 
@@ -140,6 +149,14 @@ function(stereoshift_add_shaders target)
     list(APPEND conversion_args "--stage-ext" "${mapping}")
   endforeach()
   list(APPEND conversion_args ${arg_OPTIONS})
+
+  # Only the per-pipeline commands: `build` (MANIFEST) warms its own workers. A caller's own
+  # --service / --no-service in OPTIONS is left to decide.
+  set(service_args "")
+  if(STEREOSHIFT_USE_SERVICE AND NOT arg_NO_SERVICE AND NOT "--no-service" IN_LIST arg_OPTIONS
+     AND NOT "--service" IN_LIST arg_OPTIONS)
+    set(service_args "--service")
+  endif()
 
   set(depfile_dir "${CMAKE_CURRENT_BINARY_DIR}/stereoshift_deps/${target}")
   set(all_outputs "")
@@ -279,7 +296,7 @@ function(stereoshift_add_shaders target)
       list(JOIN stage_names ", " stage_names)
       add_custom_command(
         OUTPUT ${outputs}
-        COMMAND stereoshift::stereoshift ${conversion_args} ${io_args} --depfile "${depfile}"
+        COMMAND stereoshift::stereoshift ${service_args} ${conversion_args} ${io_args} --depfile "${depfile}"
         DEPENDS ${stages} stereoshift::stereoshift
         DEPFILE "${depfile}"
         COMMENT "stereoshift: ${target}: ${relative_key} (${stage_names})"
