@@ -5,6 +5,7 @@
 //   stereoshift build <src-dir | scene.toml> -o <out-dir> [options]   a whole tree or scene
 #include "cli/build_command.h"
 #include "cli/cli_support.h"
+#include "cli/persistent_worker.h"
 #include "cli/verify_command.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
@@ -22,7 +23,7 @@
 namespace fs = std::filesystem;
 using namespace stereoshift;
 
-int main(int argc, char** argv) {
+static int runCommandLine(int argc, char** argv) {
   CLI::App app{"stereoshift: converts mono shaders (GLSL, ESSL, HLSL, SPIR-V) into stereoscopic ones"};
   app.set_version_flag("--version", std::string("stereoshift ") + version());
   CliOptions o;
@@ -105,3 +106,7 @@ int main(int argc, char** argv) {
   }
   return runConvertCommand(o, paths);
 }
+
+// Bazel calls the tool with @params files, or starts it as a persistent worker (--persistent_worker):
+// both end in runCommandLine (cli/persistent_worker.h).
+int main(int argc, char** argv) { return runToolEntry(argc, argv, runCommandLine); }
