@@ -281,7 +281,8 @@ std::optional<std::string> readJsonObject(FILE* in) {
   for (int c; (c = std::fgetc(in)) != EOF;) {
     if (depth == 0 && c != '{') {
       if (std::isspace(c)) continue;
-      text.push_back(static_cast<char>(c));  // not an object: let the parser say so
+      // Not an object: the rest of the line goes to the parser, which says so.
+      for (; c != EOF && c != '\n'; c = std::fgetc(in)) text.push_back(static_cast<char>(c));
       return text;
     }
     text.push_back(static_cast<char>(c));
