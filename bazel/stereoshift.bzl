@@ -82,7 +82,7 @@ def _convert(ctx, stages, hdrs, depfile_name):
     args.use_param_file("@%s", use_always = True)
     args.set_param_file_format("multiline")
     _add_options(ctx, args)
-    if len(stages) > 1 or ctx.attr.pipeline:
+    if len(stages) > 1:
         args.add("--pipeline", ",".join([s.path for s in stages]))
         args.add("-o", outputs[0].dirname)
     else:
