@@ -409,7 +409,8 @@ int runBazelAction(const std::vector<std::string>& args, const CommandLineEntry&
   return 1;
 }
 
-int runPersistentWorker(const CommandLineEntry& entry, int requestsFd, int responsesFd) {
+int runPersistentWorker(const CommandLineEntry& entry, int requestsFd, int responsesFd,
+                        const std::vector<std::string>& startupArgs) {
   ::signal(SIGPIPE, SIG_IGN);  // a converter that died must not take the worker with it
   FILE* requests = ::fdopen(requestsFd, "r");
   if (!requests) {
@@ -424,6 +425,7 @@ int runPersistentWorker(const CommandLineEntry& entry, int requestsFd, int respo
       return 2;
     }
     std::vector<std::string> args{"stereoshift"};
+    args.insert(args.end(), startupArgs.begin(), startupArgs.end());
     for (const auto& a : request["arguments"]) {
       if (!a.is_string()) {
         std::cerr << "stereoshift: error: persistent worker: a WorkRequest argument is not a string\n";
@@ -469,7 +471,10 @@ int runToolEntry(int argc, char** argv, const CommandLineEntry& entry) {
     ::dup2(devNull, 0);
     ::close(devNull);
     ::dup2(2, 1);
-    return runPersistentWorker(entry, requestsFd, responsesFd);
+    std::vector<std::string> startupArgs;
+    for (size_t i = 1; i < args.size(); ++i)
+      if (args[i] != kPersistentWorkerFlag) startupArgs.push_back(args[i]);
+    return runPersistentWorker(entry, requestsFd, responsesFd, startupArgs);
   }
   if (!bazelAction) return entry(argc, argv);
   std::string error;

@@ -46,8 +46,11 @@ struct Depfile {
 };
 std::optional<Depfile> parseDepfile(const std::string& text);
 
-// The worker loop over file descriptors (standard input and output for Bazel). Returns the exit
-// status: 0 at the end of the requests, 2 on a request that is not a WorkRequest.
-int runPersistentWorker(const CommandLineEntry& entry, int requestsFd, int responsesFd);
+// The worker loop over file descriptors (standard input and output for Bazel). `startupArgs` are
+// the arguments the worker was started with besides --persistent_worker (Bazel passes an action's
+// arguments outside its params file there, once): they come before each request's own. Returns the
+// exit status: 0 at the end of the requests, 2 on a request that is not a WorkRequest.
+int runPersistentWorker(const CommandLineEntry& entry, int requestsFd, int responsesFd,
+                        const std::vector<std::string>& startupArgs = {});
 
 }  // namespace stereoshift

@@ -41,10 +41,12 @@ std::string readText(const fs::path& path) {
   return s.str();
 }
 
+// The value of `name VALUE`; the last one wins, as in CLI11.
 std::string argument(int argc, char** argv, const std::string& name) {
+  std::string value;
   for (int i = 1; i + 1 < argc; ++i)
-    if (argv[i] == name) return argv[i + 1];
-  return "";
+    if (argv[i] == name) value = argv[i + 1];
+  return value;
 }
 
 // A stand-in for the command line: `--out FILE` writes FILE, `--depfile D --reads A,B` writes a
@@ -72,7 +74,8 @@ int fakeCommandLine(int argc, char** argv) {
 }
 
 // Runs the worker loop on `requests` (one JSON object each) and returns its responses.
-std::vector<nlohmann::json> runWorker(const std::vector<std::string>& requests, int* status) {
+std::vector<nlohmann::json> runWorker(const std::vector<std::string>& requests, int* status,
+                                      const std::vector<std::string>& startupArgs = {}) {
   int in[2];
   EXPECT_EQ(::pipe(in), 0);
   std::string all;
@@ -80,7 +83,7 @@ std::vector<nlohmann::json> runWorker(const std::vector<std::string>& requests, 
   EXPECT_EQ(::write(in[1], all.data(), all.size()), static_cast<ssize_t>(all.size()));
   ::close(in[1]);
   FILE* out = std::tmpfile();
-  *status = runPersistentWorker(fakeCommandLine, in[0], ::fileno(out));
+  *status = runPersistentWorker(fakeCommandLine, in[0], ::fileno(out), startupArgs);
   std::rewind(out);
   std::vector<nlohmann::json> responses;
   char line[65536];
@@ -191,6 +194,15 @@ TEST(PersistentWorker, AHangingRequestIsStoppedAtItsTimeout) {
   std::string timedOut = responses[0]["output"];
   EXPECT_NE(timedOut.find("exceeded the 0.2 s time limit (--timeout)"), std::string::npos) << timedOut;
   EXPECT_EQ(responses[1]["exitCode"], 0);
+}
+
+TEST(PersistentWorker, StartupArgumentsComeBeforeEachRequestsOwn) {
+  int status = -1;
+  auto responses = runWorker({request({}, 1), request({"--status", "4"}, 2)}, &status, {"--say", "startup", "--status", "3"});
+  ASSERT_EQ(responses.size(), 2u);
+  EXPECT_NE(std::string(responses[0]["output"]).find("err:startup"), std::string::npos);
+  EXPECT_EQ(responses[0]["exitCode"], 3);
+  EXPECT_EQ(responses[1]["exitCode"], 4);  // the request's own option wins, as the later one
 }
 
 TEST(PersistentWorker, SomethingThatIsNotAWorkRequestEndsTheWorker) {
