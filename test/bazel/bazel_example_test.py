@@ -2,8 +2,9 @@
 """integration.bazel_example: builds a copy of examples/bazel with Bazel and checks what the rule set
 promises.
 
-- With the persistent worker (the actions' default strategy) and without it (sandboxed): every
-  output byte-identical to the CLI's on the same command line.
+- With the persistent worker (the actions' default strategy) and without it (sandboxed): one action
+  per pipeline and one per shader of a `pipeline = False` target, every output byte-identical to the
+  CLI's on the same command line.
 - After an edit of the include two pipelines share, exactly those two pipelines rerun (read from
   Bazel's --execution_log_json_file), in both modes.
 - A shader that #includes a file its target does not declare fails: under the worker by the tool's
@@ -32,6 +33,8 @@ PIPELINES = {
     "terrain": (["shaders/hlsl/terrain_vs.hlsl", "shaders/hlsl/terrain_ps.hlsl"],
                 ["-I", "shaders/common", "-I", "{bin}/shaders/common", "--shift-form=select"]),
 }
+# Converted one by one (pipeline = False): each is its own CLI command and its own action.
+SINGLE_SHADERS = {"standalone": ["shaders/glsl/crosshair.vert", "shaders/glsl/particles.vert"]}
 SHARED_INCLUDE = "shaders/common/scene_limits.h"
 USERS_OF_SHARED_INCLUDE = {"forward", "terrain"}
 
@@ -103,6 +106,14 @@ def compare_with_cli(tool, workspace, bin_dir, cli_dir):
             file = os.path.basename(stage)
             with open(os.path.join(out, file), "rb") as a, open(os.path.join(bin_dir, name, file), "rb") as b:
                 check(a.read() == b.read(), f"{name}/{file}: Bazel's output differs from the CLI's")
+    for name, shaders in SINGLE_SHADERS.items():
+        for shader in shaders:
+            out = os.path.join(cli_dir, name, os.path.basename(shader))
+            p = subprocess.run([tool, shader, "-o", out], cwd=workspace, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True)
+            check(p.returncode == 0, f"the CLI failed on {shader}:\n{p.stdout}")
+            with open(out, "rb") as a, open(os.path.join(bin_dir, name, os.path.basename(shader)), "rb") as b:
+                check(a.read() == b.read(), f"{name}/{os.path.basename(shader)}: Bazel's output differs from the CLI's")
 
 
 def main():
@@ -143,7 +154,10 @@ def main():
                 timings.append(("clean", seconds))
             _, seconds, spawns = bazel.build(os.path.join(logs, mode + "-clean.json"), *flags)
             timings.append((f"{mode}: clean build", seconds))
-            check(pipelines_run(spawns) == set(PIPELINES), f"{mode}: the clean build ran {sorted(pipelines_run(spawns))}")
+            check(pipelines_run(spawns) == set(PIPELINES) | set(SINGLE_SHADERS),
+                  f"{mode}: the clean build ran {sorted(pipelines_run(spawns))}")
+            check(len(spawns) == len(PIPELINES) + sum(len(s) for s in SINGLE_SHADERS.values()),
+                  f"{mode}: the clean build ran {len(spawns)} conversions")
             runners = {s.get("runner", "") for s in spawns}
             if mode == "worker":
                 check(runners == {"worker"}, f"the conversions ran on {runners}, not the persistent worker")
