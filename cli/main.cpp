@@ -6,6 +6,7 @@
 //   stereoshift reproject -o <dir> [--target LANG ...] [options]      the depth-reprojection pass
 #include "cli/build_command.h"
 #include "cli/cli_support.h"
+#include "cli/persistent_worker.h"
 #include "cli/reproject_command.h"
 #include "cli/service_client.h"
 #include "cli/verify_command.h"
@@ -25,11 +26,8 @@
 namespace fs = std::filesystem;
 using namespace stereoshift;
 
-// main's body, also what a conversion-service worker runs for each request (cli/service_server.h).
-static int runCommandLine(int argc, char** argv);
-
-int main(int argc, char** argv) { return runCommandLine(argc, argv); }
-
+// The command line, run in this process: what main() ends in (directly, through @params files or the
+// persistent worker) and what a conversion-service worker runs for each request (cli/service_server.h).
 static int runCommandLine(int argc, char** argv) {
   CLI::App app{"stereoshift: converts mono shaders (GLSL, ESSL, HLSL, SPIR-V) into stereoscopic ones"};
   app.set_version_flag("--version", std::string("stereoshift ") + version());
@@ -122,3 +120,7 @@ static int runCommandLine(int argc, char** argv) {
     if (auto status = runThroughService(argc, argv, serviceOptions, o, &runCommandLine)) return *status;
   return runConvertCommand(o, paths);
 }
+
+// Bazel calls the tool with @params files, or starts it as a persistent worker (--persistent_worker):
+// both end in runCommandLine (cli/persistent_worker.h).
+int main(int argc, char** argv) { return runToolEntry(argc, argv, runCommandLine); }

@@ -5,6 +5,8 @@
 
 #include "cli/cli_support.h"
 
+#include <CLI/CLI.hpp>
+
 #include <charconv>
 #include <cmath>
 #include <filesystem>

@@ -5,10 +5,12 @@
 
 #include "transpiler/reproject/reproject_shaders.h"
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace stereoshift {
 

@@ -2,6 +2,8 @@
 // the answer relayed; every failure a quiet fall-back to the in-process conversion.
 #include "cli/service_client.h"
 
+#include <CLI/CLI.hpp>
+
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/mman.h>

@@ -12,8 +12,6 @@
 #include "cli/cli_support.h"
 #include "cli/service_server.h"
 
-#include <CLI/CLI.hpp>
-
 #include <optional>
 
 namespace stereoshift {

@@ -177,7 +177,11 @@ class RestrictedIncluder : public glslang::TShader::Includer {
     fs::path root = fs::weakly_canonical(dir.empty() ? fs::path(".") : dir, ec);
     fs::path resolved = fs::weakly_canonical(candidate, ec);
     auto rel = resolved.lexically_relative(root);
-    if (rel.empty() || *rel.begin() == "..") return nullptr;  // escapes the allowed directory
+    // A build sandbox (Bazel's) lays declared inputs out as symbolic links to the real files: a file
+    // inside the directory as named is inside it, wherever its link points.
+    auto named = candidate.lexically_normal().lexically_relative((dir.empty() ? fs::path(".") : dir).lexically_normal());
+    auto escapes = [](const fs::path& r) { return r.empty() || *r.begin() == ".."; };
+    if (escapes(rel) && escapes(named)) return nullptr;  // escapes the allowed directory
     std::string name = candidate.lexically_normal().string();
 
     // A file that is already open: with an include guard (or #pragma once) its inner copy would

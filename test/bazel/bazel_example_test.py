@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""integration.bazel_example: builds a copy of examples/bazel with Bazel and checks what the rule set
+promises.
+
+- With the persistent worker (the actions' default strategy) and without it (sandboxed): one action
+  per pipeline and one per shader of a `pipeline = False` target, every output byte-identical to the
+  CLI's on the same command line.
+- After an edit of the include two pipelines share, exactly those two pipelines rerun (read from
+  Bazel's --execution_log_json_file), in both modes.
+- A shader that #includes a file its target does not declare fails: under the worker by the tool's
+  own check, in the sandbox because the file is not there.
+
+Offline: the workspace has no external repositories. Exits 77 (ctest SKIP_RETURN_CODE) when bazel is
+not installed. Scratch files (and Bazel's output root) go under --work-dir only.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+SKIP = 77
+
+# The example's pipelines and the CLI options its BUILD.bazel gives them (kept in step by hand: this
+# table is the independent statement of what each target must produce).
+PIPELINES = {
+    "forward": (["shaders/glsl/forward.vert", "shaders/glsl/forward.frag"],
+                ["-I", "shaders/common", "-I", "{bin}/shaders/common"]),
+    "skybox": (["shaders/glsl/skybox.vert", "shaders/glsl/skybox.frag"],
+               ["--target", "essl", "--eye-source", "push-constant"]),
+    "terrain": (["shaders/hlsl/terrain_vs.hlsl", "shaders/hlsl/terrain_ps.hlsl"],
+                ["-I", "shaders/common", "-I", "{bin}/shaders/common", "--shift-form=select"]),
+}
+# Converted one by one (pipeline = False): each is its own CLI command and its own action.
+SINGLE_SHADERS = {"standalone": ["shaders/glsl/crosshair.vert", "shaders/glsl/particles.vert"]}
+SHARED_INCLUDE = "shaders/common/scene_limits.h"
+USERS_OF_SHARED_INCLUDE = {"forward", "terrain"}
+
+
+class Bazel:
+    def __init__(self, bazel, workspace, output_root, tool, rules):
+        self.bazel = bazel
+        self.workspace = workspace
+        # The user's ~/.bazelrc may add caches or remote services: not here. The system rc stays
+        # (Debian's bazel-bootstrap keeps its install base there).
+        self.startup = ["--nohome_rc", "--output_user_root=" + output_root, "--max_idle_secs=120"]
+        self.flags = ["--repo_env=STEREOSHIFT_TOOL=" + tool, "--override_repository=stereoshift_rules=" + rules]
+
+    def run(self, command, *args, check=True):
+        started = time.monotonic()
+        p = subprocess.run([self.bazel] + self.startup + [command] + list(args), cwd=self.workspace,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        seconds = time.monotonic() - started
+        if check and p.returncode != 0:
+            sys.exit(f"FAIL: bazel {command} {' '.join(args)} exited {p.returncode}:\n{p.stdout}")
+        return p, seconds
+
+    def build(self, log_path, *extra, check=True):
+        p, seconds = self.run("build", *self.flags, "--execution_log_json_file=" + log_path, *extra, "//...", check=check)
+        return p, seconds, (read_execution_log(log_path) if os.path.exists(log_path) else [])
+
+
+def read_execution_log(path):
+    """The conversion spawns of one build (Bazel writes a stream of JSON objects, not one array)."""
+    text = open(path).read()
+    decoder = json.JSONDecoder()
+    spawns, at = [], 0
+    while True:
+        while at < len(text) and text[at].isspace():
+            at += 1
+        if at >= len(text):
+            break
+        entry, at = decoder.raw_decode(text, at)
+        if entry.get("mnemonic") == "StereoshiftConvert":
+            spawns.append(entry)
+    return spawns
+
+
+def pipelines_run(spawns):
+    """Which targets' actions ran: an output path is <bin>/<target>/<file>."""
+    names = set()
+    for spawn in spawns:
+        for output in spawn.get("listedOutputs", []):
+            names.add(output.split("/")[-2])
+    return names
+
+
+def check(condition, message):
+    if not condition:
+        sys.exit("FAIL: " + message)
+
+
+def compare_with_cli(tool, workspace, bin_dir, cli_dir):
+    """Runs the CLI on each pipeline in the workspace and compares every output with Bazel's."""
+    shutil.rmtree(cli_dir, ignore_errors=True)
+    bin_relative = os.path.relpath(bin_dir, os.path.realpath(os.path.join(bin_dir, "../../..")))
+    for name, (stages, options) in PIPELINES.items():
+        out = os.path.join(cli_dir, name)
+        args = [a.format(bin=bin_relative) for a in options]
+        p = subprocess.run([tool] + args + ["--pipeline", ",".join(stages), "-o", out], cwd=workspace,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        check(p.returncode == 0, f"the CLI failed on {name}:\n{p.stdout}")
+        for stage in stages:
+            file = os.path.basename(stage)
+            with open(os.path.join(out, file), "rb") as a, open(os.path.join(bin_dir, name, file), "rb") as b:
+                check(a.read() == b.read(), f"{name}/{file}: Bazel's output differs from the CLI's")
+    for name, shaders in SINGLE_SHADERS.items():
+        for shader in shaders:
+            out = os.path.join(cli_dir, name, os.path.basename(shader))
+            p = subprocess.run([tool, shader, "-o", out], cwd=workspace, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True)
+            check(p.returncode == 0, f"the CLI failed on {shader}:\n{p.stdout}")
+            with open(out, "rb") as a, open(os.path.join(bin_dir, name, os.path.basename(shader)), "rb") as b:
+                check(a.read() == b.read(), f"{name}/{os.path.basename(shader)}: Bazel's output differs from the CLI's")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--stereoshift", required=True)
+    parser.add_argument("--bazel", default=shutil.which("bazel"))
+    parser.add_argument("--rules", required=True, help="the bazel/ directory of this checkout")
+    parser.add_argument("--example", required=True, help="examples/bazel")
+    parser.add_argument("--work-dir", required=True)
+    args = parser.parse_args()
+    if not args.bazel or not shutil.which(args.bazel):
+        print("SKIP: bazel is not installed (Debian: apt-get install bazel-bootstrap)")
+        return SKIP
+
+    total_started = time.monotonic()
+    args.work_dir = os.path.abspath(args.work_dir)
+    tool = os.path.abspath(args.stereoshift)
+    workspace = os.path.join(args.work_dir, "workspace")
+    shutil.rmtree(workspace, ignore_errors=True)
+    shutil.copytree(args.example, workspace)
+    bazel = Bazel(args.bazel, workspace, os.path.join(args.work_dir, "output_root"), tool, os.path.abspath(args.rules))
+    logs = os.path.join(args.work_dir, "logs")
+    os.makedirs(logs, exist_ok=True)
+    timings = []
+    try:
+        _, seconds = bazel.run("info", "output_base")  # starts the server (Debian's build has no `version`)
+        timings.append(("server start", seconds))
+        # A clean start: an earlier run's outputs would make this run's first build a no-op.
+        _, seconds = bazel.run("clean")
+        timings.append(("clean", seconds))
+        p, seconds = bazel.run("info", *bazel.flags, "bazel-bin")
+        timings.append(("info", seconds))
+        bin_dir = p.stdout.strip().splitlines()[-1]
+
+        for mode, flags in (("worker", []), ("sandboxed", ["--strategy=StereoshiftConvert=sandboxed"])):
+            if mode != "worker":
+                _, seconds = bazel.run("clean")
+                timings.append(("clean", seconds))
+            _, seconds, spawns = bazel.build(os.path.join(logs, mode + "-clean.json"), *flags)
+            timings.append((f"{mode}: clean build", seconds))
+            check(pipelines_run(spawns) == set(PIPELINES) | set(SINGLE_SHADERS),
+                  f"{mode}: the clean build ran {sorted(pipelines_run(spawns))}")
+            check(len(spawns) == len(PIPELINES) + sum(len(s) for s in SINGLE_SHADERS.values()),
+                  f"{mode}: the clean build ran {len(spawns)} conversions")
+            runners = {s.get("runner", "") for s in spawns}
+            if mode == "worker":
+                check(runners == {"worker"}, f"the conversions ran on {runners}, not the persistent worker")
+            else:
+                check(all("sandbox" in r for r in runners), f"the conversions ran on {runners}, not in a sandbox")
+            compare_with_cli(tool, workspace, bin_dir, os.path.join(args.work_dir, "cli"))
+
+            _, seconds, spawns = bazel.build(os.path.join(logs, mode + "-noop.json"), *flags)
+            timings.append((f"{mode}: no-op build", seconds))
+            check(not spawns, f"{mode}: a no-op build reran {sorted(pipelines_run(spawns))}")
+
+            # An edit that changes the shaders' outputs (a touch that keeps the bytes is no change to Bazel).
+            include = os.path.join(workspace, SHARED_INCLUDE)
+            text = open(include).read()
+            edited = text.replace("0.015", "0.02") if "0.015" in text else text.replace("0.02", "0.015")
+            check(edited != text, "the shared include has no fog density to edit")
+            open(include, "w").write(edited)
+            _, seconds, spawns = bazel.build(os.path.join(logs, mode + "-include.json"), *flags)
+            timings.append((f"{mode}: rebuild after the include", seconds))
+            check(pipelines_run(spawns) == USERS_OF_SHARED_INCLUDE,
+                  f"{mode}: after editing {SHARED_INCLUDE} the build reran {sorted(pipelines_run(spawns))}, "
+                  f"not exactly {sorted(USERS_OF_SHARED_INCLUDE)}")
+            compare_with_cli(tool, workspace, bin_dir, os.path.join(args.work_dir, "cli"))
+
+        # An include the target does not declare.
+        leak = os.path.join(workspace, "undeclared")
+        os.makedirs(leak)
+        open(os.path.join(leak, "secret.glsl"), "w").write("const float SECRET_SCALE = 2.0;\n")
+        open(os.path.join(leak, "leak.vert"), "w").write(
+            "#version 450\n#include \"secret.glsl\"\nlayout(location = 0) in vec3 inPosition;\n"
+            "layout(set = 0, binding = 0) uniform Camera { mat4 viewProjection; } camera;\n"
+            "void main() { gl_Position = camera.viewProjection * vec4(inPosition * SECRET_SCALE, 1.0); }\n")
+        open(os.path.join(leak, "BUILD.bazel"), "w").write(
+            'load("@stereoshift_rules//:stereoshift.bzl", "stereoshift_shaders")\n'
+            'stereoshift_shaders(name = "leak", srcs = ["leak.vert"])\n')
+        for mode, flags, expected in (
+                ("worker", [], "secret.glsl: error: read by this action but not one of its declared inputs"),
+                ("sandboxed", ["--strategy=StereoshiftConvert=sandboxed"], "Could not process include directive")):
+            p, seconds, _ = bazel.build(os.path.join(logs, mode + "-undeclared.json"), *flags, "--keep_going", check=False)
+            timings.append((f"{mode}: undeclared include", seconds))
+            check(p.returncode != 0, f"{mode}: a target reading an undeclared include built:\n{p.stdout}")
+            check(expected in p.stdout, f"{mode}: the failure does not say '{expected}':\n{p.stdout}")
+    finally:
+        _, seconds = bazel.run("shutdown", check=False)
+        timings.append(("shutdown", seconds))
+
+    for what, seconds in timings:
+        print(f"{what:40s} {seconds:6.2f} s")
+    print(f"{'total (with the server start)':40s} {time.monotonic() - total_started:6.2f} s")
+    print("PASS")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
