@@ -107,7 +107,7 @@ int takeLock(const std::string& path) {
 // A connection to the running server, starting one when none answers. Many commands of one build
 // start at once: the first to take the lock binds the socket and starts the server; the others
 // wait for the lock and then find the socket listening (connections queue while the server warms up).
-int connectOrStart(const ServerSettings& settings, CommandLineEntry entry) {
+int connectOrStart(const ServerSettings& settings, ServiceCommandLine entry) {
   if (int fd = connectTo(settings.paths.socket); fd >= 0) return fd;
   int lock = takeLock(settings.paths.lock);
   if (lock < 0) {
@@ -196,7 +196,7 @@ bool serviceWanted(const ServiceOptions& options) {
 }
 
 std::optional<int> runThroughService(int argc, char** argv, const ServiceOptions& options, const CliOptions& command,
-                                     CommandLineEntry entry) {
+                                     ServiceCommandLine entry) {
   auto identity = serverIdentity();
   if (!identity) {
     note("cannot identify this executable (/proc/self/exe); converting in-process");

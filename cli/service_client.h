@@ -33,6 +33,6 @@ bool serviceWanted(const ServiceOptions& options);
 // status, or none when the command must convert in-process (standard input, if the request took
 // it, is then readable again).
 std::optional<int> runThroughService(int argc, char** argv, const ServiceOptions& options, const CliOptions& command,
-                                     CommandLineEntry entry);
+                                     ServiceCommandLine entry);
 
 }  // namespace stereoshift

@@ -119,7 +119,7 @@ std::string readWhole(int fd) {
 }
 
 // A worker: one request, run through the CLI's own entry, answered; then the process ends.
-[[noreturn]] void serveConnection(int connection, const ServerSettings& settings, CommandLineEntry entry) {
+[[noreturn]] void serveConnection(int connection, const ServerSettings& settings, ServiceCommandLine entry) {
   inWorker = true;
   // The signal dispositions of a command line, not of the server.
   ::signal(SIGPIPE, SIG_DFL);
@@ -159,7 +159,7 @@ std::string readWhole(int fd) {
 
 class Server {
  public:
-  Server(int listening, const ServerSettings& settings, CommandLineEntry entry)
+  Server(int listening, const ServerSettings& settings, ServiceCommandLine entry)
       : listening_(listening), settings_(settings), entry_(entry) {}
 
   [[noreturn]] void run() {
@@ -260,7 +260,7 @@ class Server {
 
   int listening_;
   const ServerSettings& settings_;
-  CommandLineEntry entry_;
+  ServiceCommandLine entry_;
   ino_t socketInode_ = 0;
   int workers_ = 0;
   Clock::time_point lastRequest_;
@@ -294,7 +294,7 @@ void detachDescriptors(int keep) {
 
 bool runningInServiceWorker() { return inWorker; }
 
-bool startServer(int listeningFd, const ServerSettings& settings, CommandLineEntry entry) {
+bool startServer(int listeningFd, const ServerSettings& settings, ServiceCommandLine entry) {
   pid_t child = ::fork();
   if (child < 0) return false;
   if (child == 0) {

@@ -19,7 +19,7 @@
 namespace stereoshift {
 
 // The CLI's entry (main's body): what a worker runs for each request.
-using CommandLineEntry = int (*)(int argc, char** argv);
+using ServiceCommandLine = int (*)(int argc, char** argv);
 
 struct ServerSettings {
   std::string identity;
@@ -34,7 +34,7 @@ struct ServerSettings {
 // and queue from this moment on) in a detached process (a new session, double-forked, standard
 // streams on /dev/null, no other descriptor of the caller). Returns false when it could not fork.
 // The caller keeps its copy of `listeningFd` and closes it.
-bool startServer(int listeningFd, const ServerSettings& settings, CommandLineEntry entry);
+bool startServer(int listeningFd, const ServerSettings& settings, ServiceCommandLine entry);
 
 // True inside a worker: the CLI then converts in-process and never asks the service again.
 bool runningInServiceWorker();

@@ -1,8 +1,12 @@
 // stereo-shift: turns the last pre-rasterization stage's clip position into the per-eye one,
 // `if (abs(w - 1) > eps) x += eyeSign * separation * (w - convergence)`, applied where the
 // position is final: before every return of a vertex / tessellation-evaluation entry point, and
-// before every EmitVertex / EmitStreamVertex of a geometry shader (in any function).
+// before every EmitVertex / EmitStreamVertex of a geometry shader (in any function). A mesh shader
+// has no such point (each invocation writes any vertices of the per-vertex output array, in any
+// order): there the value of every store of a whole clip position is shifted instead.
 #include "passes/pass.h"
+
+#include <optional>
 
 namespace stereoshift {
 
@@ -25,11 +29,7 @@ class StereoShiftPass final : public Pass {
       return PassResult::Failed;
     }
     spv::ExecutionModel model = m.executionModel();
-    if (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV) {
-      ctx.diags.error(ctx.file, "mesh shaders are not supported yet: the shift of every written vertex "
-                                "(SetMeshOutputs + per-vertex gl_Position writes) is not implemented");
-      return PassResult::Failed;
-    }
+    if (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV) return shiftMeshStores(ctx, report);
     for (const auto& p : positions)
       if (p.arrayed) {
         ctx.diags.error(ctx.file, "per-vertex clip-position arrays are not supported in this stage");
@@ -77,6 +77,93 @@ class StereoShiftPass final : public Pass {
 
  private:
   size_t insertedCount_ = 0;
+
+  // The indices a pointer applies to its root variable, through nested access chains; nullopt
+  // when one of them is not a constant where it selects a struct member (checked by the caller).
+  static std::vector<uint32_t> chainIndices(const spirv::Module& m, uint32_t pointer) {
+    std::vector<uint32_t> indices;
+    for (const Instruction* def = m.definition(pointer);
+         def && (def->opcode == spv::OpAccessChain || def->opcode == spv::OpInBoundsAccessChain);
+         def = m.definition(def->operand(0)))
+      indices.insert(indices.begin(), def->operands.begin() + 1, def->operands.end());
+    return indices;
+  }
+
+  // What an access into per-vertex output `p` reaches: the whole position of one vertex, part of
+  // it, something that contains it (a whole vertex or the whole array), or another member.
+  enum class Reach { WholePosition, PartOfPosition, ContainsPosition, Other };
+  static Reach reachOf(const spirv::Module& m, const ClipPosition& p, uint32_t pointer) {
+    std::vector<uint32_t> indices = chainIndices(m, pointer);
+    size_t positionDepth = p.isMember ? 2 : 1;  // [vertex, member] or [vertex]
+    if (indices.size() < positionDepth) return Reach::ContainsPosition;
+    if (p.isMember) {
+      const Instruction* member = m.definition(indices[1]);
+      if (!member || member->opcode != spv::OpConstant) return Reach::PartOfPosition;  // unknown: be safe
+      if (member->operand(0) != p.member) return Reach::Other;
+    }
+    return indices.size() == positionDepth ? Reach::WholePosition : Reach::PartOfPosition;
+  }
+
+  // Mesh shaders: every OpStore of a whole vertex position gets the shifted value (the cutoff and
+  // the eye guard in select form, as the other per-value shifts). A shader that reads a position
+  // back, writes part of one, or moves whole vertices is refused: a read-back would see (and a
+  // later store would shift again) the shifted value.
+  PassResult shiftMeshStores(PassContext& ctx, nlohmann::json& report) {
+    auto& m = ctx.module;
+    const std::vector<ClipPosition>& positions = clipPositions(ctx).outputs();
+    int sites = 0;
+    auto refuse = [&](const std::string& why) {
+      ctx.diags.error(ctx.file, "mesh shader " + why + ": only stores of whole vertex positions "
+                                "(gl_MeshVerticesEXT[i].gl_Position = v) can be shifted");
+      return PassResult::Failed;
+    };
+    for (auto& fn : m.functions)
+      for (auto& block : fn.blocks)
+        for (size_t i = 0; i < block.instructions.size(); ++i) {
+          const Instruction inst = block.instructions[i];
+          for (const auto& p : positions) {
+            auto rootedHere = [&](uint32_t pointer) { return m.rootVariable(pointer) == p.variable || pointer == p.variable; };
+            switch (inst.opcode) {
+              case spv::OpStore: {
+                if (!rootedHere(inst.operand(0))) break;
+                Reach reach = reachOf(m, p, inst.operand(0));
+                if (reach == Reach::Other) break;
+                if (reach == Reach::PartOfPosition) return refuse("writes part of a vertex position (" + p.description + ")");
+                if (reach == Reach::ContainsPosition) return refuse("stores whole vertices or the whole vertex array");
+                std::vector<Instruction> code;
+                uint32_t shifted = emitShiftedVec4Select(ctx, code, inst.operand(1));
+                block.instructions[i].operands[1] = shifted;
+                block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
+                i += code.size();
+                m.invalidateDefinitions();
+                ++sites;
+                break;
+              }
+              case spv::OpLoad:
+                if (rootedHere(inst.operand(0)) && reachOf(m, p, inst.operand(0)) != Reach::Other)
+                  return refuse("reads back a vertex position it wrote (" + p.description + ")");
+                break;
+              case spv::OpCopyMemory:
+              case spv::OpCopyMemorySized:
+                if (rootedHere(inst.operand(0)) || rootedHere(inst.operand(1))) return refuse("copies vertex memory");
+                break;
+              case spv::OpFunctionCall:
+                for (size_t k = 1; k < inst.operands.size(); ++k)
+                  if (rootedHere(inst.operands[k])) return refuse("passes the vertex array to a function");
+                break;
+              default: break;
+            }
+          }
+        }
+    m.invalidateDefinitions();
+    report["sites"] = sites;
+    report["form"] = "select";
+    if (sites == 0) {
+      ctx.diags.warning(ctx.file, "mesh shader writes no vertex position: nothing shifted");
+      return PassResult::Unchanged;
+    }
+    return PassResult::Changed;
+  }
 
   static size_t findSite(const Block& block, size_t start, bool geometry) {
     for (size_t i = start; i < block.instructions.size(); ++i) {
