@@ -61,6 +61,8 @@ uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, i
   auto& m = context.module;
   const EyeParams& eye = context.eye;
   uint32_t floatType = m.typeFloat(32);
+  // Single-pass stereo: eyeSign comes from the view or the instance, not from a parameter.
+  if (which == kEyeSign && context.options.eye.select != EyeSelect::Parameter) return emitDerivedEyeSign(context, out);
   switch (eye.source) {
     case EyeSource::SpecConstant:
       return eye.specConstants[which];
