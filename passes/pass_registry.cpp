@@ -64,6 +64,11 @@ const std::vector<PassInfo>& passRegistry() {
   return registry;
 }
 
+bool passRunsFor(const PassInfo& info, const TranspileOptions& options) {
+  if (std::string_view(info.name) == "single-pass-stereo") return options.eye.select != EyeSelect::Parameter;
+  return true;
+}
+
 const PassInfo* findPass(std::string_view name) {
   for (const auto& info : passRegistry())
     if (name == info.name) return &info;

@@ -4,7 +4,8 @@
 // emitLoadEyeParam calls for eyeSign in these modes):
 //   multiview: the view index (gl_ViewIndex / gl_ViewID_OVR / SV_ViewID), view 0 the left eye;
 //   instanced: the low bit of the instance index in the vertex stage (the application doubles the
-//     instance count), a flat varying `stereoEye` written by the vertex stage in the fragment stage.
+//     instance count), a flat varying `stereoEye` written by the vertex stage in the fragment stage
+//     (also for OpenGL multiview, where SPIRV-Cross writes gl_ViewID_OVR in vertex shaders only).
 // The pass itself checks that the output language can express the mode (refusing with the reason
 // and what to do instead), declares the view index of a multiview shader that gets the shift, and
 // in instanced mode rewrites the vertex shader: every use of the instance index reads the original
@@ -162,6 +163,10 @@ bool checkTarget(PassContext& ctx) {
     ctx.diags.error(ctx.file, std::string(flag) + ": " + why);
     return false;
   };
+  if (ctx.source.language == SourceLanguage::Hlsl && target == TargetLanguage::Hlsl &&
+      (model == spv::ExecutionModelGeometry || model == spv::ExecutionModelTessellationEvaluation))
+    return refuse("HLSL geometry and domain shaders back to HLSL are spliced into their own text, which carries "
+                  "the two-pass shift only; choose --target spirv or --target glsl");
   if (target == TargetLanguage::Msl)
     return refuse("not for --target msl (Metal draws both eyes with vertex amplification, which stereoshift does "
                   "not write yet); use two passes (--eye-source uniform-block)");
@@ -187,11 +192,6 @@ bool checkTarget(PassContext& ctx) {
       *ctx.options.targetVersion < 61)
     return refuse("SV_ViewID needs shader model 6.1 (this is --target-version " +
                   std::to_string(*ctx.options.targetVersion) + "); drop --target-version or give 61 or later");
-  if (select == EyeSelect::InstanceIndex && target == TargetLanguage::Hlsl && model == spv::ExecutionModelVertex &&
-      ctx.options.eye.route == EyeRoute::Layer)
-    return refuse("SPIRV-Cross writes SV_RenderTargetArrayIndex only from a geometry shader; use --eye-route viewport "
-                  "(SV_ViewportArrayIndex from the vertex shader, D3D12's VPAndRTArrayIndexFromAnyShaderFeedingRasterizer) "
-                  "or --eye-source multiview (SV_ViewID, shader model 6.1)");
   if (select == EyeSelect::InstanceIndex && ctx.classification != Classification::AlreadyStereo &&
       (tessOrGeometry || ctx.classification == Classification::Intermediate) &&
       model != spv::ExecutionModelTessellationControl)
@@ -230,50 +230,106 @@ int rewriteInstanceReads(PassContext& ctx, uint32_t instanceVariable) {
   return static_cast<int>(loads.size());
 }
 
-// Writes the eye to the layer (or viewport index) and to the `stereoEye` varying at the start of
-// the entry point.
-bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
+// Declares the vertex stage's `flat out int stereoEye` that hands the eye to the fragment stage;
+// 0 (with an error) when its location is taken.
+uint32_t declareEyeVaryingOutput(PassContext& ctx, nlohmann::json& report) {
   auto& m = ctx.module;
   const auto& o = ctx.options.eye;
   std::string who;
   if (locationTaken(m, spv::StorageClassOutput, o.eyeVaryingLocation, &who)) {
-    ctx.diags.error(ctx.file, "--eye-source instanced: output location " + std::to_string(o.eyeVaryingLocation) +
-                                  " of the eye varying '" + o.eyeVaryingName + "' is taken by '" + who +
-                                  "'; choose a free one with --eye-varying-location");
-    return false;
+    ctx.diags.error(ctx.file, std::string(modeFlag(o.select)) + ": output location " +
+                                  std::to_string(o.eyeVaryingLocation) + " of the eye varying '" + o.eyeVaryingName +
+                                  "' is taken by '" + who + "'; choose a free one with --eye-varying-location");
+    return 0;
   }
+  uint32_t varying = addIntVariable(m, spv::StorageClassOutput, o.eyeVaryingName);
+  m.decorate(varying, spv::DecorationFlat);
+  m.decorate(varying, spv::DecorationLocation, {o.eyeVaryingLocation});
+  report["eye_varying"] = {{"name", o.eyeVaryingName}, {"location", o.eyeVaryingLocation}};
+  return varying;
+}
+
+// Inserts `code` at the start of the entry point (after its function variables).
+void prependToEntry(spirv::Module& m, const std::vector<Instruction>& code) {
+  spirv::Function* entry = m.function(m.entryFunctionId());
+  auto& insts = entry->blocks.front().instructions;
+  size_t at = 0;
+  while (at < insts.size() && insts[at].opcode == spv::OpVariable) ++at;
+  insts.insert(insts.begin() + static_cast<long>(at), code.begin(), code.end());
+  m.invalidateDefinitions();
+}
+
+// Instanced: writes the eye to the layer (or viewport index) and to the `stereoEye` varying at the
+// start of the entry point.
+bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
+  auto& m = ctx.module;
+  const auto& o = ctx.options.eye;
   bool layer = o.route == EyeRoute::Layer;
-  uint32_t target = builtInVariable(m, layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex);
-  if (target) {
+  if (builtInVariable(m, layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)) {
     ctx.diags.error(ctx.file, std::string("--eye-source instanced: the shader writes ") +
                                   (layer ? "gl_Layer" : "gl_ViewportIndex") + " itself; the eye cannot be routed there "
                                   "(try --eye-route " + (layer ? "viewport" : "layer") + ")");
     return false;
   }
-  target = addIntVariable(m, spv::StorageClassOutput, layer ? "gl_Layer" : "gl_ViewportIndex");
-  m.decorate(target, spv::DecorationBuiltIn, {uint32_t(layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)});
-  // Layer / ViewportIndex from the vertex stage: VK_EXT_shader_viewport_index_layer,
-  // GL_ARB_shader_viewport_layer_array, D3D's SV_RenderTargetArrayIndex / SV_ViewportArrayIndex.
-  m.addCapability(spv::CapabilityShaderViewportIndexLayerEXT);
-  addExtension(m, "SPV_EXT_shader_viewport_index_layer");
-  if (!layer) m.addCapability(spv::CapabilityMultiViewport);
-  uint32_t varying = addIntVariable(m, spv::StorageClassOutput, o.eyeVaryingName);
-  m.decorate(varying, spv::DecorationFlat);
-  m.decorate(varying, spv::DecorationLocation, {o.eyeVaryingLocation});
-
+  uint32_t varying = declareEyeVaryingOutput(ctx, report);
+  if (!varying) return false;
+  uint32_t target = addIntVariable(m, spv::StorageClassOutput, layer ? "gl_Layer" : "gl_ViewportIndex");
+  if (layer && outputLanguage(ctx) == TargetLanguage::Hlsl) {
+    // SPIRV-Cross writes SV_RenderTargetArrayIndex from geometry shaders only (D3D12 allows it from
+    // any stage that feeds the rasterizer, VPAndRTArrayIndexFromAnyShaderFeedingRasterizer): a
+    // plain output carrying the semantic, which the back end puts back like any source semantic.
+    m.setName(target, "stereoLayer");  // SPIRV-Cross reserves gl_ names for its built-ins
+    m.decorate(target, spv::DecorationLocation, {o.eyeVaryingLocation + 1});
+    m.annotations.emplace_back(spv::OpDecorateString, 0, 0, std::vector<uint32_t>{target, uint32_t(spv::DecorationUserSemantic)});
+    for (uint32_t word : spirv::encodeString("SV_RenderTargetArrayIndex")) m.annotations.back().operands.push_back(word);
+    addExtension(m, "SPV_GOOGLE_decorate_string");
+    addExtension(m, "SPV_GOOGLE_hlsl_functionality1");
+  } else {
+    m.decorate(target, spv::DecorationBuiltIn, {uint32_t(layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)});
+    // Layer / ViewportIndex from the vertex stage: VK_EXT_shader_viewport_index_layer,
+    // GL_ARB_shader_viewport_layer_array, D3D's SV_ViewportArrayIndex.
+    m.addCapability(spv::CapabilityShaderViewportIndexLayerEXT);
+    addExtension(m, "SPV_EXT_shader_viewport_index_layer");
+    if (!layer) m.addCapability(spv::CapabilityMultiViewport);
+  }
   std::vector<Instruction> code;
   uint32_t eye = emitInstanceEyeBit(ctx, code);
   code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{target, eye});
   code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{varying, eye});
-  spirv::Function* entry = m.function(m.entryFunctionId());
-  auto& insts = entry->blocks.front().instructions;
-  size_t at = 0;
-  while (at < insts.size() && insts[at].opcode == spv::OpVariable) ++at;  // function variables come first
-  insts.insert(insts.begin() + static_cast<long>(at), code.begin(), code.end());
-  m.invalidateDefinitions();
+  prependToEntry(m, code);
   report["eye_written_to"] = layer ? "layer" : "viewport";
-  report["eye_varying"] = {{"name", o.eyeVaryingName}, {"location", o.eyeVaryingLocation}};
   return true;
+}
+
+// OpenGL multiview: SPIRV-Cross writes gl_ViewID_OVR in vertex shaders only, so the vertex stage
+// hands the view on to the fragment stage's per-eye fixes as `stereoEye`, as instanced mode does.
+bool handOnViewIndex(PassContext& ctx, nlohmann::json& report) {
+  auto& m = ctx.module;
+  uint32_t varying = declareEyeVaryingOutput(ctx, report);
+  if (!varying) return false;
+  std::vector<Instruction> code;
+  uint32_t viewIndex = ensureViewIndex(ctx);
+  uint32_t view = emitLoad(m, code, viewIndex);
+  const Instruction* type = m.definition(m.pointeeType(m.definition(viewIndex)->typeId));
+  if (type && type->operand(1) == 0) {  // gl_ViewID_OVR is a uint
+    uint32_t asInt = m.takeId();
+    code.emplace_back(spv::OpBitcast, m.typeInt(32, true), asInt, std::vector<uint32_t>{view});
+    view = asInt;
+  }
+  code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{varying, view});
+  prependToEntry(m, code);
+  // GL_OVR_multiview lets only gl_Position depend on the view; this output does (and the shifted
+  // halo outputs may), which GL_OVR_multiview2, the extension SPIRV-Cross declares, allows.
+  report["requires"] = "GL_OVR_multiview2 (plain GL_OVR_multiview lets only gl_Position depend on the view)";
+  return true;
+}
+
+// Whether the fragment stage reads the eye from the `stereoEye` varying rather than a built-in.
+bool eyeFromVarying(const PassContext& ctx) {
+  if (ctx.module.executionModel() != spv::ExecutionModelFragment) return false;
+  if (ctx.options.eye.select == EyeSelect::InstanceIndex) return true;
+  TargetLanguage target = outputLanguage(ctx);
+  return glslOutput(target) && openGlOutput(ctx, target);
 }
 
 class SinglePassStereoPass final : public Pass {
@@ -288,18 +344,23 @@ class SinglePassStereoPass final : public Pass {
     if (ctx.classification == Classification::AlreadyStereo) return PassResult::Unchanged;
     if (!checkTarget(ctx)) return PassResult::Failed;
     auto& m = ctx.module;
+    // A vertex shader that rasterizes, 2D ones included: instanced mode draws each twice per
+    // instance, so each routes its eye whether it gets the shift or not.
+    bool rasterizingVertex = m.executionModel() == spv::ExecutionModelVertex &&
+                             (ctx.classification == Classification::Perspective ||
+                              ctx.classification == Classification::ConstantW1 || ctx.shiftPosition);
     if (select == EyeSelect::ViewIndex) {
+      TargetLanguage target = outputLanguage(ctx);
+      if (rasterizingVertex && glslOutput(target) && openGlOutput(ctx, target)) {
+        if (!handOnViewIndex(ctx, report)) return PassResult::Failed;
+        return PassResult::Changed;
+      }
       // Declared here for a shader that gets the shift (fixes of other stages declare it on use).
       if (!ctx.shiftPosition) return PassResult::Unchanged;
       ensureViewIndex(ctx);
       return PassResult::Changed;
     }
-    // Instanced: every vertex shader that rasterizes is drawn twice per instance, 2D ones included,
-    // so each routes its eye whether it gets the shift or not.
-    bool rasterizes = m.executionModel() == spv::ExecutionModelVertex &&
-                      (ctx.classification == Classification::Perspective ||
-                       ctx.classification == Classification::ConstantW1 || ctx.shiftPosition);
-    if (!rasterizes) return PassResult::Unchanged;
+    if (!rasterizingVertex) return PassResult::Unchanged;
     uint32_t instance = ensureInstanceIndex(ctx);
     report["instance_reads_rewritten"] = rewriteInstanceReads(ctx, instance);
     if (!routeInstancedEye(ctx, report)) return PassResult::Failed;
@@ -312,12 +373,12 @@ class SinglePassStereoPass final : public Pass {
 uint32_t emitDerivedEyeSign(PassContext& ctx, std::vector<Instruction>& out) {
   auto& m = ctx.module;
   uint32_t eye = 0;  // an int that is 0 for the first eye (view 0, even instances)
-  if (ctx.options.eye.select == EyeSelect::ViewIndex) {
-    eye = emitLoad(m, out, ensureViewIndex(ctx));
-  } else if (m.executionModel() == spv::ExecutionModelVertex) {
-    eye = emitInstanceEyeBit(ctx, out);
-  } else {
+  if (eyeFromVarying(ctx)) {
     eye = emitLoad(m, out, ensureEyeVaryingInput(ctx));
+  } else if (ctx.options.eye.select == EyeSelect::ViewIndex) {
+    eye = emitLoad(m, out, ensureViewIndex(ctx));
+  } else {
+    eye = emitInstanceEyeBit(ctx, out);
   }
   uint32_t second = m.takeId();
   out.emplace_back(spv::OpINotEqual, m.typeBool(), second, std::vector<uint32_t>{eye, m.constantInt(0)});
