@@ -761,6 +761,11 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
   if (t.targetEnv) description["targetEnv"] = targetEnvName(*t.targetEnv);
   if (t.targetSpv) description["targetSpv"] = *t.targetSpv;
   for (const auto& [extension, stage] : t.stageExtensions) description["stageExtensions"][extension] = stageName(stage);
+  // Single-pass stereo only where asked for, so the default fingerprints (cache keys) stay as they were.
+  if (e.select != EyeSelect::Parameter)
+    description["eye"]["singlePass"] = {{"select", static_cast<int>(e.select)}, {"swapEyes", e.swapEyes},
+                                        {"route", static_cast<int>(e.route)}, {"varying", e.eyeVaryingName},
+                                        {"location", e.eyeVaryingLocation}};
   return description;
 }
 
