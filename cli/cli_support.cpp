@@ -182,7 +182,17 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("-I", o.t.includeDirs, "Add an #include search directory")->allow_extra_args(false);
   app.add_option("--target", o.target, "Output language: glsl, essl, hlsl, msl, spirv, spirv-asm (default: the input's own)");
   app.add_option("--target-version", o.targetVersion, "GLSL/ESSL version or HLSL shader model (50, 51, 60) of the output");
-  app.add_option("--eye-source", o.eyeSource, "Where eyeSign/separation/convergence live: auto, uniform-block, push-constant, spec-constant, loose-uniforms");
+  app.add_option("--eye-source", o.eyeSource, "Where eyeSign/separation/convergence live: auto, uniform-block, push-constant, spec-constant, loose-uniforms; "
+                 "or single-pass stereo, eyeSign from the view index (multiview) or the instance index (instanced)");
+  app.add_option("--multiview-params", o.singlePassParams,
+                 "With --eye-source multiview|instanced: where separation/convergence live (auto, uniform-block, "
+                 "push-constant, spec-constant, loose-uniforms)")->capture_default_str();
+  app.add_flag("--swap-eyes", o.t.eye.swapEyes, "Single-pass stereo: view 0 / even instances are the right eye");
+  app.add_option("--eye-route", o.eyeRoute, "--eye-source instanced: the eye goes to the render-target layer or the viewport index (layer, viewport)")
+      ->capture_default_str();
+  app.add_option("--eye-varying-location", o.t.eye.eyeVaryingLocation,
+                 "--eye-source instanced: location of the flat `stereoEye` varying from the vertex to the fragment stage")
+      ->capture_default_str();
   app.add_option("--block-name", o.t.eye.blockName, "Name of the injected uniform block / cbuffer")->capture_default_str();
   app.add_option("--instance-name", o.t.eye.instanceName, "Instance name of the injected block")->capture_default_str();
   app.add_option("--set", o.set, "Descriptor set of the injected block (default 0)");
@@ -231,7 +241,9 @@ const std::map<std::string, std::vector<std::string>>& enumeratedOptions() {
   static const std::map<std::string, std::vector<std::string>> options = {
       {"--stage", {"vert", "tesc", "tese", "geom", "frag", "comp", "mesh", "task"}},
       {"--target", {"glsl", "essl", "hlsl", "msl", "spirv", "spirv-asm"}},
-      {"--eye-source", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms"}},
+      {"--eye-source", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms", "multiview", "instanced"}},
+      {"--multiview-params", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms"}},
+      {"--eye-route", {"layer", "viewport"}},
       {"--shift-form", {"branch", "select"}},
       {"--target-env", {"vulkan1.0", "vulkan1.1", "vulkan1.2", "vulkan1.3", "opengl", "opengl4.5"}},
       {"--target-spv", {"spv1.0", "spv1.1", "spv1.2", "spv1.3", "spv1.4", "spv1.5", "spv1.6"}},
@@ -297,7 +309,18 @@ std::optional<std::string> finishOptions(CliOptions& o) {
       {"auto", EyeSource::Auto}, {"uniform-block", EyeSource::UniformBlock},
       {"push-constant", EyeSource::PushConstant}, {"spec-constant", EyeSource::SpecConstant},
       {"loose-uniforms", EyeSource::LooseUniforms}};
-  auto src = sources.find(o.eyeSource);
+  // Single-pass stereo: eyeSign from the view or instance; the other parameters where --multiview-params says.
+  std::string paramsSource = o.eyeSource;
+  o.t.eye.select = EyeSelect::Parameter;
+  if (o.eyeSource == "multiview" || o.eyeSource == "instanced") {
+    o.t.eye.select = o.eyeSource == "multiview" ? EyeSelect::ViewIndex : EyeSelect::InstanceIndex;
+    paramsSource = o.singlePassParams;
+    if (!sources.count(paramsSource)) return unknownValue("--multiview-params", paramsSource);
+  }
+  if (o.eyeRoute == "layer") o.t.eye.route = EyeRoute::Layer;
+  else if (o.eyeRoute == "viewport") o.t.eye.route = EyeRoute::Viewport;
+  else return unknownValue("--eye-route", o.eyeRoute);
+  auto src = sources.find(paramsSource);
   if (src == sources.end()) return unknownValue("--eye-source", o.eyeSource);
   o.t.eye.source = src->second;
   if (o.shiftForm == "branch") o.t.shiftForm = ShiftForm::Branch;
@@ -740,6 +763,11 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
   if (t.targetEnv) description["targetEnv"] = targetEnvName(*t.targetEnv);
   if (t.targetSpv) description["targetSpv"] = *t.targetSpv;
   for (const auto& [extension, stage] : t.stageExtensions) description["stageExtensions"][extension] = stageName(stage);
+  // Single-pass stereo only where asked for, so the default fingerprints (cache keys) stay as they were.
+  if (e.select != EyeSelect::Parameter)
+    description["eye"]["singlePass"] = {{"select", static_cast<int>(e.select)}, {"swapEyes", e.swapEyes},
+                                        {"route", static_cast<int>(e.route)}, {"varying", e.eyeVaryingName},
+                                        {"location", e.eyeVaryingLocation}};
   return description;
 }
 

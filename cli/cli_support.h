@@ -30,6 +30,7 @@ struct CliOptions {
   std::vector<std::string> inputs;
   std::string output;
   std::string stage, target, eyeSource = "auto", shiftForm = "branch";
+  std::string singlePassParams = "auto", eyeRoute = "layer";  // --multiview-params, --eye-route (single-pass stereo)
   std::string language;  // -x glsl|hlsl
   std::string targetEnv, targetSpv;     // --target-env vulkan1.2, --target-spv spv1.5
   std::vector<std::string> stageExts;   // --stage-ext vp=vert (repeatable)

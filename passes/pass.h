@@ -136,6 +136,12 @@ std::unique_ptr<Pass> createHaloPass();
 std::unique_ptr<Pass> createHudAtDepthPass();
 std::unique_ptr<Pass> createPerEyeViewPass();
 std::unique_ptr<Pass> createDeferredUnprojectionPass();
+std::unique_ptr<Pass> createSinglePassStereoPass();
+
+// eyeSign in the single-pass modes (EyeSelect ViewIndex / InstanceIndex): appends the instructions
+// that derive it per view or instance (exactly -1.0 or +1.0) and returns the float id; see
+// single_pass_stereo_pass.cpp. emitLoadEyeParam calls it for eyeSign in those modes.
+uint32_t emitDerivedEyeSign(PassContext& context, std::vector<spirv::Instruction>& out);
 
 // Declares the eye parameters 0..count-1 (see EyeParam) if they are not declared yet, or extends
 // the declared ones up to `count`. Any pass that needs them calls this; the eye-params pass does so

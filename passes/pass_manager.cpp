@@ -29,7 +29,8 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
   std::vector<const PassInfo*> passes;
   std::vector<std::string> requiredBy;
   if (ctx.options.onlyPasses.empty()) {
-    for (const auto& info : passRegistry()) passes.push_back(&info);
+    for (const auto& info : passRegistry())
+      if (passRunsFor(info, ctx.options)) passes.push_back(&info);
     requiredBy.resize(passes.size());
   } else {
     passes = selectPasses(ctx.options.onlyPasses, &requiredBy);

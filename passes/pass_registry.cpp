@@ -21,6 +21,15 @@ const std::vector<PassInfo>& passRegistry() {
        "turns a 2D position into one at depth, which then needs the shift like any perspective position: "
        "before eye-params, halo and stereo-shift",
        {"clip-position-detection"}, kClipPositionAnalysis, kFoldedCopyAnalysis},
+      // Rewrites reads of the instance index and adds outputs other than the position: the position's
+      // pointers and values stay, the folded copy no longer matches the module.
+      {"single-pass-stereo", createSinglePassStereoPass,
+       "draws both eyes in one pass: eyeSign from the view index (multiview) or the instance index (instanced; "
+       "the original instance given to the shader, the eye routed to the layer or viewport)",
+       "--eye-source multiview | instanced",
+       "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
+       "reads it rewrites are only the application's own",
+       {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis},
       // Adds a declaration only: no output, no pointer to the position, no application value changes.
       {"eye-params", createEyeParamsPass,
        "declares eyeSign, separation and convergence in a shader that gets the shift",
@@ -53,6 +62,11 @@ const std::vector<PassInfo>& passRegistry() {
        {}, kNoAnalyses, kNoAnalyses},
   };
   return registry;
+}
+
+bool passRunsFor(const PassInfo& info, const TranspileOptions& options) {
+  if (std::string_view(info.name) == "single-pass-stereo") return options.eye.select != EyeSelect::Parameter;
+  return true;
 }
 
 const PassInfo* findPass(std::string_view name) {

@@ -42,6 +42,15 @@ enum class EyeSource {
   LooseUniforms,  // OpenGL default-block uniforms
 };
 
+// Where eyeSign comes from. `Parameter`: one of the EyeSource kinds above (two passes, the
+// application changes it between them). The single-pass modes derive it per vertex instead, so
+// both eyes are drawn in one pass (separation and convergence stay where EyeSource puts them):
+// `ViewIndex`: multiview (view 0 left, view 1 right); `InstanceIndex`: instanced stereo (the low bit
+// of the instance index, the eye written to the render-target layer or viewport index).
+enum class EyeSelect { Parameter, ViewIndex, InstanceIndex };
+// Where instanced stereo sends each eye: a layer of a layered target, or a viewport (side by side).
+enum class EyeRoute { Layer, Viewport };
+
 enum class CutoffMode { Epsilon, Exact, None };
 enum class ShiftForm { Branch, Select };
 
@@ -62,6 +71,12 @@ struct EyeParamOptions {
   std::optional<uint32_t> hlslRegister;   // cbuffer register b<N>; default: first unused
   std::optional<uint32_t> glBinding;      // OpenGL uniform-block binding; default: none (by name)
   uint32_t specIdBase = 100;              // SpecId of eyeSign; separation and convergence follow
+  // Single-pass stereo (--eye-source multiview|instanced): see EyeSelect.
+  EyeSelect select = EyeSelect::Parameter;
+  bool swapEyes = false;                  // view / instance eye 0 is the right eye (+1)
+  EyeRoute route = EyeRoute::Layer;       // instanced: --eye-route layer|viewport
+  std::string eyeVaryingName = "stereoEye";  // instanced: the flat varying that hands the eye on
+  uint32_t eyeVaryingLocation = 15;       // its location (15: the last one every Vulkan device has)
 };
 
 struct TranspileOptions {

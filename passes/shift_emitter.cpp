@@ -57,7 +57,10 @@ bool targetSupportsPrecise(const PassContext& context) {
   }
 }
 
-uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
+namespace {
+
+// The load of a declared eye parameter from where eye-params put it.
+uint32_t emitLoadDeclaredEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
   auto& m = context.module;
   const EyeParams& eye = context.eye;
   uint32_t floatType = m.typeFloat(32);
@@ -84,6 +87,22 @@ uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, i
     }
   }
   return 0;
+}
+
+}  // namespace
+
+uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
+  if (context.options.eye.select == EyeSelect::Parameter) return emitLoadDeclaredEyeParam(context, out, which);
+  // Single-pass stereo: eyeSign comes from the view or the instance, not from a parameter; the eye
+  // offset, one value for both eyes, is the right eye's, scaled by the eye sign (it is e*S*C/P00
+  // along the camera's right axis, odd in e).
+  if (which == kEyeSign) return emitDerivedEyeSign(context, out);
+  uint32_t value = emitLoadDeclaredEyeParam(context, out, which);
+  if (which != kEyeOffsetX && which != kEyeOffsetY && which != kEyeOffsetZ) return value;
+  uint32_t sign = emitDerivedEyeSign(context, out);
+  uint32_t scaled = context.module.takeId();
+  out.emplace_back(spv::OpFMul, context.module.typeFloat(32), scaled, std::vector<uint32_t>{sign, value});
+  return scaled;
 }
 
 uint32_t emitStereoGuard(PassContext& context, std::vector<Instruction>& out, uint32_t eyeSign) {

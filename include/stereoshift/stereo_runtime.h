@@ -196,6 +196,87 @@ Vec3<T> cullingFrustumOrigin(const Mat4<T>& inverseView, T separation, T converg
           inverseView[14] + forward[2] / length * depth};
 }
 
+// ==== single-pass stereo (--eye-source multiview | instanced) =====================================
+//
+// Both eyes in one draw; the converted shaders derive eyeSign themselves (the StereoParams member is
+// kept, so the layout is the same in every mode, and ignored): eye 0 is the left eye (-1), eye 1 the
+// right (+1), swapped by --swap-eyes. separation and convergence are uploaded as in two passes, once
+// per frame. eyeOffsetX/Y/Z (per-eye view vectors without a matrix): the shaders scale them by the
+// eye sign, so upload the right eye's offset (eyeSign = +1).
+//   multiview: eye = view index. Vulkan: VkRenderPassMultiviewCreateInfo view mask 0b11 (or
+//     VkRenderingInfo::viewMask) on a 2-layer target, device feature `multiview`. OpenGL / GL ES:
+//     GL_OVR_multiview2, glFramebufferTextureMultiviewOVR(..., baseViewIndex 0, numViews 2) on a
+//     2-layer texture array. D3D12: view instancing (SM 6.1, D3D12_VIEW_INSTANCING_DESC with two
+//     views whose RenderTargetArrayIndex are 0 and 1).
+//   instanced: eye = instance & 1, the shader sees instance >> 1. Draw twice the instances; keep
+//     firstInstance even (the shader sees firstInstance / 2 + k); per-instance vertex attributes
+//     need an instance step of 2 (VK_EXT_vertex_attribute_divisor divisor 2, glVertexAttribDivisor(i, 2),
+//     D3D InstanceDataStepRate 2), and with a base instance they are read at firstInstance + k, so
+//     offset the per-instance buffer binding instead of using a base. The eye goes to the layer of a
+//     2-layer target (Vulkan: shaderOutputLayer / VK_EXT_shader_viewport_index_layer; GL 4.1:
+//     GL_ARB_shader_viewport_layer_array; D3D12: VPAndRTArrayIndexFromAnyShaderFeedingRasterizer) or,
+//     with --eye-route viewport, to viewport 0 / 1 (side by side: sideBySideViewports).
+
+enum class SinglePassMode { Multiview, InstancedLayer, InstancedViewport };
+
+// What the application sets up for one draw of a single-pass frame.
+struct SinglePassSetup {
+  unsigned viewMask = 0;        // multiview: the render pass / rendering view mask; 0 otherwise
+  unsigned layerCount = 1;      // array layers of the colour and depth targets
+  unsigned viewportCount = 1;   // viewports bound (2 for side by side)
+  unsigned instanceCount = 0;   // the draw's instance count
+  unsigned firstInstance = 0;   // the draw's first instance
+  unsigned instanceStep = 1;    // per-instance attribute divisor
+};
+
+// The set-up for a draw the mono renderer records as (instanceCount, firstInstance).
+inline SinglePassSetup singlePassSetup(SinglePassMode mode, unsigned instanceCount, unsigned firstInstance) {
+  SinglePassSetup s;
+  s.instanceCount = instanceCount;
+  s.firstInstance = firstInstance;
+  switch (mode) {
+    case SinglePassMode::Multiview:
+      s.viewMask = 0x3u;
+      s.layerCount = 2;
+      break;
+    case SinglePassMode::InstancedLayer:
+    case SinglePassMode::InstancedViewport:
+      s.instanceCount = 2 * instanceCount;
+      s.firstInstance = 2 * firstInstance;  // even, so eye 0 stays the left; the shader reads firstInstance + k
+      s.instanceStep = 2;
+      if (mode == SinglePassMode::InstancedLayer) s.layerCount = 2;
+      else s.viewportCount = 2;
+      break;
+  }
+  return s;
+}
+
+struct Viewport {
+  float x = 0, y = 0, width = 0, height = 0;
+};
+
+// --eye-route viewport: the left eye in the left half of a width x height target, the right eye in
+// the right half (viewport index 0 / 1).
+inline std::array<Viewport, 2> sideBySideViewports(float width, float height) {
+  return {Viewport{0, 0, width / 2, height}, Viewport{width / 2, 0, width / 2, height}};
+}
+
+// The StereoParams of a single-pass frame: both eyes at once (eyeSign is derived by the shaders and
+// left 0), eyeOffset as the right eye's.
+inline StereoParams singlePassParams(float separation, float convergence, float hudDepth = 1.0f,
+                                     const Vec3<float>& rightEyeOffset = {0, 0, 0}) {
+  StereoParams p;
+  p.separation = separation;
+  p.convergence = convergence;
+  p.hudDepth = hudDepth;
+  p.eyeOffsetX = rightEyeOffset[0];
+  p.eyeOffsetY = rightEyeOffset[1];
+  p.eyeOffsetZ = rightEyeOffset[2];
+  return p;
+}
+
+// ==== end of single-pass stereo =====================================================================
+
 // ---- comfort ---------------------------------------------------------------------------------------
 
 // The eye depths that stay comfortable for a convergence C: [C/2, 100*C]. At C/2 the screen

@@ -9,7 +9,7 @@ namespace {
 
 TEST(PassRegistry, NamesAreTheFlagsAndRequirementsComeEarlier) {
   const auto& registry = passRegistry();
-  ASSERT_EQ(registry.size(), 7u);
+  ASSERT_EQ(registry.size(), 8u);
   for (size_t i = 0; i < registry.size(); ++i) {
     EXPECT_STREQ(registry[i].create()->name(), registry[i].name);
     EXPECT_EQ(findPass(registry[i].name), &registry[i]);
@@ -19,8 +19,8 @@ TEST(PassRegistry, NamesAreTheFlagsAndRequirementsComeEarlier) {
       EXPECT_LT(info, &registry[i]) << registry[i].name << " requires " << required << ", which runs later";
     }
   }
-  EXPECT_EQ(passNameList(), "clip-position-detection, hud-at-depth, eye-params, halo, stereo-shift, per-eye-view, "
-                            "deferred-unprojection");
+  EXPECT_EQ(passNameList(), "clip-position-detection, hud-at-depth, single-pass-stereo, eye-params, halo, stereo-shift, "
+                            "per-eye-view, deferred-unprojection");
 }
 
 TEST(PassRegistry, UnknownPassNamesTheValidOnes) {

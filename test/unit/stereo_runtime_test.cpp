@@ -224,6 +224,30 @@ TEST(StereoRuntime, ComfortableDepthRange) {
   EXPECT_EQ(parallax(1.0, kS, kC, kC), 0.0);
 }
 
+TEST(StereoRuntime, SinglePassSetupPerMode) {
+  SinglePassSetup s = singlePassSetup(SinglePassMode::Multiview, 5, 3);
+  EXPECT_EQ(s.viewMask, 0x3u);
+  EXPECT_EQ(s.layerCount, 2u);
+  EXPECT_EQ(s.instanceCount, 5u);  // multiview draws every instance once; the views are the eyes
+  EXPECT_EQ(s.firstInstance, 3u);
+  s = singlePassSetup(SinglePassMode::InstancedLayer, 5, 3);
+  EXPECT_EQ(s.viewMask, 0u);
+  EXPECT_EQ(s.layerCount, 2u);
+  EXPECT_EQ(s.instanceCount, 10u);  // each instance twice, the low bit the eye
+  EXPECT_EQ(s.firstInstance, 6u);   // the shader reads (6 + i) >> 1 = 3 + i / 2
+  EXPECT_EQ(s.instanceStep, 2u);
+  s = singlePassSetup(SinglePassMode::InstancedViewport, 1, 0);
+  EXPECT_EQ(s.layerCount, 1u);
+  EXPECT_EQ(s.viewportCount, 2u);
+  auto halves = sideBySideViewports(1280, 720);
+  EXPECT_EQ(halves[0].width, 640);
+  EXPECT_EQ(halves[1].x, 640);
+  StereoParams p = singlePassParams(0.065f, 3.0f, 1.0f, {0.1f, 0, 0});
+  EXPECT_EQ(p.eyeSign, 0.0f);  // the shaders derive it
+  EXPECT_EQ(p.separation, 0.065f);
+  EXPECT_EQ(p.eyeOffsetX, 0.1f);
+}
+
 }  // namespace
 
 // The widened source view for depth reprojection: a point at the final view's edge, shifted by the

@@ -118,6 +118,11 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         if (!o.vulkan_semantics)
           for (spv::Capability c : compiler.get_declared_capabilities())
             if (c == spv::CapabilityMultiView) o.ovr_multiview_view_count = info.multiviewViews > 0 ? info.multiviewViews : 2;
+        // gl_Layer / gl_ViewportIndex written before the geometry stage (instanced single-pass stereo):
+        // SPIRV-Cross writes them without the extension that allows it.
+        if (info.stage != Stage::Geometry)
+          for (spv::Capability c : compiler.get_declared_capabilities())
+            if (c == spv::CapabilityShaderViewportIndexLayerEXT) compiler.require_extension("GL_ARB_shader_viewport_layer_array");
         compiler.set_common_options(o);
         result.text = compiler.compile();
         result.vulkanSemantics = o.vulkan_semantics;
@@ -130,6 +135,10 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         spirv_cross::CompilerHLSL compiler(words);
         auto h = compiler.get_hlsl_options();
         h.shader_model = static_cast<uint32_t>(options.targetVersion.value_or(50));
+        // SV_ViewID (single-pass multiview) exists from shader model 6.1 on.
+        if (!options.targetVersion)
+          for (spv::Capability c : compiler.get_declared_capabilities())
+            if (c == spv::CapabilityMultiView) h.shader_model = 61;
         h.support_nonzero_base_vertex_base_instance = false;
         compiler.set_hlsl_options(h);
         if (info.stage == Stage::Vertex)

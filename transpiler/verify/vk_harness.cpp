@@ -1238,8 +1238,9 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   if (req.width > props.limits.maxFramebufferWidth || req.height > props.limits.maxFramebufferHeight)
     fail("render: target larger than maxFramebufferWidth/Height");
   if (req.viewCount == 0) fail("render: viewCount must be >= 1");
-  if (req.viewCount > 1 && !multiview) fail("render: multiview is not supported by the device");
-  if (req.viewCount > 1 && req.viewCount > maxMultiviewViewCount)
+  const bool useMultiview = req.viewCount > 1 && !req.layeredWithoutMultiview;
+  if (useMultiview && !multiview) fail("render: multiview is not supported by the device");
+  if (useMultiview && req.viewCount > maxMultiviewViewCount)
     fail("render: viewCount exceeds maxMultiviewViewCount " + std::to_string(maxMultiviewViewCount));
   if (req.draws.empty()) fail("render: no draws");
 
@@ -1304,7 +1305,7 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   mvci.correlationMaskCount = 1;
   mvci.pCorrelationMasks = &viewMask;
   VkRenderPassCreateInfo rpci{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  if (layers > 1) rpci.pNext = &mvci;
+  if (useMultiview) rpci.pNext = &mvci;
   rpci.attachmentCount = 2;
   rpci.pAttachments = att;
   rpci.subpassCount = 1;
@@ -1322,7 +1323,7 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   fci.pAttachments = views;
   fci.width = req.width;
   fci.height = req.height;
-  fci.layers = 1;  // multiview: must be 1
+  fci.layers = useMultiview ? 1 : layers;  // multiview: must be 1
   VkFramebuffer fb = VK_NULL_HANDLE;
   VKH_CHECK(vkCreateFramebuffer(dev, &fci, nullptr, &fb));
   scope.defer([dev, fb] { vkDestroyFramebuffer(dev, fb, nullptr); });
@@ -1332,7 +1333,7 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
     RasterConfig raster;
     raster.colorAttachment = raster.depthAttachment = true;
     raster.draw = &req.draws[i];
-    raster.viewCount = layers;
+    raster.viewCount = useMultiview ? layers : 1;
     pipelines.push_back(
         buildPipeline(scope, cb, req.draws[i].pipeline, rp, raster, "render draw " + std::to_string(i)));
   }

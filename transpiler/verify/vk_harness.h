@@ -176,6 +176,9 @@ struct RenderRequest {
   // > 1: multiview (VK_KHR_multiview, core 1.1) into a layered target, view mask (1<<n)-1;
   // shaders see gl_ViewIndex. Pixels and depth come back layer after layer.
   uint32_t viewCount = 1;
+  // With viewCount > 1: a plain layered target of viewCount layers instead (no view mask), where the
+  // vertex stage picks the layer with gl_Layer (instanced single-pass stereo).
+  bool layeredWithoutMultiview = false;
   bool readDepth = false;  // also return the depth buffer
   std::vector<Draw> draws;  // recorded in order inside one render pass
 };
