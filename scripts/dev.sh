@@ -16,6 +16,9 @@ packages=(cmake ninja-build g++ python3 glslang-dev glslang-tools spirv-tools
           googletest libgtest-dev)
 # The sanitizer tree (test mode only): clang and its runtimes (ASan, UBSan, libFuzzer).
 if [ "$mode" = test ]; then packages+=(clang-14 libclang-rt-14-dev); fi
+# Bazel (its example test, integration.bazel_example, is skipped without it): opt-in, because its
+# install and its test add about a minute to a suite that CI runs within its time on two cores.
+if [ "$mode" = test ] && [ -n "${STEREOSHIFT_WITH_BAZEL:-}" ]; then packages+=(bazel-bootstrap); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
