@@ -3,6 +3,7 @@
 #include "cli/persistent_worker.h"
 
 #include "cli/cli_support.h"
+#include "cli/fd_io.h"
 
 #include <nlohmann/json.hpp>
 
@@ -65,30 +66,6 @@ std::optional<std::string> optionValue(const std::vector<std::string>& args, con
 }
 
 std::string normalPath(const std::string& path) { return fs::path(path).lexically_normal().string(); }
-
-bool writeAll(int fd, const void* data, size_t size) {
-  const char* p = static_cast<const char*>(data);
-  while (size > 0) {
-    ssize_t n = ::write(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
-bool readAll(int fd, void* data, size_t size) {
-  char* p = static_cast<char*>(data);
-  while (size > 0) {
-    ssize_t n = ::read(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
 
 bool sendMessage(int fd, const std::string& message) {
   uint64_t size = message.size();

@@ -2,6 +2,8 @@
 // the answer relayed; every failure a quiet fall-back to the in-process conversion.
 #include "cli/service_client.h"
 
+#include "cli/fd_io.h"
+
 #include <CLI/CLI.hpp>
 
 #include <fcntl.h>
@@ -164,14 +166,7 @@ void restoreInput(const std::string& bytes) {
   ::close(fd);
 }
 
-void writeAllTo(int fd, const std::string& bytes) {
-  for (size_t at = 0; at < bytes.size();) {
-    ssize_t n = ::write(fd, bytes.data() + at, bytes.size() - at);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;
-    at += static_cast<size_t>(n);
-  }
-}
+void writeAllTo(int fd, const std::string& bytes) { writeAll(fd, bytes.data(), bytes.size()); }
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 #include "cli/service_protocol.h"
 
 #include "cli/cli_support.h"
+#include "cli/fd_io.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -48,19 +49,6 @@ bool getNumber(const std::string& wire, size_t& at, long long* value) {
   errno = 0;
   *value = std::strtoll(text.c_str(), &end, 10);
   return errno == 0 && end && *end == '\0';
-}
-
-// To a socket: a peer that went away (a server killed, a client given up) is an error to handle,
-// never a SIGPIPE that ends this process.
-bool writeAll(int fd, const char* data, size_t size) {
-  while (size > 0) {
-    ssize_t n = ::send(fd, data, size, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    data += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
 }
 
 // Reads exactly `size` bytes before `deadline` (none when timeoutSeconds <= 0).
@@ -164,7 +152,7 @@ bool sendMessage(int fd, const std::string& bytes) {
   for (int i = 0; i < 8; ++i) header[i] = static_cast<char>((size >> (8 * i)) & 0xff);
   std::string message(header, sizeof header);
   message += bytes;
-  return writeAll(fd, message.data(), message.size());
+  return sendAll(fd, message.data(), message.size());
 }
 
 bool receiveMessage(int fd, std::string* bytes, double timeoutSeconds) {

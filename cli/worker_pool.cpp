@@ -1,5 +1,7 @@
 #include "cli/worker_pool.h"
 
+#include "cli/fd_io.h"
+
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -19,30 +21,6 @@ namespace stereoshift {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-bool writeAll(int fd, const void* data, size_t size) {
-  const char* p = static_cast<const char*>(data);
-  while (size > 0) {
-    ssize_t n = ::write(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
-bool readAll(int fd, void* data, size_t size) {
-  char* p = static_cast<char*>(data);
-  while (size > 0) {
-    ssize_t n = ::read(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
 
 std::string describeStatus(int status) {
   if (WIFSIGNALED(status)) {
