@@ -85,6 +85,9 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   copyThroughPasses(plan, results);
   convertInWorkers(plan, toConvert, tool, {build.jobs, build.jobTimeoutSeconds}, results, next);
   const int removed = removeStaleOutputs(plan, previous, outDir);
+  // The #include files the copied and spliced outputs still name: the output tree builds on its own
+  // (after the stale outputs went, so a former stage that is now an include file is copied anew).
+  const std::vector<fs::path> includeCopies = copyIncludedFiles(plan, results);
 
   // 4. report
   int errors = static_cast<int>(plan.skippedEntries.size());
@@ -92,7 +95,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     std::cerr << result.log;
     errors += result.errors;
   }
-  BuildReport report = composeReport(plan, results, removed, build.source);
+  BuildReport report = composeReport(plan, results, removed, build.source, includeCopies);
   const std::string reportPath = base.reportPath.empty() ? (outDir / "stereoshift-report.json").string() : base.reportPath;
   if (!writeReportText(reportPath, report.text)) ++errors;
   // The cache changes when something converted or an entry did not carry over.

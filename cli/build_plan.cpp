@@ -137,7 +137,8 @@ class TreeWalk {
   fs::path outCanonical_;
 };
 
-// The files `text` (the shader at `path`) #includes that exist, resolved as the front end would.
+}  // namespace
+
 std::vector<fs::path> includedFiles(const fs::path& path, const std::string& text, const std::vector<std::string>& userDirs) {
   std::vector<fs::path> found;
   std::vector<std::string> roots = includeSearchPath(path.string(), userDirs);
@@ -162,6 +163,8 @@ std::vector<fs::path> includedFiles(const fs::path& path, const std::string& tex
   }
   return found;
 }
+
+namespace {
 
 // Extensions other languages use too (C# .cs, F# .fs): such a file is a shader only when its text
 // says so (a #version line, or HLSL constructs), so a tree with tool sources beside the shaders builds.

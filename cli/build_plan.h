@@ -32,6 +32,11 @@ Plan planDirectory(const std::filesystem::path& root, const std::filesystem::pat
 Plan planManifest(const std::filesystem::path& manifestFile, const std::filesystem::path& outDir,
                   const CliOptions& base);
 
+// The files `text` (the shader, or include file, at `path`) #includes that exist, resolved as the
+// front end would (beside `path`, then `userDirs`), canonical; one level, not what those include.
+std::vector<std::filesystem::path> includedFiles(const std::filesystem::path& path, const std::string& text,
+                                                 const std::vector<std::string>& userDirs);
+
 // Lexically: whether `path` is `directory` or lies under it.
 bool insideDirectory(const std::filesystem::path& path, const std::filesystem::path& directory);
 

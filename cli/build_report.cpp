@@ -34,7 +34,7 @@ bool markEntryCached(const std::string& convertedText, std::string* cachedText) 
 }
 
 BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& results, int removed,
-                          const std::string& source) {
+                          const std::string& source, const std::vector<std::filesystem::path>& includeCopies) {
   BuildReport report;
   report.removed = removed;
   std::string shaderEntries;
@@ -64,6 +64,12 @@ BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& result
                         {"converted", report.converted}, {"up_to_date", report.upToDate},
                         {"copied_by_pass", report.copied}, {"failed", report.failed},
                         {"removed_stale_outputs", removed}};
+  // The #include files copied into the output tree (copyIncludedFiles), relative to it.
+  if (!includeCopies.empty()) {
+    nlohmann::json copied = nlohmann::json::array();
+    for (const auto& c : includeCopies) copied.push_back(c.lexically_relative(plan.outputDir).generic_string());
+    summary["include_files"] = copied;
+  }
   summary["classification_counts"] = counts;
   summary["shaders"] = "";  // the entries go in as text
   report.text = summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";

@@ -31,9 +31,10 @@ struct BuildReport {
   int converted = 0, upToDate = 0, copied = 0, failed = 0, removed = 0;
 };
 
-// The report of a run over `plan`; `results` are per job, `removed` the stale outputs deleted.
+// The report of a run over `plan`; `results` are per job, `removed` the stale outputs deleted,
+// `includeCopies` the #include files copied into the output tree.
 BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& results, int removed,
-                          const std::string& source);
+                          const std::string& source, const std::vector<std::filesystem::path>& includeCopies = {});
 // "stereoshift: N shaders from SRC into OUT: ..." on standard error.
 void printSummaryLine(const BuildReport& report, const std::string& source, const std::string& output);
 

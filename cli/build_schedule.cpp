@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <map>
 #include <cstring>
 #include <iostream>
 #include <sstream>
@@ -205,6 +206,51 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
       toConvert.size(), workers, options.jobTimeoutSeconds,
       [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
   if (tty) std::cerr << "\n";
+}
+
+std::vector<fs::path> copyIncludedFiles(const Plan& plan, std::vector<JobResult>& results) {
+  std::error_code ec;
+  const fs::path root = fs::weakly_canonical(plan.root, ec);
+  const fs::path outCanonical = fs::weakly_canonical(plan.outputDir, ec);
+  // What the written outputs still #include, resolved from the stage they came from (the output
+  // mirrors it), then what those files include in turn: SPIRV-Cross outputs name none (they carry
+  // the included code), copied and spliced ones name the source's.
+  std::map<fs::path, size_t> needed;  // include file -> the first job whose output needs it
+  std::vector<std::pair<fs::path, size_t>> pending;
+  for (size_t i = 0; i < results.size() && i < plan.jobs.size(); ++i) {
+    const BuildJob& job = plan.jobs[i];
+    for (size_t k = 0; k < job.stages.size() && k < job.outputs.size(); ++k) {
+      std::string text;
+      if (k < results[i].outputs.size() && !results[i].outputs[k].empty()) text = results[i].outputs[k];
+      else if (!readFile(job.outputs[k].string(), &text)) continue;  // not written (failed) or up to date and gone
+      for (auto& header : includedFiles(job.stages[k], text, job.options.includeDirs)) pending.emplace_back(header, i);
+    }
+  }
+  while (!pending.empty()) {
+    auto [file, job] = pending.back();
+    pending.pop_back();
+    if (!insideDirectory(file, root) || insideDirectory(file, outCanonical) || !needed.emplace(file, job).second) continue;
+    std::string text;
+    if (readFile(file.string(), &text))
+      for (auto& header : includedFiles(file, text, plan.jobs[job].options.includeDirs)) pending.emplace_back(header, job);
+  }
+  std::vector<fs::path> copied;
+  for (const auto& [file, job] : needed) {
+    const fs::path output = plan.outputDir / file.lexically_relative(root);
+    std::string bytes, error;
+    if (!readFile(file.string(), &bytes)) {
+      results[job].log += file.string() + ": error: cannot read the included file to copy it into the output tree\n";
+      ++results[job].errors;
+      continue;
+    }
+    if (!writeIfChanged(plan.outputDir, output, bytes, &error)) {
+      results[job].log += output.string() + ": error: " + error + "\n";
+      ++results[job].errors;
+      continue;
+    }
+    copied.push_back(output);
+  }
+  return copied;
 }
 
 }  // namespace stereoshift

@@ -27,4 +27,12 @@ struct ScheduleOptions {
 void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, const std::string& tool,
                       const ScheduleOptions& options, std::vector<JobResult>& results, Cache& next);
 
+// Copies every file that a written output still #includes (a copied-through or spliced output keeps
+// its source's #include lines; a re-emitted one carries the code), and what those include, from the
+// source tree to the same place under the output directory, unless it is there with the same bytes:
+// the output tree builds on its own. Files outside the tree (an -I directory elsewhere) stay where
+// they are. Returns the output paths (in path order); a failure goes to the log of the job that
+// needed the file and counts as its error.
+std::vector<std::filesystem::path> copyIncludedFiles(const Plan& plan, std::vector<JobResult>& results);
+
 }  // namespace stereoshift

@@ -1,0 +1,1 @@
+static const float Tint = 0.5;

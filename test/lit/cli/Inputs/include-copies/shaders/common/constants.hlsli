@@ -1,0 +1,1 @@
+static const float kBillboardSize = 0.25;
