@@ -249,6 +249,7 @@ struct VulkanContext::Impl {
   VkDevice device = VK_NULL_HANDLE;
   VkQueue queue = VK_NULL_HANDLE;
   uint32_t queueFamily = 0;
+  bool timestamps = false;  // the graphics queue writes timestamps (render()'s drawMilliseconds)
   VkCommandPool commandPool = VK_NULL_HANDLE;
 
   VkPhysicalDeviceProperties props{};
@@ -513,6 +514,7 @@ void VulkanContext::Impl::createDevice() {
     if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
       queueFamily = i;
       found = true;
+      timestamps = families[i].timestampValidBits > 0 && props.limits.timestampPeriod > 0;
     }
   if (!found) fail(std::string("device '") + props.deviceName + "' has no graphics queue");
 
@@ -1353,12 +1355,26 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   rbi.renderArea = {{0, 0}, {req.width, req.height}};
   rbi.clearValueCount = 2;
   rbi.pClearValues = clears;
+  // GPU timestamps around the render pass: the draws' own time, without the pipeline creation and
+  // uploads a render() call also does (benchmarks compare these).
+  VkQueryPool timer = VK_NULL_HANDLE;
+  if (timestamps) {
+    VkQueryPoolCreateInfo tci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    tci.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    tci.queryCount = 2;
+    VKH_CHECK(vkCreateQueryPool(device, &tci, nullptr, &timer));
+    VkDevice dev = device;
+    scope.defer([dev, timer] { vkDestroyQueryPool(dev, timer, nullptr); });
+    vkCmdResetQueryPool(cb, timer, 0, 2);
+    vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timer, 0);
+  }
   vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
   for (size_t i = 0; i < req.draws.size(); ++i) {
     recordBind(cb, pipelines[i], req.draws[i].pipeline, req.width, req.height);
     recordDraw(cb, pipelines[i], req.draws[i].pipeline);
   }
   vkCmdEndRenderPass(cb);
+  if (timestamps) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timer, 1);
 
   VkBufferImageCopy copy{};
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers};
@@ -1375,6 +1391,12 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
                        nullptr);
   submitAndWait(scope, cb);
 
+  if (timestamps) {
+    uint64_t ticks[2] = {0, 0};
+    if (vkGetQueryPoolResults(device, timer, 0, 2, sizeof ticks, ticks, sizeof(uint64_t),
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS && ticks[1] >= ticks[0])
+      out.drawMilliseconds = double(ticks[1] - ticks[0]) * props.limits.timestampPeriod * 1e-6;
+  }
   const auto* c = static_cast<const uint8_t*>(colorOut.mapped);
   out.pixels.assign(c, c + pixelBytes);
   if (req.readDepth) {

@@ -188,6 +188,9 @@ struct RenderResult {
   uint32_t width = 0, height = 0, viewCount = 0;
   std::vector<uint8_t> pixels;  // width*height*4 RGBA8 per view, rows top to bottom
   std::vector<float> depth;     // width*height per view when readDepth
+  // GPU time of the render pass (timestamps before and after it): the draws alone, not the pipeline
+  // creation and uploads of the call; -1 where the queue writes no timestamps.
+  double drawMilliseconds = -1;
 
   bool ok() const { return error.empty(); }
   const uint8_t* pixel(uint32_t x, uint32_t y, uint32_t view = 0) const {
