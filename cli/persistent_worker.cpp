@@ -4,6 +4,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/fd_io.h"
+#include "cli/worker_pool.h"
 
 #include <nlohmann/json.hpp>
 
@@ -106,16 +107,6 @@ int runCaptured(const CommandLineEntry& entry, const std::vector<std::string>& a
   for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, capture)) > 0;) output->append(chunk, n);
   std::fclose(capture);
   return status;
-}
-
-std::string describeExit(int status) {
-  if (WIFSIGNALED(status)) {
-    int sig = WTERMSIG(status);
-    const char* name = sigabbrev_np(sig);
-    return "crashed (signal " + std::to_string(sig) + (name ? std::string(", SIG") + name : std::string()) + ")";
-  }
-  if (WIFEXITED(status)) return "exited unexpectedly with status " + std::to_string(WEXITSTATUS(status));
-  return "stopped unexpectedly";
 }
 
 // The long-lived process that runs the requests: forked once (and again after it crashed or was
@@ -233,7 +224,7 @@ class ConverterProcess {
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
-    return describeExit(status);
+    return describeExitStatus(status);
   }
 
   void stop() {

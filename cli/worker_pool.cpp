@@ -18,11 +18,7 @@
 
 namespace stereoshift {
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-std::string describeStatus(int status) {
+std::string describeExitStatus(int status) {
   if (WIFSIGNALED(status)) {
     int sig = WTERMSIG(status);
     const char* name = sigabbrev_np(sig);
@@ -31,6 +27,10 @@ std::string describeStatus(int status) {
   if (WIFEXITED(status)) return "exited unexpectedly with status " + std::to_string(WEXITSTATUS(status));
   return "stopped unexpectedly";
 }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
 
 // The child's side: reads task indices, answers with a size-prefixed payload, until EOF.
 [[noreturn]] void workerLoop(int requests, int results, const std::function<std::string(size_t)>& task) {
@@ -107,7 +107,7 @@ int stopWorker(Worker& w, bool kill) {
 }
 
 // Reaps a worker that closed its pipe mid-task and says why it died.
-std::string reapDead(Worker& w) { return describeStatus(stopWorker(w, false)); }
+std::string reapDead(Worker& w) { return describeExitStatus(stopWorker(w, false)); }
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 

@@ -12,6 +12,10 @@
 
 namespace stereoshift {
 
+// How a child process ended, from its wait status, for an error message: "crashed (signal 11,
+// SIGSEGV)", "exited unexpectedly with status 3".
+std::string describeExitStatus(int status);
+
 struct TaskOutcome {
   bool completed = false;  // the task returned; `payload` is what it returned
   std::string payload;
