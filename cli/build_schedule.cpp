@@ -215,7 +215,12 @@ std::vector<fs::path> copyIncludedFiles(const Plan& plan, std::vector<JobResult>
   // What the written outputs still #include, resolved from the stage they came from (the output
   // mirrors it), then what those files include in turn: SPIRV-Cross outputs name none (they carry
   // the included code), copied and spliced ones name the source's.
-  std::map<fs::path, size_t> needed;  // include file -> the first job whose output needs it
+  struct Needed {
+    size_t job;         // the first job whose output needs the file
+    bool read = false;  // `bytes` holds the file (read once: scanned for its own includes, then copied)
+    std::string bytes;
+  };
+  std::map<fs::path, Needed> needed;
   std::vector<std::pair<fs::path, size_t>> pending;
   for (size_t i = 0; i < results.size() && i < plan.jobs.size(); ++i) {
     const BuildJob& job = plan.jobs[i];
@@ -229,23 +234,26 @@ std::vector<fs::path> copyIncludedFiles(const Plan& plan, std::vector<JobResult>
   while (!pending.empty()) {
     auto [file, job] = pending.back();
     pending.pop_back();
-    if (!insideDirectory(file, root) || insideDirectory(file, outCanonical) || !needed.emplace(file, job).second) continue;
-    std::string text;
-    if (readFile(file.string(), &text))
-      for (auto& header : includedFiles(file, text, plan.jobs[job].options.includeDirs)) pending.emplace_back(header, job);
+    if (!insideDirectory(file, root) || insideDirectory(file, outCanonical)) continue;
+    auto [entry, added] = needed.emplace(file, Needed{job});
+    if (!added) continue;
+    Needed& n = entry->second;
+    n.read = readFile(file.string(), &n.bytes);
+    if (n.read)
+      for (auto& header : includedFiles(file, n.bytes, plan.jobs[job].options.includeDirs)) pending.emplace_back(header, job);
   }
   std::vector<fs::path> copied;
-  for (const auto& [file, job] : needed) {
+  for (const auto& [file, n] : needed) {
     const fs::path output = plan.outputDir / file.lexically_relative(root);
-    std::string bytes, error;
-    if (!readFile(file.string(), &bytes)) {
-      results[job].log += file.string() + ": error: cannot read the included file to copy it into the output tree\n";
-      ++results[job].errors;
+    std::string error;
+    if (!n.read) {
+      results[n.job].log += file.string() + ": error: cannot read the included file to copy it into the output tree\n";
+      ++results[n.job].errors;
       continue;
     }
-    if (!writeIfChanged(plan.outputDir, output, bytes, &error)) {
-      results[job].log += output.string() + ": error: " + error + "\n";
-      ++results[job].errors;
+    if (!writeIfChanged(plan.outputDir, output, n.bytes, &error)) {
+      results[n.job].log += output.string() + ": error: " + error + "\n";
+      ++results[n.job].errors;
       continue;
     }
     copied.push_back(output);
