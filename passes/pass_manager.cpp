@@ -42,7 +42,11 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
     // The cheap analyses are made before the pass; the folded copy (an optimizer run, which most
     // passes never need on most shaders) on the pass's first request.
     if (info.requiredAnalyses & kClipPositionAnalysis) clipPositions(ctx);
+    int errorsBefore = ctx.diags.errorCount();
     PassResult result = pass->run(ctx);
+    // An error reported from code the pass emits on the way (a helper that could not declare what
+    // it needed) fails the conversion like a pass that says Failed: nothing half-made is written.
+    if (result != PassResult::Failed && ctx.diags.errorCount() > errorsBefore) result = PassResult::Failed;
     ctx.report["passes"][info.name]["result"] = toString(result);
     if (result == PassResult::Failed) return false;
     if (result == PassResult::Changed) {

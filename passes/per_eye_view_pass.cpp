@@ -843,21 +843,6 @@ const char* hintName(NameHint hint) {
   return "?";
 }
 
-// Locations one value of `type` takes in an interface: a matrix one per column, an array one per
-// element, a struct the sum of its members.
-uint32_t locationCount(const Module& m, uint32_t type) {
-  const Instruction* def = m.definition(type);
-  if (!def) return 1;
-  if (def->opcode == spv::OpTypeMatrix) return def->operand(1);
-  if (def->opcode == spv::OpTypeArray) return constantValue(m, def->operand(1)).value_or(1) * locationCount(m, def->operand(0));
-  if (def->opcode == spv::OpTypeStruct) {
-    uint32_t total = 0;
-    for (uint32_t member : def->operands) total += locationCount(m, member);
-    return total;
-  }
-  return 1;
-}
-
 // One input or output as the other stage links to it: a loose variable, or a member of a block.
 struct InterfaceSlot {
   std::string name;       // the variable's name, or the member's
@@ -888,7 +873,7 @@ InterfaceSlot interfaceSlot(const Module& m, uint32_t variable, int64_t member) 
   slot.display = (m.name(variable).empty() ? slot.blockName : m.name(variable)) + "." + slot.name;
   slot.builtin |= m.hasMemberDecoration(block, index, spv::DecorationBuiltIn);
   if (slot.location && def)
-    for (uint32_t i = 0; i < index && i < def->operands.size(); ++i) *slot.location += locationCount(m, def->operands[i]);
+    for (uint32_t i = 0; i < index && i < def->operands.size(); ++i) *slot.location += spirv::interfaceLocationCount(m, def->operands[i]);
   return slot;
 }
 

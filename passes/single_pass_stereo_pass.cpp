@@ -4,13 +4,16 @@
 // emitLoadEyeParam calls for eyeSign in these modes):
 //   multiview: the view index (gl_ViewIndex / gl_ViewID_OVR / SV_ViewID), view 0 the left eye;
 //   instanced: the low bit of the instance index in the vertex stage (the application doubles the
-//     instance count), a flat varying `stereoEye` written by the vertex stage in the fragment stage
-//     (also for OpenGL multiview, where SPIRV-Cross writes gl_ViewID_OVR in vertex shaders only).
+//     instance count); every later stage reads the varying `stereoEye` the stage before it wrote (the
+//     fragment stage too, also for OpenGL multiview, where SPIRV-Cross writes gl_ViewID_OVR in vertex
+//     shaders only). Through tessellation the eye rides as `patch out int stereoEye` (every vertex of
+//     a patch comes from one instance); a geometry stage reads element 0 of its input array.
 // The pass itself checks that the output language can express the mode (refusing with the reason
 // and what to do instead), declares the view index of a multiview shader that gets the shift, and
 // in instanced mode rewrites the vertex shader: every use of the instance index reads the original
-// instance (`instance >> 1`), and the eye goes to the render-target layer or the viewport index and
-// to the `stereoEye` varying.
+// instance (`instance >> 1`), and the eye goes to the `stereoEye` varying and, from the stage that
+// rasterizes (vertex, tessellation evaluation or geometry), to the render-target layer or the
+// viewport index; the stages between hand it on.
 #include "passes/pass.h"
 
 #include "passes/ir/replace_uses.h"
@@ -104,28 +107,144 @@ uint32_t ensureInstanceIndex(PassContext& ctx) {
   return var;
 }
 
-// The fragment stage's `flat in int stereoEye` (instanced mode), declared on first use.
-uint32_t ensureEyeVaryingInput(PassContext& ctx) {
-  auto& m = ctx.module;
-  const auto& o = ctx.options.eye;
-  for (const auto& inst : m.typesValues)
-    if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassInput && m.name(inst.resultId) == o.eyeVaryingName)
-      return inst.resultId;
-  uint32_t var = addIntVariable(m, spv::StorageClassInput, o.eyeVaryingName);
-  m.decorate(var, spv::DecorationFlat);
-  m.decorate(var, spv::DecorationLocation, {o.eyeVaryingLocation});
-  return var;
+// Whether the per-vertex interface of this stage wraps `storage` variables in an outer array
+// (tessellation and geometry inputs, tessellation control outputs), which takes no locations.
+bool perVertexArrayed(const spirv::Module& m, spv::StorageClass storage, uint32_t variable) {
+  if (m.hasDecoration(variable, spv::DecorationPatch)) return false;
+  switch (m.executionModel()) {
+    case spv::ExecutionModelTessellationControl: return true;
+    case spv::ExecutionModelTessellationEvaluation:
+    case spv::ExecutionModelGeometry: return storage == spv::StorageClassInput;
+    default: return false;
+  }
 }
 
-// Whether an interface variable of `storage` already sits at `location` (a clash with stereoEye).
+// Whether an interface variable of `storage` already takes `location` (a clash with stereoEye): a
+// variable whose locations (a matrix, an array, a struct take several) cover it, or a block member
+// placed there.
 bool locationTaken(const spirv::Module& m, spv::StorageClass storage, uint32_t location, std::string* who) {
-  for (const auto& inst : m.typesValues)
-    if (inst.opcode == spv::OpVariable && inst.operand(0) == uint32_t(storage) &&
-        m.decorationValue(inst.resultId, spv::DecorationLocation) == location) {
-      *who = m.name(inst.resultId);
-      return true;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != uint32_t(storage)) continue;
+    uint32_t type = m.pointeeType(inst.typeId);
+    const Instruction* def = m.definition(type);
+    if (def && def->opcode == spv::OpTypeArray && perVertexArrayed(m, storage, inst.resultId)) {
+      type = def->operand(0);
+      def = m.definition(type);
     }
+    if (auto first = m.decorationValue(inst.resultId, spv::DecorationLocation)) {
+      if (location >= *first && location < *first + spirv::interfaceLocationCount(m, type)) {
+        *who = m.name(inst.resultId);
+        return true;
+      }
+      continue;
+    }
+    if (!def || def->opcode != spv::OpTypeStruct) continue;
+    for (uint32_t member = 0; member < def->operands.size(); ++member)
+      if (auto first = m.memberDecorationValue(type, member, spv::DecorationLocation);
+          first && location >= *first && location < *first + spirv::interfaceLocationCount(m, def->operands[member])) {
+        *who = m.name(inst.resultId) + "." + m.memberName(type, member);
+        return true;
+      }
+  }
   return false;
+}
+
+// How the eye varying is declared in this stage, for `storage`: per vertex in an array (the inputs
+// of tessellation control and geometry shaders), per patch (tessellation control out, evaluation
+// in), or a plain int, flat where it feeds or is the fragment stage's interpolated input.
+struct EyeVaryingShape {
+  uint32_t arrayLength = 0;  // 0: not an array
+  bool patch = false;
+  bool flat = false;
+};
+
+// The vertex count of a geometry shader's input primitive (the length of its per-vertex arrays).
+uint32_t geometryInputVertices(const spirv::Module& m) {
+  for (const auto& inst : m.executionModes) {
+    switch (inst.operand(1)) {
+      case spv::ExecutionModeInputPoints: return 1;
+      case spv::ExecutionModeInputLines: return 2;
+      case spv::ExecutionModeInputLinesAdjacency: return 4;
+      case spv::ExecutionModeTriangles: return 3;
+      case spv::ExecutionModeInputTrianglesAdjacency: return 6;
+      default: break;
+    }
+  }
+  return 3;
+}
+
+// The length glslang gives the per-vertex input arrays of a tessellation control shader (that of
+// gl_in, gl_MaxPatchVertices when unsized): taken from an input array already declared, else 32.
+uint32_t tessControlInputLength(const spirv::Module& m) {
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassInput) continue;
+    const Instruction* type = m.definition(m.pointeeType(inst.typeId));
+    if (type && type->opcode == spv::OpTypeArray)
+      if (const Instruction* length = m.definition(type->operand(1)); length && length->opcode == spv::OpConstant)
+        return length->operand(0);
+  }
+  return 32;
+}
+
+EyeVaryingShape eyeVaryingShape(const spirv::Module& m, spv::StorageClass storage) {
+  bool input = storage == spv::StorageClassInput;
+  switch (m.executionModel()) {
+    case spv::ExecutionModelTessellationControl:
+      return input ? EyeVaryingShape{tessControlInputLength(m), false, false} : EyeVaryingShape{0, true, false};
+    case spv::ExecutionModelTessellationEvaluation:
+      return input ? EyeVaryingShape{0, true, false} : EyeVaryingShape{0, false, true};
+    case spv::ExecutionModelGeometry:
+      return input ? EyeVaryingShape{geometryInputVertices(m), false, false} : EyeVaryingShape{0, false, true};
+    default:  // vertex out, fragment in
+      return EyeVaryingShape{0, false, true};
+  }
+}
+
+// The name of the eye varying on one side of a stage: `stereoEye` (--eye-varying-name) into the
+// fragment stage, `stereoEyeStage` between two pre-rasterization stages, `stereoEyePatch` per patch.
+// OpenGL below GLSL 410 matches varyings by name, and a stage's input and output cannot share one.
+std::string eyeVaryingName(const PassContext& ctx, spv::StorageClass storage) {
+  const std::string& base = ctx.options.eye.eyeVaryingName;
+  bool input = storage == spv::StorageClassInput;
+  bool feedsStage = ctx.classification == Classification::Intermediate;
+  switch (ctx.module.executionModel()) {
+    case spv::ExecutionModelVertex: return feedsStage ? base + "Stage" : base;
+    case spv::ExecutionModelTessellationControl: return input ? base + "Stage" : base + "Patch";
+    case spv::ExecutionModelTessellationEvaluation: return input ? base + "Patch" : feedsStage ? base + "Stage" : base;
+    case spv::ExecutionModelGeometry: return input ? base + "Stage" : base;
+    default: return base;
+  }
+}
+
+// The eye varying of this stage (`storage` Input: what the stage before wrote, Output: what this
+// stage hands on), declared on first use at --eye-varying-location. 0 (with an error) when another
+// variable already takes the location.
+uint32_t ensureEyeVarying(PassContext& ctx, spv::StorageClass storage) {
+  auto& m = ctx.module;
+  const auto& o = ctx.options.eye;
+  const std::string name = eyeVaryingName(ctx, storage);
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == uint32_t(storage) && m.name(inst.resultId) == name &&
+        m.decorationValue(inst.resultId, spv::DecorationLocation) == o.eyeVaryingLocation)
+      return inst.resultId;
+  std::string who;
+  if (locationTaken(m, storage, o.eyeVaryingLocation, &who)) {
+    ctx.diags.error(ctx.file, std::string(o.select == EyeSelect::ViewIndex ? "--eye-source multiview" : "--eye-source instanced") +
+                                  ": " + (storage == spv::StorageClassInput ? "input" : "output") + " location " +
+                                  std::to_string(o.eyeVaryingLocation) + " of the eye varying '" + name +
+                                  "' is taken by '" + (who.empty() ? std::string("an unnamed variable") : who) +
+                                  "'; choose a location free in every stage with --eye-varying-location");
+    return 0;
+  }
+  EyeVaryingShape shape = eyeVaryingShape(m, storage);
+  uint32_t type = m.typeInt(32, true);
+  if (shape.arrayLength) type = m.typeArray(type, shape.arrayLength);
+  uint32_t var = m.addGlobalVariable(m.typePointer(storage, type), storage);
+  m.setName(var, name);
+  if (shape.flat) m.decorate(var, spv::DecorationFlat);
+  if (shape.patch) m.decorate(var, spv::DecorationPatch);
+  m.decorate(var, spv::DecorationLocation, {o.eyeVaryingLocation});
+  return var;
 }
 
 uint32_t emitLoad(spirv::Module& m, std::vector<Instruction>& out, uint32_t variable) {
@@ -151,6 +270,17 @@ uint32_t emitInstanceEyeBit(PassContext& ctx, std::vector<Instruction>& out) {
   return bit;
 }
 
+// Whether this pre-rasterization stage is the one that rasterizes (the last of its pipeline), 2D
+// ones included: instanced mode draws each twice per instance, so each routes its eye whether it
+// gets the shift or not.
+bool rasterizingStage(const PassContext& ctx) {
+  spv::ExecutionModel model = ctx.module.executionModel();
+  bool preRaster = model == spv::ExecutionModelVertex || model == spv::ExecutionModelTessellationEvaluation ||
+                   model == spv::ExecutionModelGeometry;
+  return preRaster && (ctx.classification == Classification::Perspective ||
+                       ctx.classification == Classification::ConstantW1 || ctx.shiftPosition);
+}
+
 // Refuses what the output cannot express, with the reason and what to do instead.
 bool checkTarget(PassContext& ctx) {
   const EyeSelect select = ctx.options.eye.select;
@@ -159,6 +289,8 @@ bool checkTarget(PassContext& ctx) {
   spv::ExecutionModel model = ctx.module.executionModel();
   bool tessOrGeometry = model == spv::ExecutionModelTessellationControl ||
                         model == spv::ExecutionModelTessellationEvaluation || model == spv::ExecutionModelGeometry;
+  bool instanced = select == EyeSelect::InstanceIndex;
+  bool writesLayerFromVertexStage = instanced && rasterizingStage(ctx) && model != spv::ExecutionModelGeometry;
   auto refuse = [&](const std::string& why) {
     ctx.diags.error(ctx.file, std::string(flag) + ": " + why);
     return false;
@@ -170,33 +302,35 @@ bool checkTarget(PassContext& ctx) {
   if (target == TargetLanguage::Msl)
     return refuse("not for --target msl (Metal draws both eyes with vertex amplification, which stereoshift does "
                   "not write yet); use two passes (--eye-source uniform-block)");
+  if (instanced && (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV))
+    return refuse("a mesh shader has no instance index to take the eye from; use --eye-source multiview");
   if (glslOutput(target) && openGlOutput(ctx, target)) {
     bool es = target == TargetLanguage::Essl;
     int version = glslOutputVersion(ctx, target);
     if (version < (es ? 300 : 330))
       return refuse(std::string("needs ") + (es ? "ESSL 300" : "GLSL 330") + " or later (this output is " +
-                    std::to_string(version) + (es ? " es" : "") + "); add --target-version " + (es ? "300" : "330"));
+                    std::to_string(version) + (es ? " es" : "") + "); add --target-version " + (es ? "300" : "330") +
+                    (es ? " to every stage of the program (ESSL links one version only)" : ""));
     if (select == EyeSelect::ViewIndex && tessOrGeometry)
       return refuse("OpenGL multiview (GL_OVR_multiview2) does not allow tessellation or geometry shaders in a "
                     "multiview draw; use --eye-source instanced, or a Vulkan target (--target spirv)");
-    bool vertex = model == spv::ExecutionModelVertex;
-    if (select == EyeSelect::InstanceIndex && es && vertex)
-      return refuse("an ESSL vertex shader cannot write gl_Layer or gl_ViewportIndex; use --eye-source multiview "
-                    "(GL_OVR_multiview2) for OpenGL ES");
-    if (select == EyeSelect::InstanceIndex && !es && vertex && version < 410)
-      return refuse("a vertex shader writes gl_Layer / gl_ViewportIndex through GL_ARB_shader_viewport_layer_array, "
-                    "which needs GLSL 410 (this output is " + std::to_string(version) +
+    const char* stageName = model == spv::ExecutionModelVertex ? "vertex" : "tessellation evaluation";
+    if (writesLayerFromVertexStage && es)
+      return refuse(std::string("an ESSL ") + stageName + " shader cannot write gl_Layer or gl_ViewportIndex; use "
+                    "--eye-source multiview (GL_OVR_multiview2) for OpenGL ES, or route the eye through a geometry stage");
+    if (writesLayerFromVertexStage && version < 410)
+      return refuse(std::string("a ") + stageName + " shader writes gl_Layer / gl_ViewportIndex through "
+                    "GL_ARB_shader_viewport_layer_array, which needs GLSL 410 (this output is " + std::to_string(version) +
                     "); add --target-version 410, or use --eye-source multiview (GL_OVR_multiview2)");
+    if (instanced && !es && model == spv::ExecutionModelGeometry && rasterizingStage(ctx) &&
+        ctx.options.eye.route == EyeRoute::Viewport && version < 410)
+      return refuse("a geometry shader writes gl_ViewportIndex from GLSL 410 (this output is " + std::to_string(version) +
+                    "); add --target-version 410, or use --eye-route layer (gl_Layer, GLSL 150)");
   }
   if (select == EyeSelect::ViewIndex && target == TargetLanguage::Hlsl && ctx.options.targetVersion &&
       *ctx.options.targetVersion < 61)
     return refuse("SV_ViewID needs shader model 6.1 (this is --target-version " +
                   std::to_string(*ctx.options.targetVersion) + "); drop --target-version or give 61 or later");
-  if (select == EyeSelect::InstanceIndex && ctx.classification != Classification::AlreadyStereo &&
-      (tessOrGeometry || ctx.classification == Classification::Intermediate) &&
-      model != spv::ExecutionModelTessellationControl)
-    return refuse("the eye comes from the vertex stage's instance index, and this pipeline rasterizes after a "
-                  "tessellation or geometry stage, which would have to hand it on; use --eye-source multiview");
   return true;
 }
 
@@ -230,23 +364,30 @@ int rewriteInstanceReads(PassContext& ctx, uint32_t instanceVariable) {
   return static_cast<int>(loads.size());
 }
 
-// Declares the vertex stage's `flat out int stereoEye` that hands the eye to the fragment stage;
-// 0 (with an error) when its location is taken.
+// Declares this stage's `stereoEye` output that hands the eye on (to the fragment stage, or to the
+// next pre-rasterization stage); 0 (with an error) when its location is taken.
 uint32_t declareEyeVaryingOutput(PassContext& ctx, nlohmann::json& report) {
-  auto& m = ctx.module;
   const auto& o = ctx.options.eye;
-  std::string who;
-  if (locationTaken(m, spv::StorageClassOutput, o.eyeVaryingLocation, &who)) {
-    ctx.diags.error(ctx.file, std::string(modeFlag(o.select)) + ": output location " +
-                                  std::to_string(o.eyeVaryingLocation) + " of the eye varying '" + o.eyeVaryingName +
-                                  "' is taken by '" + who + "'; choose a free one with --eye-varying-location");
-    return 0;
-  }
-  uint32_t varying = addIntVariable(m, spv::StorageClassOutput, o.eyeVaryingName);
-  m.decorate(varying, spv::DecorationFlat);
-  m.decorate(varying, spv::DecorationLocation, {o.eyeVaryingLocation});
-  report["eye_varying"] = {{"name", o.eyeVaryingName}, {"location", o.eyeVaryingLocation}};
+  uint32_t varying = ensureEyeVarying(ctx, spv::StorageClassOutput);
+  if (varying) report["eye_varying"] = {{"name", eyeVaryingName(ctx, spv::StorageClassOutput)}, {"location", o.eyeVaryingLocation}};
   return varying;
+}
+
+// Loads the eye the stage before wrote into this stage's `stereoEye` input (element 0 of a
+// per-vertex array: every vertex of a primitive or patch comes from one instance). 0 on a location clash.
+uint32_t emitLoadHandedOnEye(PassContext& ctx, std::vector<Instruction>& out) {
+  auto& m = ctx.module;
+  uint32_t input = ensureEyeVarying(ctx, spv::StorageClassInput);
+  if (!input) return 0;
+  const Instruction* type = m.definition(m.pointeeType(m.definition(input)->typeId));
+  if (!type || type->opcode != spv::OpTypeArray) return emitLoad(m, out, input);
+  uint32_t element = type->operand(0);
+  uint32_t pointer = m.takeId();
+  out.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassInput, element), pointer,
+                   std::vector<uint32_t>{input, m.constantInt(0)});
+  uint32_t value = m.takeId();
+  out.emplace_back(spv::OpLoad, element, value, std::vector<uint32_t>{pointer});
+  return value;
 }
 
 // Inserts `code` at the start of the entry point (after its function variables).
@@ -259,22 +400,40 @@ void prependToEntry(spirv::Module& m, const std::vector<Instruction>& code) {
   m.invalidateDefinitions();
 }
 
-// Instanced: writes the eye to the layer (or viewport index) and to the `stereoEye` varying at the
-// start of the entry point.
-bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
+// Inserts the code `make` returns before every EmitVertex / EmitStreamVertex of a geometry shader
+// (its outputs are undefined after each emit, so each vertex gets its own stores).
+template <typename Make>
+int insertBeforeEachEmit(spirv::Module& m, Make make) {
+  int emits = 0;
+  for (auto& fn : m.functions)
+    for (auto& block : fn.blocks)
+      for (size_t i = 0; i < block.instructions.size(); ++i) {
+        spv::Op op = block.instructions[i].opcode;
+        if (op != spv::OpEmitVertex && op != spv::OpEmitStreamVertex) continue;
+        std::vector<Instruction> code = make();
+        block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
+        i += code.size();
+        ++emits;
+      }
+  m.invalidateDefinitions();
+  return emits;
+}
+
+// The variable the eye is routed to: the layer (gl_Layer) or the viewport index.
+uint32_t declareEyeRouteTarget(PassContext& ctx) {
   auto& m = ctx.module;
   const auto& o = ctx.options.eye;
   bool layer = o.route == EyeRoute::Layer;
-  if (builtInVariable(m, layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)) {
-    ctx.diags.error(ctx.file, std::string("--eye-source instanced: the shader writes ") +
-                                  (layer ? "gl_Layer" : "gl_ViewportIndex") + " itself; the eye cannot be routed there "
-                                  "(try --eye-route " + (layer ? "viewport" : "layer") + ")");
-    return false;
-  }
-  uint32_t varying = declareEyeVaryingOutput(ctx, report);
-  if (!varying) return false;
+  bool geometry = m.executionModel() == spv::ExecutionModelGeometry;
   uint32_t target = addIntVariable(m, spv::StorageClassOutput, layer ? "gl_Layer" : "gl_ViewportIndex");
-  if (layer && outputLanguage(ctx) == TargetLanguage::Hlsl) {
+  if (layer && !geometry && outputLanguage(ctx) == TargetLanguage::Hlsl) {
+    std::string who;
+    if (locationTaken(m, spv::StorageClassOutput, o.eyeVaryingLocation + 1, &who)) {
+      ctx.diags.error(ctx.file, "--eye-source instanced: output location " + std::to_string(o.eyeVaryingLocation + 1) +
+                                    " of the layer output (SV_RenderTargetArrayIndex) is taken by '" + who +
+                                    "'; choose free locations with --eye-varying-location (it takes that one and the next)");
+      return 0;
+    }
     // SPIRV-Cross writes SV_RenderTargetArrayIndex from geometry shaders only (D3D12 allows it from
     // any stage that feeds the rasterizer, VPAndRTArrayIndexFromAnyShaderFeedingRasterizer): a
     // plain output carrying the semantic, which the back end puts back like any source semantic.
@@ -284,20 +443,59 @@ bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
     for (uint32_t word : spirv::encodeString("SV_RenderTargetArrayIndex")) m.annotations.back().operands.push_back(word);
     addExtension(m, "SPV_GOOGLE_decorate_string");
     addExtension(m, "SPV_GOOGLE_hlsl_functionality1");
-  } else {
-    m.decorate(target, spv::DecorationBuiltIn, {uint32_t(layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)});
-    // Layer / ViewportIndex from the vertex stage: VK_EXT_shader_viewport_index_layer,
-    // GL_ARB_shader_viewport_layer_array, D3D's SV_ViewportArrayIndex.
+    return target;
+  }
+  m.decorate(target, spv::DecorationBuiltIn, {uint32_t(layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)});
+  if (!layer) m.addCapability(spv::CapabilityMultiViewport);
+  if (!geometry) {
+    // Layer / ViewportIndex from the vertex or tessellation evaluation stage:
+    // VK_EXT_shader_viewport_index_layer, GL_ARB_shader_viewport_layer_array, D3D's SV_ViewportArrayIndex.
+    // A geometry shader writes both natively (capability Geometry).
     m.addCapability(spv::CapabilityShaderViewportIndexLayerEXT);
     addExtension(m, "SPV_EXT_shader_viewport_index_layer");
-    if (!layer) m.addCapability(spv::CapabilityMultiViewport);
   }
-  std::vector<Instruction> code;
-  uint32_t eye = emitInstanceEyeBit(ctx, code);
-  code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{target, eye});
-  code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{varying, eye});
-  prependToEntry(m, code);
-  report["eye_written_to"] = layer ? "layer" : "viewport";
+  return target;
+}
+
+// Instanced: the eye (the instance's low bit in the vertex stage, the handed-on varying after it)
+// goes to the `stereoEye` output and, in the stage that rasterizes, to the layer or viewport index:
+// at the start of the entry point, or before every emit of a geometry shader.
+bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
+  auto& m = ctx.module;
+  const auto& o = ctx.options.eye;
+  spv::ExecutionModel model = m.executionModel();
+  bool rasterizes = rasterizingStage(ctx);
+  bool layer = o.route == EyeRoute::Layer;
+  if (rasterizes && builtInVariable(m, layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)) {
+    ctx.diags.error(ctx.file, std::string("--eye-source instanced: the shader writes ") +
+                                  (layer ? "gl_Layer" : "gl_ViewportIndex") + " itself; the eye cannot be routed there "
+                                  "(try --eye-route " + (layer ? "viewport" : "layer") + ")");
+    return false;
+  }
+  uint32_t varying = declareEyeVaryingOutput(ctx, report);
+  if (!varying) return false;
+  uint32_t target = rasterizes ? declareEyeRouteTarget(ctx) : 0;
+  if (rasterizes && !target) return false;
+  bool failed = false;
+  auto storeEye = [&]() {
+    std::vector<Instruction> code;
+    uint32_t eye = model == spv::ExecutionModelVertex ? emitInstanceEyeBit(ctx, code) : emitLoadHandedOnEye(ctx, code);
+    if (!eye) {
+      failed = true;
+      return code;
+    }
+    if (target) code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{target, eye});
+    code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{varying, eye});
+    return code;
+  };
+  if (model == spv::ExecutionModelGeometry) {
+    report["emits_routed"] = insertBeforeEachEmit(m, storeEye);
+  } else {
+    prependToEntry(m, storeEye());
+  }
+  if (failed) return false;
+  if (target) report["eye_written_to"] = layer ? "layer" : "viewport";
+  else report["eye_handed_on"] = true;
   return true;
 }
 
@@ -324,10 +522,13 @@ bool handOnViewIndex(PassContext& ctx, nlohmann::json& report) {
   return true;
 }
 
-// Whether the fragment stage reads the eye from the `stereoEye` varying rather than a built-in.
+// Whether this stage reads the eye from the `stereoEye` varying rather than a built-in: every stage
+// after the vertex stage in instanced mode, the fragment stage of OpenGL multiview.
 bool eyeFromVarying(const PassContext& ctx) {
-  if (ctx.module.executionModel() != spv::ExecutionModelFragment) return false;
-  if (ctx.options.eye.select == EyeSelect::InstanceIndex) return true;
+  spv::ExecutionModel model = ctx.module.executionModel();
+  if (ctx.options.eye.select == EyeSelect::InstanceIndex)
+    return model != spv::ExecutionModelVertex;
+  if (model != spv::ExecutionModelFragment) return false;
   TargetLanguage target = outputLanguage(ctx);
   return glslOutput(target) && openGlOutput(ctx, target);
 }
@@ -344,14 +545,10 @@ class SinglePassStereoPass final : public Pass {
     if (ctx.classification == Classification::AlreadyStereo) return PassResult::Unchanged;
     if (!checkTarget(ctx)) return PassResult::Failed;
     auto& m = ctx.module;
-    // A vertex shader that rasterizes, 2D ones included: instanced mode draws each twice per
-    // instance, so each routes its eye whether it gets the shift or not.
-    bool rasterizingVertex = m.executionModel() == spv::ExecutionModelVertex &&
-                             (ctx.classification == Classification::Perspective ||
-                              ctx.classification == Classification::ConstantW1 || ctx.shiftPosition);
+    spv::ExecutionModel model = m.executionModel();
     if (select == EyeSelect::ViewIndex) {
       TargetLanguage target = outputLanguage(ctx);
-      if (rasterizingVertex && glslOutput(target) && openGlOutput(ctx, target)) {
+      if (model == spv::ExecutionModelVertex && rasterizingStage(ctx) && glslOutput(target) && openGlOutput(ctx, target)) {
         if (!handOnViewIndex(ctx, report)) return PassResult::Failed;
         return PassResult::Changed;
       }
@@ -360,9 +557,14 @@ class SinglePassStereoPass final : public Pass {
       ensureViewIndex(ctx);
       return PassResult::Changed;
     }
-    if (!rasterizingVertex) return PassResult::Unchanged;
-    uint32_t instance = ensureInstanceIndex(ctx);
-    report["instance_reads_rewritten"] = rewriteInstanceReads(ctx, instance);
+    // Instanced: the vertex stage takes the eye from the instance; the stages after it hand it on
+    // up to the one that rasterizes, which routes it (the fragment stage reads it on use).
+    bool handsOn = ctx.classification == Classification::Intermediate || model == spv::ExecutionModelTessellationControl;
+    if (!rasterizingStage(ctx) && !handsOn) return PassResult::Unchanged;
+    if (model == spv::ExecutionModelVertex) {
+      uint32_t instance = ensureInstanceIndex(ctx);
+      report["instance_reads_rewritten"] = rewriteInstanceReads(ctx, instance);
+    }
     if (!routeInstancedEye(ctx, report)) return PassResult::Failed;
     return PassResult::Changed;
   }
@@ -374,7 +576,8 @@ uint32_t emitDerivedEyeSign(PassContext& ctx, std::vector<Instruction>& out) {
   auto& m = ctx.module;
   uint32_t eye = 0;  // an int that is 0 for the first eye (view 0, even instances)
   if (eyeFromVarying(ctx)) {
-    eye = emitLoad(m, out, ensureEyeVaryingInput(ctx));
+    eye = emitLoadHandedOnEye(ctx, out);
+    if (!eye) eye = m.constantInt(0);  // the location clash is reported; the conversion fails
   } else if (ctx.options.eye.select == EyeSelect::ViewIndex) {
     eye = emitLoad(m, out, ensureViewIndex(ctx));
   } else {
@@ -388,6 +591,34 @@ uint32_t emitDerivedEyeSign(PassContext& ctx, std::vector<Instruction>& out) {
   out.emplace_back(spv::OpSelect, m.typeFloat(32), sign,
                    std::vector<uint32_t>{second, m.constantFloat(secondSign), m.constantFloat(-secondSign)});
   return sign;
+}
+
+std::optional<int> singlePassRaisedGlslVersion(const SourceInfo& source, const TranspileOptions& options,
+                                               bool compatibilityBuiltIns, std::string* why) {
+  const auto& eye = options.eye;
+  if (eye.select == EyeSelect::Parameter || options.targetVersion || compatibilityBuiltIns) return std::nullopt;
+  bool keptAsGlsl = options.target == TargetLanguage::Auto || options.target == TargetLanguage::Glsl;
+  if (source.language != SourceLanguage::Glsl || source.es || source.vulkan || !keptAsGlsl) return std::nullopt;
+  bool last = options.shiftThisStage;  // the stage that rasterizes
+  int needed = 0;
+  if (eye.select == EyeSelect::ViewIndex) {
+    if (source.stage == Stage::Vertex) {
+      needed = 330;
+      *why = "GL_OVR_multiview2 needs GLSL 330";
+    }
+  } else if ((source.stage == Stage::Vertex || source.stage == Stage::TessEvaluation) && last) {
+    needed = 410;
+    *why = "the eye is written to gl_Layer / gl_ViewportIndex from this stage through "
+           "GL_ARB_shader_viewport_layer_array, which needs GLSL 410";
+  } else if (source.stage == Stage::Vertex) {
+    needed = 330;
+    *why = "the eye is handed to the next stage as a flat int varying";
+  } else if (source.stage == Stage::Geometry && eye.route == EyeRoute::Viewport) {
+    needed = 410;
+    *why = "a geometry shader writes gl_ViewportIndex from GLSL 410";
+  }
+  if (!needed || source.version >= needed) return std::nullopt;
+  return needed;
 }
 
 std::unique_ptr<Pass> createSinglePassStereoPass() { return std::make_unique<SinglePassStereoPass>(); }

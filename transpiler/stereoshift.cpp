@@ -129,9 +129,12 @@ spirv::Module* parsedModule(CompiledStage& stage) {
 // One shader; `nextStage` (pipelines only) tells per-eye-view how the fragment stage uses the
 // outputs of the last pre-rasterization stage. `compiled`: the stage already through the front end
 // (pipelines), or null to run it here.
-TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& options,
+TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& requestedOptions,
                                const NextStageFacts* nextStage, CompiledStage* compiled = nullptr) {
   auto started = std::chrono::steady_clock::now();
+  // The options as requested, but for an output version a single-pass mode raises (below).
+  TranspileOptions effectiveOptions = requestedOptions;
+  const TranspileOptions& options = effectiveOptions;
   TranspileResult result;
   Diagnostics& diags = result.diagnostics;
   const std::string& file = input.path;
@@ -209,6 +212,19 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
   result.report["language_reason"] = info.languageReason;
   if (info.language == SourceLanguage::Glsl)
     result.report["dialect"] = std::to_string(info.version) + (info.es ? " es" : "") + (info.vulkan ? " vulkan" : "");
+
+  // An OpenGL GLSL shader below the version its single-pass mode needs is re-emitted at that version
+  // (a 330 vertex shader writing gl_Layer needs 410), said in a note and the report.
+  std::string raiseReason;
+  bool compatibilityBuiltIns = false;  // the legacy translation's stereoshift_* stand-ins for them
+  if (options.eye.select != EyeSelect::Parameter && info.language == SourceLanguage::Glsl && info.version < 330)
+    for (const std::string& name : module.allNames()) compatibilityBuiltIns |= name.rfind("stereoshift_", 0) == 0;
+  if (std::optional<int> raised = singlePassRaisedGlslVersion(info, options, compatibilityBuiltIns, &raiseReason)) {
+    result.report["version_raised"] = {{"from", info.version}, {"to", *raised}, {"why", raiseReason}};
+    diags.note(file, "output raised from GLSL " + std::to_string(info.version) + " to " + std::to_string(*raised) +
+                         ": " + raiseReason + " (desktop GLSL links stages of different versions)");
+    effectiveOptions.targetVersion = *raised;
+  }
 
   // ---- passes ----
   auto passesStarted = std::chrono::steady_clock::now();

@@ -302,6 +302,10 @@ uint32_t Module::typeVector(uint32_t componentType, uint32_t count) {
 uint32_t Module::typePointer(spv::StorageClass storage, uint32_t pointee) {
   STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypePointer, uint32_t(storage), pointee);
 }
+uint32_t Module::typeArray(uint32_t elementType, uint32_t length) {
+  uint32_t lengthId = scalarConstant(typeInt(32, false), length);
+  STEREOSHIFT_FIND_OR_ADD_TYPE(spv::OpTypeArray, elementType, lengthId);
+}
 #undef STEREOSHIFT_FIND_OR_ADD_TYPE
 
 uint32_t Module::newStruct(const std::vector<uint32_t>& memberTypes) {
@@ -424,6 +428,30 @@ uint32_t Module::pointeeType(uint32_t pointerTypeId) const {
 // Whether operand word k of an instruction in a function body may hold a value id (literals such
 // as extract indices, shuffle components, memory and image operand masks never do). Labels are
 // reported as ids or not at will: they are never the value being replaced.
+uint32_t interfaceLocationCount(const Module& m, uint32_t type) {
+  const Instruction* def = m.definition(type);
+  if (!def) return 1;
+  switch (def->opcode) {
+    case spv::OpTypeMatrix: return def->operand(1) * interfaceLocationCount(m, def->operand(0));
+    case spv::OpTypeArray: {
+      const Instruction* length = m.definition(def->operand(1));
+      uint32_t count = length && length->opcode == spv::OpConstant ? length->operand(0) : 1;
+      return count * interfaceLocationCount(m, def->operand(0));
+    }
+    case spv::OpTypeStruct: {
+      uint32_t total = 0;
+      for (uint32_t member : def->operands) total += interfaceLocationCount(m, member);
+      return total;
+    }
+    case spv::OpTypeVector: {
+      const Instruction* component = m.definition(def->operand(0));
+      bool wide = component && component->operand(0) == 64;
+      return wide && def->operand(1) > 2 ? 2 : 1;
+    }
+    default: return 1;
+  }
+}
+
 bool isValueOperand(const Instruction& inst, size_t k) {
   switch (inst.opcode) {
     case spv::OpLoad: return k == 0;

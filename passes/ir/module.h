@@ -122,6 +122,7 @@ class Module {
   uint32_t typeFloat(uint32_t width);
   uint32_t typeVector(uint32_t componentType, uint32_t count);
   uint32_t typePointer(spv::StorageClass storage, uint32_t pointee);
+  uint32_t typeArray(uint32_t elementType, uint32_t length);  // length: a literal, stored as a uint constant
   uint32_t newStruct(const std::vector<uint32_t>& memberTypes);  // structs are always distinct
   uint32_t constantFloat(float value);
   uint32_t constantInt(int32_t value);
@@ -164,5 +165,9 @@ class Module {
 // as extract indices, shuffle components, memory and image operand masks never do). Labels are
 // reported as ids or not at will: they are never a value being traced or replaced.
 bool isValueOperand(const Instruction& inst, size_t k);
+
+// Locations one value of `type` takes in a shader interface: a matrix one per column, an array one
+// per element, a struct the sum of its members, a 64-bit three- or four-component vector two.
+uint32_t interfaceLocationCount(const Module& m, uint32_t type);
 
 }  // namespace stereoshift::spirv

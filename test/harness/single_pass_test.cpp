@@ -12,6 +12,11 @@
 // even instances the left eye, -1): the shift is the same arithmetic with eyeSign exactly +-1. The
 // instanced render must also show every original instance (its own colour) exactly once per eye:
 // twice would blend to another colour, the wrong instance index to another colour or place.
+//
+// The same scene through a geometry stage and through tessellation (the vertex stage only offsets
+// by the instance; the last stage projects and gets the shift), converted as a pipeline: in
+// instanced mode the eye is handed on from the vertex stage (stereoEyeStage, stereoEyePatch) to the
+// stage that rasterizes, which writes gl_Layer; in multiview each stage reads gl_ViewIndex.
 #include "transpiler/stereoshift.h"
 #include "test/harness/vulkan_suite.h"
 
@@ -163,5 +168,148 @@ TEST_F(SinglePassStereo, InstancedLayersEqualTheTwoPassEyesAndDrawEachInstanceOn
     EXPECT_EQ(seen, expected) << "layer " << eye;
   }
 }
+
+// ---- through a geometry stage and through tessellation ----
+
+const char* kStagedVert = R"(#version 450
+layout(location = 0) in vec3 inPos;
+layout(set = 0, binding = 0) uniform Scene { mat4 proj; vec4 offsets[8]; } scene;
+layout(location = 0) out vec3 vWorld;
+layout(location = 1) flat out int vInstance;
+void main() {
+  vWorld = inPos + scene.offsets[gl_InstanceIndex].xyz;
+  vInstance = gl_InstanceIndex;
+}
+)";
+
+const char* kStagedGeom = R"(#version 450
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+layout(set = 0, binding = 0) uniform Scene { mat4 proj; vec4 offsets[8]; } scene;
+layout(location = 0) in vec3 vWorld[];
+layout(location = 1) flat in int vInstance[];
+layout(location = 0) flat out vec3 vColor;
+void main() {
+  for (int i = 0; i < 3; ++i) {
+    vColor = vec3(float(vInstance[i] + 1) / 8.0, 1.0 - float(vInstance[i]) / 8.0, 0.25);
+    gl_Position = scene.proj * vec4(vWorld[i], 1.0);
+    EmitVertex();
+  }
+  EndPrimitive();
+}
+)";
+
+const char* kStagedTesc = R"(#version 450
+layout(vertices = 3) out;
+layout(location = 0) in vec3 vWorld[];
+layout(location = 1) flat in int vInstance[];
+layout(location = 0) out vec3 cWorld[];
+layout(location = 1) patch out int cInstance;
+void main() {
+  cWorld[gl_InvocationID] = vWorld[gl_InvocationID];
+  cInstance = vInstance[0];
+  gl_TessLevelOuter[0] = 1.0; gl_TessLevelOuter[1] = 1.0; gl_TessLevelOuter[2] = 1.0;
+  gl_TessLevelInner[0] = 1.0;
+}
+)";
+
+const char* kStagedTese = R"(#version 450
+layout(triangles, equal_spacing, ccw) in;
+layout(set = 0, binding = 0) uniform Scene { mat4 proj; vec4 offsets[8]; } scene;
+layout(location = 0) in vec3 cWorld[];
+layout(location = 1) patch in int cInstance;
+layout(location = 0) flat out vec3 vColor;
+void main() {
+  vec3 p = gl_TessCoord.x * cWorld[0] + gl_TessCoord.y * cWorld[1] + gl_TessCoord.z * cWorld[2];
+  vColor = vec3(float(cInstance + 1) / 8.0, 1.0 - float(cInstance) / 8.0, 0.25);
+  gl_Position = scene.proj * vec4(p, 1.0);
+}
+)";
+
+class SinglePassThroughStages : public SinglePassStereo, public ::testing::WithParamInterface<bool> {
+ protected:
+  static bool tessellated() { return GetParam(); }
+
+  // The pipeline (vertex, then geometry or tessellation control + evaluation, then fragment) as
+  // stereoshift converts it in one mode, as SPIR-V stages.
+  static std::vector<ShaderStage> convertPipeline(EyeSelect select, Converted* last) {
+    TranspileOptions options;
+    options.target = TargetLanguage::Spirv;
+    options.eye.select = select;
+    std::vector<SourceFile> sources = {{"scene.vert", kStagedVert}};
+    if (tessellated()) {
+      sources.push_back({"scene.tesc", kStagedTesc});
+      sources.push_back({"scene.tese", kStagedTese});
+    } else {
+      sources.push_back({"scene.geom", kStagedGeom});
+    }
+    sources.push_back({"scene.frag", kSceneFrag});
+    std::vector<TranspileResult> results = transpilePipeline(sources, options);
+    const VkShaderStageFlagBits kinds[] = {VK_SHADER_STAGE_VERTEX_BIT, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
+                                           VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, VK_SHADER_STAGE_FRAGMENT_BIT};
+    const VkShaderStageFlagBits geometryKinds[] = {VK_SHADER_STAGE_VERTEX_BIT, VK_SHADER_STAGE_GEOMETRY_BIT,
+                                                   VK_SHADER_STAGE_FRAGMENT_BIT};
+    std::vector<ShaderStage> stages;
+    for (size_t i = 0; i < results.size(); ++i) {
+      EXPECT_TRUE(results[i].ok) << sources[i].path << ": " << results[i].diagnostics.format();
+      stages.push_back({tessellated() ? kinds[i] : geometryKinds[i], words(results[i].output), "main"});
+    }
+    const TranspileResult& shifted = results[results.size() - 2];
+    EXPECT_EQ(shifted.report.value("classification", std::string()), "perspective");
+    const auto& eye = shifted.report["passes"]["eye-params"];
+    *last = {{}, eye.value("set", 0u), eye.value("binding", 0u)};
+    return stages;
+  }
+
+  static Draw stagedDraw(EyeSelect select, float eyeSign, uint32_t instances) {
+    Converted last;
+    std::vector<ShaderStage> stages = convertPipeline(select, &last);
+    Draw d = sceneDraw(last, eyeSign, instances);
+    d.pipeline.stages = std::move(stages);
+    if (tessellated()) {
+      d.pipeline.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
+      d.pipeline.patchControlPoints = 3;
+    }
+    return d;
+  }
+
+  static std::array<RenderResult, 2> stagedTwoPass() {
+    return {render({stagedDraw(EyeSelect::Parameter, -1.0f, kInstances)}, 1, false),
+            render({stagedDraw(EyeSelect::Parameter, 1.0f, kInstances)}, 1, false)};
+  }
+};
+
+TEST_P(SinglePassThroughStages, InstancedEyeHandedOnToTheRasterizingStage) {
+  auto reference = stagedTwoPass();
+  ASSERT_TRUE(reference[0].ok() && reference[1].ok());
+  ASSERT_NE(layer(reference[0], 0), layer(reference[1], 0)) << "the eyes must differ for the test to mean anything";
+  RenderResult single = render({stagedDraw(EyeSelect::InstanceIndex, 0.0f, 2 * kInstances)}, 2, true);
+  ASSERT_TRUE(single.ok());
+  for (uint32_t eye = 0; eye < 2; ++eye) {
+    EXPECT_EQ(layer(single, eye), layer(reference[eye], 0)) << "layer " << eye;
+    std::map<uint32_t, int> expected = colours(reference[eye], 0), seen = colours(single, eye);
+    ASSERT_EQ(expected.size(), kInstances + 1) << "every instance must be visible in eye " << eye;
+    EXPECT_EQ(seen, expected) << "layer " << eye;
+  }
+}
+
+TEST_P(SinglePassThroughStages, MultiviewLayersEqualTheTwoPassEyes) {
+  if (!context_->multiviewSupported()) GTEST_SKIP() << "multiview not supported";
+  auto reference = stagedTwoPass();
+  ASSERT_TRUE(reference[0].ok() && reference[1].ok());
+  RenderRequest req;
+  req.width = req.height = kSize;
+  req.viewCount = 2;
+  req.draws = {stagedDraw(EyeSelect::ViewIndex, 0.0f, kInstances)};
+  RenderResult single = context_->render(req);
+  if (single.error.find("does not support multiview with") != std::string::npos) GTEST_SKIP() << single.error;
+  ASSERT_TRUE(single.ok()) << single.error;
+  for (uint32_t eye = 0; eye < 2; ++eye) EXPECT_EQ(layer(single, eye), layer(reference[eye], 0)) << "layer " << eye;
+}
+
+INSTANTIATE_TEST_SUITE_P(Stages, SinglePassThroughStages, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? std::string("Tessellation") : std::string("Geometry");
+                         });
 
 }  // namespace
