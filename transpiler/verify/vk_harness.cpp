@@ -1496,6 +1496,8 @@ void VulkanContext::clearValidationMessages() {
 VkInstance VulkanContext::instance() const { return impl_->instance; }
 VkPhysicalDevice VulkanContext::physicalDevice() const { return impl_->phys; }
 VkDevice VulkanContext::device() const { return impl_->device; }
+VkQueue VulkanContext::queue() const { return impl_->queue; }
+uint32_t VulkanContext::queueFamilyIndex() const { return impl_->queueFamily; }
 
 std::vector<uint32_t> loadSpirv(const std::string& path, std::string* error) {
   auto setError = [&](const std::string& m) {

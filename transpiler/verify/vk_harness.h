@@ -268,6 +268,9 @@ class VulkanContext {
   VkInstance instance() const;
   VkPhysicalDevice physicalDevice() const;
   VkDevice device() const;
+  // The graphics queue render() and capture() submit to, for callers that record their own commands.
+  VkQueue queue() const;
+  uint32_t queueFamilyIndex() const;
 
   struct Impl;
 
