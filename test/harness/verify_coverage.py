@@ -5,7 +5,7 @@ get the perspective shift, how many of those `verify` can run, how many pass, an
 could not run or failed, grouped by reason (names and numbers taken out so alike reasons group).
 
   python3 test/harness/verify_coverage.py --stereoshift build/stereoshift [--root DIR ...] [-v]
-      [--eye-source two-pass|multiview|instanced ...]
+      [--eye-source two-pass|multiview|instanced ...] [--verify-arg ARG ...]
 
 --eye-source (repeatable; default two-pass) measures the single-pass modes too, one block of figures
 each; a shader the conversion refuses in a mode (its output cannot express the mode) is counted as
@@ -49,7 +49,7 @@ def reason_key(text):
 
 def measure(args, shaders, mode):
     """Verifies every shader in one mode and prints the figures."""
-    perspective = ran = passed = 0
+    perspective = ran = passed = unshifted_ran = unshifted_passed = 0
     cannot_run, failed, other, refused = Counter(), Counter(), Counter(), Counter()
     mode_flags = [] if mode == "two-pass" else ["--eye-source", mode]
     for root, path in shaders:
@@ -58,7 +58,7 @@ def measure(args, shaders, mode):
             # An include/ folder beside the shader is its #include search path (as corpus/check.sh does).
             include = os.path.join(os.path.dirname(path), "include")
             flags = ["-I", include] if os.path.isdir(include) else []
-            p = subprocess.run([args.stereoshift, "verify", "--json"] + mode_flags + flags + [path], capture_output=True,
+            p = subprocess.run([args.stereoshift, "verify", "--json"] + mode_flags + args.verify_arg + flags + [path], capture_output=True,
                                text=True, timeout=args.timeout)
         except subprocess.TimeoutExpired:
             perspective += 1
@@ -76,13 +76,21 @@ def measure(args, shaders, mode):
             if args.verbose:
                 print(f"{rel}: {result.get('classification')}: nothing injected")
             continue
-        perspective += 1
         if result is None and mode_flags and f"{mode_flags[0]} {mode}:" in p.stderr:
             key = reason_key(p.stderr)
             refused[key] += 1
             if args.verbose:
                 print(f"{rel}: refused: {p.stderr.strip().splitlines()[0]}")
             continue
+        if result is not None and result.get("shifted") is False:
+            # Instanced mode rewrites 2D vertex shaders too (eye routes, instance reads), without a shift.
+            unshifted_ran += 1
+            unshifted_passed += bool(result.get("ok"))
+            if args.verbose:
+                print(f"{rel}: {result.get('classification')}, no shift: "
+                      + ("verified" if result.get("ok") else "FAILED: " + (result.get("problems") or ["?"])[0]))
+            continue
+        perspective += 1
         if result is None or result.get("ran") is False:
             key = reason_key(p.stderr)
             cannot_run[key] += 1
@@ -103,11 +111,13 @@ def measure(args, shaders, mode):
     pct = lambda n: f"{100.0 * n / perspective:.1f}%" if perspective else "-"
     print(f"pre-rasterization shaders: {len(shaders)} "
           f"(not shifted: {sum(other.values())}: " + ", ".join(f"{k} {v}" for k, v in sorted(other.items())) + ")")
-    print(f"get the shift:             {perspective}")
     if mode != "two-pass":
-        print(f"refused in {mode} mode: {sum(refused.values())} ({pct(sum(refused.values()))})")
+        print(f"refused in {mode} mode: {sum(refused.values())} (not run; by the conversion's reason)")
         for k, v in refused.most_common():
             print(f"  {v:3d}  {k}")
+    if unshifted_ran:
+        print(f"rewritten without a shift: {unshifted_ran} (2D vertex shaders), pass: {unshifted_passed}")
+    print(f"get the shift:             {perspective}")
     print(f"verify runs:               {ran} ({pct(ran)})")
     print(f"verify passes:             {passed} ({pct(passed)})")
     if cannot_run:
@@ -130,6 +140,8 @@ def main():
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per shader")
     ap.add_argument("--eye-source", action="append", choices=["two-pass", "multiview", "instanced"],
                     help="mode to verify in (repeatable); default two-pass")
+    ap.add_argument("--verify-arg", action="append", default=[],
+                    help="one more argument for every verify call (repeatable: --verify-arg=--target --verify-arg=spirv)")
     args = ap.parse_args()
     roots = args.root or [os.path.join(here, "..", "..", "corpus"), os.path.join(here, "shaders", "verify")]
 

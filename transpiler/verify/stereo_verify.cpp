@@ -301,6 +301,7 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
     if (!location) continue;
     if (!expand(*location, m.pointeeType(var->typeId), m.name(id))) return false;
   }
+  if (leaves.empty()) return true;  // no vertex inputs (a full-screen triangle from gl_VertexIndex): no buffer
   std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.location < b.location; });
   uint32_t offset = 0;
   for (const Leaf& leaf : leaves) {
@@ -1136,7 +1137,8 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
   // The transpiled stages run with eyeSign = `eye` (the single-pass modes: a value they must ignore).
   auto runStereo = [&](std::vector<Module>& modules, float eye, CaptureResult* out) {
     PipelineInputs inputs = stereoBase;
-    if (!applyEyeParameters(modules.back(), settings, eye, &inputs, &error)) {
+    // A shader without a shift (a 2D one in instanced mode) may have no parameters at all.
+    if (!applyEyeParameters(modules.back(), settings, eye, &inputs, &error) && settings.shifted) {
       result.error = error;
       return false;
     }
@@ -1165,10 +1167,10 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     // The shader's guard, in its own fp32 terms: ordered comparisons (a NaN w is not shifted)
     // and never an infinite w.
     bool far = settings.cutoffEpsilon > 0 ? std::fabs(float(w) - 1.0f) > settings.cutoffEpsilon : float(w) != 1.0f;
-    bool unshifted = settings.cutoff && (!far || std::isnan(w) || std::isinf(w));
+    bool unshifted = !settings.shifted || (settings.cutoff && (!far || std::isnan(w) || std::isinf(w)));
     double shift = double(eye) * settings.separation * (w - settings.convergence);
     double reference = unshifted ? x : x + shift;
-    if (unshifted && eye > 0) ++result.cutoffVertices;
+    if (unshifted && settings.shifted && eye > 0) ++result.cutoffVertices;
     double scale = std::max(std::fabs(x), std::fabs(double(settings.separation) * (w - settings.convergence)));
     if (std::isnan(got) && !std::isnan(x) && !std::isnan(w)) ++result.newNaNs;
     double ulps;
