@@ -1159,6 +1159,17 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
   const uint32_t px = position->offset / 4, pxStereo = inStereo[px];
   result.otherOutputsUnchanged = true;
 
+  // A captured component as the shader wrote it: a float, or an integer (instance ids, eyes).
+  std::vector<bool> integerComponent(layoutA.stride / 4, false);
+  for (const auto& f : layoutA.fields)
+    for (uint32_t k = 0; k < f.components; ++k) integerComponent[f.offset / 4 + k] = !f.isFloat;
+  auto valueText = [&](const CaptureResult& capture, uint32_t vertex, uint32_t component) {
+    const uint32_t original = &capture == &mono ? component
+                              : uint32_t(std::find(inStereo.begin(), inStereo.end(), component) - inStereo.begin());
+    return original < integerComponent.size() && integerComponent[original]
+               ? std::to_string(int32_t(capture.u32(vertex, component)))
+               : std::to_string(capture.f32(vertex, component));
+  };
   // Captured vertex `vm` of the original against vertex `vs` of a stereo run of eye sign `eye`: x
   // against the exact reference, every other component unchanged (halo outputs excepted).
   auto compareVertex = [&](const CaptureResult& stereo, uint32_t vm, uint32_t vs, float eye, const std::string& run) {
@@ -1213,8 +1224,7 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
         result.otherOutputsUnchanged = false;
         if (result.problems.size() < 8)
           result.problems.push_back("vertex " + std::to_string(vs) + " component " + std::to_string(c) + " changed for " +
-                                    run + " (" + std::to_string(mono.f32(vm, c)) + " became " +
-                                    std::to_string(stereo.f32(vs, cs)) + ")");
+                                    run + " (" + valueText(mono, vm, c) + " became " + valueText(stereo, vs, cs) + ")");
       }
     }
   };
