@@ -77,13 +77,6 @@ static int runCommandLine(int argc, char** argv) {
       printErrorSummary(1);
       return 2;
     }
-    // verify drives eyeSign through the parameter block; a single-pass shader derives it itself.
-    if (v.t.eye.select != EyeSelect::Parameter) {
-      std::cerr << "stereoshift: error: verify does not run single-pass shaders yet (--eye-source " << v.eyeSource
-                << "); verify the two-pass conversion, which is the same arithmetic per eye\n";
-      printErrorSummary(1);
-      return 2;
-    }
     std::vector<SourceFile> sources;
     if (int failed = readSources(v.inputs, &sources, std::cerr)) {
       printErrorSummary(failed);

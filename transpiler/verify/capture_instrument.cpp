@@ -241,7 +241,11 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
     std::vector<Instruction> chains;
     for (auto& block : fn.blocks)
       for (auto& inst : block.instructions)
-        for (auto& operand : inst.operands) {
+        for (size_t k = 0; k < inst.operands.size(); ++k) {
+          // Only value operands: a literal (an extended instruction number such as GLSL.std.450
+          // Normalize = 69) may equal a uniform's id by chance.
+          if (!spirv::isValueOperand(inst, k)) continue;
+          uint32_t& operand = inst.operands[k];
           auto it = memberOf.find(operand);
           if (it == memberOf.end()) continue;
           if (!replacement.count(operand)) {

@@ -35,10 +35,10 @@ using spirv::Instruction;
 using spirv::Module;
 
 nlohmann::json VerifyResult::json() const {
-  return {{"ok", ok},
+  nlohmann::json j = {{"ok", ok},
           {"error", error},
+          {"mode", mode == EyeSelect::ViewIndex ? "multiview" : mode == EyeSelect::InstanceIndex ? "instanced" : "two-pass"},
           {"vertices", vertices},
-          {"mono_identical", monoIdentical},
           {"max_stereo_error_ulps", maxStereoUlps},
           {"cutoff_vertices", cutoffVertices},
           {"other_outputs_unchanged", otherOutputsUnchanged},
@@ -47,6 +47,30 @@ nlohmann::json VerifyResult::json() const {
           {"synthesized_stages", synthesizedStages},
           {"push_constants_as_buffer", pushConstantsAsBuffer},
           {"problems", problems}};
+  if (mode == EyeSelect::Parameter) {
+    j["mono_identical"] = monoIdentical;
+    j["checked"] = {"eyeSign 0: every output bit for bit the original's",
+                    "eyeSign -1 and +1: x against x + e*S*(w - C), every other output unchanged"};
+    return j;
+  }
+  // The eye comes from the view or the instance: there is no eyeSign = 0 run to compare.
+  j["mono_run"] = false;
+  j["eye_sign_declared"] = eyeSignDeclared;
+  j["eye_sign_ignored"] = eyeSignIgnored;
+  if (mode == EyeSelect::ViewIndex)
+    j["checked"] = {"view 0 and view 1: x against x + e*S*(w - C) for the view's eye, every other output unchanged",
+                    "no eyeSign 0 run: a junk eyeSign parameter changes no output"};
+  if (mode == EyeSelect::InstanceIndex) {
+    j["checked"] = {"instance 2k+e against the original's instance k: x against x + e*S*(w - C) for eye e, every "
+                    "other output unchanged",
+                    "the layer / viewport index and the eye varying equal e",
+                    "no eyeSign 0 run: a junk eyeSign parameter changes no output"};
+    j["instances"] = instances;
+    j["stereo_instances"] = 2 * instances;
+    j["eye_routed"] = eyeRouted;
+    j["eye_varying_written"] = eyeVaryingWritten;
+  }
+  return j;
 }
 
 namespace {
@@ -277,6 +301,7 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
     if (!location) continue;
     if (!expand(*location, m.pointeeType(var->typeId), m.name(id))) return false;
   }
+  if (leaves.empty()) return true;  // no vertex inputs (a full-screen triangle from gl_VertexIndex): no buffer
   std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.location < b.location; });
   uint32_t offset = 0;
   for (const Leaf& leaf : leaves) {
@@ -512,7 +537,7 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
 
 // Where the transpiled module reads eyeSign / separation / convergence.
 bool applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign, PipelineInputs* in,
-                        std::string* error) {
+                        std::string* error, bool* eyeSignFound = nullptr) {
   const float values[3] = {eyeSign, s.separation, s.convergence};
   const std::string names[3] = {s.eyeSignName, s.separationName, s.convergenceName};
   bool found = false;
@@ -540,6 +565,7 @@ bool applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign,
         if (bytes->size() < offset + 4) bytes->resize(((offset + 4) + 15) & ~size_t(15), 0);
         std::memcpy(bytes->data() + offset, &values[k], 4);
         found = true;
+        if (k == 0 && eyeSignFound) *eyeSignFound = true;
       }
   }
   // Specialization constants.
@@ -552,6 +578,7 @@ bool applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign,
           std::memcpy(&bits, &values[k], 4);
           in->specConstants.push_back({*id, bits});
           found = true;
+          if (k == 0 && eyeSignFound) *eyeSignFound = true;
         }
   }
   if (!found) *error = "the transpiled shader has no eye parameters the harness can set";
@@ -739,6 +766,77 @@ void matchInvariance(Module& original, const Module& transpiled) {
   for (auto [structId, member] : memberBuiltIns) original.decorateMember(structId, member, spv::DecorationInvariant);
 }
 
+// Takes `variable` out of every entry point's interface list (nothing reads it any more).
+void dropFromInterface(Module& m, uint32_t variable) {
+  for (auto& entry : m.entryPoints) {
+    const size_t first = 2 + entry.stringWordCount(2);
+    for (size_t i = first; i < entry.operands.size(); ++i)
+      if (entry.operands[i] == variable) {
+        entry.operands.erase(entry.operands.begin() + long(i));
+        break;
+      }
+  }
+}
+
+// Multiview: transform feedback must not be active in a multiview render pass, so the harness
+// draws each view on its own, in a copy of the module whose reads of the view index (ViewIndex)
+// read that view's number as a constant (harness-only, like the capture decorations): the shader's
+// code computes exactly what it computes in that view of a view-mask-0b11 draw.
+bool bindViewIndex(Module& m, uint32_t view, std::string* error) {
+  uint32_t variable = 0;
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable &&
+        m.decorationValue(inst.resultId, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInViewIndex))
+      variable = inst.resultId;
+  if (!variable) return true;  // this stage does not read the view
+  const uint32_t type = m.pointeeType(m.definition(variable)->typeId);
+  const Instruction* typeDef = m.definition(type);
+  const bool isSigned = typeDef && typeDef->opcode == spv::OpTypeInt && typeDef->operand(1) == 1;
+  const uint32_t value = m.constantInt(int32_t(view));
+  for (auto& f : m.functions)
+    for (auto& b : f.blocks)
+      for (auto& inst : b.instructions) {
+        if (inst.opcode == spv::OpLoad && inst.operand(0) == variable) {
+          inst.opcode = isSigned ? spv::OpCopyObject : spv::OpBitcast;  // HLSL's SV_ViewID is a uint
+          inst.operands = {value};
+          continue;
+        }
+        const bool pointerUse =
+            (inst.opcode == spv::OpCopyMemory && inst.operand(1) == variable) ||
+            ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) && inst.operand(0) == variable) ||
+            (inst.opcode == spv::OpFunctionCall &&
+             std::find(inst.operands.begin() + 1, inst.operands.end(), variable) != inst.operands.end());
+        if (pointerUse) {
+          *error = "the " + std::string(executionModelName(m.executionModel())) +
+                   " shader reads the view index other than by a load; the harness cannot run it per view";
+          return false;
+        }
+      }
+  dropFromInterface(m, variable);
+  m.invalidateDefinitions();
+  return true;
+}
+
+// Instanced: the vertex stage writes the eye to gl_Layer / gl_ViewportIndex, built-ins that the
+// capture does not decorate for transform feedback. The harness's copy writes that same value to
+// an ordinary int output instead, one location past every output the shader has, which the capture
+// then reads like any other. Returns the output's name, empty when the shader writes no such built-in.
+std::string exposeEyeRoute(Module& m, EyeRoute route) {
+  const uint32_t builtIn = uint32_t(route == EyeRoute::Layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex);
+  uint32_t variable = 0, location = 0;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != uint32_t(spv::StorageClassOutput)) continue;
+    if (m.decorationValue(inst.resultId, spv::DecorationBuiltIn) == builtIn) variable = inst.resultId;
+    if (auto l = m.decorationValue(inst.resultId, spv::DecorationLocation)) location = std::max(location, *l + 1);
+  }
+  if (!variable) return {};
+  m.removeDecorations(variable, spv::DecorationBuiltIn);
+  m.decorate(variable, spv::DecorationLocation, {location});
+  const std::string name = route == EyeRoute::Layer ? "gl_Layer" : "gl_ViewportIndex";
+  if (m.name(variable).empty()) m.setName(variable, name);
+  return m.name(variable);
+}
+
 double ulpOf(double magnitude) {
   float m = static_cast<float>(std::max(magnitude, double(FLT_MIN)));
   return double(std::nextafter(m, INFINITY)) - double(m);
@@ -794,6 +892,18 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     return static_cast<int>(*of(a)) < static_cast<int>(*of(b));
   });
   for (size_t i = 0; i < ordered.size(); ++i) {
+    // The single-pass modes refuse what the output language cannot express (ESSL vertex shaders
+    // and gl_Layer, OpenGL multiview and geometry stages, ...): verify runs SPIR-V, so it first
+    // converts for the output the user asked for and reports that conversion's refusal as its own.
+    if (options.eye.select != EyeSelect::Parameter && options.target != TargetLanguage::Spirv) {
+      TranspileOptions asAsked = options;
+      asAsked.shiftThisStage = i + 1 == ordered.size();
+      TranspileResult check = transpile(*ordered[i], asAsked);
+      if (!check.ok) {
+        diags.append(check.diagnostics);
+        return false;
+      }
+    }
     TranspileOptions o = options;
     o.target = TargetLanguage::Spirv;
     o.forceReemit = true;
@@ -903,16 +1013,56 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
       for (auto& m : *list) pushConstantsToUniformBuffer(m, freeSet);
     result.pushConstantsAsBuffer = true;
   }
+  const EyeSelect mode = settings.eyeSource;
+  result.mode = mode;
+  std::string routeName;  // instanced: the harness's output carrying what the shader writes to the layer / viewport
+  if (mode == EyeSelect::InstanceIndex) routeName = exposeEyeRoute(transpiled.back(), settings.eyeRoute);
   CaptureLayout layoutA, layoutB;
   if (!instrumentForCapture(originals.back(), &layoutA, nullptr, &error) ||
       !instrumentForCapture(transpiled.back(), &layoutB, nullptr, &error)) {
     result.error = error;
     return result;
   }
-  if (layoutA.stride != layoutB.stride) {
+  // Each captured component of the original, at its place in the transpiled capture (instanced mode
+  // adds the eye outputs, which the original does not have).
+  std::vector<uint32_t> inStereo(layoutA.stride / 4, UINT32_MAX);
+  int eyeVaryingComponent = -1, routeComponent = -1;
+  std::vector<bool> matched(layoutA.fields.size(), false);
+  for (const auto& g : layoutB.fields) {
+    const CapturedField* match = nullptr;
+    for (size_t i = 0; i < layoutA.fields.size() && !match; ++i) {
+      const auto& f = layoutA.fields[i];
+      if (!matched[i] && f.isPosition == g.isPosition && f.location == g.location && f.components == g.components) {
+        matched[i] = true;
+        match = &f;
+      }
+    }
+    if (match) {
+      for (uint32_t k = 0; k < g.components; ++k) inStereo[match->offset / 4 + k] = g.offset / 4 + k;
+    } else if (mode == EyeSelect::InstanceIndex && g.name == settings.eyeVaryingName && g.components == 1) {
+      eyeVaryingComponent = int(g.offset / 4);
+    } else if (mode == EyeSelect::InstanceIndex && !routeName.empty() && g.name == routeName && g.components == 1) {
+      routeComponent = int(g.offset / 4);
+    } else {
+      result.error = "original and transpiled shaders have different outputs";
+      return result;
+    }
+  }
+  if (std::find(inStereo.begin(), inStereo.end(), UINT32_MAX) != inStereo.end()) {
     result.error = "original and transpiled shaders have different outputs";
     return result;
   }
+  // Multiview: one copy of the transpiled stages per view, each reading its view's index.
+  std::vector<std::vector<Module>> perView;
+  if (mode == EyeSelect::ViewIndex)
+    for (uint32_t view = 0; view < 2; ++view) {
+      perView.push_back(transpiled);
+      for (auto& m : perView.back())
+        if (!bindViewIndex(m, view, &error)) {
+          result.error = error;
+          return result;
+        }
+    }
 
   // Inputs, identical for both runs except for the eye parameters.
   PipelineInputs base;
@@ -962,19 +1112,41 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     count -= count % 3;
   }
   base.vertexCount = count;
+  // Instanced: the original draws a few instances (so a shader whose outputs depend on the instance
+  // shows whether the rewrite reads the right one), the stereo draw twice as many.
+  const uint32_t instances = mode == EyeSelect::InstanceIndex ? std::max(1u, settings.originalInstances) : 1;
+  base.instanceCount = instances;
+  result.instances = instances;
   stereoBase.topology = base.topology;
   stereoBase.patchControlPoints = base.patchControlPoints;
   stereoBase.vertexCount = base.vertexCount;
+  stereoBase.instanceCount = mode == EyeSelect::InstanceIndex ? 2 * instances : 1;
 
   auto run = [&](std::vector<Module>& modules, const PipelineInputs& inputs, CaptureResult* out) {
+    const bool original = &modules == &originals;
     CaptureRequest request;
     request.pipeline = inputs;
     for (size_t i = 0; i < modules.size(); ++i)
       request.pipeline.stages.push_back({toVk(modules[i].executionModel()), modules[i].encode(), modules[i].entryPointName()});
-    request.xfbStride = layoutA.stride;
-    request.expectedVertices = count * 64;  // room for tessellation / geometry amplification
+    request.xfbStride = original ? layoutA.stride : layoutB.stride;
+    // Room for tessellation / geometry amplification.
+    request.expectedVertices = count * 64 * inputs.instanceCount;
     *out = context.capture(request);
     return out->ok();
+  };
+  // The transpiled stages run with eyeSign = `eye` (the single-pass modes: a value they must ignore).
+  auto runStereo = [&](std::vector<Module>& modules, float eye, CaptureResult* out) {
+    PipelineInputs inputs = stereoBase;
+    // A shader without a shift (a 2D one in instanced mode) may have no parameters at all.
+    if (!applyEyeParameters(modules.back(), settings, eye, &inputs, &error) && settings.shifted) {
+      result.error = error;
+      return false;
+    }
+    if (!run(modules, inputs, out)) {
+      result.error = "transpiled: " + out->error;
+      return false;
+    }
+    return true;
   };
 
   CaptureResult mono;
@@ -984,100 +1156,183 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
   }
   result.vertices = mono.vertexCount();
   const CapturedField* position = layoutA.position();
-  uint32_t px = position->offset / 4;
-  result.monoIdentical = true;
+  const uint32_t px = position->offset / 4, pxStereo = inStereo[px];
   result.otherOutputsUnchanged = true;
-  for (float eye : {0.0f, -1.0f, 1.0f}) {
-    PipelineInputs inputs = stereoBase;
-    if (!applyEyeParameters(transpiled.back(), settings, eye, &inputs, &error)) {
-      result.error = error;
-      return result;
-    }
-    CaptureResult stereo;
-    if (!run(transpiled, inputs, &stereo)) {
-      result.error = "transpiled: " + stereo.error;
-      return result;
-    }
-    if (stereo.bytes.size() != mono.bytes.size()) {
-      result.problems.push_back("eye " + std::to_string(int(eye)) + ": captured a different number of vertices");
-      continue;
-    }
-    if (eye == 0.0f) {
-      result.monoIdentical = stereo.bytes == mono.bytes;
-      if (!result.monoIdentical) {
-        std::string where;
-        for (uint32_t v = 0; v < result.vertices && where.empty(); ++v)
-          for (uint32_t c = 0; c < layoutA.stride / 4 && where.empty(); ++c)
-            if (mono.u32(v, c) != stereo.u32(v, c))
-              where = ": first at vertex " + std::to_string(v) + " component " + std::to_string(c) + " (" +
-                      std::to_string(mono.f32(v, c)) + " became " + std::to_string(stereo.f32(v, c)) + ")";
-        result.problems.push_back("eyeSign = 0 output differs from the original" + where);
+
+  // A captured component as the shader wrote it: a float, or an integer (instance ids, eyes).
+  std::vector<bool> integerComponent(layoutA.stride / 4, false);
+  for (const auto& f : layoutA.fields)
+    for (uint32_t k = 0; k < f.components; ++k) integerComponent[f.offset / 4 + k] = !f.isFloat;
+  auto valueText = [&](const CaptureResult& capture, uint32_t vertex, uint32_t component) {
+    const uint32_t original = &capture == &mono ? component
+                              : uint32_t(std::find(inStereo.begin(), inStereo.end(), component) - inStereo.begin());
+    return original < integerComponent.size() && integerComponent[original]
+               ? std::to_string(int32_t(capture.u32(vertex, component)))
+               : std::to_string(capture.f32(vertex, component));
+  };
+  // Captured vertex `vm` of the original against vertex `vs` of a stereo run of eye sign `eye`: x
+  // against the exact reference, every other component unchanged (halo outputs excepted).
+  auto compareVertex = [&](const CaptureResult& stereo, uint32_t vm, uint32_t vs, float eye, const std::string& run) {
+    double x = mono.f32(vm, px), w = mono.f32(vm, px + 3);
+    float got = stereo.f32(vs, pxStereo);
+    // The shader's guard, in its own fp32 terms: ordered comparisons (a NaN w is not shifted)
+    // and never an infinite w.
+    bool far = settings.cutoffEpsilon > 0 ? std::fabs(float(w) - 1.0f) > settings.cutoffEpsilon : float(w) != 1.0f;
+    bool unshifted = !settings.shifted || (settings.cutoff && (!far || std::isnan(w) || std::isinf(w)));
+    double shift = double(eye) * settings.separation * (w - settings.convergence);
+    double reference = unshifted ? x : x + shift;
+    if (unshifted && settings.shifted && eye > 0) ++result.cutoffVertices;
+    double scale = std::max(std::fabs(x), std::fabs(double(settings.separation) * (w - settings.convergence)));
+    if (std::isnan(got) && !std::isnan(x) && !std::isnan(w)) ++result.newNaNs;
+    double ulps;
+    if (std::isnan(reference) || std::isinf(reference) || std::isinf(got))
+      ulps = (std::isnan(reference) && std::isnan(got)) || double(got) == reference ? 0 : INFINITY;
+    else
+      ulps = std::fabs(got - reference) / ulpOf(scale);
+    result.maxStereoUlps = std::max(result.maxStereoUlps, ulps);
+    // y, z, w and every other captured component: unchanged, except halo copies of the position.
+    for (uint32_t c = 0; c < layoutA.stride / 4; ++c) {
+      if (c == px) continue;
+      const uint32_t cs = inStereo[c];
+      bool staleCopy = false;
+      for (const auto& f : layoutA.fields)
+        staleCopy |= !f.isPosition && f.components == 4 && c == f.offset / 4 && mono.u32(vm, c) == mono.u32(vm, px) &&
+                     stereo.u32(vs, cs) != stereo.u32(vs, pxStereo);
+      if (staleCopy) {  // a copy of the position left mono: the 3Dmigoto "halo"
+        result.otherOutputsUnchanged = false;
+        if (result.problems.size() < 8)
+          result.problems.push_back("vertex " + std::to_string(vs) + ": a copy of the position (component " +
+                                    std::to_string(c) + ") was not shifted with it (halo) in " + run);
+        continue;
       }
-      continue;
-    }
-    for (uint32_t v = 0; v < result.vertices; ++v) {
-      double x = mono.f32(v, px), w = mono.f32(v, px + 3);
-      float got = stereo.f32(v, px);
-      // The shader's guard, in its own fp32 terms: ordered comparisons (a NaN w is not shifted)
-      // and never an infinite w.
-      bool far = settings.cutoffEpsilon > 0 ? std::fabs(float(w) - 1.0f) > settings.cutoffEpsilon : float(w) != 1.0f;
-      bool unshifted = settings.cutoff && (!far || std::isnan(w) || std::isinf(w));
-      double shift = double(eye) * settings.separation * (w - settings.convergence);
-      double reference = unshifted ? x : x + shift;
-      if (unshifted && eye > 0) ++result.cutoffVertices;
-      double scale = std::max(std::fabs(x), std::fabs(double(settings.separation) * (w - settings.convergence)));
-      if (std::isnan(got) && !std::isnan(x) && !std::isnan(w)) ++result.newNaNs;
-      double ulps;
-      if (std::isnan(reference) || std::isinf(reference) || std::isinf(got))
-        ulps = (std::isnan(reference) && std::isnan(got)) || double(got) == reference ? 0 : INFINITY;
-      else
-        ulps = std::fabs(got - reference) / ulpOf(scale);
-      result.maxStereoUlps = std::max(result.maxStereoUlps, ulps);
-      // y, z, w and every other captured component: unchanged, except halo copies of the position.
-      for (uint32_t c = 0; c < layoutA.stride / 4; ++c) {
-        if (c == px) continue;
-        bool staleCopy = false;
-        for (const auto& f : layoutA.fields)
-          staleCopy |= !f.isPosition && f.components == 4 && c == f.offset / 4 &&
-                       mono.u32(v, c) == mono.u32(v, px) && stereo.u32(v, c) != stereo.u32(v, px);
-        if (staleCopy) {  // a copy of the position left mono: the 3Dmigoto "halo"
-          result.otherOutputsUnchanged = false;
-          if (result.problems.size() < 8)
-            result.problems.push_back("vertex " + std::to_string(v) + ": a copy of the position (component " +
-                                      std::to_string(c) + ") was not shifted with it (halo)");
-          continue;
-        }
-        if (mono.u32(v, c) == stereo.u32(v, c)) continue;
-        bool haloCopy = false, haloDerived = false;
-        for (const auto& f : layoutA.fields) {
-          if (f.isPosition || c < f.offset / 4 || c >= f.offset / 4 + f.components) continue;
-          // A copied position must carry exactly the shifted x of gl_Position; other outputs the
-          // halo pass re-derived may move (their formula is the shader's own).
-          if (f.components == 4 && c == f.offset / 4 && mono.u32(v, c) == mono.u32(v, px)) {
-            haloCopy = stereo.u32(v, c) == stereo.u32(v, px);
-          } else {
-            const auto& halo = stages.back().haloOutputs;
-            haloDerived = std::find(halo.begin(), halo.end(), f.name) != halo.end();
-          }
-        }
-        if (haloCopy || haloDerived) {
-          ++result.haloComponentsChanged;
+      if (mono.u32(vm, c) == stereo.u32(vs, cs)) continue;
+      bool haloCopy = false, haloDerived = false;
+      for (const auto& f : layoutA.fields) {
+        if (f.isPosition || c < f.offset / 4 || c >= f.offset / 4 + f.components) continue;
+        // A copied position must carry exactly the shifted x of gl_Position; other outputs the
+        // halo pass re-derived may move (their formula is the shader's own).
+        if (f.components == 4 && c == f.offset / 4 && mono.u32(vm, c) == mono.u32(vm, px)) {
+          haloCopy = stereo.u32(vs, cs) == stereo.u32(vs, pxStereo);
         } else {
-          result.otherOutputsUnchanged = false;
-          if (result.problems.size() < 8)
-            result.problems.push_back("vertex " + std::to_string(v) + " component " + std::to_string(c) +
-                                      " changed for eye " + std::to_string(int(eye)));
+          const auto& halo = stages.back().haloOutputs;
+          haloDerived = std::find(halo.begin(), halo.end(), f.name) != halo.end();
         }
       }
+      if (haloCopy || haloDerived) {
+        ++result.haloComponentsChanged;
+      } else {
+        result.otherOutputsUnchanged = false;
+        if (result.problems.size() < 8)
+          result.problems.push_back("vertex " + std::to_string(vs) + " component " + std::to_string(c) + " changed for " +
+                                    run + " (" + valueText(mono, vm, c) + " became " + valueText(stereo, vs, cs) + ")");
+      }
     }
+  };
+  // The eye sign of view / instance eye `e` (0 or 1): the left eye first unless the eyes are swapped.
+  auto signOf = [&](uint32_t e) { return (e == 0 ? -1.0f : 1.0f) * (settings.swapEyes ? -1.0f : 1.0f); };
+  // Single-pass: eyeSign is no longer an input. A junk value there (far from -1, 0, +1, so a shader
+  // that still read it would shift by several separations) must leave every captured bit as it was.
+  constexpr float kJunkEyeSign = 7.5f;
+  auto checkIgnoresEyeSign = [&](std::vector<Module>& modules, const CaptureResult& withZero, const std::string& run) {
+    {
+      PipelineInputs scratch = stereoBase;
+      std::string ignored;
+      applyEyeParameters(modules.back(), settings, kJunkEyeSign, &scratch, &ignored, &result.eyeSignDeclared);
+    }
+    if (!result.eyeSignDeclared) {
+      result.eyeSignIgnored = true;  // nothing to set: the shader cannot read it
+      return true;
+    }
+    CaptureResult junk;
+    if (!runStereo(modules, kJunkEyeSign, &junk)) return false;
+    const bool same = junk.bytes == withZero.bytes;
+    result.eyeSignIgnored = result.eyeSignIgnored && same;
+    if (!same) result.problems.push_back(run + ": eyeSign = " + std::to_string(kJunkEyeSign) + " changed the outputs: the shader still reads the eyeSign parameter");
+    return true;
+  };
+
+  if (mode == EyeSelect::Parameter) {
+    result.monoIdentical = true;
+    for (float eye : {0.0f, -1.0f, 1.0f}) {
+      CaptureResult stereo;
+      if (!runStereo(transpiled, eye, &stereo)) return result;
+      if (stereo.bytes.size() != mono.bytes.size()) {
+        result.problems.push_back("eye " + std::to_string(int(eye)) + ": captured a different number of vertices");
+        continue;
+      }
+      if (eye == 0.0f) {
+        result.monoIdentical = stereo.bytes == mono.bytes;
+        if (!result.monoIdentical) {
+          std::string where;
+          for (uint32_t v = 0; v < result.vertices && where.empty(); ++v)
+            for (uint32_t c = 0; c < layoutA.stride / 4 && where.empty(); ++c)
+              if (mono.u32(v, c) != stereo.u32(v, c))
+                where = ": first at vertex " + std::to_string(v) + " component " + std::to_string(c) + " (" +
+                        std::to_string(mono.f32(v, c)) + " became " + std::to_string(stereo.f32(v, c)) + ")";
+          result.problems.push_back("eyeSign = 0 output differs from the original" + where);
+        }
+        continue;
+      }
+      for (uint32_t v = 0; v < result.vertices; ++v) compareVertex(stereo, v, v, eye, "eye " + std::to_string(int(eye)));
+    }
+  } else if (mode == EyeSelect::ViewIndex) {
+    result.eyeSignIgnored = true;
+    for (uint32_t view = 0; view < 2; ++view) {
+      const std::string name = "view " + std::to_string(view);
+      CaptureResult stereo;
+      if (!runStereo(perView[view], 0.0f, &stereo)) return result;
+      if (stereo.vertexCount() != mono.vertexCount()) {
+        result.problems.push_back(name + ": captured a different number of vertices");
+        continue;
+      }
+      for (uint32_t v = 0; v < result.vertices; ++v) compareVertex(stereo, v, v, signOf(view), name);
+      if (!checkIgnoresEyeSign(perView[view], stereo, name)) return result;
+    }
+  } else {
+    result.eyeSignIgnored = true;
+    CaptureResult stereo;
+    if (!runStereo(transpiled, 0.0f, &stereo)) return result;
+    const uint32_t perInstance = result.vertices / instances;
+    if (stereo.vertexCount() != 2 * result.vertices || perInstance * instances != result.vertices) {
+      result.problems.push_back(std::to_string(2 * instances) + " instances captured " +
+                                std::to_string(stereo.vertexCount()) + " vertices, not twice the " +
+                                std::to_string(result.vertices) + " of the original's " + std::to_string(instances));
+    } else {
+      result.eyeRouted = routeComponent >= 0;
+      result.eyeVaryingWritten = eyeVaryingComponent >= 0;
+      if (routeComponent < 0)
+        result.problems.push_back(std::string("the vertex shader writes no ") +
+                                  (settings.eyeRoute == EyeRoute::Layer ? "gl_Layer" : "gl_ViewportIndex"));
+      if (eyeVaryingComponent < 0) result.problems.push_back("the vertex shader writes no '" + settings.eyeVaryingName + "' output");
+      for (uint32_t vs = 0; vs < stereo.vertexCount(); ++vs) {
+        // Instance 2k+e of the stereo draw is the original's instance k seen by eye e.
+        const uint32_t instance = vs / perInstance, k = instance >> 1, e = instance & 1;
+        const uint32_t vm = k * perInstance + vs % perInstance;
+        const std::string name = "instance " + std::to_string(instance) + " (eye " + std::to_string(e) + ")";
+        compareVertex(stereo, vm, vs, signOf(e), name);
+        auto checkEye = [&](int component, const std::string& what, bool* ok) {
+          if (component < 0 || stereo.u32(vs, uint32_t(component)) == e) return;
+          if (*ok && result.problems.size() < 8)
+            result.problems.push_back("vertex " + std::to_string(vs) + ": " + what + " is " +
+                                      std::to_string(int32_t(stereo.u32(vs, uint32_t(component)))) + ", not the eye " +
+                                      std::to_string(e) + " of " + name);
+          *ok = false;
+        };
+        checkEye(routeComponent, routeName, &result.eyeRouted);
+        checkEye(eyeVaryingComponent, settings.eyeVaryingName, &result.eyeVaryingWritten);
+      }
+    }
+    if (!checkIgnoresEyeSign(transpiled, stereo, "instanced draw")) return result;
   }
   if (result.maxStereoUlps > settings.maxUlps)
     result.problems.push_back("stereo error " + std::to_string(result.maxStereoUlps) + " ULP exceeds the bound of " +
                               std::to_string(settings.maxUlps));
   if (result.newNaNs) result.problems.push_back(std::to_string(result.newNaNs) + " new NaN x values");
-  result.ok = result.monoIdentical && result.otherOutputsUnchanged && result.maxStereoUlps <= settings.maxUlps &&
-              result.newNaNs == 0 &&
-              result.problems.empty();
+  const bool eyeChecks = mode == EyeSelect::Parameter    ? result.monoIdentical
+                         : mode == EyeSelect::ViewIndex ? result.eyeSignIgnored
+                                                        : result.eyeSignIgnored && result.eyeRouted && result.eyeVaryingWritten;
+  result.ok = eyeChecks && result.otherOutputsUnchanged && result.maxStereoUlps <= settings.maxUlps &&
+              result.newNaNs == 0 && result.problems.empty();
   return result;
 }
 

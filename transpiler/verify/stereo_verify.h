@@ -39,6 +39,17 @@ struct VerifySettings {
   // x + p (<= ulp(x')/2 <= 1 ulp, since |x'| <= 2 max): 2.5 ULP is the analytic bound of that code.
   // Reaching 1 ULP needs a fused or compensated evaluation (see the benchmark); not done yet.
   double maxUlps = 2.5;
+  // Where the transpiled shader takes the eye from (the conversion's --eye-source): Parameter runs
+  // it with eyeSign 0, -1, +1; ViewIndex once per view (view 0 the left eye); InstanceIndex drawn
+  // with twice the original's instances (instance 2k+e: the original instance k, eye e).
+  EyeSelect eyeSource = EyeSelect::Parameter;
+  bool swapEyes = false;                // single-pass: view 0 / even instances are the right eye
+  EyeRoute eyeRoute = EyeRoute::Layer;  // instanced: where the vertex stage writes the eye
+  std::string eyeVaryingName = "stereoEye";
+  uint32_t originalInstances = 2;       // instanced: instances of the original's draw
+  // False for a shader that gets no shift but is still rewritten (instanced mode routes the eye of
+  // 2D vertex shaders too): x must then stay as it is in both eyes.
+  bool shifted = true;
 };
 
 struct VerifyResult {
@@ -54,6 +65,14 @@ struct VerifyResult {
   std::vector<std::string> synthesizedStages;  // pass-through stages run in front of the given ones
   bool pushConstantsAsBuffer = false;  // push constants over the device limit, bound as a uniform buffer
   std::vector<std::string> problems;
+  // Single-pass modes: no eyeSign = 0 run (monoIdentical stays false); instead a junk eyeSign must
+  // change no output (the shader no longer reads it). Instanced: the eye the vertex stage writes.
+  EyeSelect mode = EyeSelect::Parameter;
+  bool eyeSignDeclared = false;  // the transpiled shader still declares the eyeSign parameter
+  bool eyeSignIgnored = false;   // ... and a junk value there changed no captured bit
+  uint32_t instances = 1;        // instances of the original's draw (instanced: the stereo one has twice)
+  bool eyeRouted = false;        // instanced: gl_Layer / gl_ViewportIndex equals the eye on every vertex
+  bool eyeVaryingWritten = false;  // instanced: the stereoEye varying equals the eye on every vertex
   nlohmann::json json() const;
 };
 
@@ -69,7 +88,8 @@ void separateRegisterClasses(spirv::Module& module);
 bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
                        std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags);
 
-// The stages form one pipeline (vertex first); the last one is captured.
+// The stages form one pipeline (vertex first); the last one is captured. settings.eyeSource must be
+// the mode the stages were converted in.
 VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules>& stages,
                           const VerifySettings& settings);
 
