@@ -51,6 +51,7 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
   settings.swapEyes = options.eye.swapEyes;
   settings.eyeRoute = options.eye.route;
   settings.eyeVaryingName = options.eye.eyeVaryingName;
+  settings.eyeVaryingLocation = options.eye.eyeVaryingLocation;
   settings.shifted = !rewrittenWithoutShift;
   harness::VerifyResult r = harness::verifyStereo(*context, stages, settings);
   if (!r.error.empty()) {

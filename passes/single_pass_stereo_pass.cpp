@@ -299,6 +299,12 @@ bool checkTarget(PassContext& ctx) {
       (model == spv::ExecutionModelGeometry || model == spv::ExecutionModelTessellationEvaluation))
     return refuse("HLSL geometry and domain shaders back to HLSL are spliced into their own text, which carries "
                   "the two-pass shift only; choose --target spirv or --target glsl");
+  // Instanced mode hands the eye on through the hull shader, which SPIRV-Cross cannot write as HLSL
+  // (in two passes a hull shader is copied unchanged).
+  if (instanced && ctx.source.language == SourceLanguage::Hlsl && target == TargetLanguage::Hlsl &&
+      model == spv::ExecutionModelTessellationControl)
+    return refuse("the eye is handed on through the hull shader, and HLSL hull shaders cannot be re-emitted as "
+                  "HLSL; choose --target spirv or --target glsl");
   if (target == TargetLanguage::Msl)
     return refuse("not for --target msl (Metal draws both eyes with vertex amplification, which stereoshift does "
                   "not write yet); use two passes (--eye-source uniform-block)");
@@ -337,6 +343,43 @@ bool checkTarget(PassContext& ctx) {
 // Rewrites every read of the instance index to the original instance (`instance >> 1`).
 int rewriteInstanceReads(PassContext& ctx, uint32_t instanceVariable) {
   auto& m = ctx.module;
+  // Any other use of the variable's pointer (passed to a function, copied as a pointer) would read
+  // the doubled index where the rewrite cannot see it: refused rather than converted half-way.
+  for (const auto& fn : m.functions)
+    for (const auto& block : fn.blocks)
+      for (const auto& inst : block.instructions) {
+        bool read = (inst.opcode == spv::OpLoad && inst.operand(0) == instanceVariable) ||
+                    ((inst.opcode == spv::OpCopyMemory || inst.opcode == spv::OpCopyMemorySized) &&
+                     inst.operand(1) == instanceVariable && inst.operand(0) != instanceVariable);
+        if (read) continue;
+        for (size_t k = 0; k < inst.operands.size(); ++k)
+          if (inst.operands[k] == instanceVariable && spirv::isValueOperand(inst, k)) {
+            ctx.diags.error(ctx.file, "--eye-source instanced: the instance index '" + m.name(instanceVariable) +
+                                          "' is " + (inst.opcode == spv::OpFunctionCall ? std::string("passed to a function by pointer")
+                                          : inst.opcode == spv::OpCopyObject
+                                              ? std::string("copied as a pointer (OpCopyObject)")
+                                              : "used as a pointer (opcode " + std::to_string(inst.opcode) + ")") +
+                                          ", where its reads cannot be rewritten to the original instance; "
+                                          "load it where it is used, or use --eye-source multiview");
+            return -1;
+          }
+      }
+  // A copy straight out of the variable (OpCopyMemory / OpCopyMemorySized) reads it too: made a load
+  // and a store first, so the rewrite below sees every read as a load.
+  uint32_t valueType = m.pointeeType(m.definition(instanceVariable)->typeId);
+  for (auto& fn : m.functions)
+    for (auto& block : fn.blocks)
+      for (size_t i = 0; i < block.instructions.size(); ++i) {
+        Instruction& inst = block.instructions[i];
+        if ((inst.opcode != spv::OpCopyMemory && inst.opcode != spv::OpCopyMemorySized) || inst.operand(1) != instanceVariable)
+          continue;
+        uint32_t target = inst.operand(0), value = m.takeId();
+        inst = Instruction(spv::OpStore, 0, 0, std::vector<uint32_t>{target, value});
+        block.instructions.insert(block.instructions.begin() + static_cast<long>(i),
+                                  Instruction(spv::OpLoad, valueType, value, std::vector<uint32_t>{instanceVariable}));
+        ++i;
+      }
+  m.invalidateDefinitions();
   std::vector<uint32_t> loads;
   for (const auto& fn : m.functions)
     for (const auto& block : fn.blocks)
@@ -563,7 +606,9 @@ class SinglePassStereoPass final : public Pass {
     if (!rasterizingStage(ctx) && !handsOn) return PassResult::Unchanged;
     if (model == spv::ExecutionModelVertex) {
       uint32_t instance = ensureInstanceIndex(ctx);
-      report["instance_reads_rewritten"] = rewriteInstanceReads(ctx, instance);
+      int rewritten = rewriteInstanceReads(ctx, instance);
+      if (rewritten < 0) return PassResult::Failed;
+      report["instance_reads_rewritten"] = rewritten;
     }
     if (!routeInstancedEye(ctx, report)) return PassResult::Failed;
     return PassResult::Changed;

@@ -979,6 +979,33 @@ VerifyResult verifyStereo(VulkanContext& context, const std::vector<StageModules
     return result;
   }
   originals.insert(originals.begin(), leading.begin(), leading.end());
+  if (settings.eyeSource == EyeSelect::InstanceIndex) {
+    // Instanced: in front of the transpiled stage the synthesized stages hand the eye on, as
+    // stereoshift converts them in a pipeline (the vertex stage takes it from the instance).
+    for (size_t i = 0; i < leading.size(); ++i) {
+      TranspileOptions o;
+      o.target = TargetLanguage::Spirv;
+      o.shiftThisStage = false;
+      o.eye.select = EyeSelect::InstanceIndex;
+      o.eye.eyeVaryingName = settings.eyeVaryingName;
+      o.eye.eyeVaryingLocation = settings.eyeVaryingLocation;
+      std::vector<uint32_t> words = leading[i].encode();
+      TranspileResult converted = transpile(
+          SourceFile{leadingNames[i], std::string(reinterpret_cast<const char*>(words.data()), words.size() * 4)}, o);
+      std::optional<Module> m;
+      if (converted.ok && converted.output.size() % 4 == 0) {
+        std::vector<uint32_t> out(converted.output.size() / 4);
+        std::memcpy(out.data(), converted.output.data(), converted.output.size());
+        m = Module::parse(out, &error);
+      }
+      if (!m) {
+        result.error = "the synthesized " + leadingNames[i] + " could not hand the eye on: " +
+                       (converted.ok ? error : converted.diagnostics.format());
+        return result;
+      }
+      leading[i] = std::move(*m);
+    }
+  }
   transpiled.insert(transpiled.begin(), leading.begin(), leading.end());
   result.synthesizedStages = leadingNames;
   for (size_t i = 0; i + 1 < originals.size(); ++i)

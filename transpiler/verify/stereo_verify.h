@@ -46,6 +46,7 @@ struct VerifySettings {
   bool swapEyes = false;                // single-pass: view 0 / even instances are the right eye
   EyeRoute eyeRoute = EyeRoute::Layer;  // instanced: where the vertex stage writes the eye
   std::string eyeVaryingName = "stereoEye";
+  uint32_t eyeVaryingLocation = 15;
   uint32_t originalInstances = 2;       // instanced: instances of the original's draw
   // False for a shader that gets no shift but is still rewritten (instanced mode routes the eye of
   // 2D vertex shaders too): x must then stay as it is in both eyes.
