@@ -125,5 +125,57 @@ TEST(SinglePassStereoPass, InstancedRefusesAnEyeVaryingLocationInUse) {
             std::string::npos) << run.diagnostics;
 }
 
+// A tessellation control shader that passes nothing on yet (its own outputs do not matter here).
+std::string tessControlShader() {
+  return R"(
+               OpCapability Tessellation
+               OpMemoryModel Logical GLSL450
+               OpEntryPoint TessellationControl %main "main"
+               OpExecutionMode %main OutputVertices 3
+               OpName %main "main"
+       %void = OpTypeVoid
+         %fn = OpTypeFunction %void
+       %main = OpFunction %void None %fn
+      %entry = OpLabel
+               OpReturn
+               OpFunctionEnd
+)";
+}
+
+TEST(SinglePassStereoPass, InstancedVertexStageBeforeAnotherHandsTheEyeOnWithoutALayer) {
+  // A vertex stage followed by a geometry or tessellation stage (shiftThisStage false): the original
+  // instance for the shader, the eye to `stereoEyeStage` for the next stage, no layer (it does not
+  // rasterize).
+  TranspileOptions options = singlePass(EyeSelect::InstanceIndex);
+  options.shiftThisStage = false;
+  SinglePassRun run = runSinglePass(instancedVertexShader(), "single-pass-stereo", options);
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Changed);
+  EXPECT_TRUE(containsInOrder(run.disassembly, {"OpDecorate %stereoEyeStage Location 15", "= OpBitwiseAnd %int",
+                                                "OpStore %stereoEyeStage", "= OpShiftRightArithmetic %int %read %int_1"}))
+      << run.disassembly;
+  EXPECT_EQ(run.disassembly.find("BuiltIn Layer"), std::string::npos) << run.disassembly;
+  EXPECT_EQ(run.report["passes"]["single-pass-stereo"]["eye_handed_on"], true);
+}
+
+TEST(SinglePassStereoPass, InstancedTessellationControlHandsTheEyeOnPerPatch) {
+  SinglePassRun run = runSinglePass(tessControlShader(), "single-pass-stereo", singlePass(EyeSelect::InstanceIndex));
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Changed);
+  // Element 0 of the per-vertex input (every vertex of a patch comes from one instance) into a
+  // patch output.
+  EXPECT_TRUE(containsInOrder(run.disassembly, {"OpDecorate %stereoEyePatch Patch", "OpDecorate %stereoEyeStage Location 15",
+                                                "%_arr_int_uint_32 = OpTypeArray %int %uint_32", "OpAccessChain %_ptr_Input_int %stereoEyeStage %int_0",
+                                                "OpStore %stereoEyePatch"}))
+      << run.disassembly;
+}
+
+TEST(SinglePassStereoPass, MultiviewLeavesTessellationControlAlone) {
+  // Every stage reads gl_ViewIndex itself in multiview: nothing to hand on.
+  SinglePassRun run = runSinglePass(tessControlShader(), "single-pass-stereo", singlePass(EyeSelect::ViewIndex));
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Unchanged);
+}
+
 }  // namespace
 }  // namespace stereoshift::test
