@@ -191,7 +191,7 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("--eye-route", o.eyeRoute, "--eye-source instanced: the eye goes to the render-target layer or the viewport index (layer, viewport)")
       ->capture_default_str();
   app.add_option("--eye-varying-location", o.t.eye.eyeVaryingLocation,
-                 "--eye-source instanced: location of the flat `stereoEye` varying from the vertex to the fragment stage")
+                 "--eye-source instanced: location of the eye varyings (`stereoEye` into the fragment stage, `stereoEyeStage` / `stereoEyePatch` between earlier stages)")
       ->capture_default_str();
   app.add_option("--block-name", o.t.eye.blockName, "Name of the injected uniform block / cbuffer")->capture_default_str();
   app.add_option("--instance-name", o.t.eye.instanceName, "Instance name of the injected block")->capture_default_str();

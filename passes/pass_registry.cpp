@@ -25,7 +25,8 @@ const std::vector<PassInfo>& passRegistry() {
       // pointers and values stay, the folded copy no longer matches the module.
       {"single-pass-stereo", createSinglePassStereoPass,
        "draws both eyes in one pass: eyeSign from the view index (multiview) or the instance index (instanced; "
-       "the original instance given to the shader, the eye routed to the layer or viewport)",
+       "the original instance given to the shader, the eye handed on to the rasterizing stage and routed to the "
+       "layer or viewport)",
        "--eye-source multiview | instanced",
        "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
        "reads it rewrites are only the application's own",
