@@ -305,9 +305,7 @@ bool checkTarget(PassContext& ctx) {
       model == spv::ExecutionModelTessellationControl)
     return refuse("the eye is handed on through the hull shader, and HLSL hull shaders cannot be re-emitted as "
                   "HLSL; choose --target spirv or --target glsl");
-  if (target == TargetLanguage::Msl)
-    return refuse("not for --target msl (Metal draws both eyes with vertex amplification, which stereoshift does "
-                  "not write yet); use two passes (--eye-source uniform-block)");
+
   if (instanced && (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV))
     return refuse("a mesh shader has no instance index to take the eye from; use --eye-source multiview");
   if (glslOutput(target) && openGlOutput(ctx, target)) {

@@ -216,8 +216,14 @@ Vec3<T> cullingFrustumOrigin(const Mat4<T>& inverseView, T separation, T converg
 //     2-layer target (Vulkan: shaderOutputLayer / VK_EXT_shader_viewport_index_layer; GL 4.1:
 //     GL_ARB_shader_viewport_layer_array; D3D12: VPAndRTArrayIndexFromAnyShaderFeedingRasterizer) or,
 //     with --eye-route viewport, to viewport 0 / 1 (side by side: sideBySideViewports).
+//   Metal, multiview (--target msl): Metal has no view index; SPIRV-Cross's output emulates it by
+//     instancing. Draw twice the instances (firstInstance unchanged: the shader subtracts the base
+//     instance), bind the view mask buffer {first view 0, view count 2} (two uints) at vertex and
+//     fragment buffer index 24, render into a 2-layer texture (the view is
+//     [[render_target_array_index]]), and step per-instance attributes every 2 instances
+//     (MTLVertexBufferLayoutDescriptor stepRate 2). Instanced mode for Metal is set up as InstancedLayer.
 
-enum class SinglePassMode { Multiview, InstancedLayer, InstancedViewport };
+enum class SinglePassMode { Multiview, InstancedLayer, InstancedViewport, MetalMultiview };
 
 // What the application sets up for one draw of a single-pass frame.
 struct SinglePassSetup {
@@ -227,6 +233,9 @@ struct SinglePassSetup {
   unsigned instanceCount = 0;   // the draw's instance count
   unsigned firstInstance = 0;   // the draw's first instance
   unsigned instanceStep = 1;    // per-instance attribute divisor
+  // MetalMultiview: the two uints of SPIRV-Cross's view mask buffer and its buffer index.
+  std::array<unsigned, 2> viewMaskBuffer = {0, 0};
+  unsigned viewMaskBufferIndex = 0;
 };
 
 // The set-up for a draw the mono renderer records as (instanceCount, firstInstance).
@@ -246,6 +255,13 @@ inline SinglePassSetup singlePassSetup(SinglePassMode mode, unsigned instanceCou
       s.instanceStep = 2;
       if (mode == SinglePassMode::InstancedLayer) s.layerCount = 2;
       else s.viewportCount = 2;
+      break;
+    case SinglePassMode::MetalMultiview:
+      s.instanceCount = 2 * instanceCount;  // view = (instance - base) % 2, instance = (instance - base) / 2 + base
+      s.instanceStep = 2;
+      s.layerCount = 2;
+      s.viewMaskBuffer = {0, 2};
+      s.viewMaskBufferIndex = 24;  // SPIRV-Cross's default, which stereoshift keeps
       break;
   }
   return s;

@@ -239,6 +239,15 @@ TEST(StereoRuntime, SinglePassSetupPerMode) {
   s = singlePassSetup(SinglePassMode::InstancedViewport, 1, 0);
   EXPECT_EQ(s.layerCount, 1u);
   EXPECT_EQ(s.viewportCount, 2u);
+  s = singlePassSetup(SinglePassMode::MetalMultiview, 5, 3);
+  EXPECT_EQ(s.viewMask, 0u);        // no render-pass view mask in Metal: instancing does it
+  EXPECT_EQ(s.instanceCount, 10u);  // the emulated view is (instance - base) % 2
+  EXPECT_EQ(s.firstInstance, 3u);   // kept: the shader subtracts the base instance itself
+  EXPECT_EQ(s.instanceStep, 2u);
+  EXPECT_EQ(s.layerCount, 2u);
+  EXPECT_EQ(s.viewMaskBuffer[0], 0u);
+  EXPECT_EQ(s.viewMaskBuffer[1], 2u);
+  EXPECT_EQ(s.viewMaskBufferIndex, 24u);
   auto halves = sideBySideViewports(1280, 720);
   EXPECT_EQ(halves[0].width, 640);
   EXPECT_EQ(halves[1].x, 640);

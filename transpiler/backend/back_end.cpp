@@ -169,6 +169,13 @@ EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info
         // 2.1 is the first MSL with [[invariant]] positions; default to it unless asked otherwise.
         int v = options.targetVersion.value_or(21);
         msl.msl_version = spirv_cross::CompilerMSL::Options::make_msl_version(uint32_t(v / 10), uint32_t(v % 10));
+        // Single-pass multiview: Metal has no view index of its own; SPIRV-Cross emulates it with
+        // instancing (the application draws instanceCount * 2 and binds the view mask buffer), the
+        // view going to [[render_target_array_index]] of a two-layer target.
+        if (options.eye.select == EyeSelect::ViewIndex) {
+          msl.multiview = true;
+          msl.multiview_layered_rendering = true;
+        }
         compiler.set_msl_options(msl);
         result.text = compiler.compile();
         // SPIRV-Cross writes `unknown` where it has no Metal function qualifier for the entry point.
