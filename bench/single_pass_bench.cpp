@@ -232,52 +232,11 @@ class Device {
     return img;
   }
 
-  // Colour (cleared, kept, left ready for the copy to the host) and depth (cleared, dropped);
+  // The harness's render pass (colour kept for the copy to the host, depth dropped);
   // viewMask != 0 makes it a multiview render pass.
   VkRenderPass renderPass(uint32_t viewMask) {
-    VkAttachmentDescription att[2]{};
-    att[0].format = kColourFormat;
-    att[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    att[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    att[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    att[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    att[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    att[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    att[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    att[1] = att[0];
-    att[1].format = kDepthFormat;
-    att[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    att[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription sub{};
-    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    sub.colorAttachmentCount = 1;
-    sub.pColorAttachments = &colourRef;
-    sub.pDepthStencilAttachment = &depthRef;
-    const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                                  VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    VkSubpassDependency deps[2]{};
-    deps[0] = {VK_SUBPASS_EXTERNAL, 0, attachmentStages, attachmentStages, 0,
-               VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, 0};
-    deps[1] = {0, VK_SUBPASS_EXTERNAL, attachmentStages, VK_PIPELINE_STAGE_TRANSFER_BIT,
-               VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, 0};
-    VkRenderPassMultiviewCreateInfo mvci{VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO};
-    mvci.subpassCount = 1;
-    mvci.pViewMasks = &viewMask;
-    mvci.correlationMaskCount = 1;
-    mvci.pCorrelationMasks = &viewMask;  // the eyes see nearly the same: the hint multiview is for
-    VkRenderPassCreateInfo rpci{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    rpci.pNext = viewMask ? &mvci : nullptr;
-    rpci.attachmentCount = 2;
-    rpci.pAttachments = att;
-    rpci.subpassCount = 1;
-    rpci.pSubpasses = &sub;
-    rpci.dependencyCount = 2;
-    rpci.pDependencies = deps;
     VkRenderPass rp = VK_NULL_HANDLE;
-    check(vkCreateRenderPass(device_, &rpci, nullptr, &rp), "vkCreateRenderPass");
+    check(createColourDepthRenderPass(device_, kColourFormat, kDepthFormat, viewMask, false, &rp), "vkCreateRenderPass");
     onDestroy([this, rp] { vkDestroyRenderPass(device_, rp, nullptr); });
     return rp;
   }

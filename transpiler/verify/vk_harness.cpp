@@ -1264,58 +1264,9 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                         VK_IMAGE_ASPECT_DEPTH_BIT, "depth target");
 
-  VkAttachmentDescription att[2]{};
-  att[0].format = colorFormat;
-  att[0].samples = VK_SAMPLE_COUNT_1_BIT;
-  att[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  att[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  att[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  att[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  att[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  att[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  att[1] = att[0];
-  att[1].format = depthFormat;
-  att[1].storeOp = req.readDepth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  att[1].finalLayout = req.readDepth ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
-                                     : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription sub{};
-  sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  sub.colorAttachmentCount = 1;
-  sub.pColorAttachments = &colorRef;
-  sub.pDepthStencilAttachment = &depthRef;
-  const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                                VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  const VkAccessFlags attachmentAccess = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
-                                         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                                         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-  VkSubpassDependency deps[2]{};
-  deps[0] = {VK_SUBPASS_EXTERNAL, 0, attachmentStages, attachmentStages, 0, attachmentAccess, 0};
-  deps[1] = {0,
-             VK_SUBPASS_EXTERNAL,
-             attachmentStages,
-             VK_PIPELINE_STAGE_TRANSFER_BIT,
-             VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-             VK_ACCESS_TRANSFER_READ_BIT,
-             0};
   const uint32_t viewMask = (layers >= 32) ? ~0u : ((1u << layers) - 1u);
-  VkRenderPassMultiviewCreateInfo mvci{VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO};
-  mvci.subpassCount = 1;
-  mvci.pViewMasks = &viewMask;
-  mvci.correlationMaskCount = 1;
-  mvci.pCorrelationMasks = &viewMask;
-  VkRenderPassCreateInfo rpci{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  if (useMultiview) rpci.pNext = &mvci;
-  rpci.attachmentCount = 2;
-  rpci.pAttachments = att;
-  rpci.subpassCount = 1;
-  rpci.pSubpasses = &sub;
-  rpci.dependencyCount = 2;
-  rpci.pDependencies = deps;
   VkRenderPass rp = VK_NULL_HANDLE;
-  VKH_CHECK(vkCreateRenderPass(dev, &rpci, nullptr, &rp));
+  VKH_CHECK(createColourDepthRenderPass(dev, colorFormat, depthFormat, useMultiview ? viewMask : 0, req.readDepth, &rp));
   scope.defer([dev, rp] { vkDestroyRenderPass(dev, rp, nullptr); });
 
   VkImageView views[2] = {color.view, depth.view};
@@ -1443,6 +1394,60 @@ bool VulkanContext::anyDeviceAvailable(std::string* why) {
     return false;
   }
   return true;
+}
+
+// See vk_harness.h: the render pass of render(), also for callers that record their own frames.
+VkResult createColourDepthRenderPass(VkDevice device, VkFormat colourFormat, VkFormat depthFormat, uint32_t viewMask,
+                                     bool keepDepth, VkRenderPass* renderPass) {
+  VkAttachmentDescription att[2]{};
+  att[0].format = colourFormat;
+  att[0].samples = VK_SAMPLE_COUNT_1_BIT;
+  att[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  att[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  att[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  att[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  att[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  att[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  att[1] = att[0];
+  att[1].format = depthFormat;
+  att[1].storeOp = keepDepth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  att[1].finalLayout = keepDepth ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription sub{};
+  sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  sub.colorAttachmentCount = 1;
+  sub.pColorAttachments = &colorRef;
+  sub.pDepthStencilAttachment = &depthRef;
+  const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                                VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  const VkAccessFlags attachmentAccess = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
+                                         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+  VkSubpassDependency deps[2]{};
+  deps[0] = {VK_SUBPASS_EXTERNAL, 0, attachmentStages, attachmentStages, 0, attachmentAccess, 0};
+  deps[1] = {0,
+             VK_SUBPASS_EXTERNAL,
+             attachmentStages,
+             VK_PIPELINE_STAGE_TRANSFER_BIT,
+             VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+             VK_ACCESS_TRANSFER_READ_BIT,
+             0};
+  VkRenderPassMultiviewCreateInfo mvci{VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO};
+  mvci.subpassCount = 1;
+  mvci.pViewMasks = &viewMask;
+  mvci.correlationMaskCount = 1;
+  mvci.pCorrelationMasks = &viewMask;  // the views (eyes) see nearly the same: the hint multiview is for
+  VkRenderPassCreateInfo rpci{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  if (viewMask) rpci.pNext = &mvci;
+  rpci.attachmentCount = 2;
+  rpci.pAttachments = att;
+  rpci.subpassCount = 1;
+  rpci.pSubpasses = &sub;
+  rpci.dependencyCount = 2;
+  rpci.pDependencies = deps;
+  return vkCreateRenderPass(device, &rpci, nullptr, renderPass);
 }
 
 template <class Result, class Fn>

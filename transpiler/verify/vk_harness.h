@@ -217,6 +217,13 @@ struct DescriptorSlot {
 bool buildDescriptorLayout(const PipelineInputs& inputs,
                            std::vector<std::vector<DescriptorSlot>>* sets, std::string* error);
 
+// The render pass render() draws in, for callers that record their own frames (benchmarks): one
+// subpass, a colour attachment (cleared, stored, left in TRANSFER_SRC for the read-back) and a depth
+// attachment (cleared; stored and left in TRANSFER_SRC with keepDepth); viewMask != 0 makes it a
+// multiview render pass with that view (and correlation) mask.
+VkResult createColourDepthRenderPass(VkDevice device, VkFormat colourFormat, VkFormat depthFormat, uint32_t viewMask,
+                                     bool keepDepth, VkRenderPass* renderPass);
+
 // ---------------------------------------------------------------------------------------------
 // The context
 // ---------------------------------------------------------------------------------------------
