@@ -6,8 +6,9 @@
 //   instanced: the low bit of the instance index in the vertex stage (the application doubles the
 //     instance count); every later stage reads the varying `stereoEye` the stage before it wrote (the
 //     fragment stage too, also for OpenGL multiview, where SPIRV-Cross writes gl_ViewID_OVR in vertex
-//     shaders only). Through tessellation the eye rides as `patch out int stereoEye` (every vertex of
-//     a patch comes from one instance); a geometry stage reads element 0 of its input array.
+//     shaders only). Between pre-rasterization stages it is `stereoEyeStage`, through tessellation
+//     `patch out int stereoEyePatch` (every vertex of a patch comes from one instance); tessellation
+//     control and geometry stages read element 0 of their per-vertex input array.
 // The pass itself checks that the output language can express the mode (refusing with the reason
 // and what to do instead), declares the view index of a multiview shader that gets the shift, and
 // in instanced mode rewrites the vertex shader: every use of the instance index reads the original
@@ -229,8 +230,7 @@ uint32_t ensureEyeVarying(PassContext& ctx, spv::StorageClass storage) {
       return inst.resultId;
   std::string who;
   if (locationTaken(m, storage, o.eyeVaryingLocation, &who)) {
-    ctx.diags.error(ctx.file, std::string(o.select == EyeSelect::ViewIndex ? "--eye-source multiview" : "--eye-source instanced") +
-                                  ": " + (storage == spv::StorageClassInput ? "input" : "output") + " location " +
+    ctx.diags.error(ctx.file, std::string(modeFlag(o.select)) + ": " + (storage == spv::StorageClassInput ? "input" : "output") + " location " +
                                   std::to_string(o.eyeVaryingLocation) + " of the eye varying '" + name +
                                   "' is taken by '" + (who.empty() ? std::string("an unnamed variable") : who) +
                                   "'; choose a location free in every stage with --eye-varying-location");

@@ -28,26 +28,6 @@ uint32_t arrayLength(const Module& m, const Instruction* array) {
   return length && length->opcode == spv::OpConstant ? length->operand(0) : 0;
 }
 
-// Locations a value of `type` occupies (64-bit three- and four-component vectors take two).
-uint32_t locationCount(const Module& m, uint32_t type) {
-  const Instruction* d = m.definition(type);
-  if (!d) return 1;
-  switch (d->opcode) {
-    case spv::OpTypeVector: {
-      const Instruction* component = m.definition(d->operand(0));
-      return component && component->operand(0) == 64 && d->operand(1) > 2 ? 2 : 1;
-    }
-    case spv::OpTypeMatrix: return d->operand(1) * locationCount(m, d->operand(0));
-    case spv::OpTypeArray: return std::max(1u, arrayLength(m, d)) * locationCount(m, d->operand(0));
-    case spv::OpTypeStruct: {
-      uint32_t n = 0;
-      for (uint32_t member : d->operands) n += locationCount(m, member);
-      return n;
-    }
-    default: return 1;
-  }
-}
-
 // The scalar kind of a numeric type: 'f' float, 'd' double, 'i' int, 'u' uint, 0 other.
 char scalarKind(const Module& m, uint32_t type) {
   const Instruction* d = m.definition(type);
@@ -224,7 +204,7 @@ std::vector<InterfaceSlot> interfaceSlots(const Module& m, spv::StorageClass sto
         uint32_t at = m.memberDecorationValue(type, i, spv::DecorationLocation).value_or(next);
         uint32_t comp = m.memberDecorationValue(type, i, spv::DecorationComponent).value_or(0);
         slots.push_back({at, comp, d->operands[i], m.name(id) + "." + m.memberName(type, i), patch});
-        next = at + locationCount(m, d->operands[i]);
+        next = at + spirv::interfaceLocationCount(m, d->operands[i]);
       }
       continue;
     }
