@@ -146,12 +146,12 @@ uint32_t emitDerivedEyeSign(PassContext& context, std::vector<spirv::Instruction
 // The lowest OpenGL GLSL version a single-pass mode needs for this stage of an OpenGL (not Vulkan,
 // not ES) GLSL shader kept in GLSL, when the shader's own version is below it and no --target-version
 // was given (the output is then raised to it: desktop GLSL links stages of different versions);
-// nullopt otherwise, and for a shader using compatibility built-ins (a raise would turn gl_Vertex,
+// nullopt otherwise, and for a shader using compatibility built-ins (SourceInfo; a raise would turn gl_Vertex,
 // gl_ModelViewProjectionMatrix, ... into stereoshift_* inputs and uniforms the application does not
 // set: that takes an explicit --target-version). `why` receives the reason. See
 // single_pass_stereo_pass.cpp.
 std::optional<int> singlePassRaisedGlslVersion(const SourceInfo& source, const TranspileOptions& options,
-                                               bool compatibilityBuiltIns, std::string* why);
+                                               std::string* why);
 
 // Declares the eye parameters 0..count-1 (see EyeParam) if they are not declared yet, or extends
 // the declared ones up to `count`. Any pass that needs them calls this; the eye-params pass does so

@@ -137,6 +137,9 @@ struct SourceInfo {
   // GL_OVR_multiview's `layout(num_views = N) in;` (0: none). SPIR-V does not carry N, and an OpenGL
   // GLSL output of a multiview shader must declare it again.
   int multiviewViews = 0;
+  // Legacy GLSL that uses compatibility built-ins (gl_Vertex, gl_ModelViewProjectionMatrix, ...),
+  // which the front end's translation declares as stereoshift_* inputs and uniforms.
+  bool compatibilityBuiltIns = false;
 };
 
 struct SourceFile {

@@ -637,9 +637,9 @@ uint32_t emitDerivedEyeSign(PassContext& ctx, std::vector<Instruction>& out) {
 }
 
 std::optional<int> singlePassRaisedGlslVersion(const SourceInfo& source, const TranspileOptions& options,
-                                               bool compatibilityBuiltIns, std::string* why) {
+                                               std::string* why) {
   const auto& eye = options.eye;
-  if (eye.select == EyeSelect::Parameter || options.targetVersion || compatibilityBuiltIns) return std::nullopt;
+  if (eye.select == EyeSelect::Parameter || options.targetVersion || source.compatibilityBuiltIns) return std::nullopt;
   bool keptAsGlsl = options.target == TargetLanguage::Auto || options.target == TargetLanguage::Glsl;
   if (source.language != SourceLanguage::Glsl || source.es || source.vulkan || !keptAsGlsl) return std::nullopt;
   bool last = options.shiftThisStage;  // the stage that rasterizes

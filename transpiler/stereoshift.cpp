@@ -216,10 +216,7 @@ TranspileResult transpileStage(const SourceFile& input, const TranspileOptions& 
   // An OpenGL GLSL shader below the version its single-pass mode needs is re-emitted at that version
   // (a 330 vertex shader writing gl_Layer needs 410), said in a note and the report.
   std::string raiseReason;
-  bool compatibilityBuiltIns = false;  // the legacy translation's stereoshift_* stand-ins for them
-  if (options.eye.select != EyeSelect::Parameter && info.language == SourceLanguage::Glsl && info.version < 330)
-    for (const std::string& name : module.allNames()) compatibilityBuiltIns |= name.rfind("stereoshift_", 0) == 0;
-  if (std::optional<int> raised = singlePassRaisedGlslVersion(info, options, compatibilityBuiltIns, &raiseReason)) {
+  if (std::optional<int> raised = singlePassRaisedGlslVersion(info, options, &raiseReason)) {
     result.report["version_raised"] = {{"from", info.version}, {"to", *raised}, {"why", raiseReason}};
     diags.note(file, "output raised from GLSL " + std::to_string(info.version) + " to " + std::to_string(*raised) +
                          ": " + raiseReason + " (desktop GLSL links stages of different versions)");

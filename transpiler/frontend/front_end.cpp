@@ -779,6 +779,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   // stdout. Such shaders are parsed as a faithful ESSL 310 / GLSL 330 translation instead (the
   // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
   LegacyDialect dialect = decideLegacyDialect(input.contents, v);
+  bool usesCompatibilityBuiltIns = false;
   if (dialect.legacy) {
     LegacyTranslation translated = translateLegacyGlsl(input.contents, *stage, dialect, input.path);
     if (!translated.ok) {
@@ -786,6 +787,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
       return result;
     }
     text = std::move(translated.text);
+    usesCompatibilityBuiltIns = !translated.declared.empty();
     v.version = dialect.version;
     v.es = dialect.es;
     result.dialectReason = dialect.reason;
@@ -824,6 +826,7 @@ FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& o
   result.info.stage = *stage;
   result.info.version = v.version;
   result.info.es = v.es;
+  result.info.compatibilityBuiltIns = usesCompatibilityBuiltIns;
   result.info.entryPoint = "main";
   result.includedFiles = std::move(best->included);
   return result;
