@@ -142,6 +142,18 @@ class SinglePassStereo : public VulkanSuite<> {
       }
     return count;
   }
+
+  // Each layer of an instanced render equals the two-pass eye bit for bit, and every original
+  // instance's colour (blended once over black) is there and nothing else but the background: no
+  // instance is missing, doubled or drawn with a doubled index.
+  static void expectEyesOfInstancedRender(const RenderResult& single, const std::array<RenderResult, 2>& reference) {
+    for (uint32_t eye = 0; eye < 2; ++eye) {
+      EXPECT_EQ(layer(single, eye), layer(reference[eye], 0)) << "layer " << eye;
+      std::map<uint32_t, int> expected = colours(reference[eye], 0), seen = colours(single, eye);
+      ASSERT_EQ(expected.size(), kInstances + 1) << "every instance must be visible in eye " << eye;
+      EXPECT_EQ(seen, expected) << "layer " << eye;
+    }
+  }
 };
 
 TEST_F(SinglePassStereo, MultiviewLayersEqualTheTwoPassEyesBitForBit) {
@@ -159,14 +171,7 @@ TEST_F(SinglePassStereo, InstancedLayersEqualTheTwoPassEyesAndDrawEachInstanceOn
   ASSERT_TRUE(reference[0].ok() && reference[1].ok());
   RenderResult single = render({sceneDraw(convert(EyeSelect::InstanceIndex), 0.0f, 2 * kInstances)}, 2, true);
   ASSERT_TRUE(single.ok());
-  for (uint32_t eye = 0; eye < 2; ++eye) {
-    EXPECT_EQ(layer(single, eye), layer(reference[eye], 0)) << "layer " << eye;
-    // Every original instance's colour (blended once over black) is there, and nothing else but the
-    // background: no instance is missing, doubled or drawn with a doubled index.
-    std::map<uint32_t, int> expected = colours(reference[eye], 0), seen = colours(single, eye);
-    ASSERT_EQ(expected.size(), kInstances + 1) << "every instance must be visible in eye " << eye;
-    EXPECT_EQ(seen, expected) << "layer " << eye;
-  }
+  expectEyesOfInstancedRender(single, reference);
 }
 
 // ---- through a geometry stage and through tessellation ----
@@ -285,12 +290,7 @@ TEST_P(SinglePassThroughStages, InstancedEyeHandedOnToTheRasterizingStage) {
   ASSERT_NE(layer(reference[0], 0), layer(reference[1], 0)) << "the eyes must differ for the test to mean anything";
   RenderResult single = render({stagedDraw(EyeSelect::InstanceIndex, 0.0f, 2 * kInstances)}, 2, true);
   ASSERT_TRUE(single.ok());
-  for (uint32_t eye = 0; eye < 2; ++eye) {
-    EXPECT_EQ(layer(single, eye), layer(reference[eye], 0)) << "layer " << eye;
-    std::map<uint32_t, int> expected = colours(reference[eye], 0), seen = colours(single, eye);
-    ASSERT_EQ(expected.size(), kInstances + 1) << "every instance must be visible in eye " << eye;
-    EXPECT_EQ(seen, expected) << "layer " << eye;
-  }
+  expectEyesOfInstancedRender(single, reference);
 }
 
 TEST_P(SinglePassThroughStages, MultiviewLayersEqualTheTwoPassEyes) {
