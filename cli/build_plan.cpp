@@ -234,13 +234,13 @@ std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root,
 
 // The options a pass converts with, and their description for the cache key (computed once per
 // pass: describing the options per pipeline cost a fifth of a no-op rebuild of a large tree).
-struct PassOptions {
+struct RenderPassOptions {
   TranspileOptions options;
   std::string fingerprint;  // the options (before per-pipeline include roots) and the mode
 };
 
-PassOptions passOptions(const CliOptions& options, PassMode mode) {
-  PassOptions p{options.t, ""};
+RenderPassOptions passOptions(const CliOptions& options, PassMode mode) {
+  RenderPassOptions p{options.t, ""};
   if (mode == PassMode::Deferred) p.options.deferredUnprojection = true;
   if (mode == PassMode::UiAtDepth) p.options.hudAtDepth = true;
   nlohmann::json fingerprint = describeOptions(p.options);
@@ -250,7 +250,7 @@ PassOptions passOptions(const CliOptions& options, PassMode mode) {
 }
 
 void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const std::vector<fs::path>& stages,
-            const PassOptions& options, const std::string& pass, PassMode mode, bool variant) {
+            const RenderPassOptions& options, const std::string& pass, PassMode mode, bool variant) {
   BuildJob job;
   job.id = variant ? key + "@" + pass : key;
   job.stages = stages;
@@ -277,7 +277,7 @@ Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOption
   Plan plan;
   plan.root = root;
   plan.outputDir = outDir;
-  PassOptions options = passOptions(base, PassMode::Stereo);
+  RenderPassOptions options = passOptions(base, PassMode::Stereo);
   for (const auto& [key, stages] : findPipelines(root, outDir, base, plan))
     addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
   return plan;
@@ -325,7 +325,7 @@ Plan planManifest(const fs::path& manifestFile, const fs::path& outDir, const Cl
                               std::to_string(where.column) + ": error: pass '" + pass.name + "': '" + escapeControlBytes(pattern) +
                               "' matches no pipeline under " + plan.root.string());
     }
-  std::map<const ScenePass*, PassOptions> optionsOf;
+  std::map<const ScenePass*, RenderPassOptions> optionsOf;
   for (const auto& pass : manifest.passes) {
     CliOptions options = defaults;
     for (const auto& o : pass.options) applyOptionWords(options, o.words);

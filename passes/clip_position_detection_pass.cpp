@@ -30,12 +30,11 @@ class ClipPositionDetectionPass final : public Pass {
 
   PassResult run(PassContext& ctx) override {
     auto& m = ctx.module;
-    auto& report = ctx.report["passes"][name()];
+    DetectionFacts& facts = ctx.record.detection;
     spv::ExecutionModel model = m.executionModel();
-    const ClipPositionAnalysis& positions = clipPositions(ctx);
-    nlohmann::json found = nlohmann::json::array();
-    for (const auto& p : positions.outputs()) found.push_back(p.description);
-    report["positions"] = found;
+    const ClipPositionAnalysis& positions = ctx.analyses.clipPositions();
+    facts.positions.clear();
+    for (const auto& p : positions.outputs()) facts.positions.push_back(p.description);
 
     bool preRaster = model == spv::ExecutionModelVertex || model == spv::ExecutionModelTessellationEvaluation ||
                      model == spv::ExecutionModelGeometry || model == spv::ExecutionModelMeshEXT ||
@@ -48,7 +47,7 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::NoPositionOutput;
     } else if (std::string why = alreadyStereoReason(ctx); !why.empty()) {
       ctx.classification = Classification::AlreadyStereo;
-      report["already_stereo"] = why;
+      facts.alreadyStereo = why;
       ctx.diags.note(ctx.file, "shader " + why + "; left as it is, never shifted twice");
     } else if (allWritesHaveConstantW1(ctx.module, positions) ||
                (!entryStoresRuntimeProduct(ctx.module, positions) && constantW1AfterFolding(ctx))) {
@@ -57,7 +56,7 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::Perspective;
       ctx.shiftPosition = true;
     }
-    report["classification"] = toString(ctx.classification);
+    facts.classification = ctx.classification;
     return PassResult::Unchanged;
   }
 
@@ -101,7 +100,7 @@ class ClipPositionDetectionPass final : public Pass {
   // The literal w = 1.0 may only show after inlining and folding (HLSL output structs, helper
   // functions): ask the shared folded copy.
   static bool constantW1AfterFolding(PassContext& ctx) {
-    const spirv::Module* folded = foldedCopy(ctx);
+    const spirv::Module* folded = ctx.analyses.foldedCopy();
     if (!folded) return false;
     ClipPositionAnalysis positions(*folded);
     return !positions.outputs().empty() && allWritesHaveConstantW1(*folded, positions);

@@ -13,6 +13,7 @@
 // back from an output (`outPos = P * V * M * p; gl_Position = outPos;`), shifts the output and has
 // the position read the mono value it was computed from, so stereo-shift shifts it once.
 #include "passes/pass.h"
+#include "passes/shift_emitter.h"
 
 #include "passes/analysis/value_numbers.h"
 #include "passes/ir/walker.h"
@@ -49,11 +50,10 @@ class HaloPass final : public Pass {
     if (!ctx.shiftPosition || !ctx.options.haloFix || !ctx.eyeDeclared)
       return PassResult::Unchanged;
     auto& m = ctx.module;
-    auto& report = ctx.report["passes"][name()];
 
     // Which values are the mono position, and through which pointers it is written: the shared
     // clip-position analysis (its mono values follow copies kept in function-local variables).
-    const ClipPositionAnalysis& positions = clipPositions(ctx);
+    const ClipPositionAnalysis& positions = ctx.analyses.clipPositions();
     const std::set<uint32_t>& positionValues = positions.monoValues();
     std::set<uint32_t> positionOutputs;
     for (const auto& p : positions.outputs()) positionOutputs.insert(p.variable);
@@ -62,7 +62,7 @@ class HaloPass final : public Pass {
       if (m.hasDecoration(id, spv::DecorationBuiltIn)) builtinOutputs.insert(id);
 
     // Equal by value: every value numbered like one of the position's.
-    analysis::ValueNumbers numbers(m);
+    const analysis::ValueNumbers& numbers = ctx.analyses.valueNumbers();
     std::set<uint32_t> positionNumbers;
     for (uint32_t v : positionValues)
       if (auto n = numbers.number(v)) positionNumbers.insert(*n);
@@ -73,7 +73,7 @@ class HaloPass final : public Pass {
     };
     exactCopies_.clear();
     std::map<uint32_t, uint32_t> monoStoredTo;  // output -> the mono value its (single) store wrote
-    nlohmann::json fixed = nlohmann::json::array();
+    std::vector<std::string> fixed;
     if (!positionValues.empty())
       for (auto& fn : m.functions) {
         for (auto& block : fn.blocks) {
@@ -109,15 +109,14 @@ class HaloPass final : public Pass {
     readBackMonoValues(ctx, monoStoredTo);
     isPosition_ = nullptr;  // it refers to this run's numbering
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
-    report["shifted_outputs"] = fixed;
+    HaloFacts& facts = ctx.record.halo;
+    facts.shiftedOutputs = fixed;
     // The outputs computed from the clip position rather than copies of it: the HLSL source splice
     // shifts copies in the text, these only the IR carries.
-    nlohmann::json derived = nlohmann::json::array();
-    for (const auto& output : fixed) {
-      if (std::find(exactCopies_.begin(), exactCopies_.end(), output.get<std::string>()) == exactCopies_.end())
-        derived.push_back(output);
-    }
-    if (!derived.empty()) report["derived_outputs"] = derived;
+    facts.derivedOutputs.clear();
+    for (const auto& output : fixed)
+      if (std::find(exactCopies_.begin(), exactCopies_.end(), output) == exactCopies_.end())
+        facts.derivedOutputs.push_back(output);
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 
@@ -130,7 +129,7 @@ class HaloPass final : public Pass {
   // only store, earlier in the same block.
   void readBackMonoValues(PassContext& ctx, const std::map<uint32_t, uint32_t>& monoStoredTo) {
     auto& m = ctx.module;
-    const ClipPositionAnalysis& positions = clipPositions(ctx);
+    const ClipPositionAnalysis& positions = ctx.analyses.clipPositions();
     for (auto& fn : m.functions)
       for (auto& block : fn.blocks) {
         std::map<uint32_t, size_t> storedAt;  // output -> index of its store in this block
@@ -156,11 +155,11 @@ class HaloPass final : public Pass {
   // above. Inlining and folding a throw-away copy shows them: an output whose stored value is the
   // very value stored to the position is an exact copy, and its stores in the real module get the
   // same shift applied to their own value.
-  void shiftExactCopiesSeenAfterInlining(PassContext& ctx, nlohmann::json& fixed) {
+  void shiftExactCopiesSeenAfterInlining(PassContext& ctx, std::vector<std::string>& fixed) {
     auto& m = ctx.module;
-    const auto& outputs = clipPositions(ctx).outputs();
+    const auto& outputs = ctx.analyses.clipPositions().outputs();
     if (outputs.size() != 1 || outputs.front().isMember) return;
-    const spirv::Module* optimized = foldedCopy(ctx);
+    const spirv::Module* optimized = ctx.analyses.foldedCopy();
     if (!optimized) return;
     ClipPositionAnalysis foldedPositions(*optimized);  // global ids are the module's own
     std::set<uint32_t> positionValues;

@@ -11,7 +11,9 @@
 // scene and be hidden by it. Because every vertex gets the same w = d, perspective-correct
 // interpolation of the varyings equals the original linear one, and x/w, y/w are the original x, y:
 // in mono the element covers the very same pixels.
+#include "passes/eye_param_emitter.h"
 #include "passes/pass.h"
+#include "passes/shift_emitter.h"
 
 #include <algorithm>
 #include <set>
@@ -30,7 +32,7 @@ class HudAtDepthPass final : public Pass {
     if (!ctx.options.hudAtDepth || !ctx.options.shiftThisStage || ctx.classification != Classification::ConstantW1)
       return PassResult::Unchanged;
     auto& m = ctx.module;
-    auto& report = ctx.report["passes"][name()];
+    HudAtDepthFacts& facts = ctx.record.hudAtDepth;
 
     // Whole-vector stores of each position, and whether anything else writes it. The proof of
     // w = 1 may come from the folded copy (helpers, HLSL structs); the real module's stores must
@@ -40,8 +42,8 @@ class HudAtDepthPass final : public Pass {
       size_t index;
     };
     std::vector<Site> sites;
-    nlohmann::json placed = nlohmann::json::array();
-    const ClipPositionAnalysis& positions = clipPositions(ctx);
+    std::vector<std::string> placed;
+    const ClipPositionAnalysis& positions = ctx.analyses.clipPositions();
     for (size_t output = 0; output < positions.outputs().size(); ++output) {
       const ClipPosition& position = positions.outputs()[output];
       if (position.arrayed) return leaveAlone(ctx, "per-vertex position arrays");
@@ -83,12 +85,12 @@ class HudAtDepthPass final : public Pass {
 
     // From here on the position is a perspective one: eye-params, halo and stereo-shift treat it so.
     ctx.shiftPosition = true;
-    report["placed_at_depth"] = placed;
-    report["stores"] = sites.size();
-    report["position"] = "vec4(pos.xy * " + ctx.eye.names[kHudDepth] + ", pos.z * " + ctx.eye.names[kHudDepth] +
+    facts.placedAtDepth = placed;
+    facts.stores = sites.size();
+    facts.position = "vec4(pos.xy * " + ctx.eye.names[kHudDepth] + ", pos.z * " + ctx.eye.names[kHudDepth] +
                          ", " + ctx.eye.names[kHudDepth] + ")";
     if (ctx.options.cutoff != CutoffMode::None)
-      report["note"] = "the w != 1 cutoff also applies here: a " + ctx.eye.names[kHudDepth] +
+      facts.note = "the w != 1 cutoff also applies here: a " + ctx.eye.names[kHudDepth] +
                        " within the cutoff epsilon of 1 leaves the element unshifted (use --no-cutoff "
                        "to give it parallax at depth 1 too)";
     return PassResult::Changed;
@@ -97,7 +99,7 @@ class HudAtDepthPass final : public Pass {
  private:
   PassResult leaveAlone(PassContext& ctx, const std::string& why) {
     ctx.diags.warning(ctx.file, "--hud-at-depth: not placed at depth: " + why);
-    ctx.report["passes"][name()]["left_alone"] = why;
+    ctx.record.hudAtDepth.leftAlone = why;
     return PassResult::Unchanged;
   }
 };

@@ -4,8 +4,8 @@
 // next stage steps texture coordinates along it (relief / parallax occlusion mapping: needs the
 // per-eye camera) or only shades with it (specular: the mono eye is fine). Nor can one that writes
 // the camera itself, `TangentViewPos = TBN * viewPos`, beside `TangentFragPos = TBN * FragPos`, for
-// the fragment stage to subtract (the tutorial form). transpilePipeline() analyses the fragment
-// stage first and hands these facts to the last pre-rasterization stage.
+// the fragment stage to subtract (the tutorial form). The driver analyses the fragment
+// stage first (AnalysisManager::stageInputUses) and hands these facts to the last pre-rasterization stage.
 //
 // "Offsets texture coordinates" means `uv +- f(v)`: a coordinate that is only computed from the
 // view vector (a BRDF table at dot(N, V), a reflection lookup) is shading, not relief.
@@ -28,12 +28,14 @@ struct StageInputUse {
   bool feedsTexcoordAsDirection = false;  // ... after it became a direction here (normalize, v.xy / v.z)
   bool subtractedForOffset = false;  // one side of `a - b` (b varying too) whose direction offsets
                                      // texture coordinates: `normalize(TangentViewPos - TangentFragPos)`
+  bool operator==(const StageInputUse&) const = default;
 };
 
 struct NextStageFacts {
   std::string file;                 // the consuming stage, for the report
   bool linkByName = false;          // OpenGL GLSL: outputs match inputs by name, not by location
   std::vector<StageInputUse> inputs;
+  bool operator==(const NextStageFacts&) const = default;
 };
 
 }  // namespace stereoshift

@@ -1,38 +1,22 @@
-// The pass interface and what passes share: the context with its cached analyses (clip positions,
-// the folded copy) and the eye parameters. The shift itself is emitted by shift_emitter.h (so the
+// The pass interface and what passes share: the context (the module, its analysis manager, the run
+// record the passes fill) and the eye parameters. The eye parameters are declared and loaded by
+// eye_param_emitter.h and the shift emitted by shift_emitter.h, which every pass uses alike (so the
 // position and its halo copies are shifted by exactly the same instruction sequence, bit for bit).
 #pragma once
 
-#include "passes/analysis/clip_positions.h"
+#include "passes/analysis_manager.h"
 #include "passes/diagnostics.h"
 #include "passes/ir/module.h"
 #include "passes/next_stage_facts.h"
+#include "passes/run_record.h"
 #include "passes/shader.h"
-#include "passes/shift_emitter.h"
-
-#include <nlohmann/json.hpp>
 
 #include <memory>
 #include <optional>
-#include <vector>
 #include <string>
 #include <vector>
 
 namespace stereoshift {
-
-enum class PassResult { Unchanged, Changed, Failed };
-const char* toString(PassResult result);
-
-// Why a shader gets (or does not get) the shift; reported per shader.
-enum class Classification {
-  Perspective,      // last pre-rasterization stage writing a clip position: shifted
-  ConstantW1,       // every write of the position has the literal w = 1.0: 2D, nothing injected
-  AlreadyStereo,    // already carries the eye parameters: never shifted twice
-  Intermediate,     // pre-rasterization stage followed by a later one in its pipeline
-  NoPositionStage,  // tessellation control, fragment, compute, task: no clip position to shift
-  NoPositionOutput, // a pre-rasterization stage that writes no clip position
-};
-const char* toString(Classification c);
 
 // The eye parameters by index. The injected block's layout is fixed by index (member i at byte
 // offset 4*i from the first), so every shader of an application agrees on it whichever prefix it
@@ -66,60 +50,44 @@ struct EyeParams {
   std::string names[kEyeParamCount];            // final names after clash resolution
 };
 
-// The analyses a context computes on first request and keeps while they hold (SPIRV-Tools'
-// IRContext analyses, LLVM's analysis manager in miniature). A pass's registry entry declares which
-// it needs and which survive it; after a pass that changed the module the pass manager drops the
-// others, so the next request recomputes them on the module as it is then.
-enum Analysis : unsigned {
-  kClipPositionAnalysis = 1u << 0,  // clipPositions(): the position outputs, their pointers, mono values
-  kFoldedCopyAnalysis = 1u << 1,    // foldedCopy(): the inlined, constant-folded copy
+// What the back end will write, as far as a pass must know it: whether `precise` exists there, how
+// a single-pass mode can route the eye. Unresolved as asked for (Auto: the input's own language).
+struct PassOutput {
+  TargetLanguage language = TargetLanguage::Auto;
+  std::optional<int> version;
 };
-using AnalysisSet = unsigned;
-constexpr AnalysisSet kNoAnalyses = 0;
-constexpr AnalysisSet kAllAnalyses = kClipPositionAnalysis | kFoldedCopyAnalysis;
-const char* analysisName(Analysis analysis);
 
 struct PassContext {
-  PassContext(spirv::Module& module, const TranspileOptions& options, const SourceInfo& source, Diagnostics& diags,
-              std::string file, nlohmann::json& report)
-      : module(module), options(options), source(source), diags(diags), file(std::move(file)), report(report) {}
+  PassContext(spirv::Module& module, const PassOptions& options, const SourceInfo& source, Diagnostics& diags,
+              std::string file, AnalysisManager& analyses)
+      : module(module), options(options), source(source), diags(diags), file(std::move(file)), analyses(analyses) {}
 
   spirv::Module& module;
-  const TranspileOptions& options;
+  const PassOptions& options;
   const SourceInfo& source;
   Diagnostics& diags;
   std::string file;
-  nlohmann::json& report;  // passes add what they did under report["passes"][name()]
+  // The analyses of `module` (computed on first request; the pass manager drops those a pass that
+  // changed the module does not preserve).
+  AnalysisManager& analyses;
+  // What the run did and found: the pass manager records each pass's status, the passes their facts.
+  RunRecord record;
+  PassOutput output;
   // The module as the front end made it (null for SPIR-V input), so --validate-each blames a pass
   // only for validation errors the front end's module did not already have (see validateSpirv).
   const std::vector<uint32_t>* frontEndSpirv = nullptr;
 
-  // The clip-position outputs: clipPositions(*this).outputs(), kept here each time the analysis is
-  // computed for the passes that read them from the context (no pass adds or removes an output).
-  std::vector<ClipPosition> positions;
   // Filled by clip-position-detection.
   Classification classification = Classification::NoPositionOutput;
   // Whether the stereo-shift (and halo) passes shift the clip position: set by detection for a
   // perspective last stage, and by hud-at-depth for a 2D shader it places at depth.
   bool shiftPosition = false;
-  // Filled by eye-params.
+  // Filled by eye-params (or any pass that declared the parameters: ensureEyeParams).
   EyeParams eye;
   bool eyeDeclared = false;
-  // Set by transpilePipeline() for the last pre-rasterization stage: how the fragment stage uses
+  // Set by the driver for the last pre-rasterization stage of a pipeline: how the next stage uses
   // each of its inputs (per-eye-view decides per output from it). Null in single-shader mode.
   const NextStageFacts* nextStage = nullptr;
-
-  // ---- the analysis cache (read through clipPositions() and foldedCopy()) ----
-  std::optional<ClipPositionAnalysis> clipPositionCache;
-  // See foldedCopy(): the copy, and whether making it was tried (it stays null when the optimizer
-  // cannot process the module). A pipeline hands both on from an earlier analysis of the stage.
-  std::optional<spirv::Module> folded;
-  bool foldTried = false;
-
-  // Drops every cached analysis not in `kept` (after a pass changed the module).
-  void invalidateAnalyses(AnalysisSet kept);
-  // The analyses cached right now (for the tests and the pass manager's checks).
-  AnalysisSet cachedAnalyses() const;
 };
 
 class Pass {
@@ -138,36 +106,6 @@ std::unique_ptr<Pass> createPerEyeViewPass();
 std::unique_ptr<Pass> createDeferredUnprojectionPass();
 std::unique_ptr<Pass> createSinglePassStereoPass();
 
-// eyeSign in the single-pass modes (EyeSelect ViewIndex / InstanceIndex): appends the instructions
-// that derive it per view or instance (exactly -1.0 or +1.0) and returns the float id; see
-// single_pass_stereo_pass.cpp. emitLoadEyeParam calls it for eyeSign in those modes.
-uint32_t emitDerivedEyeSign(PassContext& context, std::vector<spirv::Instruction>& out);
-
-// The lowest OpenGL GLSL version a single-pass mode needs for this stage of an OpenGL (not Vulkan,
-// not ES) GLSL shader kept in GLSL, when the shader's own version is below it and no --target-version
-// was given (the output is then raised to it: desktop GLSL links stages of different versions);
-// nullopt otherwise, and for a shader using compatibility built-ins (SourceInfo; a raise would turn gl_Vertex,
-// gl_ModelViewProjectionMatrix, ... into stereoshift_* inputs and uniforms the application does not
-// set: that takes an explicit --target-version). `why` receives the reason. See
-// single_pass_stereo_pass.cpp.
-std::optional<int> singlePassRaisedGlslVersion(const SourceInfo& source, const TranspileOptions& options,
-                                               std::string* why);
-
-// Declares the eye parameters 0..count-1 (see EyeParam) if they are not declared yet, or extends
-// the declared ones up to `count`. Any pass that needs them calls this; the eye-params pass does so
-// for shaders that get the shift. False (with an error in ctx.diags) when they cannot be declared.
-bool ensureEyeParams(PassContext& context, int count);
-
-// An inlined, constant-folded throw-away copy of the module (SPIRV-Tools' performance passes), made
-// once per shader on first request and shared by the analyses that need to see through helper
-// functions and structs. Only used to answer questions, never emitted; global ids (variables) are
-// the module's own. Null when the optimizer cannot process the module.
-const spirv::Module* foldedCopy(PassContext& context);
-
-// The clip-position analysis of the module as it is now: computed on first request, cached until a
-// pass that changed the module does not preserve it (see Analysis).
-const ClipPositionAnalysis& clipPositions(PassContext& context);
-
 // Whether the module declares eyeSign next to separation (by the configured names): an earlier
 // stereoshift run or the application itself made it stereo already, and shifting or fixing it
 // again would double the parallax. Before this run injects anything, that is; see eyeDeclared.
@@ -179,12 +117,12 @@ bool carriesEyeParameters(const PassContext& context);
 // giving it a per-eye camera, would double the parallax.
 std::string alreadyStereoReason(const PassContext& context);
 
-// The highest Binding among the variables of descriptor set `set`. With `constantBuffersOnly` only
-// Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
-// onto the same binding numbers.
 // Whether bindings count per register class (D3D-style HLSL) rather than in one space (GLSL, SPIR-V,
 // HLSL with [[vk::binding]]).
 bool perClassRegisters(const SourceInfo& source);
+// The highest Binding among the variables of descriptor set `set`. With `constantBuffersOnly` only
+// Uniform-storage blocks count: HLSL registers are per class (b, t, s, u), glslang maps each class
+// onto the same binding numbers.
 std::optional<uint32_t> highestBinding(const spirv::Module& module, uint32_t set, bool constantBuffersOnly);
 
 }  // namespace stereoshift

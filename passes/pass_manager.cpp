@@ -2,9 +2,9 @@
 // (pass_registry.cpp); this file only runs them and looks after the analyses in between.
 #include "passes/pass_manager.h"
 
+#include "passes/analysis/stage_interface.h"
 #include "passes/ir/validate.h"
 #include "passes/pass_registry.h"
-#include "passes/per_eye_view_pass.h"
 
 namespace stereoshift {
 
@@ -13,13 +13,11 @@ namespace {
 // With --validate-each: a pass that changed the module must not have changed what a cached analysis
 // it declares preserved would say now; a wrong declaration would feed stale answers to later passes.
 bool preservedAnalysesHold(PassContext& ctx, const PassInfo& info) {
-  if ((info.preservedAnalyses & kClipPositionAnalysis) && ctx.clipPositionCache &&
-      !(*ctx.clipPositionCache == ClipPositionAnalysis(ctx.module))) {
-    ctx.diags.error(ctx.file, std::string("internal error: pass ") + info.name + " changed the " +
-                                  analysisName(kClipPositionAnalysis) + " analysis it declares preserved");
-    return false;
-  }
-  return true;
+  std::string stale = ctx.analyses.checkPreserved(info.preservedAnalyses);
+  if (stale.empty()) return true;
+  ctx.diags.error(ctx.file, std::string("internal error: pass ") + info.name + " changed the " + stale +
+                                " analysis it declares preserved");
+  return false;
 }
 
 }  // namespace
@@ -38,21 +36,20 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
   for (size_t i = 0; i < passes.size(); ++i) {
     const PassInfo& info = *passes[i];
     auto pass = info.create();
-    if (!requiredBy[i].empty()) ctx.report["passes"][info.name]["required_by"] = requiredBy[i];
     // The cheap analyses are made before the pass; the folded copy (an optimizer run, which most
     // passes never need on most shaders) on the pass's first request.
-    if (info.requiredAnalyses & kClipPositionAnalysis) clipPositions(ctx);
+    if (info.requiredAnalyses & kClipPositionAnalysis) ctx.analyses.clipPositions();
     int errorsBefore = ctx.diags.errorCount();
     PassResult result = pass->run(ctx);
     // An error reported from code the pass emits on the way (a helper that could not declare what
     // it needed) fails the conversion like a pass that says Failed: nothing half-made is written.
     if (result != PassResult::Failed && ctx.diags.errorCount() > errorsBefore) result = PassResult::Failed;
-    ctx.report["passes"][info.name]["result"] = toString(result);
+    ctx.record.passes.push_back({info.name, result, requiredBy[i]});
     if (result == PassResult::Failed) return false;
     if (result == PassResult::Changed) {
       *changed = true;
       if (ctx.options.validateEach && !preservedAnalysesHold(ctx, info)) return false;
-      ctx.invalidateAnalyses(info.preservedAnalyses);
+      ctx.analyses.invalidate(info.preservedAnalyses);
     }
     if (ctx.options.printAll && passLog)
       *passLog += "; IR after " + std::string(info.name) + " (" + toString(result) + ")\n" +
@@ -65,16 +62,13 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
   return true;
 }
 
-bool nextStageFactsMatter(const spirv::Module& shiftedStage, const TranspileOptions& options) {
+bool nextStageFactsMatter(const spirv::Module& shiftedStage, const PassOptions& options) {
   if (!options.perEyeView) return false;
   // per-eye-view looks no further than a module without a vector subtraction, unless it is told
   // the camera uniform (then it looks for that uniform's uses) or it passes a camera-like value on
   // as it is (`TangentViewPos = TBN * viewPos`: the next stage subtracts).
-  return !options.cameraUniform.empty() || hasVectorSubtraction(shiftedStage) || passesCameraCandidate(shiftedStage);
+  return !options.cameraUniform.empty() || analysis::hasVectorSubtraction(shiftedStage) ||
+         analysis::passesCameraCandidate(shiftedStage);
 }
-
-NextStageFacts analyseNextStage(PassContext& consumer) { return analyseStageInputs(consumer); }
-
-NextStageFacts carryNextStageFacts(PassContext& middle) { return carryStageFacts(middle); }
 
 }  // namespace stereoshift

@@ -6,6 +6,16 @@
 
 namespace stereoshift {
 
+namespace {
+
+// What survives a pass that only adds declarations or rewrites stores to outputs other than the
+// position: the clip position's pointers and values, the folded copy's answers about the
+// application's own values, how the stage uses its inputs. Not the value-flow and value-number
+// indexes, which point into the instruction lists the change moved.
+constexpr AnalysisSet kKeptByDeclarations = kClipPositionAnalysis | kFoldedCopyAnalysis | kStageInputAnalysis;
+
+}  // namespace
+
 const std::vector<PassInfo>& passRegistry() {
   static const std::vector<PassInfo> registry = {
       {"clip-position-detection", createClipPositionDetectionPass,
@@ -31,19 +41,21 @@ const std::vector<PassInfo>& passRegistry() {
        "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
        "reads it rewrites are only the application's own",
        {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis},
-      // Adds a declaration only: no output, no pointer to the position, no application value changes.
+      // Adds a declaration only: no output, no pointer to the position, no application value changes
+      // (but new globals: the value-flow and value-number indexes point into what moved).
       {"eye-params", createEyeParamsPass,
        "declares eyeSign, separation and convergence in a shader that gets the shift",
        "always (--eye-source chooses how)",
        "the shift and halo code load the parameters it declares",
-       {"clip-position-detection"}, kNoAnalyses, kAllAnalyses},
+       {"clip-position-detection"}, kNoAnalyses, kKeptByDeclarations},
       // Rewrites stores to other outputs only: the position's pointers and values stay as they were.
       {"halo", createHaloPass,
        "shifts outputs computed from the clip position (copies, screen UVs) like the position itself",
        "on (--no-halo turns it off)",
        "before the shift, while the only loads of the position are the application's own, so it sees "
        "exactly the values the application derived its outputs from",
-       {"clip-position-detection", "eye-params"}, kClipPositionAnalysis | kFoldedCopyAnalysis, kAllAnalyses},
+       {"clip-position-detection", "eye-params"}, kClipPositionAnalysis | kFoldedCopyAnalysis | kValueNumberAnalysis,
+       kKeptByDeclarations},
       // Loads the position and adds chains to it: new pointers and values, the analysis is stale.
       {"stereo-shift", createStereoShiftPass,
        "shifts the final clip position by eyeSign*separation*(w - convergence) at every return / emit",
@@ -60,12 +72,12 @@ const std::vector<PassInfo>& passRegistry() {
        "makes position reconstruction in deferred lighting per eye: InvM * vec4(ndc, depth, 1) and viewRay * depth",
        "on (--no-deferred-unprojection turns it off)",
        "independent of the shift, like per-eye-view; last, as it needs nothing the others decide",
-       {}, kNoAnalyses, kNoAnalyses},
+       {}, kValueFlowAnalysis, kNoAnalyses},
   };
   return registry;
 }
 
-bool passRunsFor(const PassInfo& info, const TranspileOptions& options) {
+bool passRunsFor(const PassInfo& info, const PassOptions& options) {
   if (std::string_view(info.name) == "single-pass-stereo") return options.eye.select != EyeSelect::Parameter;
   return true;
 }

@@ -30,7 +30,7 @@ const std::vector<PassInfo>& passRegistry();
 // Whether the full pipeline runs `info` for `options`: every pass runs (and reports) always, except
 // the opt-in modes' own passes, which a conversion without them never shows: single-pass-stereo
 // runs only for --eye-source multiview|instanced.
-bool passRunsFor(const PassInfo& info, const TranspileOptions& options);
+bool passRunsFor(const PassInfo& info, const PassOptions& options);
 // The entry named `name`, or null.
 const PassInfo* findPass(std::string_view name);
 // "clip-position-detection, hud-at-depth, ...": the valid --pass names, in pipeline order.

@@ -2,6 +2,7 @@
 // fused or compensated form, and the cutoff condition around it (see shift_emitter.h).
 #include "passes/shift_emitter.h"
 
+#include "passes/eye_param_emitter.h"
 #include "passes/pass.h"
 
 #include <glslang/SPIRV/GLSL.std.450.h>
@@ -10,7 +11,7 @@ namespace stereoshift {
 
 using spirv::Instruction;
 
-ShiftSpec makeShiftSpec(const TranspileOptions& options, bool preciseSupported) {
+ShiftSpec makeShiftSpec(const PassOptions& options, bool preciseSupported) {
   ShiftSpec spec;
   // A zero (or negative) epsilon is the driver's rule, w != 1: one name for one behaviour.
   spec.cutoff = options.cutoff == CutoffMode::Epsilon && options.cutoffEpsilon <= 0.0f ? CutoffMode::Exact
@@ -38,71 +39,23 @@ ShiftSpec shiftSpec(const PassContext& context) {
 }
 
 bool targetSupportsPrecise(const PassContext& context) {
-  TargetLanguage target = context.options.target;
+  TargetLanguage target = context.output.language;
   if (target == TargetLanguage::Auto) {
     switch (context.source.language) {
       case SourceLanguage::Hlsl: return true;
       case SourceLanguage::Spirv: return true;
       case SourceLanguage::Glsl: break;
     }
-    int version = context.options.targetVersion.value_or(context.source.version);
+    int version = context.output.version.value_or(context.source.version);
     if (context.source.vulkan) return true;
     return context.source.es ? version >= 320 : version >= 400;
   }
   switch (target) {
     case TargetLanguage::Spirv: case TargetLanguage::SpirvAsm: case TargetLanguage::Hlsl: return true;
-    case TargetLanguage::Glsl: return context.options.targetVersion.value_or(450) >= 400;
-    case TargetLanguage::Essl: return context.options.targetVersion.value_or(310) >= 320;
+    case TargetLanguage::Glsl: return context.output.version.value_or(450) >= 400;
+    case TargetLanguage::Essl: return context.output.version.value_or(310) >= 320;
     default: return false;
   }
-}
-
-namespace {
-
-// The load of a declared eye parameter from where eye-params put it.
-uint32_t emitLoadDeclaredEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
-  auto& m = context.module;
-  const EyeParams& eye = context.eye;
-  uint32_t floatType = m.typeFloat(32);
-  switch (eye.source) {
-    case EyeSource::SpecConstant:
-      return eye.specConstants[which];
-    case EyeSource::LooseUniforms: {
-      uint32_t value = m.takeId();
-      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{eye.looseVariables[which]});
-      return value;
-    }
-    case EyeSource::UniformBlock:
-    case EyeSource::PushConstant:
-    case EyeSource::Auto: {
-      auto storage = eye.source == EyeSource::PushConstant ? spv::StorageClassPushConstant
-                                                           : spv::StorageClassUniform;
-      uint32_t pointerType = m.typePointer(storage, floatType);
-      uint32_t index = m.constantInt(static_cast<int32_t>(eye.firstMember + which));
-      uint32_t pointer = m.takeId();
-      out.emplace_back(spv::OpAccessChain, pointerType, pointer, std::vector<uint32_t>{eye.variable, index});
-      uint32_t value = m.takeId();
-      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{pointer});
-      return value;
-    }
-  }
-  return 0;
-}
-
-}  // namespace
-
-uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, int which) {
-  if (context.options.eye.select == EyeSelect::Parameter) return emitLoadDeclaredEyeParam(context, out, which);
-  // Single-pass stereo: eyeSign comes from the view or the instance, not from a parameter; the eye
-  // offset, one value for both eyes, is the right eye's, scaled by the eye sign (it is e*S*C/P00
-  // along the camera's right axis, odd in e).
-  if (which == kEyeSign) return emitDerivedEyeSign(context, out);
-  uint32_t value = emitLoadDeclaredEyeParam(context, out, which);
-  if (which != kEyeOffsetX && which != kEyeOffsetY && which != kEyeOffsetZ) return value;
-  uint32_t sign = emitDerivedEyeSign(context, out);
-  uint32_t scaled = context.module.takeId();
-  out.emplace_back(spv::OpFMul, context.module.typeFloat(32), scaled, std::vector<uint32_t>{sign, value});
-  return scaled;
 }
 
 uint32_t emitStereoGuard(PassContext& context, std::vector<Instruction>& out, uint32_t eyeSign) {

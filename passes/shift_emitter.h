@@ -33,7 +33,7 @@ struct ShiftSpec {
 
 // The spec the options ask for. `preciseSupported`: whether the output language can express
 // NoContraction (see targetSupportsPrecise); names are the configured ones.
-ShiftSpec makeShiftSpec(const TranspileOptions& options, bool preciseSupported);
+ShiftSpec makeShiftSpec(const PassOptions& options, bool preciseSupported);
 
 // The spec of this conversion: the options, the target's `precise`, and the eye parameter names as
 // declared (after clash resolution) once eye-params has run.
@@ -42,11 +42,8 @@ ShiftSpec shiftSpec(const PassContext& context);
 // Whether the emitted language can express NoContraction (`precise`).
 bool targetSupportsPrecise(const PassContext& context);
 
-// Appends instructions to `out` that load eye parameter `which` (an EyeParam, declared through
-// ensureEyeParams) and returns the id of the loaded float.
-uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>& out, int which);
-
-// The two pieces every stereo fix is built from, for already loaded eye parameters.
+// The two pieces every stereo fix is built from, for already loaded eye parameters (loaded through
+// eye_param_emitter.h).
 // `eyeSign != 0` (unordered: only an exact zero is mono); the zero constant is made after the id.
 uint32_t emitStereoGuard(PassContext& context, std::vector<spirv::Instruction>& out, uint32_t eyeSign);
 // `eyeSign * separation`, NoContraction when `noContraction`.

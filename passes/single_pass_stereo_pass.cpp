@@ -1,20 +1,14 @@
 // single-pass-stereo: turns a mono shader into one that draws both eyes in one pass
 // (--eye-source multiview | instanced). The shift itself stays stereo-shift's; what changes is where
-// eyeSign comes from, and this file is the one place that says so (emitDerivedEyeSign, which
-// emitLoadEyeParam calls for eyeSign in these modes):
-//   multiview: the view index (gl_ViewIndex / gl_ViewID_OVR / SV_ViewID), view 0 the left eye;
-//   instanced: the low bit of the instance index in the vertex stage (the application doubles the
-//     instance count); every later stage reads the varying `stereoEye` the stage before it wrote (the
-//     fragment stage too, also for OpenGL multiview, where SPIRV-Cross writes gl_ViewID_OVR in vertex
-//     shaders only). Between pre-rasterization stages it is `stereoEyeStage`, through tessellation
-//     `patch out int stereoEyePatch` (every vertex of a patch comes from one instance); tessellation
-//     control and geometry stages read element 0 of their per-vertex input array.
+// eyeSign comes from, which passes/eye_select.h says (the view index, or the instance's low bit and
+// the `stereoEye` varyings that hand it on).
 // The pass itself checks that the output language can express the mode (refusing with the reason
 // and what to do instead), declares the view index of a multiview shader that gets the shift, and
 // in instanced mode rewrites the vertex shader: every use of the instance index reads the original
 // instance (`instance >> 1`), and the eye goes to the `stereoEye` varying and, from the stage that
 // rasterizes (vertex, tessellation evaluation or geometry), to the render-target layer or the
 // viewport index; the stages between hand it on.
+#include "passes/eye_select.h"
 #include "passes/pass.h"
 
 #include "passes/ir/replace_uses.h"
@@ -24,251 +18,6 @@ namespace stereoshift {
 using spirv::Instruction;
 
 namespace {
-
-bool glslOutput(TargetLanguage t) { return t == TargetLanguage::Glsl || t == TargetLanguage::Essl; }
-
-// The output language, as the back end will resolve it (Auto: the input's own).
-TargetLanguage outputLanguage(const PassContext& ctx) {
-  if (ctx.options.target != TargetLanguage::Auto) return ctx.options.target;
-  switch (ctx.source.language) {
-    case SourceLanguage::Hlsl: return TargetLanguage::Hlsl;
-    case SourceLanguage::Spirv: return TargetLanguage::Spirv;
-    case SourceLanguage::Glsl: return ctx.source.es ? TargetLanguage::Essl : TargetLanguage::Glsl;
-  }
-  return TargetLanguage::Glsl;
-}
-
-// Whether a GLSL/ESSL output has OpenGL (not Vulkan) semantics, as the back end decides it.
-bool openGlOutput(const PassContext& ctx, TargetLanguage target) {
-  if (!glslOutput(target)) return false;
-  bool es = target == TargetLanguage::Essl;
-  bool openGlVersion = ctx.options.targetVersion && *ctx.options.targetVersion < (es ? 310 : 400);
-  bool sameDialect = ctx.source.language == SourceLanguage::Glsl && es == ctx.source.es;
-  bool vulkan = ctx.source.vulkan && (sameDialect || ctx.source.language != SourceLanguage::Glsl) && !openGlVersion;
-  return !vulkan;
-}
-
-// The GLSL/ESSL version the output will have.
-int glslOutputVersion(const PassContext& ctx, TargetLanguage target) {
-  bool es = target == TargetLanguage::Essl;
-  bool sameDialect = ctx.source.language == SourceLanguage::Glsl && es == ctx.source.es;
-  return ctx.options.targetVersion.value_or(sameDialect ? ctx.source.version : (es ? 310 : 450));
-}
-
-const char* modeFlag(EyeSelect select) {
-  return select == EyeSelect::ViewIndex ? "--eye-source multiview" : "--eye-source instanced";
-}
-
-uint32_t builtInVariable(const spirv::Module& m, spv::BuiltIn builtIn) {
-  for (const auto& inst : m.typesValues)
-    if (inst.opcode == spv::OpVariable && m.decorationValue(inst.resultId, spv::DecorationBuiltIn) == uint32_t(builtIn))
-      return inst.resultId;
-  return 0;
-}
-
-void addExtension(spirv::Module& m, std::string_view name) {
-  for (const auto& inst : m.extensions)
-    if (inst.stringOperand(0) == name) return;
-  m.extensions.emplace_back(spv::OpExtension, 0, 0, spirv::encodeString(name));
-}
-
-// A fresh 32-bit int interface variable, named like the GLSL built-in so the emitted text reads as
-// the application's own would.
-uint32_t addIntVariable(spirv::Module& m, spv::StorageClass storage, std::string_view name, bool isSigned = true) {
-  uint32_t var = m.addGlobalVariable(m.typePointer(storage, m.typeInt(32, isSigned)), storage);
-  m.setName(var, name);
-  return var;
-}
-
-uint32_t ensureViewIndex(PassContext& ctx) {
-  auto& m = ctx.module;
-  if (uint32_t var = builtInVariable(m, spv::BuiltInViewIndex)) return var;
-  // OpenGL's gl_ViewID_OVR is a uint (Vulkan's gl_ViewIndex an int): SPIRV-Cross writes the GLSL
-  // built-in with the SPIR-V variable's type, so it must match for the comparison to compile.
-  TargetLanguage target = outputLanguage(ctx);
-  bool openGl = glslOutput(target) && openGlOutput(ctx, target);
-  uint32_t var = addIntVariable(m, spv::StorageClassInput, "gl_ViewIndex", !openGl);
-  m.decorate(var, spv::DecorationBuiltIn, {uint32_t(spv::BuiltInViewIndex)});
-  // An integer fragment input must be flat (Vulkan's rule for ViewIndex in the fragment stage).
-  if (m.executionModel() == spv::ExecutionModelFragment) m.decorate(var, spv::DecorationFlat);
-  m.addCapability(spv::CapabilityMultiView);
-  addExtension(m, "SPV_KHR_multiview");  // core from SPIR-V 1.3, still valid to name there
-  return var;
-}
-
-// The instance index the shader reads (gl_InstanceIndex, OpenGL's gl_InstanceID, HLSL's
-// SV_InstanceID), declared when it reads none: InstanceId for OpenGL GLSL, InstanceIndex elsewhere.
-uint32_t ensureInstanceIndex(PassContext& ctx) {
-  auto& m = ctx.module;
-  if (uint32_t var = builtInVariable(m, spv::BuiltInInstanceIndex)) return var;
-  if (uint32_t var = builtInVariable(m, spv::BuiltInInstanceId)) return var;
-  bool openGl = ctx.source.language == SourceLanguage::Glsl && !ctx.source.vulkan;
-  uint32_t var = addIntVariable(m, spv::StorageClassInput, openGl ? "gl_InstanceID" : "gl_InstanceIndex");
-  m.decorate(var, spv::DecorationBuiltIn, {uint32_t(openGl ? spv::BuiltInInstanceId : spv::BuiltInInstanceIndex)});
-  return var;
-}
-
-// Whether the per-vertex interface of this stage wraps `storage` variables in an outer array
-// (tessellation and geometry inputs, tessellation control outputs), which takes no locations.
-bool perVertexArrayed(const spirv::Module& m, spv::StorageClass storage, uint32_t variable) {
-  if (m.hasDecoration(variable, spv::DecorationPatch)) return false;
-  switch (m.executionModel()) {
-    case spv::ExecutionModelTessellationControl: return true;
-    case spv::ExecutionModelTessellationEvaluation:
-    case spv::ExecutionModelGeometry: return storage == spv::StorageClassInput;
-    default: return false;
-  }
-}
-
-// Whether an interface variable of `storage` already takes `location` (a clash with stereoEye): a
-// variable whose locations (a matrix, an array, a struct take several) cover it, or a block member
-// placed there.
-bool locationTaken(const spirv::Module& m, spv::StorageClass storage, uint32_t location, std::string* who) {
-  for (const auto& inst : m.typesValues) {
-    if (inst.opcode != spv::OpVariable || inst.operand(0) != uint32_t(storage)) continue;
-    uint32_t type = m.pointeeType(inst.typeId);
-    const Instruction* def = m.definition(type);
-    if (def && def->opcode == spv::OpTypeArray && perVertexArrayed(m, storage, inst.resultId)) {
-      type = def->operand(0);
-      def = m.definition(type);
-    }
-    if (auto first = m.decorationValue(inst.resultId, spv::DecorationLocation)) {
-      if (location >= *first && location < *first + spirv::interfaceLocationCount(m, type)) {
-        *who = m.name(inst.resultId);
-        return true;
-      }
-      continue;
-    }
-    if (!def || def->opcode != spv::OpTypeStruct) continue;
-    for (uint32_t member = 0; member < def->operands.size(); ++member)
-      if (auto first = m.memberDecorationValue(type, member, spv::DecorationLocation);
-          first && location >= *first && location < *first + spirv::interfaceLocationCount(m, def->operands[member])) {
-        *who = m.name(inst.resultId) + "." + m.memberName(type, member);
-        return true;
-      }
-  }
-  return false;
-}
-
-// How the eye varying is declared in this stage, for `storage`: per vertex in an array (the inputs
-// of tessellation control and geometry shaders), per patch (tessellation control out, evaluation
-// in), or a plain int, flat where it feeds or is the fragment stage's interpolated input.
-struct EyeVaryingShape {
-  uint32_t arrayLength = 0;  // 0: not an array
-  bool patch = false;
-  bool flat = false;
-};
-
-// The vertex count of a geometry shader's input primitive (the length of its per-vertex arrays).
-uint32_t geometryInputVertices(const spirv::Module& m) {
-  for (const auto& inst : m.executionModes) {
-    switch (inst.operand(1)) {
-      case spv::ExecutionModeInputPoints: return 1;
-      case spv::ExecutionModeInputLines: return 2;
-      case spv::ExecutionModeInputLinesAdjacency: return 4;
-      case spv::ExecutionModeTriangles: return 3;
-      case spv::ExecutionModeInputTrianglesAdjacency: return 6;
-      default: break;
-    }
-  }
-  return 3;
-}
-
-// The length glslang gives the per-vertex input arrays of a tessellation control shader (that of
-// gl_in, gl_MaxPatchVertices when unsized): taken from an input array already declared, else 32.
-uint32_t tessControlInputLength(const spirv::Module& m) {
-  for (const auto& inst : m.typesValues) {
-    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassInput) continue;
-    const Instruction* type = m.definition(m.pointeeType(inst.typeId));
-    if (type && type->opcode == spv::OpTypeArray)
-      if (const Instruction* length = m.definition(type->operand(1)); length && length->opcode == spv::OpConstant)
-        return length->operand(0);
-  }
-  return 32;
-}
-
-EyeVaryingShape eyeVaryingShape(const spirv::Module& m, spv::StorageClass storage) {
-  bool input = storage == spv::StorageClassInput;
-  switch (m.executionModel()) {
-    case spv::ExecutionModelTessellationControl:
-      return input ? EyeVaryingShape{tessControlInputLength(m), false, false} : EyeVaryingShape{0, true, false};
-    case spv::ExecutionModelTessellationEvaluation:
-      return input ? EyeVaryingShape{0, true, false} : EyeVaryingShape{0, false, true};
-    case spv::ExecutionModelGeometry:
-      return input ? EyeVaryingShape{geometryInputVertices(m), false, false} : EyeVaryingShape{0, false, true};
-    default:  // vertex out, fragment in
-      return EyeVaryingShape{0, false, true};
-  }
-}
-
-// The name of the eye varying on one side of a stage: `stereoEye` (--eye-varying-name) into the
-// fragment stage, `stereoEyeStage` between two pre-rasterization stages, `stereoEyePatch` per patch.
-// OpenGL below GLSL 410 matches varyings by name, and a stage's input and output cannot share one.
-std::string eyeVaryingName(const PassContext& ctx, spv::StorageClass storage) {
-  const std::string& base = ctx.options.eye.eyeVaryingName;
-  bool input = storage == spv::StorageClassInput;
-  bool feedsStage = ctx.classification == Classification::Intermediate;
-  switch (ctx.module.executionModel()) {
-    case spv::ExecutionModelVertex: return feedsStage ? base + "Stage" : base;
-    case spv::ExecutionModelTessellationControl: return input ? base + "Stage" : base + "Patch";
-    case spv::ExecutionModelTessellationEvaluation: return input ? base + "Patch" : feedsStage ? base + "Stage" : base;
-    case spv::ExecutionModelGeometry: return input ? base + "Stage" : base;
-    default: return base;
-  }
-}
-
-// The eye varying of this stage (`storage` Input: what the stage before wrote, Output: what this
-// stage hands on), declared on first use at --eye-varying-location. 0 (with an error) when another
-// variable already takes the location.
-uint32_t ensureEyeVarying(PassContext& ctx, spv::StorageClass storage) {
-  auto& m = ctx.module;
-  const auto& o = ctx.options.eye;
-  const std::string name = eyeVaryingName(ctx, storage);
-  for (const auto& inst : m.typesValues)
-    if (inst.opcode == spv::OpVariable && inst.operand(0) == uint32_t(storage) && m.name(inst.resultId) == name &&
-        m.decorationValue(inst.resultId, spv::DecorationLocation) == o.eyeVaryingLocation)
-      return inst.resultId;
-  std::string who;
-  if (locationTaken(m, storage, o.eyeVaryingLocation, &who)) {
-    ctx.diags.error(ctx.file, std::string(modeFlag(o.select)) + ": " + (storage == spv::StorageClassInput ? "input" : "output") + " location " +
-                                  std::to_string(o.eyeVaryingLocation) + " of the eye varying '" + name +
-                                  "' is taken by '" + (who.empty() ? std::string("an unnamed variable") : who) +
-                                  "'; choose a location free in every stage with --eye-varying-location");
-    return 0;
-  }
-  EyeVaryingShape shape = eyeVaryingShape(m, storage);
-  uint32_t type = m.typeInt(32, true);
-  if (shape.arrayLength) type = m.typeArray(type, shape.arrayLength);
-  uint32_t var = m.addGlobalVariable(m.typePointer(storage, type), storage);
-  m.setName(var, name);
-  if (shape.flat) m.decorate(var, spv::DecorationFlat);
-  if (shape.patch) m.decorate(var, spv::DecorationPatch);
-  m.decorate(var, spv::DecorationLocation, {o.eyeVaryingLocation});
-  return var;
-}
-
-uint32_t emitLoad(spirv::Module& m, std::vector<Instruction>& out, uint32_t variable) {
-  uint32_t value = m.takeId();
-  out.emplace_back(spv::OpLoad, m.pointeeType(m.definition(variable)->typeId), value, std::vector<uint32_t>{variable});
-  return value;
-}
-
-// `instance & 1`: the eye of an instanced-stereo vertex (0 for instances 0, 2, 4, ...).
-uint32_t emitInstanceEyeBit(PassContext& ctx, std::vector<Instruction>& out) {
-  auto& m = ctx.module;
-  uint32_t variable = ensureInstanceIndex(ctx);
-  uint32_t type = m.pointeeType(m.definition(variable)->typeId);  // int, or uint for HLSL's SV_InstanceID
-  uint32_t instance = emitLoad(m, out, variable);
-  uint32_t bit = m.takeId();
-  out.emplace_back(spv::OpBitwiseAnd, type, bit, std::vector<uint32_t>{instance, m.constantInt(1)});
-  const Instruction* typeDef = m.definition(type);
-  if (typeDef && typeDef->operand(1) == 0) {  // HLSL's `uint id : SV_InstanceID`: the layer is an int
-    uint32_t asInt = m.takeId();
-    out.emplace_back(spv::OpBitcast, m.typeInt(32, true), asInt, std::vector<uint32_t>{bit});
-    bit = asInt;
-  }
-  return bit;
-}
 
 // Whether this pre-rasterization stage is the one that rasterizes (the last of its pipeline), 2D
 // ones included: instanced mode draws each twice per instance, so each routes its eye whether it
@@ -331,10 +80,10 @@ bool checkTarget(PassContext& ctx) {
       return refuse("a geometry shader writes gl_ViewportIndex from GLSL 410 (this output is " + std::to_string(version) +
                     "); add --target-version 410, or use --eye-route layer (gl_Layer, GLSL 150)");
   }
-  if (select == EyeSelect::ViewIndex && target == TargetLanguage::Hlsl && ctx.options.targetVersion &&
-      *ctx.options.targetVersion < 61)
+  if (select == EyeSelect::ViewIndex && target == TargetLanguage::Hlsl && ctx.output.version &&
+      *ctx.output.version < 61)
     return refuse("SV_ViewID needs shader model 6.1 (this is --target-version " +
-                  std::to_string(*ctx.options.targetVersion) + "); drop --target-version or give 61 or later");
+                  std::to_string(*ctx.output.version) + "); drop --target-version or give 61 or later");
   return true;
 }
 
@@ -407,28 +156,13 @@ int rewriteInstanceReads(PassContext& ctx, uint32_t instanceVariable) {
 
 // Declares this stage's `stereoEye` output that hands the eye on (to the fragment stage, or to the
 // next pre-rasterization stage); 0 (with an error) when its location is taken.
-uint32_t declareEyeVaryingOutput(PassContext& ctx, nlohmann::json& report) {
-  const auto& o = ctx.options.eye;
+uint32_t declareEyeVaryingOutput(PassContext& ctx) {
   uint32_t varying = ensureEyeVarying(ctx, spv::StorageClassOutput);
-  if (varying) report["eye_varying"] = {{"name", eyeVaryingName(ctx, spv::StorageClassOutput)}, {"location", o.eyeVaryingLocation}};
+  if (varying) {
+    ctx.record.singlePass.eyeVaryingName = eyeVaryingName(ctx, spv::StorageClassOutput);
+    ctx.record.singlePass.eyeVaryingLocation = ctx.options.eye.eyeVaryingLocation;
+  }
   return varying;
-}
-
-// Loads the eye the stage before wrote into this stage's `stereoEye` input (element 0 of a
-// per-vertex array: every vertex of a primitive or patch comes from one instance). 0 on a location clash.
-uint32_t emitLoadHandedOnEye(PassContext& ctx, std::vector<Instruction>& out) {
-  auto& m = ctx.module;
-  uint32_t input = ensureEyeVarying(ctx, spv::StorageClassInput);
-  if (!input) return 0;
-  const Instruction* type = m.definition(m.pointeeType(m.definition(input)->typeId));
-  if (!type || type->opcode != spv::OpTypeArray) return emitLoad(m, out, input);
-  uint32_t element = type->operand(0);
-  uint32_t pointer = m.takeId();
-  out.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassInput, element), pointer,
-                   std::vector<uint32_t>{input, m.constantInt(0)});
-  uint32_t value = m.takeId();
-  out.emplace_back(spv::OpLoad, element, value, std::vector<uint32_t>{pointer});
-  return value;
 }
 
 // Inserts `code` at the start of the entry point (after its function variables).
@@ -501,7 +235,7 @@ uint32_t declareEyeRouteTarget(PassContext& ctx) {
 // Instanced: the eye (the instance's low bit in the vertex stage, the handed-on varying after it)
 // goes to the `stereoEye` output and, in the stage that rasterizes, to the layer or viewport index:
 // at the start of the entry point, or before every emit of a geometry shader.
-bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
+bool routeInstancedEye(PassContext& ctx) {
   auto& m = ctx.module;
   const auto& o = ctx.options.eye;
   spv::ExecutionModel model = m.executionModel();
@@ -513,7 +247,7 @@ bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
                                   "(try --eye-route " + (layer ? "viewport" : "layer") + ")");
     return false;
   }
-  uint32_t varying = declareEyeVaryingOutput(ctx, report);
+  uint32_t varying = declareEyeVaryingOutput(ctx);
   if (!varying) return false;
   uint32_t target = rasterizes ? declareEyeRouteTarget(ctx) : 0;
   if (rasterizes && !target) return false;
@@ -530,21 +264,21 @@ bool routeInstancedEye(PassContext& ctx, nlohmann::json& report) {
     return code;
   };
   if (model == spv::ExecutionModelGeometry) {
-    report["emits_routed"] = insertBeforeEachEmit(m, storeEye);
+    ctx.record.singlePass.emitsRouted = insertBeforeEachEmit(m, storeEye);
   } else {
     prependToEntry(m, storeEye());
   }
   if (failed) return false;
-  if (target) report["eye_written_to"] = layer ? "layer" : "viewport";
-  else report["eye_handed_on"] = true;
+  if (target) ctx.record.singlePass.eyeWrittenTo = layer ? "layer" : "viewport";
+  else ctx.record.singlePass.eyeHandedOn = true;
   return true;
 }
 
 // OpenGL multiview: SPIRV-Cross writes gl_ViewID_OVR in vertex shaders only, so the vertex stage
 // hands the view on to the fragment stage's per-eye fixes as `stereoEye`, as instanced mode does.
-bool handOnViewIndex(PassContext& ctx, nlohmann::json& report) {
+bool handOnViewIndex(PassContext& ctx) {
   auto& m = ctx.module;
-  uint32_t varying = declareEyeVaryingOutput(ctx, report);
+  uint32_t varying = declareEyeVaryingOutput(ctx);
   if (!varying) return false;
   std::vector<Instruction> code;
   uint32_t viewIndex = ensureViewIndex(ctx);
@@ -559,19 +293,8 @@ bool handOnViewIndex(PassContext& ctx, nlohmann::json& report) {
   prependToEntry(m, code);
   // GL_OVR_multiview lets only gl_Position depend on the view; this output does (and the shifted
   // halo outputs may), which GL_OVR_multiview2, the extension SPIRV-Cross declares, allows.
-  report["requires"] = "GL_OVR_multiview2 (plain GL_OVR_multiview lets only gl_Position depend on the view)";
+  ctx.record.singlePass.requiredExtension = "GL_OVR_multiview2 (plain GL_OVR_multiview lets only gl_Position depend on the view)";
   return true;
-}
-
-// Whether this stage reads the eye from the `stereoEye` varying rather than a built-in: every stage
-// after the vertex stage in instanced mode, the fragment stage of OpenGL multiview.
-bool eyeFromVarying(const PassContext& ctx) {
-  spv::ExecutionModel model = ctx.module.executionModel();
-  if (ctx.options.eye.select == EyeSelect::InstanceIndex)
-    return model != spv::ExecutionModelVertex;
-  if (model != spv::ExecutionModelFragment) return false;
-  TargetLanguage target = outputLanguage(ctx);
-  return glslOutput(target) && openGlOutput(ctx, target);
 }
 
 class SinglePassStereoPass final : public Pass {
@@ -581,8 +304,7 @@ class SinglePassStereoPass final : public Pass {
   PassResult run(PassContext& ctx) override {
     const EyeSelect select = ctx.options.eye.select;
     if (select == EyeSelect::Parameter) return PassResult::Unchanged;
-    auto& report = ctx.report["passes"][name()];
-    report["mode"] = select == EyeSelect::ViewIndex ? "multiview" : "instanced";
+    ctx.record.singlePass.mode = select == EyeSelect::ViewIndex ? "multiview" : "instanced";
     if (ctx.classification == Classification::AlreadyStereo) return PassResult::Unchanged;
     if (!checkTarget(ctx)) return PassResult::Failed;
     auto& m = ctx.module;
@@ -590,7 +312,7 @@ class SinglePassStereoPass final : public Pass {
     if (select == EyeSelect::ViewIndex) {
       TargetLanguage target = outputLanguage(ctx);
       if (model == spv::ExecutionModelVertex && rasterizingStage(ctx) && glslOutput(target) && openGlOutput(ctx, target)) {
-        if (!handOnViewIndex(ctx, report)) return PassResult::Failed;
+        if (!handOnViewIndex(ctx)) return PassResult::Failed;
         return PassResult::Changed;
       }
       // Declared here for a shader that gets the shift (fixes of other stages declare it on use).
@@ -606,63 +328,14 @@ class SinglePassStereoPass final : public Pass {
       uint32_t instance = ensureInstanceIndex(ctx);
       int rewritten = rewriteInstanceReads(ctx, instance);
       if (rewritten < 0) return PassResult::Failed;
-      report["instance_reads_rewritten"] = rewritten;
+      ctx.record.singlePass.instanceReadsRewritten = rewritten;
     }
-    if (!routeInstancedEye(ctx, report)) return PassResult::Failed;
+    if (!routeInstancedEye(ctx)) return PassResult::Failed;
     return PassResult::Changed;
   }
 };
 
 }  // namespace
-
-uint32_t emitDerivedEyeSign(PassContext& ctx, std::vector<Instruction>& out) {
-  auto& m = ctx.module;
-  uint32_t eye = 0;  // an int that is 0 for the first eye (view 0, even instances)
-  if (eyeFromVarying(ctx)) {
-    eye = emitLoadHandedOnEye(ctx, out);
-    if (!eye) eye = m.constantInt(0);  // the location clash is reported; the conversion fails
-  } else if (ctx.options.eye.select == EyeSelect::ViewIndex) {
-    eye = emitLoad(m, out, ensureViewIndex(ctx));
-  } else {
-    eye = emitInstanceEyeBit(ctx, out);
-  }
-  uint32_t second = m.takeId();
-  out.emplace_back(spv::OpINotEqual, m.typeBool(), second, std::vector<uint32_t>{eye, m.constantInt(0)});
-  // Exactly -1 and +1, the values a two-pass draw sets: the shift is the same arithmetic, bit for bit.
-  float secondSign = ctx.options.eye.swapEyes ? -1.0f : 1.0f;
-  uint32_t sign = m.takeId();
-  out.emplace_back(spv::OpSelect, m.typeFloat(32), sign,
-                   std::vector<uint32_t>{second, m.constantFloat(secondSign), m.constantFloat(-secondSign)});
-  return sign;
-}
-
-std::optional<int> singlePassRaisedGlslVersion(const SourceInfo& source, const TranspileOptions& options,
-                                               std::string* why) {
-  const auto& eye = options.eye;
-  if (eye.select == EyeSelect::Parameter || options.targetVersion || source.compatibilityBuiltIns) return std::nullopt;
-  bool keptAsGlsl = options.target == TargetLanguage::Auto || options.target == TargetLanguage::Glsl;
-  if (source.language != SourceLanguage::Glsl || source.es || source.vulkan || !keptAsGlsl) return std::nullopt;
-  bool last = options.shiftThisStage;  // the stage that rasterizes
-  int needed = 0;
-  if (eye.select == EyeSelect::ViewIndex) {
-    if (source.stage == Stage::Vertex) {
-      needed = 330;
-      *why = "GL_OVR_multiview2 needs GLSL 330";
-    }
-  } else if ((source.stage == Stage::Vertex || source.stage == Stage::TessEvaluation) && last) {
-    needed = 410;
-    *why = "the eye is written to gl_Layer / gl_ViewportIndex from this stage through "
-           "GL_ARB_shader_viewport_layer_array, which needs GLSL 410";
-  } else if (source.stage == Stage::Vertex) {
-    needed = 330;
-    *why = "the eye is handed to the next stage as a flat int varying";
-  } else if (source.stage == Stage::Geometry && eye.route == EyeRoute::Viewport) {
-    needed = 410;
-    *why = "a geometry shader writes gl_ViewportIndex from GLSL 410";
-  }
-  if (!needed || source.version >= needed) return std::nullopt;
-  return needed;
-}
 
 std::unique_ptr<Pass> createSinglePassStereoPass() { return std::make_unique<SinglePassStereoPass>(); }
 

@@ -5,6 +5,7 @@
 // has no such point (each invocation writes any vertices of the per-vertex output array, in any
 // order): there the value of every store of a whole clip position is shifted instead.
 #include "passes/pass.h"
+#include "passes/shift_emitter.h"
 
 #include <optional>
 
@@ -22,14 +23,14 @@ class StereoShiftPass final : public Pass {
   PassResult run(PassContext& ctx) override {
     if (!ctx.shiftPosition) return PassResult::Unchanged;
     auto& m = ctx.module;
-    auto& report = ctx.report["passes"][name()];
-    const std::vector<ClipPosition>& positions = clipPositions(ctx).outputs();
+    ShiftFacts& facts = ctx.record.shift;
+    const std::vector<ClipPosition>& positions = ctx.analyses.clipPositions().outputs();
     if (!ctx.eyeDeclared) {
       ctx.diags.error(ctx.file, "stereo-shift needs the eye-params pass to run first");
       return PassResult::Failed;
     }
     spv::ExecutionModel model = m.executionModel();
-    if (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV) return shiftMeshStores(ctx, report);
+    if (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV) return shiftMeshStores(ctx, facts);
     for (const auto& p : positions)
       if (p.arrayed) {
         ctx.diags.error(ctx.file, "per-vertex clip-position arrays are not supported in this stage");
@@ -65,8 +66,8 @@ class StereoShiftPass final : public Pass {
           m.decorate(p.variable, spv::DecorationInvariant);
       }
     m.invalidateDefinitions();
-    report["sites"] = sites;
-    report["form"] = ctx.options.shiftForm == ShiftForm::Branch ? "branch" : "select";
+    facts.sites = sites;
+    facts.form = ctx.options.shiftForm == ShiftForm::Branch ? "branch" : "select";
     if (sites == 0) {
       ctx.diags.warning(ctx.file, geometry ? "geometry shader emits no vertex: nothing shifted"
                                            : "entry point has no return: nothing shifted");
@@ -108,9 +109,9 @@ class StereoShiftPass final : public Pass {
   // the eye guard in select form, as the other per-value shifts). A shader that reads a position
   // back, writes part of one, or moves whole vertices is refused: a read-back would see (and a
   // later store would shift again) the shifted value.
-  PassResult shiftMeshStores(PassContext& ctx, nlohmann::json& report) {
+  PassResult shiftMeshStores(PassContext& ctx, ShiftFacts& facts) {
     auto& m = ctx.module;
-    const std::vector<ClipPosition>& positions = clipPositions(ctx).outputs();
+    const std::vector<ClipPosition>& positions = ctx.analyses.clipPositions().outputs();
     int sites = 0;
     auto refuse = [&](const std::string& why) {
       ctx.diags.error(ctx.file, "mesh shader " + why + ": only stores of whole vertex positions "
@@ -156,8 +157,8 @@ class StereoShiftPass final : public Pass {
           }
         }
     m.invalidateDefinitions();
-    report["sites"] = sites;
-    report["form"] = "select";
+    facts.sites = sites;
+    facts.form = "select";
     if (sites == 0) {
       ctx.diags.warning(ctx.file, "mesh shader writes no vertex position: nothing shifted");
       return PassResult::Unchanged;
@@ -177,7 +178,7 @@ class StereoShiftPass final : public Pass {
   // into [head | then | rest]; false when the code went inline (select form, loop header).
   bool insertShift(PassContext& ctx, spirv::Function& fn, size_t bi, size_t at) {
     auto& m = ctx.module;
-    const std::vector<ClipPosition>& positions = clipPositions(ctx).outputs();
+    const std::vector<ClipPosition>& positions = ctx.analyses.clipPositions().outputs();
     uint32_t f = m.typeFloat(32);
     uint32_t v4 = m.typeVector(f, 4);
     bool loopHeader = fn.blocks[bi].mergeInstruction() &&

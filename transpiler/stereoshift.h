@@ -3,6 +3,7 @@
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,7 +21,9 @@ struct TranspileResult {
   std::string output;            // text, or the bytes of a SPIR-V binary
   bool binaryOutput = false;
   Diagnostics diagnostics;
-  nlohmann::json report;         // classification, passes and what they did, timings
+  SourceInfo source;             // what the front end found about the input
+  StageRecord record;            // what the driver decided and what each part did (typed)
+  nlohmann::json report;         // the record rendered (renderStageReport), for --report and build
   std::vector<std::string> includedFiles;
   std::string passLog;           // --print-all output
   std::vector<uint32_t> originalSpirv;  // the input as the front end made it, before any pass

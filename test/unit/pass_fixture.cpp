@@ -2,7 +2,7 @@
 #include "test/unit/pass_fixture.h"
 
 #include "passes/pass_manager.h"
-#include "passes/pass_registry.h"
+#include "transpiler/report.h"
 
 namespace stereoshift::test {
 
@@ -33,22 +33,17 @@ SinglePassRun runSinglePass(const std::string& assembly, const std::string& pass
   source.vulkan = true;
   source.entryPoint = module.entryPointName();
   Diagnostics diags;
-  nlohmann::json report;
   options.onlyPasses = {pass};
-  PassContext context{module, options, source, diags, "test.spv", report};
+  AnalysisManager analyses(module, source, "test.spv");
+  PassContext context{module, options, source, diags, "test.spv", analyses};
   bool changed = false;
   run.ok = runPassPipeline(context, &changed, nullptr);
   run.disassembly = spirv::disassemble(module.encode());
-  run.report = report;
+  run.record = context.record;
+  run.report["passes"] = renderPassReport(context.record);
   run.diagnostics = diags.format();
-  if (report.contains("passes")) {
-    // The report's keys are sorted; the registry's order is the order the passes ran in.
-    for (const auto& info : passRegistry())
-      if (report["passes"].contains(info.name) && report["passes"][info.name].contains("result"))
-        run.ran.push_back(info.name);
-    std::string result = report["passes"].value(pass, nlohmann::json::object()).value("result", "");
-    run.result = result == "changed" ? PassResult::Changed : result == "unchanged" ? PassResult::Unchanged : PassResult::Failed;
-  }
+  for (const auto& status : context.record.passes) run.ran.push_back(status.name);
+  if (const PassStatus* status = context.record.status(pass)) run.result = status->result;
   return run;
 }
 

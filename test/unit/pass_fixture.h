@@ -1,7 +1,7 @@
 // The single-pass test fixture (in the spirit of SPIRV-Tools' SinglePassRunAndCheck): SPIR-V
 // assembly in, exactly one pass run through the pass manager (plus the passes it requires, as
 // `--pass NAME` does), and the disassembly, the pass's Changed / Unchanged result, the report and
-// the diagnostics out for the test to check.
+// the diagnostics out for the test to check (typed, and as the report renders them).
 #pragma once
 
 #include "passes/pass.h"
@@ -18,7 +18,8 @@ struct SinglePassRun {
   bool ok = false;                   // the pipeline ran to the end (no pass failed)
   PassResult result = PassResult::Failed;  // what the named pass returned
   std::string disassembly;           // the module afterwards (friendly names)
-  nlohmann::json report;             // report["passes"][name] for every pass that ran
+  RunRecord record;                  // what each pass that ran did and found
+  nlohmann::json report;             // the record as the report renders it: report["passes"][name]
   std::string diagnostics;           // every diagnostic, one per line
   std::vector<std::string> ran;      // the passes that ran, in the order they ran
 };

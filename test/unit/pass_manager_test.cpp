@@ -50,8 +50,8 @@ TEST(PassSelection, PullsInRequiredPassesInPipelineOrder) {
   EXPECT_EQ(requiredBy, (std::vector<std::string>{"halo", "", ""}));
 }
 
-// Runs `--pass names` on `assembly` and returns which analyses the context holds afterwards.
-AnalysisSet cachedAfter(const std::string& assembly, std::vector<std::string> names, const ClipPositionAnalysis** seen = nullptr) {
+// Runs `--pass names` on `assembly` and returns which analyses the manager holds afterwards.
+AnalysisSet cachedAfter(const std::string& assembly, std::vector<std::string> names) {
   std::vector<uint32_t> words = spirv::assemble(assembly, nullptr);
   words[1] = 0x00010000;
   auto module = spirv::Module::parse(words, nullptr);
@@ -60,42 +60,97 @@ AnalysisSet cachedAfter(const std::string& assembly, std::vector<std::string> na
   SourceInfo source;
   source.language = SourceLanguage::Spirv;
   Diagnostics diags;
-  nlohmann::json report;
-  PassContext context{*module, options, source, diags, "test.spv", report};
+  AnalysisManager analyses(*module, source, "test.spv");
+  PassContext context{*module, options, source, diags, "test.spv", analyses};
   bool changed = false;
   EXPECT_TRUE(runPassPipeline(context, &changed, nullptr)) << diags.format();
-  if (seen) *seen = context.clipPositionCache ? &*context.clipPositionCache : nullptr;
-  return context.cachedAnalyses();
+  return analyses.cached();
 }
 
-TEST(AnalysisCache, KeptByPassesThatPreserveThemDroppedByOthers) {
+TEST(AnalysisManager, KeptByPassesThatPreserveThemDroppedByOthers) {
   // Detection makes the clip-position analysis (and the folded copy only where it cannot decide
   // without); eye-params changes the module but preserves it.
   EXPECT_EQ(cachedAfter(perspectiveVertexShader(false), {"eye-params"}), kClipPositionAnalysis);
   EXPECT_EQ(cachedAfter(flatVertexShader(), {"eye-params"}), kClipPositionAnalysis);
   // stereo-shift adds loads of and chains to the position: the clip-position analysis is dropped.
   EXPECT_EQ(cachedAfter(perspectiveVertexShader(false), {"stereo-shift"}) & kClipPositionAnalysis, kNoAnalyses);
+  // halo numbers the module's values and then rewrites stores: the value numbers go with it.
+  EXPECT_EQ(cachedAfter(perspectiveVertexShader(true), {"halo"}) & kValueNumberAnalysis, kNoAnalyses);
 }
 
-TEST(AnalysisCache, ComputedOnceAndInvalidatedOnRequest) {
-  std::vector<uint32_t> words = spirv::assemble(perspectiveVertexShader(true), nullptr);
-  words[1] = 0x00010000;  // the optimizer behind the folded copy takes SPIR-V 1.0
-  auto module = spirv::Module::parse(words, nullptr);
-  TranspileOptions options;
+struct ManagedModule {
+  explicit ManagedModule(const std::string& assembly) {
+    std::vector<uint32_t> words = spirv::assemble(assembly, nullptr);
+    words[1] = 0x00010000;  // the optimizer behind the folded copy takes SPIR-V 1.0
+    module = *spirv::Module::parse(words, nullptr);
+    source.language = SourceLanguage::Spirv;
+  }
+  spirv::Module module;
   SourceInfo source;
-  Diagnostics diags;
-  nlohmann::json report;
-  PassContext context{*module, options, source, diags, "test.spv", report};
-  EXPECT_EQ(context.cachedAnalyses(), kNoAnalyses);
-  const ClipPositionAnalysis* first = &clipPositions(context);
-  EXPECT_EQ(&clipPositions(context), first);
-  EXPECT_EQ(context.positions, first->outputs());
-  ASSERT_NE(foldedCopy(context), nullptr);
-  EXPECT_EQ(context.cachedAnalyses(), kAllAnalyses);
-  context.invalidateAnalyses(kFoldedCopyAnalysis);
-  EXPECT_EQ(context.cachedAnalyses(), kFoldedCopyAnalysis);
-  context.invalidateAnalyses(kNoAnalyses);
-  EXPECT_EQ(context.cachedAnalyses(), kNoAnalyses);
+};
+
+TEST(AnalysisManager, ComputedOnceAndInvalidatedOnRequest) {
+  ManagedModule m(perspectiveVertexShader(true));
+  AnalysisManager analyses(m.module, m.source, "test.spv");
+  EXPECT_EQ(analyses.cached(), kNoAnalyses);
+  const ClipPositionAnalysis* first = &analyses.clipPositions();
+  EXPECT_EQ(&analyses.clipPositions(), first);
+  const spirv::Module* folded = analyses.foldedCopy();
+  ASSERT_NE(folded, nullptr);
+  EXPECT_EQ(analyses.foldedCopy(), folded);
+  EXPECT_EQ(&analyses.valueFlow(), &analyses.valueFlow());
+  EXPECT_EQ(&analyses.valueNumbers(), &analyses.valueNumbers());
+  const NextStageFacts* inputs = &analyses.stageInputUses();
+  EXPECT_EQ(&analyses.stageInputUses(), inputs);
+  EXPECT_EQ(analyses.cached(), kAllAnalyses);
+  analyses.invalidate(kFoldedCopyAnalysis | kValueFlowAnalysis);
+  EXPECT_EQ(analyses.cached(), kFoldedCopyAnalysis | kValueFlowAnalysis);
+  EXPECT_EQ(analyses.foldedCopy(), folded);  // kept: the very same copy
+  analyses.invalidate(kNoAnalyses);
+  EXPECT_EQ(analyses.cached(), kNoAnalyses);
+  EXPECT_NE(analyses.foldedCopy(), nullptr);  // made again on the next request
+  EXPECT_EQ(analyses.cached(), kFoldedCopyAnalysis);
+}
+
+TEST(AnalysisManager, ViewVectorFlowLivesAndDiesWithTheFoldedCopy) {
+  ManagedModule m(perspectiveVertexShader(false));
+  AnalysisManager analyses(m.module, m.source, "test.spv");
+  analysis::ViewVectorFlow* flow = analyses.foldedViewVectorFlow();
+  ASSERT_NE(flow, nullptr);
+  EXPECT_EQ(&flow->module(), analyses.foldedCopy());
+  EXPECT_EQ(analyses.foldedViewVectorFlow(), flow);
+  analyses.invalidate(kAllAnalyses & ~kFoldedCopyAnalysis);
+  EXPECT_EQ(analyses.cached() & kFoldedCopyAnalysis, kNoAnalyses);
+  EXPECT_NE(analyses.foldedViewVectorFlow(), nullptr);
+}
+
+// --validate-each checks every claim a pass makes about what it preserved.
+TEST(AnalysisManager, CheckPreservedCatchesEachStaleAnalysis) {
+  ManagedModule m(perspectiveVertexShader(true));
+  AnalysisManager analyses(m.module, m.source, "test.spv");
+  analyses.clipPositions();
+  analyses.foldedCopy();
+  analyses.valueFlow();
+  analyses.stageInputUses();
+  EXPECT_EQ(analyses.checkPreserved(kAllAnalyses), "");
+  // One more chain to the position: a different clip-position analysis, and new instructions the
+  // value-flow index does not hold.
+  auto& block = m.module.functions[0].blocks[0].instructions;
+  uint32_t v4Pointer = m.module.typePointer(spv::StorageClassOutput, m.module.typeVector(m.module.typeFloat(32), 4));
+  block.insert(block.begin(), spirv::Instruction(spv::OpAccessChain, v4Pointer, m.module.takeId(),
+                                                 {analyses.clipPositions().outputs()[0].variable, m.module.constantInt(0)}));
+  m.module.invalidateDefinitions();
+  EXPECT_EQ(analyses.checkPreserved(kClipPositionAnalysis), "clip-positions");
+  EXPECT_EQ(analyses.checkPreserved(kValueFlowAnalysis), "value-flow");
+  EXPECT_EQ(analyses.checkPreserved(kFoldedCopyAnalysis), "");  // every global the copy names is still there
+  // A global the copy names removed: the copy no longer answers for this module.
+  ManagedModule n(perspectiveVertexShader(false));
+  AnalysisManager other(n.module, n.source, "test.spv");
+  ASSERT_NE(other.foldedCopy(), nullptr);
+  for (auto& inst : n.module.typesValues)
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniform) inst.resultId = n.module.takeId();
+  n.module.invalidateDefinitions();
+  EXPECT_EQ(other.checkPreserved(kFoldedCopyAnalysis), "folded-copy");
 }
 
 TEST(ClipPositionAnalysis, PointersAndMonoValues) {

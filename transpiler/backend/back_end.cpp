@@ -10,16 +10,6 @@
 
 namespace stereoshift {
 
-TargetLanguage resolveTarget(const SourceInfo& info, const TranspileOptions& options) {
-  if (options.target != TargetLanguage::Auto) return options.target;
-  switch (info.language) {
-    case SourceLanguage::Hlsl: return TargetLanguage::Hlsl;
-    case SourceLanguage::Spirv: return TargetLanguage::Spirv;
-    case SourceLanguage::Glsl: return info.es ? TargetLanguage::Essl : TargetLanguage::Glsl;
-  }
-  return TargetLanguage::Glsl;
-}
-
 namespace {
 
 // SPIRV-Cross gives every location-assigned varying the semantic TEXCOORD<location>; put back the
@@ -90,9 +80,9 @@ std::string renameEntryPoint(std::string text, const std::string& entryPoint) {
 
 }  // namespace
 
-EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const TranspileOptions& options,
+EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const TranspileOptions& options,
                       const EmitHints& hints, const std::string& file, Diagnostics& diags) {
-  EmitResult result;
+  EmittedSource result;
   result.language = resolveTarget(info, options);
   try {
     switch (result.language) {

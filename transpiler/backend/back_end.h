@@ -1,9 +1,11 @@
-// Back end: SPIRV-Cross re-emits GLSL / ESSL / HLSL / MSL, then a few targeted repairs make the
-// output a drop-in replacement for the input (see README "Back-end routes").
+// SPIRV-Cross re-emits GLSL / ESSL / HLSL / MSL, then a few targeted repairs make the output a
+// drop-in replacement for the input (docs/architecture.md, "Back-end routes"); the re-emit route
+// (reemit_route.h) calls it.
 #pragma once
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/backend/route.h"
 
 #include <map>
 #include <string>
@@ -19,17 +21,15 @@ struct EmitHints {
   std::map<std::string, std::string, std::less<>> cbufferMemberNames;
 };
 
-struct EmitResult {
+struct EmittedSource {
   bool ok = false;
   std::string text;
   TargetLanguage language = TargetLanguage::Glsl;  // resolved (never Auto)
   bool vulkanSemantics = false;
 };
 
-// Resolves `Auto` to the input's own language.
-TargetLanguage resolveTarget(const SourceInfo& info, const TranspileOptions& options);
-
-EmitResult emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const TranspileOptions& options,
+// SPIRV-Cross's text of `words` in the target language the options ask for (route.h resolves it).
+EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const TranspileOptions& options,
                       const EmitHints& hints, const std::string& file, Diagnostics& diags);
 
 }  // namespace stereoshift

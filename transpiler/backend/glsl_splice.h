@@ -17,10 +17,8 @@
 #pragma once
 
 #include "passes/diagnostics.h"
-#include "passes/pass.h"
+#include "passes/shader.h"
 #include "passes/shift_emitter.h"
-
-#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -45,15 +43,5 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
 
 // The outputs of `source` whose every assignment is `name = gl_Position;` (exact copies).
 std::vector<std::string> exactPositionCopies(const std::string& source);
-
-// Whether a shader of `info` emitted as `target` takes this route: legacy GLSL vertex shaders kept
-// in their own dialect (no --target-version, no --force-reemit).
-bool takesLegacyGlslRoute(const SourceInfo& info, TargetLanguage target, const TranspileOptions& options);
-
-// Splices the shift the passes in `context` decided into `input`; the output is re-compiled at the
-// original version (AST only, as a driver reads it) and refused when it does not compile. What the
-// text cannot carry (other passes' changes, derived halo outputs) is said as a warning.
-bool spliceLegacyGlsl(const SourceFile& input, const PassContext& context, std::string& output,
-                      nlohmann::json& report, Diagnostics& diags);
 
 }  // namespace stereoshift

@@ -694,12 +694,14 @@ void reportVersionProblem(const SourceFile& input, const VersionLine& v, Diagnos
 
 }  // namespace
 
-FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags) {
+FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags,
+                              const StageDecision* stageGiven) {
   FrontEndResult result;
   ensureGlslangInitialized();
   if (!withinSourceLimits(input, diags)) return result;
 
-  StageDecision stageDecision = decideStage(input.path, input.contents, options.stage, options.stageExtensions);
+  StageDecision stageDecision =
+      stageGiven ? *stageGiven : decideStage(input.path, input.contents, options.stage, options.stageExtensions);
   std::optional<Stage> stage = stageDecision.stage;
   if (!stageDecision.problem.empty()) {
     diags.error(input.path, stageDecision.problemLine, stageDecision.problemColumn, stageDecision.problem);

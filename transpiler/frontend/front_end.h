@@ -34,8 +34,10 @@ struct VersionLine {
 };
 VersionLine findVersion(const std::string& text);
 
-// Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form.
-FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags);
+// Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form. `stage`: the stage the
+// driver decided for it (decideStage), when it did; else the front end decides it.
+FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags,
+                              const StageDecision* stage = nullptr);
 
 // Re-compiles emitted GLSL/HLSL text to check that it is valid (`--verify`); `environment` (when
 // given) carries the conversion's --target-env / --target-spv, so a subgroup shader checks under them.

@@ -426,8 +426,8 @@ ReprojectResult generateReprojectShaders(const ReprojectOptions& options) {
     nlohmann::json entry;
     entry["file"] = outputName(job.stage, options.target);
     entry["stage"] = stageName(job.stage);
-    if (converted.report.contains("target")) entry["target"] = converted.report["target"];
-    entry["verified"] = converted.report.value("verified", false);
+    if (converted.record.target) entry["target"] = targetName(*converted.record.target);
+    entry["verified"] = converted.record.verified;
     result.report["outputs"].push_back(entry);
     if (!converted.ok) {
       ok = false;

@@ -18,6 +18,7 @@
 #include "transpiler/verify/capture_instrument.h"
 #include "transpiler/verify/stage_synthesis.h"
 #include "passes/ir/module.h"
+#include "passes/pass.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -911,7 +912,7 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     TranspileResult result = transpile(*ordered[i], o);
     diags.append(result.diagnostics);
     if (!result.ok) return false;
-    *classification = result.report.value("classification", "");
+    *classification = result.record.classification ? toString(*result.record.classification) : "";
     std::vector<uint32_t> words(result.output.size() / 4);
     std::memcpy(words.data(), result.output.data(), words.size() * 4);
     std::string error;
@@ -920,16 +921,14 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
       diags.error(ordered[i]->path, error);
       return false;
     }
-    std::vector<std::string> halo;
-    for (const auto& n : result.report["passes"]["halo"].value("shifted_outputs", nlohmann::json::array()))
-      halo.push_back(n.get<std::string>());
+    const RunRecord& passes = result.record.passes;
+    std::vector<std::string> halo = passes.halo.shiftedOutputs.value_or(std::vector<std::string>{});
     // Outputs computed from the per-eye camera (per-eye-view: relief view vectors) differ between
     // the eyes by design, like re-derived halo outputs; eyeSign = 0 still has to be bit for bit.
-    for (const auto& n : result.report["passes"]["per-eye-view"].value("per_eye_outputs", nlohmann::json::array()))
-      halo.push_back(n.get<std::string>());
-    // The front end's rule (SourceInfo::vulkanBindings): HLSL written for Vulkan says [[vk::binding]].
-    const bool d3dRegisters = result.report.value("language", "") == "hlsl" &&
-                              ordered[i]->contents.find("vk::binding") == std::string::npos;
+    halo.insert(halo.end(), passes.perEyeView.perEyeOutputs.begin(), passes.perEyeView.perEyeOutputs.end());
+    // D3D register classes (b, t, s, u) each count from 0; HLSL written for Vulkan ([[vk::binding]])
+    // and GLSL share one binding space.
+    const bool d3dRegisters = perClassRegisters(result.source);
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
                        original->entryPointName(), std::move(halo), d3dRegisters});
   }

@@ -1,0 +1,163 @@
+// See analysis_manager.h.
+#include "passes/analysis_manager.h"
+
+#include "passes/analysis/stage_interface.h"
+
+#include <spirv-tools/optimizer.hpp>
+
+#include <functional>
+
+namespace stereoshift {
+
+const char* analysisName(Analysis analysis) {
+  switch (analysis) {
+    case kClipPositionAnalysis: return "clip-positions";
+    case kFoldedCopyAnalysis: return "folded-copy";
+    case kValueFlowAnalysis: return "value-flow";
+    case kValueNumberAnalysis: return "value-numbers";
+    case kStageInputAnalysis: return "stage-input-uses";
+  }
+  return "?";
+}
+
+AnalysisManager::AnalysisManager(const spirv::Module& module, const SourceInfo& source, std::string file)
+    : module_(module), source_(source), file_(std::move(file)) {}
+
+AnalysisManager::~AnalysisManager() = default;
+
+const ClipPositionAnalysis& AnalysisManager::clipPositions() {
+  if (!clipPositions_) clipPositions_.emplace(module_);
+  return *clipPositions_;
+}
+
+namespace {
+
+std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module) {
+  spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
+  optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+  // What the analyses need to see through, and no more (SPIRV-Tools' whole performance recipe
+  // cost a fifth of a tree conversion; this one about a ninth): every call inlined, private and
+  // function variables turned into SSA values, structs and arrays split, constants propagated
+  // and folded, duplicate values merged (the matrix chains per-eye-view follows to gl_Position
+  // need the last). Chosen by measurement: the shortest list tried that keeps every analysis result
+  // of the corpus and the lit tests.
+  optimizer.RegisterPassesFromFlags({"--merge-return", "--inline-entry-points-exhaustive", "--private-to-local",
+                                     "--scalar-replacement=100", "--eliminate-local-single-block",
+                                     "--eliminate-local-single-store", "--eliminate-local-multi-store", "--ccp",
+                                     "--simplify-instructions", "--redundancy-elimination"});
+  spvtools::OptimizerOptions options;
+  options.set_run_validator(false);
+  std::vector<uint32_t> words = module.encode(), folded;
+  std::string error;
+  if (!optimizer.Run(words.data(), words.size(), &folded, options)) return std::nullopt;
+  return spirv::Module::parse(folded, &error);
+}
+
+}  // namespace
+
+const spirv::Module* AnalysisManager::foldedCopy() {
+  if (!foldTried_) {
+    foldTried_ = true;
+    folded_ = makeFoldedCopy(module_);
+  }
+  return folded_ ? &*folded_ : nullptr;
+}
+
+analysis::ViewVectorFlow* AnalysisManager::foldedViewVectorFlow() {
+  const spirv::Module* folded = foldedCopy();
+  if (!folded) return nullptr;
+  if (!foldedFlow_) foldedFlow_ = std::make_unique<analysis::ViewVectorFlow>(*folded);
+  return foldedFlow_.get();
+}
+
+const analysis::ValueFlow& AnalysisManager::valueFlow() {
+  if (!valueFlow_) {
+    valueFlow_ = std::make_unique<analysis::ValueFlow>(module_);
+    indexedShape_ = moduleShape();
+  }
+  return *valueFlow_;
+}
+
+const analysis::ValueNumbers& AnalysisManager::valueNumbers() {
+  if (!valueNumbers_) {
+    valueNumbers_ = std::make_unique<analysis::ValueNumbers>(module_);
+    indexedShape_ = moduleShape();
+  }
+  return *valueNumbers_;
+}
+
+const NextStageFacts& AnalysisManager::stageInputUses(const NextStageFacts* consumer) {
+  auto found = stageInputs_.find(consumer);
+  if (found != stageInputs_.end()) return found->second;
+  const spirv::Module* folded = foldedCopy();
+  NextStageFacts facts =
+      analysis::describeStageInputUses(module_, folded, foldedViewVectorFlow(), source_, file_, consumer);
+  return stageInputs_.emplace(consumer, std::move(facts)).first->second;
+}
+
+void AnalysisManager::invalidate(AnalysisSet kept) {
+  if (!(kept & kClipPositionAnalysis)) clipPositions_.reset();
+  if (!(kept & kFoldedCopyAnalysis)) {
+    foldedFlow_.reset();  // built on the copy
+    folded_.reset();
+    foldTried_ = false;
+  }
+  if (!(kept & kValueFlowAnalysis)) valueFlow_.reset();
+  if (!(kept & kValueNumberAnalysis)) valueNumbers_.reset();
+  if (!(kept & kStageInputAnalysis)) stageInputs_.clear();
+}
+
+AnalysisSet AnalysisManager::cached() const {
+  AnalysisSet set = kNoAnalyses;
+  if (clipPositions_) set |= kClipPositionAnalysis;
+  if (foldTried_) set |= kFoldedCopyAnalysis;
+  if (valueFlow_) set |= kValueFlowAnalysis;
+  if (valueNumbers_) set |= kValueNumberAnalysis;
+  if (!stageInputs_.empty()) set |= kStageInputAnalysis;
+  return set;
+}
+
+// Where every instruction of the module lives and how many there are: value flow and value
+// numbers hold pointers into these vectors, valid exactly while none of them moved or changed size.
+size_t AnalysisManager::moduleShape() const {
+  size_t shape = 0;
+  auto mix = [&](const void* data, size_t size) {
+    shape = shape * 1000003u ^ std::hash<const void*>()(data);
+    shape = shape * 1000003u ^ size;
+  };
+  for (const auto* section : {&module_.capabilities, &module_.extensions, &module_.extInstImports,
+                              &module_.memoryModel, &module_.entryPoints, &module_.executionModes,
+                              &module_.debugSource, &module_.debugNames, &module_.debugModuleProcessed,
+                              &module_.annotations, &module_.typesValues})
+    mix(section->data(), section->size());
+  mix(module_.functions.data(), module_.functions.size());
+  for (const auto& fn : module_.functions) {
+    mix(fn.blocks.data(), fn.blocks.size());
+    for (const auto& block : fn.blocks) mix(block.instructions.data(), block.instructions.size());
+  }
+  return shape;
+}
+
+std::string AnalysisManager::checkPreserved(AnalysisSet claimed) {
+  if ((claimed & kClipPositionAnalysis) && clipPositions_ && !(*clipPositions_ == ClipPositionAnalysis(module_)))
+    return analysisName(kClipPositionAnalysis);
+  if ((claimed & kFoldedCopyAnalysis) && folded_) {
+    // The copy's globals are the module's own: each must still be there, as the same kind of value.
+    for (const auto& inst : folded_->typesValues) {
+      if (inst.opcode != spv::OpVariable) continue;
+      const spirv::Instruction* now = module_.definition(inst.resultId);
+      if (!now || now->opcode != spv::OpVariable || now->typeId != inst.typeId) return analysisName(kFoldedCopyAnalysis);
+    }
+  }
+  if ((claimed & (kValueFlowAnalysis | kValueNumberAnalysis)) && (valueFlow_ || valueNumbers_) &&
+      moduleShape() != indexedShape_)
+    return analysisName(valueFlow_ && (claimed & kValueFlowAnalysis) ? kValueFlowAnalysis : kValueNumberAnalysis);
+  if ((claimed & kStageInputAnalysis) && !stageInputs_.empty()) {
+    AnalysisManager fresh(module_, source_, file_);
+    for (const auto& [consumer, facts] : stageInputs_)
+      if (!(fresh.stageInputUses(consumer) == facts)) return analysisName(kStageInputAnalysis);
+  }
+  return "";
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,130 @@
+// What one run of the pass pipeline did and found: each pass's status and its typed facts. The
+// pass manager fills it (statuses) and the passes fill their facts; every layer above reads these
+// fields (the back-end routes, the multi-entry HLSL splice, `verify`, the test fixture), and the
+// JSON report is rendered from them by one function (transpiler/report.h). Nothing reads the report
+// back: it is an output, not an interface between the parts of the tool.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+enum class PassResult { Unchanged, Changed, Failed };
+const char* toString(PassResult result);
+
+// Why a shader gets (or does not get) the shift; reported per shader.
+enum class Classification {
+  Perspective,      // last pre-rasterization stage writing a clip position: shifted
+  ConstantW1,       // every write of the position has the literal w = 1.0: 2D, nothing injected
+  AlreadyStereo,    // already carries the eye parameters: never shifted twice
+  Intermediate,     // pre-rasterization stage followed by a later one in its pipeline
+  NoPositionStage,  // tessellation control, fragment, compute, task: no clip position to shift
+  NoPositionOutput, // a pre-rasterization stage that writes no clip position
+};
+const char* toString(Classification c);
+
+// One pass that ran: its result, and for a pass only pulled in by `--pass`, the named pass that
+// required it.
+struct PassStatus {
+  std::string name;
+  PassResult result = PassResult::Unchanged;
+  std::string requiredBy;
+};
+
+// A construct whose value depends on the eye, as a per-eye pass found it: what it is and what was
+// done with it (fixed, and how) or why it was left alone. Only the fields that apply are set.
+struct ViewDependentUse {
+  std::optional<std::string> construct, uniform, nameHint, use, reason, why, form, matrix, depth, depthRange, ndc,
+      fix, projectionScale, reaches, eyeCentre;
+  std::optional<int> count, loadsReplaced;
+};
+
+// clip-position-detection.
+struct DetectionFacts {
+  std::optional<Classification> classification;  // set when the pass ran
+  std::vector<std::string> positions;  // the clip-position outputs, e.g. "gl_PerVertex.gl_Position"
+  std::string alreadyStereo;           // why it is stereo already, when it is
+};
+
+// hud-at-depth.
+struct HudAtDepthFacts {
+  std::optional<size_t> stores;          // set when the element was placed at depth
+  std::vector<std::string> placedAtDepth;
+  std::string position, note;
+  std::string leftAlone;                 // why it was not placed
+};
+
+// single-pass-stereo.
+struct SinglePassFacts {
+  std::string mode;                          // "multiview" / "instanced"; empty: not run
+  std::optional<std::string> eyeVaryingName; // the `stereoEye` output it declared
+  uint32_t eyeVaryingLocation = 0;
+  std::optional<int> emitsRouted;            // geometry: EmitVertex sites that route the eye
+  std::string eyeWrittenTo;                  // "layer" / "viewport"
+  bool eyeHandedOn = false;
+  std::string requiredExtension;             // an extension the output needs
+  std::optional<int> instanceReadsRewritten;
+};
+
+// The eye parameters as declared (eye-params, or any pass that needed them: ensureEyeParams).
+struct EyeParamFacts {
+  std::string declared;  // "uniform block", "push constants", "loose uniforms", "specialization constants"
+  std::optional<uint32_t> pushConstantOffset;
+  std::string block, instance;            // uniform block
+  std::optional<uint32_t> set, binding;
+  std::map<std::string, std::string> renamed;  // wanted name -> the name chosen after a clash
+  std::vector<uint32_t> specIds;
+  std::vector<std::string> names;         // eyeSign, separation, convergence, ... as declared
+};
+
+// halo.
+struct HaloFacts {
+  std::optional<std::vector<std::string>> shiftedOutputs;  // set when the pass looked
+  std::vector<std::string> derivedOutputs;  // computed from the position, not copies of it
+};
+
+// stereo-shift.
+struct ShiftFacts {
+  std::optional<int> sites;  // returns / emits / stores shifted
+  std::string form;          // "branch" / "select"
+};
+
+// per-eye-view.
+struct PerEyeViewFacts {
+  std::vector<ViewDependentUse> fixed, leftAlone;
+  std::string skipped;
+  std::string forcedCameraNotFound;
+  std::set<std::string> perEyeOutputs;  // outputs that differ between the eyes by design
+  std::string application;              // what the application must fill
+};
+
+// deferred-unprojection.
+struct DeferredFacts {
+  std::vector<ViewDependentUse> fixed, leftAlone;
+  std::string leftAloneWhy;      // the whole shader left alone, and why
+  std::string applicationFills;  // an injected parameter the application sets
+};
+
+struct RunRecord {
+  std::vector<PassStatus> passes;  // in the order they ran
+  DetectionFacts detection;
+  HudAtDepthFacts hudAtDepth;
+  SinglePassFacts singlePass;
+  EyeParamFacts eyeParams;
+  HaloFacts halo;
+  ShiftFacts shift;
+  PerEyeViewFacts perEyeView;
+  DeferredFacts deferred;
+
+  // The status of pass `name`, or null when it did not run.
+  const PassStatus* status(const std::string& name) const;
+  bool ran(const std::string& name) const { return status(name) != nullptr; }
+  bool changed(const std::string& name) const;
+};
+
+}  // namespace stereoshift

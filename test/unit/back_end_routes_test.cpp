@@ -1,0 +1,154 @@
+// Each back-end route's answer to "do you take this stage?" and why not (backend/route.h): the
+// driver asks them in order, so a route that takes too much (or too little) sends a stage down
+// the wrong road. The stages here are made by hand: a context with the facts each rule reads.
+#include "transpiler/backend/route.h"
+
+#include "test/unit/pass_fixture.h"
+
+#include <gtest/gtest.h>
+
+namespace stereoshift::test {
+namespace {
+
+const BackEndRoute& route(const std::string& name) {
+  for (const auto& r : routes())
+    if (name == r->name()) return *r;
+  ADD_FAILURE() << "no route " << name;
+  return *routes().back();
+}
+
+// A stage with the facts the routes read: its language, stage, version, the eye source its
+// passes chose, and which passes changed the module.
+struct Stage_ {
+  explicit Stage_(SourceLanguage language, Stage stage = Stage::Vertex, int version = 0, bool es = false) {
+    std::vector<uint32_t> words = spirv::assemble(flatVertexShader(), nullptr);
+    module = *spirv::Module::parse(words, nullptr);
+    info.language = language;
+    info.stage = stage;
+    info.version = version;
+    info.es = es;
+    analyses = std::make_unique<AnalysisManager>(module, info, "t");
+    context = std::make_unique<PassContext>(module, options, info, diags, "t", *analyses);
+    context->eye.source = EyeSource::UniformBlock;
+  }
+  void changedBy(const std::string& pass) { context->record.passes.push_back({pass, PassResult::Changed, ""}); }
+  RouteDecision ask(const std::string& name, TargetLanguage target, bool changed = true) {
+    EmitRequest request{input, *context, options, target, changed};
+    request.inheritedInvalid = inheritedInvalid;
+    return route(name).accepts(request);
+  }
+  spirv::Module module;
+  SourceInfo info;
+  TranspileOptions options;
+  Diagnostics diags;
+  SourceFile input{"t", "text"};
+  std::string inheritedInvalid;
+  std::unique_ptr<AnalysisManager> analyses;
+  std::unique_ptr<PassContext> context;
+};
+
+TEST(BackEndRoutes, AskedInThisOrderWithTheReemitLast) {
+  std::vector<std::string> names;
+  for (const auto& r : routes()) names.push_back(r->name());
+  EXPECT_EQ(names, (std::vector<std::string>{"copy-through", "spirv", "spirv-asm", "hlsl-source-splice",
+                                              "glsl-source-splice", "spirv-cross"}));
+  EXPECT_FALSE(route("copy-through").needsValidModule());
+  EXPECT_TRUE(route("spirv").needsValidModule());
+  EXPECT_TRUE(route("hlsl-source-splice").needsOtherEntryPoints());
+}
+
+TEST(BackEndRoutes, CopyThroughOnlyWhatNeedsNothingInItsOwnLanguage) {
+  Stage_ s(SourceLanguage::Glsl, Stage::Vertex, 450);
+  EXPECT_EQ(s.ask("copy-through", TargetLanguage::Glsl, false).kind, RouteDecision::Accept);
+  EXPECT_EQ(s.ask("copy-through", TargetLanguage::Glsl, true).kind, RouteDecision::Decline);
+  EXPECT_EQ(s.ask("copy-through", TargetLanguage::Hlsl, false).kind, RouteDecision::Decline);
+  s.options.targetVersion = 330;  // another version of the same language is a translation
+  EXPECT_EQ(s.ask("copy-through", TargetLanguage::Glsl, false).kind, RouteDecision::Decline);
+  s.options.targetVersion.reset();
+  s.options.forceReemit = true;
+  EXPECT_EQ(s.ask("copy-through", TargetLanguage::Glsl, false).kind, RouteDecision::Decline);
+}
+
+TEST(BackEndRoutes, SpirvRefusesAModuleTheFrontEndMadeInvalid) {
+  Stage_ s(SourceLanguage::Glsl, Stage::Vertex, 330);
+  EXPECT_EQ(s.ask("spirv", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  EXPECT_EQ(s.ask("spirv", TargetLanguage::Spirv).kind, RouteDecision::Accept);
+  EXPECT_EQ(s.ask("spirv-asm", TargetLanguage::Spirv).kind, RouteDecision::Decline);
+  s.inheritedInvalid = "OpTypeBool stored";
+  RouteDecision refused = s.ask("spirv-asm", TargetLanguage::SpirvAsm);
+  EXPECT_EQ(refused.kind, RouteDecision::Refuse);
+  EXPECT_NE(refused.why.find("does not validate (OpTypeBool stored)"), std::string::npos) << refused.why;
+}
+
+TEST(BackEndRoutes, HlslSpliceTakesVertexGeometryDomainKeptAsHlsl) {
+  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Vertex, 450).ask("hlsl-source-splice", TargetLanguage::Hlsl).kind,
+            RouteDecision::Decline);
+  EXPECT_EQ(Stage_(SourceLanguage::Hlsl, Stage::Fragment).ask("hlsl-source-splice", TargetLanguage::Hlsl).kind,
+            RouteDecision::Decline);
+  EXPECT_EQ(Stage_(SourceLanguage::Hlsl).ask("hlsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  for (Stage stage : {Stage::Vertex, Stage::Geometry, Stage::TessEvaluation})
+    EXPECT_EQ(Stage_(SourceLanguage::Hlsl, stage).ask("hlsl-source-splice", TargetLanguage::Hlsl).kind, RouteDecision::Accept);
+}
+
+TEST(BackEndRoutes, HlslVertexFallsBackWithANoteGeometryIsRefused) {
+  Stage_ vertex(SourceLanguage::Hlsl), geometry(SourceLanguage::Hlsl, Stage::Geometry);
+  for (Stage_* s : {&vertex, &geometry}) s->context->eye.source = EyeSource::PushConstant;
+  RouteDecision v = vertex.ask("hlsl-source-splice", TargetLanguage::Hlsl);
+  EXPECT_EQ(v.kind, RouteDecision::Decline);
+  EXPECT_TRUE(v.noted);
+  EXPECT_NE(v.why.find("only as a cbuffer (--eye-source=uniform-block)"), std::string::npos) << v.why;
+  RouteDecision g = geometry.ask("hlsl-source-splice", TargetLanguage::Hlsl);
+  EXPECT_EQ(g.kind, RouteDecision::Refuse);
+  EXPECT_NE(g.why.find("supports only --eye-source=uniform-block"), std::string::npos) << g.why;
+}
+
+TEST(BackEndRoutes, HlslSpliceCannotCarryWhatOnlyTheIrHolds) {
+  Stage_ copies(SourceLanguage::Hlsl);
+  copies.changedBy("halo");  // exact copies of the position: the splice shifts them in the text
+  EXPECT_EQ(copies.ask("hlsl-source-splice", TargetLanguage::Hlsl).kind, RouteDecision::Accept);
+  Stage_ derived(SourceLanguage::Hlsl);
+  derived.changedBy("halo");
+  derived.context->record.halo.derivedOutputs = {"vScreen"};
+  RouteDecision d = derived.ask("hlsl-source-splice", TargetLanguage::Hlsl);
+  EXPECT_EQ(d.kind, RouteDecision::Decline);
+  EXPECT_NE(d.why.find("changed the output 'vScreen', which is computed from the clip position"), std::string::npos);
+  Stage_ perEye(SourceLanguage::Hlsl, Stage::TessEvaluation);
+  perEye.changedBy("per-eye-view");
+  RouteDecision p = perEye.ask("hlsl-source-splice", TargetLanguage::Hlsl);
+  EXPECT_EQ(p.kind, RouteDecision::Refuse);
+  EXPECT_NE(p.why.find("it cannot carry what the per-eye-view pass changed"), std::string::npos) << p.why;
+}
+
+TEST(BackEndRoutes, LegacyGlslSpliceKeepsOldVertexShadersInTheirDialect) {
+  Stage_ gl120(SourceLanguage::Glsl, Stage::Vertex, 120), es100(SourceLanguage::Glsl, Stage::Vertex, 100, true);
+  for (Stage_* s : {&gl120, &es100}) s->context->eye.source = EyeSource::LooseUniforms;
+  EXPECT_EQ(gl120.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Accept);
+  EXPECT_EQ(es100.ask("glsl-source-splice", TargetLanguage::Essl).kind, RouteDecision::Accept);
+  EXPECT_EQ(es100.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Vertex, 330).ask("glsl-source-splice", TargetLanguage::Glsl).kind,
+            RouteDecision::Decline);
+  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Fragment, 120).ask("glsl-source-splice", TargetLanguage::Glsl).kind,
+            RouteDecision::Decline);
+  gl120.options.targetVersion = 120;  // an explicit version asks for a re-emit
+  EXPECT_EQ(gl120.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  Stage_ block(SourceLanguage::Glsl, Stage::Vertex, 120);  // eye parameters in a block: 1xx has none
+  RouteDecision refused = block.ask("glsl-source-splice", TargetLanguage::Glsl);
+  EXPECT_EQ(refused.kind, RouteDecision::Refuse);
+  EXPECT_NE(refused.why.find("use --eye-source loose-uniforms"), std::string::npos);
+}
+
+TEST(BackEndRoutes, ReemitTakesWhatIsLeft) {
+  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Fragment, 450).ask("spirv-cross", TargetLanguage::Msl).kind,
+            RouteDecision::Accept);
+}
+
+TEST(BackEndRoutes, ChangesBeyondWhatASpliceRenders) {
+  RunRecord record;
+  record.passes = {{"stereo-shift", PassResult::Changed, ""}, {"per-eye-view", PassResult::Changed, ""},
+                   {"deferred-unprojection", PassResult::Unchanged, ""}, {"halo", PassResult::Changed, ""}};
+  EXPECT_EQ(changesBeyond(record, {"stereo-shift"}), (std::vector<std::string>{"halo", "per-eye-view"}));
+  EXPECT_TRUE(changesBeyond(record, {"stereo-shift", "per-eye-view", "halo"}).empty());
+}
+
+}  // namespace
+}  // namespace stereoshift::test

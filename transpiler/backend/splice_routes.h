@@ -1,0 +1,26 @@
+// The source-splice routes: the original text with the edits the passes decided spliced into it.
+//   HLSL (vertex, geometry, domain kept as HLSL): hlsl_splice.h renders the shift; every vertex
+//     entry point of the file is shifted (the driver converts each on its own first), every other
+//     one kept as written.
+//   legacy GLSL (ESSL 100, desktop 110-150 vertex shaders kept in their dialect): glsl_splice.h.
+// What the text cannot carry is refused (HLSL geometry / domain) or left to SPIRV-Cross's re-emit
+// with a note saying why (HLSL vertex), or said as a warning and recorded (legacy GLSL).
+#pragma once
+
+#include "transpiler/backend/route.h"
+
+#include <memory>
+
+namespace stereoshift {
+
+std::unique_ptr<BackEndRoute> createHlslSpliceRoute();
+std::unique_ptr<BackEndRoute> createLegacyGlslRoute();
+
+// Whether the HLSL splice takes a shader of `info` emitted as `target`.
+bool takesHlslSpliceRoute(const SourceInfo& info, TargetLanguage target);
+// Whether the legacy GLSL splice takes a shader of `info` emitted as `target` (no --target-version,
+// no --force-reemit). Its passes declare the eye parameters as loose uniforms (GLSL below 140 and
+// ESSL 100 have no uniform blocks).
+bool takesLegacyGlslRoute(const SourceInfo& info, TargetLanguage target, const BackEndOptions& options);
+
+}  // namespace stereoshift

@@ -1,0 +1,60 @@
+// The per-stage report: what the driver decided and what each part did, as typed facts
+// (StageRecord), and the one function that renders them as the JSON report users and tools read
+// (`--report`, `build`'s stereoshift-report.json). No part of the tool reads the JSON back: the
+// record is the interface, the JSON its rendering.
+#pragma once
+
+#include "passes/run_record.h"
+#include "passes/shader.h"
+#include "transpiler/backend/emit_facts.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct StageRecord {
+  std::string file;
+  // The language decision (also when the shader does not parse: it is often why).
+  bool languageDecided = false;
+  SourceLanguage language = SourceLanguage::Glsl;
+  LanguageSource languageSource = LanguageSource::Extension;
+  std::string languageReason;
+  std::string dialectReason;               // GLSL without #version or below 330: why this dialect
+  std::vector<std::string> includedFiles;
+  std::optional<double> frontEndMs, passesMs, backEndMs, totalMs;
+  // Known once the module parsed:
+  std::optional<Stage> stage;
+  std::string stageReason;
+  std::string dialect;                     // GLSL: "450 vulkan", "300 es", ...
+  struct VersionRaise {
+    int from = 0, to = 0;
+    std::string why;
+  };
+  std::optional<VersionRaise> versionRaised;
+  // Known once the passes ran to the end:
+  bool passesRan = false;                  // the pass pipeline started (its statuses are in `passes`)
+  RunRecord passes;
+  std::optional<Classification> classification;
+  bool changed = false;
+  std::optional<TargetLanguage> target;
+  // The back end:
+  std::string frontEndSpirvInvalid;        // glslang's module does not validate (and why)
+  EmitFacts emit;
+  enum class Output { None, Copied, Emitted } output = Output::None;
+  bool verified = false;
+};
+
+// The JSON report of one stage.
+nlohmann::json renderStageReport(const StageRecord& record);
+// The "passes" object of a report: each pass that ran, with its result and facts.
+// `spliceSites`: the sites a source splice shifted, reported as the stereo-shift pass's own.
+nlohmann::json renderPassReport(const RunRecord& record, std::optional<int> spliceSites = std::nullopt);
+
+const char* languageName(SourceLanguage language);
+const char* targetName(TargetLanguage target);
+
+}  // namespace stereoshift

@@ -1,0 +1,335 @@
+// See stage_plan.h: the steps of one stage's conversion, each a function.
+#include "transpiler/stage_plan.h"
+
+#include "passes/ir/validate.h"
+#include "passes/pass_manager.h"
+#include "transpiler/backend/hlsl_splice.h"
+#include "transpiler/backend/splice_routes.h"
+#include "transpiler/frontend/hlsl_effects.h"
+#include "transpiler/frontend/legacy_glsl.h"
+#include "transpiler/output_version.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace stereoshift {
+
+namespace {
+
+constexpr uint32_t kSpirvMagic = 0x07230203;
+
+bool hasSpirvMagic(const std::string& bytes) {
+  if (bytes.size() < 4) return false;
+  uint32_t magic;
+  std::memcpy(&magic, bytes.data(), 4);
+  return magic == kSpirvMagic;
+}
+
+Stage stageFromModel(spv::ExecutionModel model) {
+  switch (model) {
+    case spv::ExecutionModelVertex: return Stage::Vertex;
+    case spv::ExecutionModelTessellationControl: return Stage::TessControl;
+    case spv::ExecutionModelTessellationEvaluation: return Stage::TessEvaluation;
+    case spv::ExecutionModelGeometry: return Stage::Geometry;
+    case spv::ExecutionModelFragment: return Stage::Fragment;
+    case spv::ExecutionModelGLCompute: return Stage::Compute;
+    case spv::ExecutionModelTaskEXT: case spv::ExecutionModelTaskNV: return Stage::Task;
+    case spv::ExecutionModelMeshEXT: case spv::ExecutionModelMeshNV: return Stage::Mesh;
+    case spv::ExecutionModelRayGenerationKHR: return Stage::RayGen;
+    case spv::ExecutionModelIntersectionKHR: return Stage::Intersection;
+    case spv::ExecutionModelAnyHitKHR: return Stage::AnyHit;
+    case spv::ExecutionModelClosestHitKHR: return Stage::ClosestHit;
+    case spv::ExecutionModelMissKHR: return Stage::Miss;
+    case spv::ExecutionModelCallableKHR: return Stage::Callable;
+    default: return Stage::Unknown;
+  }
+}
+
+void recordLanguage(StageRecord& record, const SourceInfo& info) {
+  record.languageDecided = true;
+  record.language = info.language;
+  record.languageSource = info.languageSource;
+  record.languageReason = info.languageReason;
+}
+
+bool readSpirvInput(StagePlan& plan) {
+  const std::string& bytes = plan.input->contents;
+  if (bytes.size() % 4 != 0 || !hasSpirvMagic(bytes)) {
+    plan.diags.error(plan.input->path, "not a SPIR-V binary: " + std::string(bytes.size() % 4 ? "size is not a multiple of 4 bytes"
+                                                                                              : "bad magic number"));
+    return false;
+  }
+  plan.spirvInput = true;
+  plan.words.resize(bytes.size() / 4);
+  std::memcpy(plan.words.data(), bytes.data(), bytes.size());
+  plan.info.language = SourceLanguage::Spirv;
+  plan.info.languageSource = LanguageSource::Content;
+  plan.info.languageReason = "SPIR-V magic number";
+  plan.info.vulkan = true;
+  return true;
+}
+
+// The module in the IR, parsed once (a pipeline parses it early for its questions across stages).
+bool parseModuleOnce(StagePlan& plan, std::string* error) {
+  if (plan.module) return true;
+  plan.module = spirv::Module::parse(plan.words.empty() ? plan.front.spirv : plan.words, error);
+  return plan.module.has_value();
+}
+
+}  // namespace
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool isSpirvInput(const SourceFile& input) { return hasSpirvMagic(input.contents) || input.path.ends_with(".spv"); }
+
+bool goesThroughFrontEnd(const SourceFile& input) {
+  return !input.contents.empty() && !isSpirvInput(input) &&
+         !std::memchr(input.contents.data(), '\0', std::min<size_t>(input.contents.size(), 4096));
+}
+
+StageDecision decideInputStage(const SourceFile& input, const TranspileOptions& options) {
+  return decideStage(input.path, input.contents, options.stage, options.stageExtensions);
+}
+
+void runFrontEnd(StagePlan& plan, const TranspileOptions& options) {
+  auto started = std::chrono::steady_clock::now();
+  if (!plan.stage) plan.stage = decideInputStage(*plan.input, options);
+  plan.front = compileToSpirv(*plan.input, options, plan.diags, &*plan.stage);
+  plan.frontEndRan = true;
+  plan.frontEndMs = msSince(started);
+}
+
+bool parseEarly(StagePlan& plan) {
+  if (!plan.front.ok) return false;
+  std::string error;
+  if (!parseModuleOnce(plan, &error)) return false;  // reported when the stage converts
+  plan.analyses = std::make_unique<AnalysisManager>(*plan.module, plan.front.info, plan.input->path);
+  return true;
+}
+
+bool readStage(StagePlan& plan, const TranspileOptions& options) {
+  const SourceFile& input = *plan.input;
+  const std::string& file = input.path;
+  plan.record.file = file;
+  if (input.contents.empty()) {
+    plan.diags.error(file, "file is empty: no shader to convert");
+    return false;
+  }
+  if (isSpirvInput(input)) {
+    if (!readSpirvInput(plan)) return false;
+  } else {
+    if (std::memchr(input.contents.data(), '\0', std::min<size_t>(input.contents.size(), 4096))) {
+      plan.diags.error(file, "binary content is not shader source (and not SPIR-V: bad magic number)");
+      return false;
+    }
+    double earlier = plan.frontEndRan ? plan.frontEndMs : 0.0;  // a pipeline ran it before this stage's clock
+    if (!plan.frontEndRan) {
+      runFrontEnd(plan, options);
+      earlier = 0.0;
+    }
+    if (!plan.front.ok) {
+      recordLanguage(plan.record, plan.front.info);  // the language decision is often why it does not parse
+      return false;
+    }
+    plan.words = plan.front.spirv;
+    plan.info = plan.front.info;
+    plan.record.dialectReason = plan.front.dialectReason;
+    plan.includedFiles = plan.front.includedFiles;
+    plan.record.includedFiles = plan.includedFiles;
+    plan.record.frontEndMs = msSince(plan.started) + earlier;
+    return true;
+  }
+  plan.record.frontEndMs = msSince(plan.started);
+  return true;
+}
+
+bool parseStage(StagePlan& plan) {
+  const std::string& file = plan.input->path;
+  std::string error;
+  if (!parseModuleOnce(plan, &error)) {
+    plan.diags.error(file, error);
+    return false;
+  }
+  if (plan.spirvInput) {
+    if (!validateSpirv(plan.words, plan.info, file, "input", plan.diags)) return false;
+    plan.info.stage = stageFromModel(plan.module->executionModel());
+    plan.info.entryPoint = plan.module->entryPointName();
+    if (plan.module->entryPoints.empty()) {
+      plan.diags.error(file, "SPIR-V module has no entry point");
+      return false;
+    }
+  }
+  StageRecord& record = plan.record;
+  record.stage = plan.info.stage;
+  record.stageReason = plan.spirvInput ? "the module's execution model" : plan.stage->reason;
+  recordLanguage(record, plan.info);
+  if (plan.info.language == SourceLanguage::Glsl)
+    record.dialect = std::to_string(plan.info.version) + (plan.info.es ? " es" : "") + (plan.info.vulkan ? " vulkan" : "");
+  if (!plan.analyses) plan.analyses = std::make_unique<AnalysisManager>(*plan.module, plan.info, file);
+  return true;
+}
+
+void chooseStageOptions(StagePlan& plan, const TranspileOptions& options) {
+  plan.options = options;
+  // An OpenGL GLSL shader below the version its single-pass mode needs is re-emitted at that version
+  // (a 330 vertex shader writing gl_Layer needs 410), said in a note and the report.
+  std::string why;
+  if (std::optional<int> raised = singlePassRaisedGlslVersion(plan.info, options, &why)) {
+    plan.record.versionRaised = StageRecord::VersionRaise{plan.info.version, *raised, why};
+    plan.diags.note(plan.input->path, "output raised from GLSL " + std::to_string(plan.info.version) + " to " +
+                                          std::to_string(*raised) + ": " + why +
+                                          " (desktop GLSL links stages of different versions)");
+    plan.options.targetVersion = *raised;
+  }
+  // Legacy GLSL kept in its own dialect declares the eye parameters as loose uniforms (ESSL 100 and
+  // GLSL below 140 have no uniform blocks).
+  if (takesLegacyGlslRoute(plan.info, resolveTarget(plan.info, plan.options), plan.options) &&
+      plan.options.eye.source == EyeSource::Auto)
+    plan.options.eye.source = EyeSource::LooseUniforms;
+  // An HLSL vertex shader spliced back into its text shifts every vertex entry point of the file:
+  // each is planned here, converted when the splice needs it.
+  if (plan.info.stage == Stage::Vertex && takesHlslSpliceRoute(plan.info, resolveTarget(plan.info, plan.options)))
+    for (const HlslEntryPoint& other : findHlslEntryPoints(plan.input->contents))
+      if (other.name != plan.info.entryPoint) plan.otherEntries.push_back({other.name, other.stage, other.foundBy});
+}
+
+bool runStagePasses(StagePlan& plan) {
+  auto started = std::chrono::steady_clock::now();
+  plan.context = std::make_unique<PassContext>(*plan.module, plan.options, plan.info, plan.diags, plan.input->path,
+                                               *plan.analyses);
+  PassContext& ctx = *plan.context;
+  ctx.nextStage = plan.nextStage ? &*plan.nextStage : nullptr;
+  if (!plan.spirvInput) ctx.frontEndSpirv = &plan.words;
+  ctx.output = {plan.options.target, plan.options.targetVersion};
+  plan.record.passesRan = true;
+  bool ok = runPassPipeline(ctx, &plan.changed, &plan.passLog);
+  plan.record.passes = ctx.record;
+  if (!ok) return false;
+  plan.record.classification = ctx.classification;
+  plan.record.changed = plan.changed;
+  plan.record.passesMs = msSince(started);
+  plan.record.target = resolveTarget(plan.info, plan.options);
+  return true;
+}
+
+namespace {
+
+// The other vertex entry points of an HLSL file, each through its own front end and passes (a 2D
+// one gets no shift). Their diagnostics stay with them: the splice route says what a failure means.
+void convertOtherEntryPoints(StagePlan& plan) {
+  if (!plan.options.entryPoint.empty()) return;  // -e NAME shifts only NAME
+  for (OtherEntryPoint& other : plan.otherEntries) {
+    if (other.stage != Stage::Vertex || other.converted) continue;
+    other.converted = true;
+    auto entry = std::make_unique<StagePlan>();
+    entry->input = plan.input;
+    entry->options = plan.options;
+    entry->options.entryPoint = other.name;
+    entry->options.stage = Stage::Vertex;
+    FrontEndResult front = compileToSpirv(*plan.input, entry->options, other.diags);
+    if (!front.ok) continue;
+    std::string error;
+    entry->module = spirv::Module::parse(front.spirv, &error);
+    if (!entry->module) {
+      other.diags.error(plan.input->path, "entry point '" + other.name + "': " + error);
+      continue;
+    }
+    entry->info = front.info;
+    entry->analyses = std::make_unique<AnalysisManager>(*entry->module, entry->info, plan.input->path);
+    entry->context = std::make_unique<PassContext>(*entry->module, entry->options, entry->info, other.diags,
+                                                   plan.input->path, *entry->analyses);
+    std::string log;
+    if (!runPassPipeline(*entry->context, &other.changed, &log)) continue;
+    other.ok = true;
+    other.context = entry->context.get();
+    plan.entryPlans.push_back(std::move(entry));
+  }
+}
+
+// One re-compile a route asked for (route.h, CompileCheck).
+bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options, const std::string& file,
+                     Diagnostics& diags) {
+  Diagnostics verifyDiags;
+  std::string display = file + " (emitted)";
+  bool ok = check.legacy ? verifyLegacyCompiles(check.text, check.stage, check.version, check.es, display, verifyDiags)
+                         : verifyCompiles(check.blankEffects ? blankEffectBlocks(check.text) : check.text, check.language,
+                                          check.stage, check.entryPoint, check.vulkanSemantics, display, verifyDiags,
+                                          &options, check.includeFrom);
+  if (ok) return true;
+  diags.append(verifyDiags);
+  diags.error(file, check.failure);
+  return false;
+}
+
+// The module must validate before any route writes it; a module the front end already made invalid
+// (an OpenGL loose `uniform bool`) is recorded, and the SPIR-V routes refuse it.
+bool validateForRoutes(StagePlan& plan, EmitRequest& request) {
+  request.finalWords = plan.module->encode();
+  std::string inherited;
+  if (!validateSpirv(request.finalWords, plan.info, plan.input->path, "after the passes", plan.diags,
+                     plan.context->frontEndSpirv, &inherited))
+    return false;
+  request.inheritedInvalid = inherited;
+  plan.record.frontEndSpirvInvalid = inherited;
+  return true;
+}
+
+void noteDecline(StagePlan& plan, const std::string& note) {
+  plan.record.emit.notes.push_back(note);
+  plan.diags.note(plan.input->path, note);
+}
+
+}  // namespace
+
+bool emitStage(StagePlan& plan) {
+  const std::string& file = plan.input->path;
+  EmitRequest request{*plan.input, *plan.context, plan.options, *plan.record.target, plan.changed};
+  bool validated = false;
+  auto backStarted = std::chrono::steady_clock::now();
+  for (const auto& route : routes()) {
+    if (route->needsValidModule() && !validated) {
+      if (!validateForRoutes(plan, request)) return false;
+      validated = true;
+      backStarted = std::chrono::steady_clock::now();
+    }
+    RouteDecision decision = route->accepts(request);
+    if (decision.kind == RouteDecision::Decline) {
+      if (decision.noted) noteDecline(plan, decision.why);
+      continue;
+    }
+    if (decision.kind == RouteDecision::Refuse) {
+      plan.diags.error(file, decision.why);
+      return false;
+    }
+    if (route->needsOtherEntryPoints() && plan.info.stage == Stage::Vertex) {
+      convertOtherEntryPoints(plan);
+      request.otherEntries = &plan.otherEntries;
+    }
+    EmitResult emitted = route->emit(request, plan.record.emit, plan.diags);
+    if (emitted.status == EmitResult::Declined) {
+      noteDecline(plan, emitted.declinedBecause);
+      continue;
+    }
+    if (emitted.status == EmitResult::Failed) return false;
+    for (const auto& check : emitted.checks)
+      if (!runCompileCheck(check, plan.options, file, plan.diags)) return false;
+    plan.record.verified = emitted.reportsVerified;
+    plan.output = std::move(emitted.output);
+    plan.binaryOutput = emitted.binary;
+    plan.copied = emitted.copied;
+    if (plan.copied) {
+      plan.record.output = StageRecord::Output::Copied;
+    } else {
+      plan.record.backEndMs = msSince(backStarted);
+      plan.record.output = StageRecord::Output::Emitted;
+    }
+    plan.record.totalMs = msSince(plan.started);
+    return true;
+  }
+  plan.diags.error(file, "internal error: no back-end route takes this stage");
+  return false;
+}
+
+}  // namespace stereoshift

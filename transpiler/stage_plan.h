@@ -1,0 +1,88 @@
+// The driver's plan of one stage: everything decided about it once, in the order the driver decides
+// it (stage_plan.cpp has one function per step):
+//   1. read      the input's kind (SPIR-V, source), the stage and why (decided once, also for a
+//                pipeline's ordering), the front end's result (language, dialect, SPIR-V, includes)
+//   2. parse     the module in the IR and its analysis manager
+//   3. options   the options this stage converts with: the pipeline's binding, whether it is the
+//                shifted stage, a version a single-pass mode raises the output to, the eye source a
+//                route needs
+//   4. passes    the pass pipeline on the module (its run record in the context)
+//   5. emit      the first back-end route that accepts the stage writes it, and the driver
+//                re-compiles what it wrote (backend/route.h)
+// An HLSL file with several vertex entry points is expanded before the passes into one plan per
+// entry point (`otherEntries`); their passes run when the splice route needs them.
+#pragma once
+
+#include "passes/analysis_manager.h"
+#include "passes/diagnostics.h"
+#include "passes/ir/module.h"
+#include "passes/pass.h"
+#include "transpiler/backend/route.h"
+#include "transpiler/frontend/front_end.h"
+#include "transpiler/report.h"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct StagePlan {
+  const SourceFile* input = nullptr;
+  TranspileOptions options;          // as this stage converts
+  Diagnostics diags;
+  StageRecord record;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+
+  // 1. read
+  bool spirvInput = false;
+  std::optional<StageDecision> stage;  // source inputs: decided once
+  bool frontEndRan = false;
+  FrontEndResult front;
+  double frontEndMs = 0;               // a pipeline runs every front end first
+  SourceInfo info;
+  std::vector<uint32_t> words;         // the input as the front end made it, before any pass
+  std::vector<std::string> includedFiles;
+  // 2. parse
+  std::optional<spirv::Module> module;
+  std::unique_ptr<AnalysisManager> analyses;
+  // 3. options
+  std::optional<NextStageFacts> nextStage;  // how the next stage uses this stage's outputs
+  // 4. passes
+  std::unique_ptr<PassContext> context;
+  bool changed = false;
+  std::string passLog;
+  // The other entry points of an HLSL file (see the file comment), and their plans.
+  std::vector<OtherEntryPoint> otherEntries;
+  std::vector<std::unique_ptr<StagePlan>> entryPlans;
+  // 5. emit
+  std::string output;
+  bool binaryOutput = false;
+  bool copied = false;
+};
+
+// Whether an input is SPIR-V (its magic number, or a .spv name), and whether it goes through the front end.
+bool isSpirvInput(const SourceFile& input);
+bool goesThroughFrontEnd(const SourceFile& input);
+// The front end, run ahead of the other steps (a pipeline parses every stage first); `parseEarly`
+// then parses its module for the questions a pipeline asks across stages (false when it cannot:
+// the stage's own conversion reports why).
+void runFrontEnd(StagePlan& plan, const TranspileOptions& options);
+bool parseEarly(StagePlan& plan);
+// Steps 1 and 2: false (the reason in plan.diags) when the stage cannot be converted.
+bool readStage(StagePlan& plan, const TranspileOptions& options);
+bool parseStage(StagePlan& plan);
+// Step 1 for the stages of a pipeline, before anything else: the stage each input is, decided once.
+StageDecision decideInputStage(const SourceFile& input, const TranspileOptions& options);
+// Step 3: the options the plan converts with, from those given.
+void chooseStageOptions(StagePlan& plan, const TranspileOptions& options);
+// Step 4.
+bool runStagePasses(StagePlan& plan);
+// Step 5.
+bool emitStage(StagePlan& plan);
+
+double msSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace stereoshift
