@@ -11,6 +11,7 @@
 #include "passes/ir/validate.h"
 #include "passes/pass_manager.h"
 #include "passes/ir/module.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <chrono>

@@ -18,6 +18,7 @@
 #include "transpiler/verify/capture_instrument.h"
 #include "transpiler/verify/stage_synthesis.h"
 #include "passes/ir/module.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cfloat>
