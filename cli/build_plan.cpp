@@ -147,13 +147,13 @@ std::vector<fs::path> includedFiles(const fs::path& path, const std::string& tex
   std::vector<std::string> roots = includeSearchPath(path.string(), userDirs);
   // Every `#include "file"` / `#include <file>` the lexer reads (under any #if: a dependency of one
   // configuration is one of the build), none in a comment.
-  source::LexedText tokens(text);
-  for (size_t k = 0; k < tokens.size(); ++k) {
-    if (tokens[k].kind != source::TokenKind::Directive || tokens[k].directive != source::DirectiveKind::Include) continue;
-    size_t operand = tokens.firstOperand(k);
-    if (operand >= tokens.size() || tokens[operand].kind != source::TokenKind::String || tokens[operand].unterminated)
-      continue;
-    std::string quoted = source::spelledString(text, tokens[operand]);
+  source::Lexer lexer(text);
+  source::Token t;
+  while (lexer.next(t)) {
+    if (t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Include) continue;
+    std::vector<source::Token> words = lexer.directiveWords();  // `include` and its operand
+    if (words.size() < 2 || words[1].kind != source::TokenKind::String || words[1].unterminated) continue;
+    std::string quoted = source::spelledString(text, words[1]);
     if (quoted[0] != '"' && quoted[0] != '<') continue;
     std::string header = quoted.substr(1, quoted.size() - 2);
     std::error_code ec;

@@ -277,6 +277,22 @@ TEST(SourceLexer, PullLexerStopsWhereAsked) {
   EXPECT_TRUE(lex(" \n\t\r\n").empty());
 }
 
+TEST(SourceLexer, DirectiveWordsReadOneLineAndGiveBackTheNextToken) {
+  std::string text = "#pragma /* c */ shader_stage(vertex) // tail\n#\nvoid main();";
+  Lexer lexer(text);
+  Token t;
+  ASSERT_TRUE(lexer.next(t));
+  ASSERT_EQ(t.directive, DirectiveKind::Pragma);
+  std::vector<std::string> words;
+  for (const Token& w : lexer.directiveWords()) words.push_back(std::string(tokenText(text, w)));
+  EXPECT_EQ(words, (std::vector<std::string>{"pragma", "shader_stage", "(", "vertex", ")"}));
+  ASSERT_TRUE(lexer.next(t));  // the lone `#`: a directive with no words
+  EXPECT_EQ(t.kind, TokenKind::Directive);
+  EXPECT_TRUE(lexer.directiveWords().empty());
+  ASSERT_TRUE(lexer.next(t));  // given back, not lost
+  EXPECT_EQ(tokenText(text, t), "void");
+}
+
 TEST(SourceLexer, GlslSample) {
   std::string text =
       "#version 300 es\n"

@@ -42,9 +42,7 @@ VersionLine findVersion(const std::string& text) {
   if (!found) return v;
   v.begin = t.begin;
   // The directive's tokens, comments left out: `version`, the number, the profile.
-  std::vector<source::Token> words;
-  while (lexer.next(t) && t.inDirective())
-    if (t.kind != source::TokenKind::Comment) words.push_back(t);
+  std::vector<source::Token> words = lexer.directiveWords();
   const source::Token& name = words.front();
   std::string number = words.size() > 1 && words[1].kind == source::TokenKind::Number
                            ? source::spelledString(text, words[1])

@@ -57,18 +57,25 @@ namespace {
 // count in its parse context only, so the text is read again, through the lexer (`num_views = N`
 // in a comment is none).
 int declaredViewCount(const std::string& text) {
-  source::LexedText tokens(text);
-  for (size_t k = 0; k < tokens.size(); ++k) {
-    if (!tokens.isIdentifier(k) || tokens.text(k) != "num_views") continue;
-    size_t equals = tokens.nextNonComment(k);
-    if (!tokens.isPunct(equals, '=')) continue;
-    size_t count = tokens.nextNonComment(equals);
-    if (count >= tokens.size() || tokens[count].kind != source::TokenKind::Number) continue;
-    std::string digits = source::spelledString(text, tokens[count]);
-    int views = 0;
-    for (size_t i = 0; i < digits.size() && isDecimalDigit(digits[i]) && views < 1000; ++i)
-      views = views * 10 + (digits[i] - '0');
-    if (views > 0) return views;
+  source::Lexer lexer(text);
+  source::Token t, name, equals;  // the two tokens before `t`, comments left out
+  bool seen[2] = {false, false};
+  while (lexer.next(t)) {
+    if (t.kind == source::TokenKind::Comment) continue;
+    bool count = seen[0] && seen[1] && t.kind == source::TokenKind::Number &&
+                 equals.kind == source::TokenKind::Punctuation && text[equals.begin] == '=' &&
+                 name.kind == source::TokenKind::Identifier && source::tokenText(text, name) == "num_views";
+    if (count) {
+      std::string digits = source::spelledString(text, t);
+      int views = 0;
+      for (size_t i = 0; i < digits.size() && isDecimalDigit(digits[i]) && views < 1000; ++i)
+        views = views * 10 + (digits[i] - '0');
+      if (views > 0) return views;
+    }
+    name = equals;
+    equals = t;
+    seen[0] = seen[1];
+    seen[1] = true;
   }
   return 0;
 }

@@ -194,11 +194,18 @@ std::string entryPointBySignature(const std::string& text, Stage stage) {
 }
 
 std::set<std::string> mentionedFunctions(const std::string& text) {
-  source::LexedText tokens(text);
   std::set<std::string> names;
-  for (size_t k = 0; k < tokens.size(); ++k)
-    if (tokens.isIdentifier(k) && tokens.isPunct(tokens.nextNonComment(k), '('))
-      names.insert(source::spelledString(text, tokens[k]));
+  source::Lexer lexer(text);
+  source::Token t, before;  // `before`: the token ahead of `t`, comments left out
+  bool any = false;
+  while (lexer.next(t)) {
+    if (t.kind == source::TokenKind::Comment) continue;
+    if (any && before.kind == source::TokenKind::Identifier && t.kind == source::TokenKind::Punctuation &&
+        text[t.begin] == '(')
+      names.insert(source::spelledString(text, before));
+    before = t;
+    any = true;
+  }
   return names;
 }
 

@@ -15,12 +15,10 @@ namespace stereoshift {
 
 namespace {
 
-// The tokens of the directive `lexer` has just read the Directive token of, comments left out;
-// `t` is left holding the first token after the directive's line (`more`: whether there is one).
-std::vector<std::string> directiveWords(const std::string& text, source::Lexer& lexer, source::Token& t, bool& more) {
+// The words of the directive `lexer` has just read, as spelled.
+std::vector<std::string> directiveWords(const std::string& text, source::Lexer& lexer) {
   std::vector<std::string> words;
-  while ((more = lexer.next(t)) && t.inDirective())
-    if (t.kind != source::TokenKind::Comment) words.push_back(source::spelledString(text, t));
+  for (const source::Token& t : lexer.directiveWords()) words.push_back(source::spelledString(text, t));
   return words;
 }
 
@@ -29,21 +27,19 @@ std::vector<std::string> directiveWords(const std::string& text, source::Lexer& 
 bool hasIncludeGuard(const std::string& text) {
   source::Lexer lexer(text);
   source::Token t;
-  bool more = lexer.next(t);
-  auto skipComments = [&] {
-    while (more && t.kind == source::TokenKind::Comment) more = lexer.next(t);
+  auto nextCode = [&] {
+    while (lexer.next(t))
+      if (t.kind != source::TokenKind::Comment) return true;
+    return false;
   };
-  skipComments();
-  if (!more || t.kind != source::TokenKind::Directive) return false;
+  if (!nextCode() || t.kind != source::TokenKind::Directive) return false;
   const source::DirectiveKind first = t.directive;
-  std::vector<std::string> words = directiveWords(text, lexer, t, more);
+  std::vector<std::string> words = directiveWords(text, lexer);
   if (first == source::DirectiveKind::Pragma) return words == std::vector<std::string>{"pragma", "once"};
   if (first != source::DirectiveKind::Ifndef || words.size() != 2 || !isValidIdentifier(words[1])) return false;
-  const std::string guard = words[1];
-  skipComments();
-  if (!more || t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Define) return false;
-  std::vector<std::string> define = directiveWords(text, lexer, t, more);
-  return define.size() >= 2 && define[1] == guard;
+  if (!nextCode() || t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Define) return false;
+  std::vector<std::string> define = directiveWords(text, lexer);
+  return define.size() >= 2 && define[1] == words[1];
 }
 
 RestrictedIncluder::RestrictedIncluder(std::string mainFile, std::vector<std::string> includeDirs, size_t mainBytes)

@@ -282,6 +282,29 @@ void Lexer::beginDirective(Token& token, size_t hash) {
 }
 
 bool Lexer::next(Token& token) {
+  if (peeked_) {
+    peeked_ = false;
+    token = peek_;
+    return true;
+  }
+  return lex(token);
+}
+
+std::vector<Token> Lexer::directiveWords() {
+  std::vector<Token> words;
+  Token t;
+  while (next(t)) {
+    if (!t.inDirective()) {
+      peek_ = t;
+      peeked_ = true;
+      break;
+    }
+    if (t.kind != TokenKind::Comment) words.push_back(t);
+  }
+  return words;
+}
+
+bool Lexer::lex(Token& token) {
   const size_t n = text_.size();
   const bool inDirective = directive_ != DirectiveKind::None;
   const size_t limit = inDirective ? directiveEnd_ : n;
@@ -302,7 +325,7 @@ bool Lexer::next(Token& token) {
   if (inDirective && i >= directiveEnd_) {  // the directive's line is read: back to the text around it
     directive_ = DirectiveKind::None;
     pos_ = std::max(i, directiveEnd_);
-    return next(token);
+    return lex(token);
   }
   if (i >= n) {
     pos_ = n;

@@ -86,6 +86,10 @@ class Lexer {
   // The next token into `token`; false at the end of the text.
   bool next(Token& token);
 
+  // Right after a Directive token: the tokens of its line (its name, operands or macro body),
+  // comments left out. The lexer then stands after the line.
+  std::vector<Token> directiveWords();
+
   // #endif directives read so far that closed no group.
   int unbalancedEndifs() const { return unbalancedEndifs_; }
   std::string_view text() const { return text_; }
@@ -106,8 +110,12 @@ class Lexer {
   DirectiveKind directiveAt(size_t hash) const;
   void beginDirective(Token& token, size_t hash);
 
+  bool lex(Token& token);
+
   std::string_view text_;
   size_t pos_ = 0;
+  bool peeked_ = false;  // `peek_` is the next token (read past the end of a directive's line)
+  Token peek_;
   // Line bookkeeping: the line of offset `counted_`, and where that line starts.
   size_t counted_ = 0;
   uint32_t line_ = 1;

@@ -146,16 +146,10 @@ StageDecision stageFromPragma(const std::string& text) {
   StageDecision d;
   source::Lexer lexer(text);
   source::Token t;
-  bool more = lexer.next(t);
-  while (more) {
-    if (t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Pragma) {
-      more = lexer.next(t);
-      continue;
-    }
+  while (lexer.next(t)) {
+    if (t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Pragma) continue;
     const size_t lineEnd = t.end;
-    std::vector<source::Token> words;  // the pragma's tokens, comments left out
-    while ((more = lexer.next(t)) && t.inDirective())
-      if (t.kind != source::TokenKind::Comment) words.push_back(t);
+    std::vector<source::Token> words = lexer.directiveWords();
     auto is = [&](size_t k, std::string_view expected) {
       return k < words.size() && source::spelledString(text, words[k]) == expected;
     };
