@@ -1,8 +1,6 @@
 // What the passes know about a shader and about the conversion asked for: the stage, the language
 // and dialect it was written in, and the options of a conversion (the passes read the middle part;
-// the front and back ends read theirs). The bottom layer: everything above includes it. How a
-// stage is told from a file's name and text, and reading files, are the source-text layer's
-// (transpiler/source/stage_rules.h, transpiler/source/file_io.h).
+// the front and back ends read theirs). The bottom layer: everything above includes it.
 #pragma once
 
 #include <cstdint>
@@ -149,6 +147,8 @@ struct SourceFile {
   std::string contents;  // raw bytes
 };
 
+// Names and facts of the enums above. How a stage is told from a file's name and text, and reading
+// files, are the source-text layer's (transpiler/source/stage_rules.h, file_io.h).
 const char* targetEnvName(TargetEnv env);
 const char* stageName(Stage stage);
 bool isPreRasterization(Stage stage);
