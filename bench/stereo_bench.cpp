@@ -5,6 +5,8 @@
 //   build/bench/stereoshift_bench [--reps N]
 #include "transpiler/verify/stereo_verify.h"
 #include "passes/ir/module.h"
+#include "transpiler/source/file_io.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <chrono>
 #include <cmath>

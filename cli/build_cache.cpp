@@ -4,6 +4,7 @@
 
 #include "cli/build_report.h"
 #include "cli/cli_support.h"
+#include "transpiler/source/file_io.h"
 
 #define XXH_INLINE_ALL
 #include <xxhash.h>

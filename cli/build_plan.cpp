@@ -5,6 +5,9 @@
 #include "passes/diagnostics.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/language_detect.h"
+#include "transpiler/source/file_io.h"
+#include "transpiler/source/lexer.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <CLI/CLI.hpp>
 
@@ -142,18 +145,17 @@ class TreeWalk {
 std::vector<fs::path> includedFiles(const fs::path& path, const std::string& text, const std::vector<std::string>& userDirs) {
   std::vector<fs::path> found;
   std::vector<std::string> roots = includeSearchPath(path.string(), userDirs);
-  for (size_t line = 0, next = 0; line < text.size(); line = next) {
-    size_t newline = text.find('\n', line);
-    next = newline == std::string::npos ? text.size() : newline + 1;
-    size_t i = text.find_first_not_of(" \t", line);
-    if (i == std::string::npos || i >= next || text[i] != '#') continue;
-    i = text.find_first_not_of(" \t", i + 1);
-    if (i == std::string::npos || text.compare(i, 7, "include") != 0) continue;
-    i = text.find_first_not_of(" \t", i + 7);
-    if (i == std::string::npos || i >= next || (text[i] != '"' && text[i] != '<')) continue;
-    size_t close = text.find(text[i] == '"' ? '"' : '>', i + 1);
-    if (close == std::string::npos || close >= next) continue;
-    std::string header = text.substr(i + 1, close - i - 1);
+  // Every `#include "file"` / `#include <file>` the lexer reads (under any #if: a dependency of one
+  // configuration is one of the build), none in a comment.
+  source::Lexer lexer(text);
+  source::Token t;
+  while (lexer.next(t)) {
+    if (t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Include) continue;
+    std::vector<source::Token> words = lexer.directiveWords();  // `include` and its operand
+    if (words.size() < 2 || words[1].kind != source::TokenKind::String || words[1].unterminated) continue;
+    std::string quoted = source::spelledString(text, words[1]);
+    if (quoted[0] != '"' && quoted[0] != '<') continue;
+    std::string header = quoted.substr(1, quoted.size() - 2);
     std::error_code ec;
     for (const auto& root : roots)
       if (fs::is_regular_file(fs::path(root) / header, ec)) {

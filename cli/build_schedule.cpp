@@ -5,6 +5,7 @@
 #include "cli/cli_support.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
+#include "transpiler/source/file_io.h"
 
 #include <unistd.h>
 

@@ -2,6 +2,8 @@
 
 #include "cli/worker_pool.h"
 #include "passes/pass_registry.h"
+#include "transpiler/source/file_io.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <CLI/CLI.hpp>
 

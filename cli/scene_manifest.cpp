@@ -1,5 +1,6 @@
 #include "cli/scene_manifest.h"
 #include "passes/diagnostics.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <toml++/toml.h>
 

@@ -89,58 +89,8 @@ struct SourceFile {
   std::string contents;  // raw bytes
 };
 
-// Stage and file helpers shared by every layer.
-bool readFile(const std::string& path, std::string* contents);  // false when it cannot be read
-
-// How a shader's stage is told, in one place (see decideStage). A file name is read as
-//   <stem>[.<stage extension>][.<language extension>]
-// where the language extension is .glsl .hlsl .fx (and the stage extension a stage token: vert,
-// frag, vs, fs, ps, tcs, tes, ..., optionally followed by `h` or `shader`: .vsh, .fragmentshader),
-// or an extension of `extraExtensions` (--stage-ext). Without a stage extension, a file with a
-// language extension may name its stage as a separate part of the stem: parts are split at `.`,
-// `_`, `-`, and where the case changes (basicVS, VS_water, water_ps, SkinnedPixel), and the last
-// part that is a stage word decides. Include-only names (.hlsli .fxh .inc .glslinc .h) have none.
-struct StagedName {
-  std::optional<Stage> stage;
-  std::string key;     // the name without the stage part and the language extension (the pipeline)
-  std::string reason;  // "extension .vs", "name part 'PS'", ... for the report
-};
-StagedName readStagedName(const std::string& path, const std::map<std::string, Stage>& extraExtensions = {});
-
-// What decided a shader's stage, with where a bad `#pragma shader_stage(...)` is.
-struct StageDecision {
-  std::optional<Stage> stage;
-  std::string reason;   // "-S vert", "#pragma shader_stage(vertex)", "extension .vs", ...
-  std::string problem;  // non-empty: an error at problemLine:problemColumn of the text
-  int problemLine = 0, problemColumn = 0;
-};
-// The stage of the shader at `path` with text `text`: -S (`flag`) wins; then glslc's
-// `#pragma shader_stage(vertex|fragment|...)` in the text; then the file name (readStagedName).
-StageDecision decideStage(const std::string& path, const std::string& text, std::optional<Stage> flag,
-                          const std::map<std::string, Stage>& extraExtensions = {});
-// glslc's `#pragma shader_stage(...)` in `text`: the stage, or a problem when the name is unknown.
-StageDecision stageFromPragma(const std::string& text);
-// The words an error asks for when the stage cannot be told.
-std::string stageHint(const std::string& path);
-
-// Where `#include` looks for the shader at `shaderPath`, in order: the -I directories `userDirs`, the
-// shader's own directory, and an `include` directory beside the shader when there is one. The one
-// rule for single-shader runs, pipelines and `build` (each directory once).
-std::vector<std::string> includeSearchPath(const std::string& shaderPath, const std::vector<std::string>& userDirs);
-
-// Names that hold code for other files only: never a pipeline stage.
-bool isIncludeOnlyName(const std::string& path);
-
-// The pipeline a shader belongs to: its directory and file name without the stage part and the
-// language extension (shaders/terrain.vert.hlsl -> shaders/terrain, 5.1.parallax.vs -> 5.1.parallax,
-// basicVS.hlsl -> basic, water_ps.hlsl -> water).
-std::string pipelineKey(const std::string& path, const std::map<std::string, Stage>& extraExtensions = {});
-std::optional<Stage> stageFromPath(const std::string& path, const std::map<std::string, Stage>& extraExtensions = {});
-std::optional<Stage> stageFromName(const std::string& name);  // vert, frag, vertex, ...
-// The stage of an HLSL compile profile (`vs_5_0`, `ps_4_0_level_9_1`, `cs_6_0`; any case), Unknown otherwise.
-Stage stageFromHlslProfile(std::string_view profile);
-// "vulkan1.2" -> TargetEnv::Vulkan1_2 ("opengl" and "opengl4.5" -> OpenGL45); nullopt when unknown.
-std::optional<TargetEnv> targetEnvFromName(const std::string& name);
+// Names and facts of the enums above. How a stage is told from a file's name and text, and reading
+// files, are the source-text layer's (transpiler/source/stage_rules.h, file_io.h).
 const char* targetEnvName(TargetEnv env);
 const char* stageName(Stage stage);
 bool isPreRasterization(Stage stage);

@@ -4,8 +4,9 @@
 The layers, bottom up (README "Architecture"): passes/ (with passes/ir/), transpiler/ (frontend/,
 backend/, verify/, the driver), cli/. A file may include headers of its own layer and of the layers
 below. Product code (passes/, transpiler/, cli/) never includes test/ or bench/. Inside transpiler/,
-frontend/ and backend/ do not include each other, the driver or verify/: the driver sits on top
-of both and verify/ on top of the driver.
+source/ (the lexer and the stage and file-name rules) is at the bottom: it includes only itself
+(and passes/), and every other part may include it. frontend/ and backend/ do not include each
+other, the driver or verify/: the driver sits on top of both and verify/ on top of the driver.
 """
 import argparse
 import pathlib
@@ -15,10 +16,11 @@ import sys
 RANK = {"passes": 0, "transpiler": 1, "cli": 2}
 # Sub-layers of transpiler/: what each may include from transpiler/ besides itself.
 TRANSPILER_ALLOWED = {
-    "frontend": {"frontend"},
-    "backend": {"backend"},
-    "driver": {"frontend", "backend", "driver"},
-    "verify": {"frontend", "backend", "driver", "verify"},
+    "source": {"source"},
+    "frontend": {"source", "frontend"},
+    "backend": {"source", "backend"},
+    "driver": {"source", "frontend", "backend", "driver"},
+    "verify": {"source", "frontend", "backend", "driver", "verify"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 

@@ -8,6 +8,7 @@
 #include "transpiler/frontend/hlsl_effects.h"
 #include "transpiler/frontend/legacy_glsl.h"
 #include "transpiler/output_version.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cstring>

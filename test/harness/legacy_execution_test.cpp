@@ -7,6 +7,8 @@
 #include "transpiler/stereoshift.h"
 #include "transpiler/verify/stereo_verify.h"
 #include "test/harness/vulkan_suite.h"
+#include "transpiler/source/file_io.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <gtest/gtest.h>
 

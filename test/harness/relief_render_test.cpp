@@ -13,6 +13,7 @@
 #include "transpiler/verify/capture_instrument.h"
 #include "transpiler/frontend/front_end.h"
 #include "passes/ir/module.h"
+#include "transpiler/source/file_io.h"
 
 #include <stereoshift/stereo_runtime.h>
 

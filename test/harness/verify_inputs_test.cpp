@@ -6,6 +6,7 @@
 #include "transpiler/verify/stereo_verify.h"
 #include "test/harness/vulkan_suite.h"
 #include "transpiler/stereoshift.h"
+#include "transpiler/source/file_io.h"
 
 #include <gtest/gtest.h>
 

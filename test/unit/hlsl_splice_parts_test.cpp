@@ -1,9 +1,9 @@
-// Unit tests of the HLSL splice's pieces on their own: the scanner (what is a token and what is a
-// comment, string or directive), bracket matching, and the edit buffer (edits by offset applied in
+// Unit tests of the HLSL splice's pieces on their own: the token view (what is a token and what is a
+// comment, string or directive, as the lexer reads it), bracket matching, and the edit buffer (edits by offset applied in
 // one pass, line endings, where a block of declarations goes), plus the shift's text rendering.
 #include "transpiler/backend/hlsl_splice/edit_buffer.h"
-#include "transpiler/backend/hlsl_splice/scanner.h"
 #include "transpiler/backend/hlsl_splice/shift_text.h"
+#include "transpiler/backend/hlsl_splice/token_view.h"
 
 #include <gtest/gtest.h>
 
@@ -57,6 +57,27 @@ TEST(HlslSpliceScanner, LineSplicesContinueDirectivesAndComments) {
   EXPECT_NE(src.substr(view.directives[0].bodyBegin, view.directives[0].end - view.directives[0].bodyBegin)
                 .find("x.Append(x)"),
             std::string::npos);
+}
+
+// Read through the lexer: a comment before a #define's name is blank (the old scanner saw no macro
+// name), and a `'` on a directive's line is text (`#error don't`), never an open string.
+TEST(HlslSpliceScanner, DirectiveLinesAsTheLexerReadsThem) {
+  std::string src = "#define /* the helper */ SHIFT(v) v.Append(v)\n#error don't splice\nint b;\n";
+  TokenView view(src);
+  ASSERT_FALSE(view.scan());
+  ASSERT_EQ(view.directives.size(), 2u);
+  EXPECT_EQ(view.directives[0].macroName, "SHIFT");
+  ASSERT_EQ(view.directives[0].body.size(), 6u);  // v . Append ( v )
+  EXPECT_EQ(src.substr(view.directives[0].body[2].begin, 6), "Append");
+  EXPECT_TRUE(view.directives[0].bodyReadable);
+  EXPECT_EQ(view.directives[1].name, "error");
+  EXPECT_EQ(view.directives[1].end, src.find('\n', src.find("#error")));
+  EXPECT_EQ(tokenTexts(view), (std::vector<std::string>{"int", "b", ";"}));
+  // A block comment before a directive on its line leaves the line a directive.
+  std::string commentFirst = "/* c */ #define X 1\nint a;\n";
+  TokenView after(commentFirst);
+  ASSERT_FALSE(after.scan());
+  EXPECT_EQ(after.directives.size(), 1u);
 }
 
 TEST(HlslSpliceScanner, ByteOrderMarkIsSkipped) {

@@ -222,6 +222,22 @@ TEST(LanguageDetect, VersionDirectiveAlwaysMeansGlsl) {
   EXPECT_EQ(d.reason, "#version directive");
 }
 
+// Read through the lexer: a byte order mark before `#version` does not hide it (the old tokenizer
+// took the mark for code, and the `#` after it for no directive).
+TEST(LanguageDetect, VersionAfterAByteOrderMark) {
+  LanguageDecision d = decideLanguage("x.frag", "\xEF\xBB\xBF#version 450\nvoid main() {}\n", std::nullopt);
+  EXPECT_EQ(d.language, SourceLanguage::Glsl);
+  EXPECT_EQ(d.reason, "#version directive");
+}
+
+TEST(LanguageDetect, DefineNamesAMacroNotEvidence) {
+  // `#define float4 vec4`: float4 is the file's own macro; the `::` of a vk attribute is one token.
+  LanguageEvidence e = scoreLanguage("#define float4 vec4\nfloat4 c;\n[[vk::binding(0)]] cbuffer B { float x; };\n");
+  EXPECT_FALSE(hasSign(e.hlslSigns, "float4"));
+  EXPECT_TRUE(hasSign(e.hlslSigns, "[[vk::binding]]"));
+  EXPECT_TRUE(hasSign(e.hlslSigns, "cbuffer"));
+}
+
 TEST(LanguageDetect, OneWeakHintIsNotEnough) {
   // A lone intrinsic name (here a call into a function defined elsewhere) stays below the threshold.
   EXPECT_EQ(detected("void main() { gl_FragColor = lerp(a, b, t); }"), SourceLanguage::Glsl);

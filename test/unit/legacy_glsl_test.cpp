@@ -243,6 +243,27 @@ TEST(GlslSplice, RenamesMainAndAppendsTheShift) {
   EXPECT_TRUE(verifyLegacyCompiles(r.text, Stage::Vertex, 100, true, "out.vert", diags)) << diags.format() << r.text;
 }
 
+// Read through the lexer: a name written across a line splice is the name (the old scanners split
+// it in two); a rename keeps the splice's line break, so no later line moves.
+TEST(LegacyTranslation, SplicedNamesAreRenamedAndKeepTheirLines) {
+  std::string src = "attribute vec2 uv;\nuniform sampler2D t;\nvoid main() { gl_Position = texture2\\\nD(t, uv); }\n";
+  LegacyTranslation out = translate(src, Stage::Vertex);
+  ASSERT_TRUE(out.ok) << out.error.message;
+  EXPECT_NE(out.text.find("gl_Position = texture\\\n(t, uv);"), std::string::npos) << out.text;
+  EXPECT_EQ(lines(out.text), lines(src) + 2);  // the #version and #line 1 put in front
+}
+
+TEST(GlslSplice, SplicedMainIsRenamedAndKeepsItsLines) {
+  std::string src = "attribute vec3 p;\nvoid ma\\\nin() { gl_Position = vec4(p, 1.0); }\n";
+  GlslSpliceResult r = spliceGlslStereo(src, spliceOptions(100, true));
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.text.find("attribute vec3 p;\nvoid main_stereoshift_mono\\\n() {"), 0u) << r.text;
+  // Comments and string-free directives other than #define are not code: nothing renamed there.
+  GlslSpliceResult commented = spliceGlslStereo("/* main */\n#ifdef main\n#endif\nvoid main() {}\n", spliceOptions(100, true));
+  ASSERT_TRUE(commented.ok);
+  EXPECT_EQ(commented.text.find("/* main */\n#ifdef main\n#endif\nvoid main_stereoshift_mono() {}"), 0u);
+}
+
 TEST(GlslSplice, CutoffFormsAndHaloCopies) {
   std::string src = "#version 130\nin vec4 p;\nout vec4 clip;\nvoid main() { gl_Position = p; clip = gl_Position; }\n";
   GlslSpliceOptions o = spliceOptions(130, false);

@@ -1,7 +1,7 @@
-// The one rule that tells a shader's stage from its path and text (passes/shader.h): how shader
-// collections out there name their files, and the pipeline key that groups the stages of one
-// pipeline (the name without its stage part).
-#include "passes/shader.h"
+// The one rule that tells a shader's stage from its path and text (transpiler/source/stage_rules.h):
+// how shader collections out there name their files, and the pipeline key that groups the stages of
+// one pipeline (the name without its stage part).
+#include "transpiler/source/stage_rules.h"
 
 #include <gtest/gtest.h>
 
@@ -125,6 +125,23 @@ TEST(StageRule, PragmaShaderStage) {
   EXPECT_EQ(bad.problemLine, 2);
   EXPECT_EQ(bad.problemColumn, 22);
   EXPECT_NE(bad.problem.find("vortex"), std::string::npos);
+}
+
+// Read through the lexer: a pragma in a comment is none (the line scan took one in a block comment),
+// and a comment inside the pragma is blank.
+TEST(StageRule, PragmaShaderStageReadThroughTheLexer) {
+  EXPECT_EQ(stageFromPragma("/*\n#pragma shader_stage(vertex)\n*/\n").stage, std::nullopt);
+  EXPECT_EQ(stageFromPragma("// #pragma shader_stage(vertex)\n#pragma shader_stage(compute)\n").stage,
+            Stage::Compute);
+  EXPECT_EQ(stageFromPragma("#pragma shader_stage( /* stage */ fragment )\n").stage, Stage::Fragment);
+  StageDecision open = stageFromPragma("#pragma shader_stage(\n");
+  EXPECT_EQ(open.stage, std::nullopt);
+  EXPECT_EQ(open.problemLine, 1);
+  EXPECT_EQ(open.problemColumn, 22);
+  EXPECT_NE(open.problem.find("unknown stage ''"), std::string::npos);
+  StageDecision unclosed = stageFromPragma("#pragma shader_stage(vertex\n");
+  EXPECT_EQ(unclosed.stage, std::nullopt);
+  EXPECT_EQ(unclosed.problemColumn, 22);
 }
 
 TEST(StageRule, DecisionOrder) {

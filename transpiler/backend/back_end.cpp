@@ -1,5 +1,5 @@
 #include "transpiler/backend/back_end.h"
-#include "passes/source_text.h"
+#include "transpiler/source/identifiers.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
 #include <spirv_cross/spirv_hlsl.hpp>

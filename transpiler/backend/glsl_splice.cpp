@@ -2,8 +2,9 @@
 // dialect by a source splice: see glsl_splice.h.
 #include "transpiler/backend/glsl_splice.h"
 
+#include "transpiler/source/lexer.h"
+
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -15,57 +16,28 @@ namespace {
 
 constexpr const char* kMonoMain = "main_stereoshift_mono";
 
-bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 struct Word {
   size_t begin, end;
-  std::string text;
+  std::string text;     // as spelled (line splices removed)
+  std::string splices;  // the line splices inside it, kept by a rename
 };
 
 // The identifiers and punctuation of `text` outside comments and outside directives other than
-// #define (whose body is code), in order; numbers are skipped.
+// #define (whose body is code: the macro's name and body are words, `define` is not), in order;
+// numbers and string literals are skipped.
 std::vector<Word> words(const std::string& text) {
   std::vector<Word> out;
-  bool lineStart = true;
-  for (size_t i = 0; i < text.size();) {
-    char c = text[i];
-    if (c == '\n') {
-      lineStart = true;
-      ++i;
-    } else if (text.compare(i, 2, "//") == 0) {
-      while (i < text.size() && text[i] != '\n') ++i;
-    } else if (text.compare(i, 2, "/*") == 0) {
-      size_t close = text.find("*/", i + 2);
-      i = close == std::string::npos ? text.size() : close + 2;
-    } else if (std::isspace(static_cast<unsigned char>(c))) {
-      ++i;
-    } else if (c == '#' && lineStart) {
-      size_t k = i + 1;
-      while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
-      bool define = text.compare(k, 6, "define") == 0;
-      if (define) {
-        i = k + 6;
-        lineStart = false;
-        continue;
-      }
-      while (i < text.size() && text[i] != '\n') {
-        if (text[i] == '\\' && i + 1 < text.size()) ++i;
-        ++i;
-      }
-    } else if (isIdentStart(c)) {
-      size_t b = i;
-      while (i < text.size() && isIdentChar(text[i])) ++i;
-      out.push_back({b, i, text.substr(b, i - b)});
-      lineStart = false;
-    } else if (std::isdigit(static_cast<unsigned char>(c))) {
-      while (i < text.size() && (isIdentChar(text[i]) || text[i] == '.')) ++i;
-      lineStart = false;
-    } else {
-      out.push_back({i, i + 1, std::string(1, c)});
-      ++i;
-      lineStart = false;
+  source::LexedText lexed(text);
+  size_t defineName = std::string::npos;  // the `define` of the directive being read
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.kind == source::TokenKind::Directive) {
+      defineName = t.directive == source::DirectiveKind::Define ? lexed.nextNonComment(k) : std::string::npos;
+      continue;
     }
+    if (t.inDirective() && (t.directive != source::DirectiveKind::Define || k == defineName)) continue;
+    if (t.kind == source::TokenKind::Identifier || t.kind == source::TokenKind::Punctuation)
+      out.push_back({t.begin, t.end, source::spelledString(text, t), source::splicesOf(text, t)});
   }
   return out;
 }
@@ -107,7 +79,7 @@ std::vector<std::string> exactPositionCopies(const std::string& source) {
   std::vector<Word> w = words(source);
   std::map<std::string, bool> exact;  // name -> every assignment seen is `name = gl_Position;`
   for (size_t k = 0; k + 1 < w.size(); ++k) {
-    if (!isIdentStart(w[k].text[0]) || w[k].text == "gl_Position") continue;
+    if (!isIdentifierStart(w[k].text[0]) || w[k].text == "gl_Position") continue;
     bool assigned = w[k + 1].text == "=" && !(k + 2 < w.size() && w[k + 2].text == "=") &&
                     !(k > 0 && (w[k - 1].text == "." || w[k - 1].text == "]"));
     if (!assigned) continue;
@@ -131,7 +103,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
   for (const auto& word : w) {
     if (word.text != "main") continue;
     text.append(source, pos, word.begin - pos);
-    text += kMonoMain;
+    text += kMonoMain + word.splices;  // a `main` written across a line splice keeps its lines
     pos = word.end;
     ++mains;
   }

@@ -5,8 +5,9 @@
 
 #include "transpiler/backend/hlsl_splice/edit_buffer.h"
 #include "transpiler/backend/hlsl_splice/rewriters.h"
-#include "transpiler/backend/hlsl_splice/scanner.h"
+#include "transpiler/backend/hlsl_splice/token_view.h"
 #include "transpiler/backend/hlsl_splice/top_level.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cmath>

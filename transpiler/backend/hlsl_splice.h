@@ -27,12 +27,12 @@
 // text and the rewritten tokens is preserved byte for byte; inserted text starts on its own line
 // and uses the file's line endings.
 //
-// The pieces (transpiler/backend/hlsl_splice/): the scanner (tokens, comments, strings,
-// directives), the top-level parser (functions, structs, attributes), the edit buffer (insertions
-// by offset), the shift's text rendering and the geometry and domain rewriters. The scanner
-// understands comments, string literals, preprocessor lines (not macro expansion, except
-// `#define`s whose body calls `.Append(`), balanced brackets and template argument lists; it is
-// not a full HLSL parser.
+// The pieces (transpiler/backend/hlsl_splice/): the token view (the lexer's tokens, comments,
+// strings and directives as the splice reads them), the top-level parser (functions, structs,
+// attributes), the edit buffer (insertions by offset), the shift's text rendering and the geometry
+// and domain rewriters. The splice understands comments, string literals, preprocessor lines (not
+// macro expansion, except `#define`s whose body calls `.Append(`), balanced brackets and template
+// argument lists; it is not a full HLSL parser.
 #pragma once
 
 #include "passes/shader.h"

@@ -1,8 +1,13 @@
 // Front end: GLSL (desktop, ES, Vulkan) and HLSL through glslang to SPIR-V; SPIR-V binaries as is.
+// compileToSpirv (front_end.cpp) decides stage, language and dialect and makes the glslang attempts
+// (glslang_invocation.h) over the #include rules of include_resolver.h; verifyCompiles
+// (recompile.cpp) checks emitted text. findVersion (glsl_version.h) reads the #version line.
 #pragma once
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/frontend/glsl_version.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <set>
 #include <string>
@@ -21,18 +26,6 @@ struct FrontEndResult {
   std::vector<std::string> includedFiles;
   std::string dialectReason;  // GLSL without #version or below 330: why this dialect (legacy_glsl.h)
 };
-
-// The first `#version N [es|core|compatibility]` directive at the start of a line of GLSL `text`.
-// Total: any text gives an answer. A directive whose number is garbled (`3x0`), missing, too large
-// for an int or not a GLSL version gives version 0 and says so in `problem`.
-struct VersionLine {
-  int version = 110;  // GLSL's default without #version
-  bool es = false;
-  size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
-  std::string problem;                        // empty: the directive (or its absence) is fine
-  size_t problemAt = std::string::npos;       // offset in `text` the problem is reported at
-};
-VersionLine findVersion(const std::string& text);
 
 // Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form. `stage`: the stage the
 // driver decided for it (decideStage), when it did; else the front end decides it.

@@ -1,5 +1,5 @@
 #include "transpiler/frontend/glslang_log.h"
-#include "passes/source_text.h"
+#include "transpiler/source/identifiers.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,9 +1,10 @@
 // This turns HLSL effect-file text into what glslang can parse, and reads which entry points its
-// techniques compile (see hlsl_effects.h). A small scanner of its own: identifiers, brackets,
-// comments and strings; nothing here needs more of HLSL.
+// techniques compile and which one to compile (see hlsl_effects.h). It reads the lexer's tokens
+// outside comments, strings and directives; nothing here needs more of HLSL.
 #include "transpiler/frontend/hlsl_effects.h"
 
-#include "passes/source_text.h"
+#include "transpiler/source/lexer.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <cctype>
 #include <optional>
@@ -16,53 +17,20 @@ namespace {
 
 struct Word {
   size_t begin, end;
+  bool identifier;
 };
 
-// The identifiers and single-character punctuation of `text` outside comments, strings and
-// preprocessor lines, in order.
+// The identifiers, numbers and punctuation of `text` outside comments, strings and preprocessor
+// lines, in order, as the lexer reads them.
 std::vector<Word> words(const std::string& text) {
   std::vector<Word> out;
-  bool lineStart = true;
-  for (size_t i = 0; i < text.size();) {
-    char c = text[i];
-    if (c == '\n') {
-      lineStart = true;
-      ++i;
+  source::Lexer lexer(text);
+  source::Token t;
+  while (lexer.next(t)) {
+    if (t.inDirective() || t.kind == source::TokenKind::Directive || t.kind == source::TokenKind::Comment ||
+        t.kind == source::TokenKind::String)
       continue;
-    }
-    if (c == ' ' || c == '\t' || c == '\r') {
-      ++i;
-      continue;
-    }
-    if (c == '#' && lineStart) {  // a directive: to the end of the line, line splices included
-      while (i < text.size() && text[i] != '\n') i += text[i] == '\\' && i + 1 < text.size() ? 2 : 1;
-      continue;
-    }
-    lineStart = false;
-    if (text.compare(i, 2, "//") == 0) {
-      while (i < text.size() && text[i] != '\n') ++i;
-      continue;
-    }
-    if (text.compare(i, 2, "/*") == 0) {
-      size_t close = text.find("*/", i + 2);
-      i = close == std::string::npos ? text.size() : close + 2;
-      continue;
-    }
-    if (c == '"') {
-      size_t j = i + 1;
-      while (j < text.size() && text[j] != '"' && text[j] != '\n') j += text[j] == '\\' ? 2 : 1;
-      i = std::min(j + 1, text.size());
-      continue;
-    }
-    if (isIdentifierChar(c)) {
-      size_t j = i;
-      while (j < text.size() && isIdentifierChar(text[j])) ++j;
-      out.push_back({i, j});
-      i = j;
-      continue;
-    }
-    out.push_back({i, i + 1});
-    ++i;
+    out.push_back({t.begin, t.end, t.kind == source::TokenKind::Identifier});
   }
   return out;
 }
@@ -82,10 +50,7 @@ class EffectText {
                              : std::string_view();
   }
   bool is(size_t k, char c) const { return at(k).size() == 1 && at(k)[0] == c; }
-  bool isIdent(size_t k) const {
-    return k < words_.size() && isIdentifierChar(text_[words_[k].begin]) &&
-           !std::isdigit(static_cast<unsigned char>(text_[words_[k].begin]));
-  }
+  bool isIdent(size_t k) const { return k < words_.size() && words_[k].identifier; }
   size_t size() const { return words_.size(); }
   const Word& word(size_t k) const { return words_[k]; }
 
@@ -152,8 +117,9 @@ std::string blankEffectBlocks(const std::string& text) {
   return out;
 }
 
-std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const std::string& text) {
-  EffectText e(text);
+namespace {
+
+std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const EffectText& e) {
   std::vector<std::pair<Stage, std::string>> found;
   auto add = [&](std::string_view profile, std::string_view name) {
     Stage stage = stageFromHlslProfile(profile);
@@ -174,10 +140,9 @@ std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const std::strin
   return found;
 }
 
-std::string entryPointBySignature(const std::string& text, Stage stage) {
+std::string entryPointBySignature(const EffectText& e, Stage stage) {
   if (stage != Stage::Vertex && stage != Stage::Fragment) return {};
   const std::string systemValue = stage == Stage::Vertex ? "sv_position" : "sv_target";
-  EffectText e(text);
   auto isSystemValue = [&](size_t k) { return lowered(e.at(k)).starts_with(systemValue); };
   // Structs with a member of that semantic.
   std::set<std::string> carriers;
@@ -216,6 +181,63 @@ std::string entryPointBySignature(const std::string& text, Stage stage) {
     if (!called.count(name)) return name;
   }
   return {};
+}
+
+}  // namespace
+
+std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const std::string& text) {
+  return techniqueEntryPoints(EffectText(text));
+}
+
+std::string entryPointBySignature(const std::string& text, Stage stage) {
+  return entryPointBySignature(EffectText(text), stage);
+}
+
+std::set<std::string> mentionedFunctions(const std::string& text) {
+  std::set<std::string> names;
+  source::Lexer lexer(text);
+  source::Token t, before;  // `before`: the token ahead of `t`, comments left out
+  bool any = false;
+  while (lexer.next(t)) {
+    if (t.kind == source::TokenKind::Comment) continue;
+    if (any && before.kind == source::TokenKind::Identifier && t.kind == source::TokenKind::Punctuation &&
+        text[t.begin] == '(')
+      names.insert(source::spelledString(text, before));
+    before = t;
+    any = true;
+  }
+  return names;
+}
+
+const char* conventionalHlslEntry(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "VSMain";
+    case Stage::Fragment: return "PSMain";
+    case Stage::Geometry: return "GSMain";
+    case Stage::TessControl: return "HSMain";
+    case Stage::TessEvaluation: return "DSMain";
+    case Stage::Compute: return "CSMain";
+    case Stage::Mesh: return "MSMain";
+    case Stage::Task: return "ASMain";
+    default: return nullptr;
+  }
+}
+
+std::string chooseHlslEntry(const std::string& text, const std::set<std::string>& functions, Stage stage,
+                            const std::string& requested) {
+  if (!requested.empty()) return requested;
+  if (functions.count("main")) return "main";
+  const char* conventional = conventionalHlslEntry(stage);
+  if (conventional && functions.count(conventional)) return conventional;
+  EffectText e(text);
+  // Effect files name their entry points in their techniques: the first one of this stage.
+  for (const auto& [techniqueStage, name] : techniqueEntryPoints(e)) {
+    if (techniqueStage == stage && functions.count(name)) return name;
+  }
+  // Else the signature says it (`VS`, `mainVS`, `RenderSceneVS`...): the first function of the file
+  // whose outputs carry this stage's system value.
+  if (std::string bySignature = entryPointBySignature(e, stage); !bySignature.empty()) return bySignature;
+  return "main";
 }
 
 }  // namespace stereoshift

@@ -1,11 +1,13 @@
-// HLSL effect-file (.fx) text for glslang, and the entry points an HLSL file's text names: turns an effect file into HLSL glslang can parse by
-// blanking what only the D3D effect framework reads (technique / pass blocks, state-object blocks,
-// shader-object variables), and finds the entry points the techniques compile. Blanked text keeps
-// every line break, so glslang's line numbers stay those of the file.
+// HLSL effect-file (.fx) text for glslang, and the entry points an HLSL file's text names: turns an
+// effect file into HLSL glslang can parse by blanking what only the D3D effect framework reads
+// (technique / pass blocks, state-object blocks, shader-object variables), finds the entry points
+// the techniques compile, and chooses the one to compile. Blanked text keeps every line break, so
+// glslang's line numbers stay those of the file.
 #pragma once
 
 #include "passes/shader.h"
 
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,5 +29,18 @@ std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const std::strin
 // a member of the returned struct, an `out` parameter), for a pixel shader SV_Target. Empty when
 // there is none (or for other stages).
 std::string entryPointBySignature(const std::string& text, Stage stage);
+
+// The identifiers of HLSL `text` followed by `(`: the functions it defines or calls (and the
+// function-like macros it uses), by name; a mention in a comment or a string is none.
+std::set<std::string> mentionedFunctions(const std::string& text);
+
+// The entry-point name samples use for `stage` (VSMain, PSMain, ...), null where there is none.
+const char* conventionalHlslEntry(Stage stage);
+
+// The HLSL entry point to compile: `requested` (-e), else `main`, else the stage's conventional
+// name, else the first function of this stage a technique compiles, else the one its signature
+// marks (entryPointBySignature), else `main`; `functions` is mentionedFunctions(text).
+std::string chooseHlslEntry(const std::string& text, const std::set<std::string>& functions, Stage stage,
+                            const std::string& requested);
 
 }  // namespace stereoshift

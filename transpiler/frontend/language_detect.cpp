@@ -1,9 +1,9 @@
 // Language detection by file name and by content: this turns a shader's text into "GLSL" or "HLSL"
 // by weighing the constructs only one of the two languages has. See language_detect.h for the order
-// of the rules; this file holds the tokenizer and the scorer.
+// of the rules; this file holds the scorer, which reads the lexer's tokens.
 #include "transpiler/frontend/language_detect.h"
 
-#include "passes/source_text.h"
+#include "transpiler/source/lexer.h"
 
 #include <algorithm>
 #include <cctype>
@@ -22,93 +22,62 @@ struct Token {
   std::string text;  // Directive: the directive's name (`version`, `define`, ...)
 };
 
-bool isIdentifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-
-// Splits `text` into identifiers, numbers, punctuation (`::` as one token) and preprocessor
-// directives; comments and string/character literals are dropped, so a commented-out HLSL line in
-// a GLSL file (or `"SV_Target"` in a message) is no evidence. `#define NAME` adds NAME to `macros`:
-// a GLSL file that maps `float4` to `vec4` with a macro is not HLSL for it. `stopAtVersion`: stop at
-// a `#version` directive (the decision is then made; most GLSL files start with one).
+// The lexer's tokens as the scorer reads them: comments are dropped, so a commented-out HLSL line in
+// a GLSL file is no evidence; a string literal's text is no evidence either, but an include's file
+// name is, so a literal is kept whole as punctuation. A directive is its name (`version`,
+// `define`, ...), then the rest of its line; `#define NAME` adds NAME to `macros` instead: a GLSL
+// file that maps `float4` to `vec4` with a macro is not HLSL for it. `::` is one token.
+// `stopAtVersion`: stop at a `#version` directive (the decision is then made; most GLSL files start
+// with one).
 std::vector<Token> tokenize(const std::string& text, std::set<std::string>* macros, bool stopAtVersion = false) {
   std::vector<Token> tokens;
-  bool lineStart = true;  // only whitespace so far on this line: a `#` here starts a directive
-  size_t i = 0, n = text.size();
-  auto identifierAt = [&](size_t at) {
-    size_t end = at;
-    while (end < n && isIdentifierChar(text[end])) ++end;
-    return text.substr(at, end - at);
-  };
-  while (i < n) {
-    char c = text[i];
-    if (c == '\n') {
-      lineStart = true;
-      ++i;
+  source::Lexer lexer(text);
+  source::Token t;
+  std::string scratch;
+  bool directiveName = false, macroName = false;  // the next token names the directive / the macro
+  size_t colonEnd = std::string::npos;             // where the last lone `:` token ends
+  while (lexer.next(t)) {
+    if (t.kind == source::TokenKind::Comment) continue;
+    if (t.kind == source::TokenKind::Directive) {
+      if (directiveName) tokens.push_back({TokenKind::Directive, ""});  // the one before had no name
+      directiveName = true;
+      macroName = false;
       continue;
     }
-    if (std::isspace(static_cast<unsigned char>(c))) {
-      ++i;
-      continue;
+    std::string_view spelled = source::spelling(text, t, scratch);
+    bool nameLike = t.kind == source::TokenKind::Identifier || t.kind == source::TokenKind::Number;
+    if (directiveName) {
+      directiveName = false;
+      bool named = t.inDirective() && nameLike;
+      tokens.push_back({TokenKind::Directive, named ? std::string(spelled) : ""});
+      if (stopAtVersion && tokens.back().text == "version") break;
+      macroName = tokens.back().text == "define";
+      if (named) continue;
     }
-    if (c == '\\' && i + 1 < n && text[i + 1] == '\n') {  // a continued line is still the same line
-      i += 2;
-      continue;
-    }
-    if (c == '/' && i + 1 < n && text[i + 1] == '/') {
-      while (i < n && text[i] != '\n') ++i;
-      continue;
-    }
-    if (c == '/' && i + 1 < n && text[i + 1] == '*') {
-      size_t end = text.find("*/", i + 2);
-      i = end == std::string::npos ? n : end + 2;
-      continue;
-    }
-    if (c == '"' || c == '\'') {
-      size_t j = i + 1;
-      while (j < n && text[j] != c && text[j] != '\n') j += text[j] == '\\' ? 2 : 1;
-      // The literal's text itself is no evidence, but an include's file name is: keep it as a string.
-      tokens.push_back({TokenKind::Punct, text.substr(i, std::min(j + 1, n) - i)});
-      i = std::min(j + 1, n);
-      lineStart = false;
-      continue;
-    }
-    bool atLineStart = lineStart;
-    lineStart = false;
-    if (c == '#' && atLineStart) {
-      size_t j = i + 1;
-      while (j < n && (text[j] == ' ' || text[j] == '\t')) ++j;
-      std::string name = identifierAt(j);
-      tokens.push_back({TokenKind::Directive, name});
-      if (stopAtVersion && name == "version") break;
-      i = j + name.size();
-      if (name == "define") {
-        while (i < n && (text[i] == ' ' || text[i] == '\t')) ++i;
-        std::string defined = identifierAt(i);
-        if (!defined.empty()) macros->insert(defined);
-        i += defined.size();
+    if (macroName) {
+      macroName = false;
+      if (t.inDirective() && nameLike) {
+        macros->insert(std::string(spelled));
+        continue;
       }
-      continue;
     }
-    if (isIdentifierStart(c)) {
-      std::string word = identifierAt(i);
-      tokens.push_back({TokenKind::Identifier, word});
-      i += word.size();
-      continue;
+    switch (t.kind) {
+      case source::TokenKind::Identifier: tokens.push_back({TokenKind::Identifier, std::string(spelled)}); break;
+      case source::TokenKind::Number: tokens.push_back({TokenKind::Number, std::string(spelled)}); break;
+      case source::TokenKind::String: tokens.push_back({TokenKind::Punct, std::string(source::tokenText(text, t))}); break;
+      default:
+        if (text[t.begin] == ':' && colonEnd == t.begin) {
+          tokens.back().text = "::";
+          colonEnd = std::string::npos;
+          continue;
+        }
+        tokens.push_back({TokenKind::Punct, std::string(1, text[t.begin])});
+        colonEnd = text[t.begin] == ':' ? t.end : std::string::npos;
+        continue;
     }
-    if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < n && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
-      size_t j = i;
-      while (j < n && (isIdentifierChar(text[j]) || text[j] == '.')) ++j;
-      tokens.push_back({TokenKind::Number, text.substr(i, j - i)});
-      i = j;
-      continue;
-    }
-    if (c == ':' && i + 1 < n && text[i + 1] == ':') {
-      tokens.push_back({TokenKind::Punct, "::"});
-      i += 2;
-      continue;
-    }
-    tokens.push_back({TokenKind::Punct, std::string(1, c)});
-    ++i;
+    colonEnd = std::string::npos;
   }
+  if (directiveName) tokens.push_back({TokenKind::Directive, ""});
   return tokens;
 }
 

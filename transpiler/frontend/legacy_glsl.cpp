@@ -1,6 +1,7 @@
 // This turns ESSL 100 and desktop GLSL 110-150 into ESSL 310 / GLSL 330 for analysis: see legacy_glsl.h.
 #include "transpiler/frontend/legacy_glsl.h"
 
+#include "transpiler/source/lexer.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -8,134 +9,92 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace stereoshift {
 
 namespace {
 
-bool isIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // One identifier of the source with what surrounds it, enough for a token-level rewrite.
 struct Token {
-  size_t begin = 0, end = 0;
-  std::string text;
-  bool inDirective = false;   // inside a preprocessor line
-  std::string directive;      // the directive's name when inDirective ("define", "if", ...)
-  int conditionalDepth = 0;   // #if nesting around it
+  size_t index = 0;           // in Scan::lexed
+  size_t begin = 0, end = 0;  // bytes
+  std::string text;           // as spelled (line splices removed)
+  bool inDirective = false;   // inside a preprocessor line (a #define body)
   bool underGlEs = false;     // inside `#ifdef GL_ES` / `#if defined(GL_ES)`
 };
 
 struct Directive {
-  size_t begin = 0, end = 0;  // the whole line, without its newline
-  std::string name;           // "version", "extension", ...
+  size_t begin = 0, end = 0;  // the whole logical line, without its line break
+  source::DirectiveKind kind = source::DirectiveKind::None;
   std::string rest;           // text after the name
 };
 
-// The identifiers and directives of `text`, skipping comments and numbers.
+// The identifiers and directives of `text` as the lexer reads them (comments left out), and where
+// declarations may go in.
 struct Scan {
+  explicit Scan(const std::string& text);
+
+  source::LexedText lexed;
   std::vector<Token> identifiers;
   std::vector<Directive> directives;
-  std::vector<size_t> codeLineStarts;  // start of each line holding code outside any #if (in order)
+  // The start of the first line holding code outside any #if (npos: none). A line starts after a line
+  // break between tokens: never inside a comment, a directive or after a splice.
+  size_t firstCodeLine = std::string::npos;
 };
 
-Scan scan(const std::string& text) {
-  Scan out;
-  int depth = 0;
+// The last line break in [from, to) (blanks and splices between two tokens) that no splice hides.
+size_t lastLineBreak(const std::string& text, size_t from, size_t to) {
+  for (size_t k = to; k > from; --k) {
+    if (text[k - 1] != '\n') continue;
+    size_t b = k - 1;
+    bool spliced = (b >= 1 && text[b - 1] == '\\') || (b >= 2 && text[b - 1] == '\r' && text[b - 2] == '\\');
+    if (!spliced) return b;
+  }
+  return std::string::npos;
+}
+
+Scan::Scan(const std::string& text) : lexed(text) {
   std::vector<bool> glEsStack;  // per open #if: whether it tests GL_ES
-  size_t lineStart = 0;
-  bool atLineStart = true;  // only blanks since the line began
-  bool lineHasCode = false;
-  size_t i = 0;
   auto underGlEs = [&] { return std::find(glEsStack.begin(), glEsStack.end(), true) != glEsStack.end(); };
-  while (i < text.size()) {
-    char c = text[i];
-    if (c == '\n') {
-      ++i;
-      lineStart = i;
-      atLineStart = true;
-      lineHasCode = false;
-      continue;
-    }
-    if (text.compare(i, 2, "//") == 0) {
-      while (i < text.size() && text[i] != '\n') ++i;
-      continue;
-    }
-    if (text.compare(i, 2, "/*") == 0) {
-      size_t close = text.find("*/", i + 2);
-      i = close == std::string::npos ? text.size() : close + 2;
-      continue;
-    }
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-      ++i;
-      continue;
-    }
-    if (c == '#' && atLineStart) {
-      // A directive: to the end of the line, with `\` continuations.
+  size_t lineStart = 0, seen = 0, directiveName = std::string::npos;
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.begin > seen)
+      if (size_t lineBreak = lastLineBreak(text, seen, t.begin); lineBreak != std::string::npos) lineStart = lineBreak + 1;
+    seen = std::max(seen, t.end);
+    if (t.kind == source::TokenKind::Comment) continue;
+    if (t.kind == source::TokenKind::Directive) {
       Directive d;
-      d.begin = i;
-      size_t end = i;
-      while (end < text.size() && text[end] != '\n') {
-        if (text[end] == '\\' && end + 1 < text.size() && text[end + 1] == '\n') end += 2;
-        else if (text[end] == '\\' && text.compare(end + 1, 2, "\r\n") == 0) end += 3;
-        else ++end;
-      }
-      d.end = end;
-      if (d.end > d.begin && text[d.end - 1] == '\r') --d.end;
-      size_t k = i + 1;
-      while (k < d.end && (text[k] == ' ' || text[k] == '\t')) ++k;
-      size_t nameBegin = k;
-      while (k < d.end && isIdentChar(text[k])) ++k;
-      d.name = text.substr(nameBegin, k - nameBegin);
-      d.rest = text.substr(k, d.end - k);
+      d.begin = t.begin;
+      d.end = t.end;
+      d.kind = t.directive;
+      directiveName = lexed.directiveName(k).empty() ? std::string::npos : lexed.nextNonComment(k);
+      size_t restBegin = directiveName != std::string::npos ? lexed[directiveName].end : t.begin + 1;
+      d.rest = text.substr(restBegin, d.end - restBegin);
       bool testsGlEs = d.rest.find("GL_ES") != std::string::npos;
-      if (d.name == "if" || d.name == "ifdef" || d.name == "ifndef") {
-        ++depth;
-        glEsStack.push_back(d.name != "ifndef" && testsGlEs);
-      } else if (d.name == "endif") {
-        depth = std::max(0, depth - 1);
+      using source::DirectiveKind;
+      if (d.kind == DirectiveKind::If || d.kind == DirectiveKind::Ifdef || d.kind == DirectiveKind::Ifndef) {
+        glEsStack.push_back(d.kind != DirectiveKind::Ifndef && testsGlEs);
+      } else if (d.kind == DirectiveKind::Endif) {
         if (!glEsStack.empty()) glEsStack.pop_back();
-      } else if (d.name == "else" || d.name == "elif") {
+      } else if (d.kind == DirectiveKind::Else || d.kind == DirectiveKind::Elif) {
         if (!glEsStack.empty()) glEsStack.back() = false;
       }
-      // Macro bodies are code: their identifiers are rewritten like any other.
-      if (d.name == "define") {
-        for (size_t j = k; j < d.end;) {
-          if (text.compare(j, 2, "//") == 0) break;
-          if (isIdentStart(text[j])) {
-            size_t b = j;
-            while (j < d.end && isIdentChar(text[j])) ++j;
-            out.identifiers.push_back({b, j, text.substr(b, j - b), true, d.name, depth, underGlEs()});
-          } else if (std::isdigit(static_cast<unsigned char>(text[j]))) {
-            while (j < d.end && (isIdentChar(text[j]) || text[j] == '.')) ++j;
-          } else {
-            ++j;
-          }
-        }
-      }
-      out.directives.push_back(d);
-      i = end;
+      directives.push_back(std::move(d));
       continue;
     }
-    atLineStart = false;
-    if (!lineHasCode && depth == 0) out.codeLineStarts.push_back(lineStart);
-    lineHasCode = true;
-    if (isIdentStart(c)) {
-      size_t b = i;
-      while (i < text.size() && isIdentChar(text[i])) ++i;
-      out.identifiers.push_back({b, i, text.substr(b, i - b), false, "", depth, underGlEs()});
+    if (t.inDirective()) {
+      // Macro bodies are code: their identifiers (the macro's name too) are rewritten like any other.
+      if (t.directive == source::DirectiveKind::Define && t.kind == source::TokenKind::Identifier && k != directiveName)
+        identifiers.push_back({k, t.begin, t.end, source::spelledString(text, t), true, underGlEs()});
       continue;
     }
-    if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
-      while (i < text.size() && (isIdentChar(text[i]) || text[i] == '.' ||
-                                 ((text[i] == '+' || text[i] == '-') && (text[i - 1] == 'e' || text[i - 1] == 'E'))))
-        ++i;
-      continue;
-    }
-    ++i;
+    if (firstCodeLine == std::string::npos && t.ifDepth == 0) firstCodeLine = lineStart;
+    if (t.kind == source::TokenKind::Identifier)
+      identifiers.push_back({k, t.begin, t.end, source::spelledString(text, t), false, underGlEs()});
   }
-  return out;
 }
 
 // Extensions whose features ESSL 300 has in core: the translation drops their #extension lines.
@@ -144,11 +103,12 @@ bool isCoreInEssl300(const std::string& extension) {
          extension == "GL_EXT_frag_depth" || extension == "GL_EXT_draw_buffers";
 }
 
+// The extension an #extension line names: the first identifier after the directive's name.
 std::string extensionName(const std::string& rest) {
   size_t i = 0;
-  while (i < rest.size() && !isIdentStart(rest[i])) ++i;
+  while (i < rest.size() && !isIdentifierStart(rest[i])) ++i;
   size_t b = i;
-  while (i < rest.size() && isIdentChar(rest[i])) ++i;
+  while (i < rest.size() && isIdentifierChar(rest[i])) ++i;
   return rest.substr(b, i - b);
 }
 
@@ -297,7 +257,7 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
   }
   // No #version: GLSL's default is 110, ESSL's 100; what the text uses decides between them.
   d.legacy = true;
-  Scan s = scan(text);
+  Scan s(text);
   for (const auto& t : s.identifiers) {
     if (t.text == "ftransform" || isCompatBuiltin(t.text)) {
       d.version = 110;
@@ -306,7 +266,7 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
     }
   }
   for (const auto& dir : s.directives) {
-    if (dir.name == "extension") {
+    if (dir.kind == source::DirectiveKind::Extension) {
       std::string ext = extensionName(dir.rest);
       if (ext.starts_with("GL_OES_") || isCoreInEssl300(ext) || ext == "GL_EXT_shadow_samplers") {
         d.version = 100;
@@ -333,135 +293,181 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
   return d;
 }
 
-LegacyTranslation translateLegacyGlsl(const std::string& text, Stage stage, const LegacyDialect& dialect,
-                                      const std::string& path) {
-  LegacyTranslation result;
-  Scan s = scan(text);
-  bool es = dialect.es;
-  bool fragment = stage == Stage::Fragment;
-  bool oneXX = es || dialect.version < 130;  // still without in/out storage and `texture`
-  auto compat = es ? std::map<std::string, CompatBuiltin>{} : compatBuiltins(stage);
+namespace {
 
+// One translation (see translateLegacyGlsl): the edits it makes to the user's text, by offset, and
+// what it has to declare for them.
+class LegacyTranslator {
+ public:
+  LegacyTranslator(const std::string& text, Stage stage, const LegacyDialect& dialect, const std::string& path)
+      : text_(text), path_(path), stage_(stage), dialect_(dialect), scan_(text), es_(dialect.es),
+        fragment_(stage == Stage::Fragment), oneXX_(dialect.es || dialect.version < 130),
+        compat_(dialect.es ? std::map<std::string, CompatBuiltin>{} : compatBuiltins(stage)) {}
+
+  LegacyTranslation run() {
+    rewriteDirectives();
+    for (const Token& t : scan_.identifiers)
+      if (auto error = rewriteIdentifier(t)) return failed(*error);
+    if (fragColor_ && fragData_) {
+      auto at = std::find_if(scan_.identifiers.begin(), scan_.identifiers.end(),
+                             [](const Token& t) { return t.text == "gl_FragData"; });
+      return failed(locate(at->begin, "a shader may write gl_FragColor or gl_FragData, not both"));
+    }
+    LegacyTranslation result;
+    if (std::string decls = declarations(result.declared); !decls.empty()) {
+      // At the start of the first line of code outside any #if, so no line moves.
+      size_t at = scan_.firstCodeLine == std::string::npos ? text_.size() : scan_.firstCodeLine;
+      edits_.push_back({at, at, decls});
+    }
+    result.text = applyEdits();
+    result.ok = true;
+    return result;
+  }
+
+ private:
   struct Edit {
     size_t begin, end;
     std::string replacement;
   };
-  std::vector<Edit> edits;
-  std::set<std::string> declare;  // compat built-ins (by gl_ name) used
-  std::set<std::string> helpers;  // shadow helpers used
-  bool fragColor = false, fragData = false;
-  auto located = [&](size_t offset, const std::string& message) {
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(offset), '\n'));
-    size_t ls = text.rfind('\n', offset == 0 ? 0 : offset - 1);
-    ls = (ls == std::string::npos || offset == 0) ? 0 : ls + 1;
-    result.error = Diagnostic{Severity::Error, path, line, static_cast<int>(offset - ls) + 1, message};
-    return result;
-  };
 
-  for (const auto& d : s.directives) {
-    if (d.name == "version") {
-      edits.push_back({d.begin, d.end, es ? "#version 310 es" : "#version 330"});
-    } else if (d.name == "extension" && es && isCoreInEssl300(extensionName(d.rest))) {
-      edits.push_back({d.begin, d.end, ""});  // core in ESSL 300: the line stays, empty
+  Diagnostic locate(size_t offset, const std::string& message) const {
+    auto [line, column] = source::lineAndColumn(text_, offset);
+    return Diagnostic{Severity::Error, path_, line, column, message};
+  }
+  static LegacyTranslation failed(Diagnostic error) {
+    LegacyTranslation result;
+    result.error = std::move(error);
+    return result;
+  }
+
+  void rewriteDirectives() {
+    for (const auto& d : scan_.directives) {
+      if (d.kind == source::DirectiveKind::Version) {
+        edits_.push_back({d.begin, d.end, es_ ? "#version 310 es" : "#version 330"});
+      } else if (d.kind == source::DirectiveKind::Extension && es_ && isCoreInEssl300(extensionName(d.rest))) {
+        edits_.push_back({d.begin, d.end, ""});  // core in ESSL 300: the line stays, empty
+      }
     }
   }
-  const auto& textures = textureRenames();
-  for (size_t k = 0; k < s.identifiers.size(); ++k) {
-    const Token& t = s.identifiers[k];
+
+  // The edit for one identifier of the source, or why the text cannot be translated.
+  std::optional<Diagnostic> rewriteIdentifier(const Token& t) {
     const std::string& w = t.text;
-    auto rename = [&](std::string to) { edits.push_back({t.begin, t.end, std::move(to)}); };
-    if (oneXX && w == "attribute") {
-      if (stage != Stage::Vertex) return located(t.begin, "'attribute' is only allowed in a vertex shader");
+    // A name written across a line splice keeps its splices after the new name: no line moves.
+    auto rename = [&](std::string to) {
+      edits_.push_back({t.begin, t.end, std::move(to) + source::splicesOf(text_, scan_.lexed[t.index])});
+    };
+    if (oneXX_ && w == "attribute") {
+      if (stage_ != Stage::Vertex) return locate(t.begin, "'attribute' is only allowed in a vertex shader");
       rename("in");
-    } else if (oneXX && w == "varying") {
-      rename(fragment ? "in" : "out");
-    } else if (dialect.version >= 130 && !es && (w == "attribute" || w == "varying")) {
-      rename(w == "attribute" ? "in" : (fragment ? "in" : "out"));  // deprecated in 130-150, still accepted
-    } else if (auto tex = textures.find(w); tex != textures.end()) {
+    } else if (oneXX_ && w == "varying") {
+      rename(fragment_ ? "in" : "out");
+    } else if (dialect_.version >= 130 && !es_ && (w == "attribute" || w == "varying")) {
+      rename(w == "attribute" ? "in" : (fragment_ ? "in" : "out"));  // deprecated in 130-150, still accepted
+    } else if (auto tex = textureRenames().find(w); tex != textureRenames().end()) {
       rename(tex->second);
-    } else if (!es && std::any_of(std::begin(kShadowHelpers), std::end(kShadowHelpers),
-                                  [&](const ShadowHelper& h) { return w == h.name; })) {
-      helpers.insert(w);
+    } else if (!es_ && std::any_of(std::begin(kShadowHelpers), std::end(kShadowHelpers),
+                                   [&](const ShadowHelper& h) { return w == h.name; })) {
+      helpers_.insert(w);
       rename("stereoshift_" + w);
-    } else if (w == "gl_FragColor" && fragment) {
-      fragColor = true;
+    } else if (w == "gl_FragColor" && fragment_) {
+      fragColor_ = true;
       rename("stereoshift_FragColor");
-    } else if (w == "gl_FragData" && fragment) {
-      fragData = true;
+    } else if (w == "gl_FragData" && fragment_) {
+      fragData_ = true;
       rename("stereoshift_FragData");
     } else if (w == "gl_FragDepthEXT") {
       rename("gl_FragDepth");
-    } else if (!es && w == "ftransform") {
-      // ftransform() -> (MVP * vertex): the call's `(` and `)` go with it.
-      size_t open = t.end;
-      while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
-      size_t close = open < text.size() && text[open] == '(' ? open + 1 : std::string::npos;
-      while (close != std::string::npos && close < text.size() && std::isspace(static_cast<unsigned char>(text[close])))
-        ++close;
-      if (close == std::string::npos || close >= text.size() || text[close] != ')')
-        return located(t.begin, "ftransform must be called as `ftransform()`");
-      if (stage != Stage::Vertex) return located(t.begin, "ftransform() is only available in a vertex shader");
-      declare.insert("gl_ModelViewProjectionMatrix");
-      declare.insert("gl_Vertex");
-      edits.push_back({t.begin, close + 1, "(stereoshift_ModelViewProjectionMatrix * stereoshift_Vertex)"});
-    } else if (compat.count(w)) {
-      declare.insert(w);
-      rename(compat.at(w).declaredName);
-    } else if (!es && isUntranslatedCompatBuiltin(w)) {
-      return located(t.begin, "'" + w + "' is fixed-function state of the compatibility profile that stereoshift "
-                              "cannot translate (only the transform matrices, vertex attributes, colours, "
-                              "texture coordinates and fog coordinate are); pass it as a uniform of your own");
-    } else if (!es && isCompatBuiltin(w)) {
+    } else if (!es_ && w == "ftransform") {
+      return rewriteFtransform(t);
+    } else if (compat_.count(w)) {
+      declare_.insert(w);
+      rename(compat_.at(w).declaredName);
+    } else if (!es_ && isUntranslatedCompatBuiltin(w)) {
+      return locate(t.begin, "'" + w + "' is fixed-function state of the compatibility profile that stereoshift "
+                             "cannot translate (only the transform matrices, vertex attributes, colours, "
+                             "texture coordinates and fog coordinate are); pass it as a uniform of your own");
+    } else if (!es_ && isCompatBuiltin(w)) {
       // A compatibility built-in of another stage (gl_Vertex in a fragment shader).
-      return located(t.begin, "'" + w + "' is not available in a " + std::string(stageName(stage)) + " shader");
+      return locate(t.begin, "'" + w + "' is not available in a " + std::string(stageName(stage_)) + " shader");
     } else if (w.starts_with("gl_")) {
       // A core built-in: unchanged.
-    } else if (oneXX && isNewKeyword(w, es)) {
+    } else if (oneXX_ && isNewKeyword(w, es_)) {
       rename(w + "_stereoshift");
     }
+    return std::nullopt;
   }
 
-  // The declarations, at the start of the first line of code outside any #if.
-  std::string decls;
-  auto outPrecision = es ? std::string("mediump ") : std::string();
-  if (fragColor && fragData) {
-    auto at = std::find_if(s.identifiers.begin(), s.identifiers.end(), [](const Token& t) { return t.text == "gl_FragData"; });
-    return located(at->begin, "a shader may write gl_FragColor or gl_FragData, not both");
+  // ftransform() -> (MVP * vertex): the call's `(` and `)` go with it.
+  std::optional<Diagnostic> rewriteFtransform(const Token& t) {
+    const source::LexedText& lexed = scan_.lexed;
+    size_t open = lexed.nextNonComment(t.index);
+    size_t close = lexed.isPunct(open, '(') ? lexed.nextNonComment(open) : lexed.size();
+    if (!lexed.isPunct(close, ')')) return locate(t.begin, "ftransform must be called as `ftransform()`");
+    if (stage_ != Stage::Vertex) return locate(t.begin, "ftransform() is only available in a vertex shader");
+    declare_.insert("gl_ModelViewProjectionMatrix");
+    declare_.insert("gl_Vertex");
+    edits_.push_back({t.begin, lexed[close].end, "(stereoshift_ModelViewProjectionMatrix * stereoshift_Vertex)"});
+    return std::nullopt;
   }
-  if (fragColor) decls += "out " + outPrecision + "vec4 stereoshift_FragColor; ";
-  if (fragData) decls += "out " + outPrecision + "vec4 stereoshift_FragData[gl_MaxDrawBuffers]; ";
-  for (const auto& name : declare) {
-    const CompatBuiltin& b = compat.at(name);
-    decls += b.storage + " " + b.type + " " + b.declaredName + (b.arraySize.empty() ? "" : "[" + b.arraySize + "]") + "; ";
-    result.declared.push_back(b.declaredName);
+
+  // What the edits need declared, on one line; the compatibility built-ins' names into `declared`.
+  std::string declarations(std::vector<std::string>& declared) const {
+    std::string decls;
+    auto outPrecision = es_ ? std::string("mediump ") : std::string();
+    if (fragColor_) decls += "out " + outPrecision + "vec4 stereoshift_FragColor; ";
+    if (fragData_) decls += "out " + outPrecision + "vec4 stereoshift_FragData[gl_MaxDrawBuffers]; ";
+    for (const auto& name : declare_) {
+      const CompatBuiltin& b = compat_.at(name);
+      decls += b.storage + " " + b.type + " " + b.declaredName + (b.arraySize.empty() ? "" : "[" + b.arraySize + "]") + "; ";
+      declared.push_back(b.declaredName);
+    }
+    for (const auto& h : kShadowHelpers) {
+      if (!helpers_.count(h.name)) continue;
+      decls += std::string("vec4 stereoshift_") + h.name + "(" + h.sampler + " s, " + h.coord + " c" +
+               (h.lod ? ", float lod" : "") + ") { return vec4(" + h.call + "(s, c" + (h.lod ? ", lod" : "") + ")); } ";
+    }
+    return decls;
   }
-  for (const auto& h : kShadowHelpers) {
-    if (!helpers.count(h.name)) continue;
-    decls += std::string("vec4 stereoshift_") + h.name + "(" + h.sampler + " s, " + h.coord + " c" +
-             (h.lod ? ", float lod" : "") + ") { return vec4(" + h.call + "(s, c" + (h.lod ? ", lod" : "") + ")); } ";
+
+  std::string applyEdits() {
+    // By offset; an insertion goes before a replacement that starts where it is inserted.
+    std::stable_sort(edits_.begin(), edits_.end(), [](const Edit& a, const Edit& b) {
+      if (a.begin != b.begin) return a.begin < b.begin;
+      return a.end == a.begin && b.end != b.begin;
+    });
+    std::string out;
+    size_t pos = 0;
+    if (!dialect_.versionWritten) out += es_ ? "#version 310 es\n#line 1\n" : "#version 330\n#line 1\n";
+    for (const auto& e : edits_) {
+      if (e.begin < pos) continue;  // overlapping (inside a replaced call): the first one wins
+      out.append(text_, pos, e.begin - pos);
+      out += e.replacement;
+      pos = e.end;
+    }
+    out.append(text_, pos, std::string::npos);
+    return out;
   }
-  if (!decls.empty()) {
-    size_t at = s.codeLineStarts.empty() ? text.size() : s.codeLineStarts.front();
-    edits.push_back({at, at, decls});
-  }
-  // By offset; an insertion goes before a replacement that starts where it is inserted.
-  std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
-    if (a.begin != b.begin) return a.begin < b.begin;
-    return a.end == a.begin && b.end != b.begin;
-  });
-  std::string out;
-  size_t pos = 0;
-  if (!dialect.versionWritten) out += es ? "#version 310 es\n#line 1\n" : "#version 330\n#line 1\n";
-  for (const auto& e : edits) {
-    if (e.begin < pos) continue;  // overlapping (inside a replaced call): the first one wins
-    out.append(text, pos, e.begin - pos);
-    out += e.replacement;
-    pos = e.end;
-  }
-  out.append(text, pos, std::string::npos);
-  result.text = std::move(out);
-  result.ok = true;
-  return result;
+
+  const std::string& text_;
+  const std::string& path_;
+  Stage stage_;
+  const LegacyDialect& dialect_;
+  Scan scan_;
+  bool es_, fragment_;
+  bool oneXX_;  // still without in/out storage and `texture`
+  std::map<std::string, CompatBuiltin> compat_;
+  std::vector<Edit> edits_;
+  std::set<std::string> declare_;  // compat built-ins (by gl_ name) used
+  std::set<std::string> helpers_;  // shadow helpers used
+  bool fragColor_ = false, fragData_ = false;
+};
+
+}  // namespace
+
+LegacyTranslation translateLegacyGlsl(const std::string& text, Stage stage, const LegacyDialect& dialect,
+                                      const std::string& path) {
+  return LegacyTranslator(text, stage, dialect, path).run();
 }
 
 bool verifyLegacyCompiles(const std::string& text, Stage stage, int version, bool es, const std::string& displayName,

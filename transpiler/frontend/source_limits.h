@@ -1,7 +1,7 @@
 // The front end's limits on untrusted shader text, and the cheap scan that enforces the bracket
 // limit before glslang sees the text: glslang parses HLSL brackets by recursion, so a deep enough
-// input overflows its stack before any tree exists. The scan knows comments and string literals,
-// so brackets inside them never count.
+// input overflows its stack before any tree exists. The scan reads the lexer's tokens, so brackets
+// inside comments and string literals never count (those of directive lines do: macro bodies are code).
 #pragma once
 
 #include <cstddef>

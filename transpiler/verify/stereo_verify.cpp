@@ -19,6 +19,7 @@
 #include "transpiler/verify/stage_synthesis.h"
 #include "passes/ir/module.h"
 #include "passes/pass.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -4,7 +4,7 @@
 // (outside preprocessor conditionals, comments and directives, on lines of its own).
 #pragma once
 
-#include "transpiler/backend/hlsl_splice/scanner.h"
+#include "transpiler/backend/hlsl_splice/token_view.h"
 
 #include <string>
 #include <utility>

@@ -16,27 +16,9 @@ class GeometryRewriter : Rewriter {
   using Rewriter::Rewriter;
 
   std::optional<SpliceError> run(const std::vector<const Function*>& entries) {
-    // The element type of the streams.
     const Param* entryStream = nullptr;
-    for (const Function* f : entries) {
-      for (const auto& p : f->params) {
-        if (!p.streamElement.empty() && !entryStream) entryStream = &p;
-      }
-    }
-    if (!entryStream) {
-      return errAt(entries.front()->nameTok, "geometry entry point '" + opt_.entryPoint +
-                                                 "' has no TriangleStream/LineStream/PointStream parameter");
-    }
+    if (auto err = findStream(entries, entryStream)) return err;
     const std::string elem = entryStream->streamElement;
-    for (const auto& f : functions_) {
-      for (const auto& p : f.params) {
-        if (!p.streamElement.empty() && p.streamElement != elem) {
-          return errAt(p.nameTok != npos ? p.nameTok : p.begin,
-                       "streams of different element types ('" + elem + "' and '" + p.streamElement +
-                           "') are not supported");
-        }
-      }
-    }
     const StructDef* sd = findStruct(elem);
     if (!sd) {
       return errAt(entryStream->nameTok != npos ? entryStream->nameTok : entryStream->begin,
@@ -47,7 +29,55 @@ class GeometryRewriter : Rewriter {
     if (!path) return errAt(sd->nameTok, "struct '" + elem + "' has no member with semantic SV_Position");
     ShiftHelper shift{elem, std::string(kPrefix) + "_shift_" + elem, *path, {}};
 
-    // Names that are not streams: AppendStructuredBuffer<T> objects.
+    const std::set<std::string> buffers = appendBufferNames();
+    std::vector<const Function*> candidates(entries.begin(), entries.end());
+    if (auto err = wrapAppendCalls(shift, buffers, candidates)) return err;
+    wrapMacroAppendCalls(shift, buffers, candidates);
+    if (sites_ == 0) {
+      return errAt(entries.front()->nameTok, "geometry shader '" + opt_.entryPoint + "' has no Append call");
+    }
+
+    size_t first = npos;
+    for (const Function* f : candidates) first = std::min(first, toks_[f->declBegin].begin);
+    size_t structEnd = toks_[sd->endTok].end;
+    if (first < structEnd) {
+      return errAt(sd->nameTok, "struct '" + elem + "' is defined after its first use at " + where(first));
+    }
+    if (auto err = checkConflicts({opt_.cbufferName, opt_.eyeSignName, opt_.separationName,
+                                   opt_.convergenceName, shift.function})) {
+      return err;
+    }
+    insertBlockBefore(first, structEnd, preambleText({shift}));
+    return std::nullopt;
+  }
+
+ private:
+  // The stream parameter of the entry points (its element type is the struct to shift); every
+  // stream of the file must carry that type.
+  std::optional<SpliceError> findStream(const std::vector<const Function*>& entries, const Param*& entryStream) const {
+    for (const Function* f : entries) {
+      for (const auto& p : f->params) {
+        if (!p.streamElement.empty() && !entryStream) entryStream = &p;
+      }
+    }
+    if (!entryStream) {
+      return errAt(entries.front()->nameTok, "geometry entry point '" + opt_.entryPoint +
+                                                 "' has no TriangleStream/LineStream/PointStream parameter");
+    }
+    for (const auto& f : functions_) {
+      for (const auto& p : f.params) {
+        if (!p.streamElement.empty() && p.streamElement != entryStream->streamElement) {
+          return errAt(p.nameTok != npos ? p.nameTok : p.begin,
+                       "streams of different element types ('" + entryStream->streamElement + "' and '" +
+                           p.streamElement + "') are not supported");
+        }
+      }
+    }
+    return std::nullopt;
+  }
+
+  // Names that are not streams: AppendStructuredBuffer<T> objects.
+  std::set<std::string> appendBufferNames() const {
     std::set<std::string> buffers;
     for (size_t k = 0; k + 1 < toks_.size(); ++k) {
       if (!isWord(k, "AppendStructuredBuffer") || !isPunct(k + 1, '<')) continue;
@@ -60,6 +90,13 @@ class GeometryRewriter : Rewriter {
       } while (t < toks_.size() && depth > 0);
       if (isIdent(t)) buffers.insert(std::string(text(t)));
     }
+    return buffers;
+  }
+
+  // Append calls in function bodies (and anywhere else outside directives); the functions that
+  // make them join `candidates`.
+  std::optional<SpliceError> wrapAppendCalls(const ShiftHelper& shift, const std::set<std::string>& buffers,
+                                             std::vector<const Function*>& candidates) {
     auto isBufferReceiver = [&](const std::string& recv, const Function* f) {
       if (f) {
         for (const auto& p : f->params) {
@@ -68,9 +105,6 @@ class GeometryRewriter : Rewriter {
       }
       return buffers.count(recv) != 0;
     };
-
-    std::vector<const Function*> candidates(entries.begin(), entries.end());
-    // Append calls in function bodies (and anywhere else outside directives).
     for (size_t k = 0; k + 2 < toks_.size(); ++k) {
       if (!isPunct(k, '.') || !isWord(k + 1, "Append") || !isPunct(k + 2, '(')) continue;
       const Function* f = enclosingFunction(k);
@@ -88,13 +122,17 @@ class GeometryRewriter : Rewriter {
       ++sites_;
       if (f) candidates.push_back(f);
     }
-    // Append calls inside #define bodies: the functions that use such a macro need the helper too.
+    return std::nullopt;
+  }
+
+  // Append calls inside #define bodies (the directive's own tokens): the functions that use such a
+  // macro need the helper too.
+  void wrapMacroAppendCalls(const ShiftHelper& shift, const std::set<std::string>& buffers,
+                            std::vector<const Function*>& candidates) {
     std::set<std::string> appendMacros;
     for (const auto& d : directives_) {
-      if (d.name != "define" || d.bodyBegin >= d.end) continue;
-      Scanner sub(s_, d.bodyBegin, d.end, false);
-      if (sub.run()) continue;
-      const auto& st = sub.tokens;
+      if (d.name != "define" || d.body.empty() || !d.bodyReadable) continue;
+      const auto& st = d.body;
       auto stext = [&](size_t k) { return std::string_view(s_).substr(st[k].begin, st[k].end - st[k].begin); };
       auto spunct = [&](size_t k, char c) {
         return k < st.size() && st[k].kind == TokKind::Punct && s_[st[k].begin] == c;
@@ -118,32 +156,15 @@ class GeometryRewriter : Rewriter {
         appendMacros.insert(d.macroName);
       }
     }
-    if (!appendMacros.empty()) {
-      for (const auto& f : functions_) {
-        for (size_t t = f.bodyOpen; t < f.bodyClose; ++t) {
-          if (isIdent(t) && appendMacros.count(std::string(text(t)))) {
-            candidates.push_back(&f);
-            break;
-          }
+    if (appendMacros.empty()) return;
+    for (const auto& f : functions_) {
+      for (size_t t = f.bodyOpen; t < f.bodyClose; ++t) {
+        if (isIdent(t) && appendMacros.count(std::string(text(t)))) {
+          candidates.push_back(&f);
+          break;
         }
       }
     }
-    if (sites_ == 0) {
-      return errAt(entries.front()->nameTok, "geometry shader '" + opt_.entryPoint + "' has no Append call");
-    }
-
-    size_t first = npos;
-    for (const Function* f : candidates) first = std::min(first, toks_[f->declBegin].begin);
-    size_t structEnd = toks_[sd->endTok].end;
-    if (first < structEnd) {
-      return errAt(sd->nameTok, "struct '" + elem + "' is defined after its first use at " + where(first));
-    }
-    if (auto err = checkConflicts({opt_.cbufferName, opt_.eyeSignName, opt_.separationName,
-                                   opt_.convergenceName, shift.function})) {
-      return err;
-    }
-    insertBlockBefore(first, structEnd, preambleText({shift}));
-    return std::nullopt;
   }
 };
 

@@ -7,7 +7,7 @@
 
 #include "transpiler/backend/hlsl_splice.h"
 #include "transpiler/backend/hlsl_splice/edit_buffer.h"
-#include "transpiler/backend/hlsl_splice/scanner.h"
+#include "transpiler/backend/hlsl_splice/token_view.h"
 #include "transpiler/backend/hlsl_splice/shift_text.h"
 #include "transpiler/backend/hlsl_splice/top_level.h"
 

@@ -1,7 +1,7 @@
 // The HLSL splice's rendering of the shift: see shift_text.h.
 #include "transpiler/backend/hlsl_splice/shift_text.h"
 
-#include "transpiler/backend/hlsl_splice/scanner.h"
+#include "transpiler/backend/hlsl_splice/token_view.h"
 
 #include <cstdio>
 

@@ -29,23 +29,14 @@ class TopLevelParser {
         topNames_(top.names) {}
 
   std::optional<SpliceError> parseTopLevel() {
-    size_t n = toks_.size();
+    const size_t n = toks_.size();
     size_t i = 0;
-    std::optional<size_t> declBegin;
-    std::vector<Attr> attrs;
-    size_t afterAttrs = npos;
-    std::set<size_t> namespaceOpeners;
-    auto reset = [&] {
-      declBegin.reset();
-      attrs.clear();
-      afterAttrs = npos;
-    };
     while (i < n) {
-      if (isPunct(i, '[') && (!declBegin || afterAttrs == i)) {
-        attrs.push_back({i, match_[i]});
-        if (!declBegin) declBegin = i;
+      if (isPunct(i, '[') && (!declBegin_ || afterAttrs_ == i)) {
+        attrs_.push_back({i, match_[i]});
+        if (!declBegin_) declBegin_ = i;
         i = match_[i] + 1;
-        afterAttrs = i;
+        afterAttrs_ = i;
         continue;
       }
       if (isPunct(i, ';')) {
@@ -54,125 +45,134 @@ class TopLevelParser {
         continue;
       }
       if (isPunct(i, '}')) {
-        if (!namespaceOpeners.count(match_[i])) return errAt(i, "unexpected '}' at file scope");
+        if (!namespaceOpeners_.count(match_[i])) return errAt(i, "unexpected '}' at file scope");
         reset();
         ++i;
         continue;
       }
-      if (!declBegin) declBegin = i;
-      if ((isWord(i, "struct") || isWord(i, "class") || isWord(i, "interface")) && isIdent(i + 1) &&
-          (isPunct(i + 2, '{') || isPunct(i + 2, ':'))) {
-        size_t open = i + 2;
-        while (open < n && !isPunct(open, '{') && !isPunct(open, ';')) ++open;
-        if (open < n && isPunct(open, '{')) {
-          StructDef sd;
-          sd.name = std::string(text(i + 1));
-          sd.nameTok = i + 1;
-          parseMembers(open, match_[open], sd.members);
-          size_t semi = skipToSemicolon(match_[open] + 1);
-          collectNames(match_[open] + 1, semi);
-          sd.endTok = semi < n && isPunct(semi, ';') ? semi : match_[open];
-          topNames_[sd.name] = sd.nameTok;
-          structs_.push_back(std::move(sd));
-          reset();
-          i = semi < n && isPunct(semi, ';') ? semi + 1 : semi;
-          continue;
-        }
-      }
-      if (isWord(i, "cbuffer") || isWord(i, "tbuffer")) {
-        if (isIdent(i + 1)) topNames_[std::string(text(i + 1))] = i + 1;
-        size_t open = i + 1;
-        while (open < n && !isPunct(open, '{') && !isPunct(open, ';')) ++open;
-        if (open < n && isPunct(open, '{')) {
-          // Members are declarations at file scope.
-          size_t k = open + 1;
-          while (k < match_[open]) {
-            size_t semi = skipToSemicolon(k);
-            collectNames(k, std::min(semi, match_[open]));
-            k = semi + 1;
-          }
-          i = match_[open] + 1;
-          if (isPunct(i, ';')) ++i;
-        } else {
-          i = open + 1;
-        }
-        reset();
-        continue;
-      }
-      if (isWord(i, "namespace") && isIdent(i + 1) && isPunct(i + 2, '{')) {
-        namespaceOpeners.insert(i + 2);
+      if (!declBegin_) declBegin_ = i;
+      if (std::optional<size_t> next = parseStruct(i)) {
+        i = *next;
+      } else if (isWord(i, "cbuffer") || isWord(i, "tbuffer")) {
+        i = parseBuffer(i);
+      } else if (isWord(i, "namespace") && isIdent(i + 1) && isPunct(i + 2, '{')) {
+        namespaceOpeners_.insert(i + 2);
         i += 3;
-        reset();
-        continue;
-      }
-      if (isWord(i, "typedef")) {
+      } else if (isWord(i, "typedef")) {
         size_t semi = skipToSemicolon(i);
         if (semi > i + 1 && isIdent(semi - 1)) topNames_[std::string(text(semi - 1))] = semi - 1;
         i = semi < n && isPunct(semi, ';') ? semi + 1 : semi;
-        reset();
-        continue;
-      }
-      // A variable declaration, a prototype or a function definition.
-      bool sawEquals = false;
-      size_t k = i;
-      bool done = false;
-      while (k < n && !done) {
-        if (isPunct(k, '(')) {
-          if (k > i && isIdent(k - 1) && !sawEquals) {
-            size_t close = match_[k];
-            size_t body = npos, semColon = npos, semTok = npos;
-            if (isPunct(close + 1, '{')) {
-              body = close + 1;
-            } else if (isPunct(close + 1, ':') && isIdent(close + 2) && isPunct(close + 3, '{')) {
-              semColon = close + 1;
-              semTok = close + 2;
-              body = close + 3;
-            }
-            if (body != npos) {
-              Function f;
-              f.attrs = attrs;
-              f.declBegin = *declBegin;
-              f.typeBegin = attrs.empty() ? *declBegin : attrs.back().close + 1;
-              f.nameTok = k - 1;
-              f.paramOpen = k;
-              f.paramClose = close;
-              f.semColon = semColon;
-              f.semTok = semTok;
-              f.bodyOpen = body;
-              f.bodyClose = match_[body];
-              f.params = parseParams(k, close);
-              topNames_[std::string(text(k - 1))] = k - 1;
-              functions_.push_back(std::move(f));
-              i = match_[body] + 1;
-              done = true;
-              continue;
-            }
-          }
-          k = match_[k] + 1;
-          continue;
-        }
-        if (isPunct(k, '[') || isPunct(k, '{')) {
-          k = match_[k] + 1;
-          continue;
-        }
-        if (isPunct(k, ';') || isPunct(k, '}')) {
-          collectNames(i, k);
-          i = isPunct(k, ';') ? k + 1 : k;
-          done = true;
-          continue;
-        }
-        if (isPunct(k, '=')) sawEquals = true;
-        ++k;
-      }
-      if (!done) {
-        collectNames(i, n);
-        i = n;
+      } else {
+        i = parseDeclaration(i);
       }
       reset();
     }
     return std::nullopt;
   }
 
+ private:
+  void reset() {
+    declBegin_.reset();
+    attrs_.clear();
+    afterAttrs_ = npos;
+  }
+
+  // `struct Name { ... } [declarators];` (class, interface) at `i`: the token after it, or nullopt
+  // when `i` starts no definition.
+  std::optional<size_t> parseStruct(size_t i) {
+    const size_t n = toks_.size();
+    if (!((isWord(i, "struct") || isWord(i, "class") || isWord(i, "interface")) && isIdent(i + 1) &&
+          (isPunct(i + 2, '{') || isPunct(i + 2, ':'))))
+      return std::nullopt;
+    size_t open = i + 2;
+    while (open < n && !isPunct(open, '{') && !isPunct(open, ';')) ++open;
+    if (open >= n || !isPunct(open, '{')) return std::nullopt;
+    StructDef sd;
+    sd.name = std::string(text(i + 1));
+    sd.nameTok = i + 1;
+    parseMembers(open, match_[open], sd.members);
+    size_t semi = skipToSemicolon(match_[open] + 1);
+    collectNames(match_[open] + 1, semi);
+    sd.endTok = semi < n && isPunct(semi, ';') ? semi : match_[open];
+    topNames_[sd.name] = sd.nameTok;
+    structs_.push_back(std::move(sd));
+    return semi < n && isPunct(semi, ';') ? semi + 1 : semi;
+  }
+
+  // `cbuffer Name [: register(b0)] { members };` at `i`: its members are file-scope names.
+  size_t parseBuffer(size_t i) {
+    const size_t n = toks_.size();
+    if (isIdent(i + 1)) topNames_[std::string(text(i + 1))] = i + 1;
+    size_t open = i + 1;
+    while (open < n && !isPunct(open, '{') && !isPunct(open, ';')) ++open;
+    if (open >= n || !isPunct(open, '{')) return open + 1;
+    for (size_t k = open + 1; k < match_[open];) {
+      size_t semi = skipToSemicolon(k);
+      collectNames(k, std::min(semi, match_[open]));
+      k = semi + 1;
+    }
+    i = match_[open] + 1;
+    return isPunct(i, ';') ? i + 1 : i;
+  }
+
+  // A variable declaration, a prototype or a function definition at `i`: the token after it.
+  size_t parseDeclaration(size_t i) {
+    const size_t n = toks_.size();
+    bool sawEquals = false;
+    for (size_t k = i; k < n;) {
+      if (isPunct(k, '(')) {
+        if (k > i && isIdent(k - 1) && !sawEquals) {
+          if (std::optional<size_t> next = parseFunction(k)) return *next;
+        }
+        k = match_[k] + 1;
+        continue;
+      }
+      if (isPunct(k, '[') || isPunct(k, '{')) {
+        k = match_[k] + 1;
+        continue;
+      }
+      if (isPunct(k, ';') || isPunct(k, '}')) {
+        collectNames(i, k);
+        return isPunct(k, ';') ? k + 1 : k;
+      }
+      if (isPunct(k, '=')) sawEquals = true;
+      ++k;
+    }
+    collectNames(i, n);
+    return n;
+  }
+
+  // The function whose parameter list opens at `open`, when a body follows it (`) {` or
+  // `) : SEMANTIC {`): the token after the body; nullopt for a prototype or a call.
+  std::optional<size_t> parseFunction(size_t open) {
+    size_t close = match_[open];
+    size_t body = npos, semColon = npos, semTok = npos;
+    if (isPunct(close + 1, '{')) {
+      body = close + 1;
+    } else if (isPunct(close + 1, ':') && isIdent(close + 2) && isPunct(close + 3, '{')) {
+      semColon = close + 1;
+      semTok = close + 2;
+      body = close + 3;
+    }
+    if (body == npos) return std::nullopt;
+    Function f;
+    f.attrs = attrs_;
+    f.declBegin = *declBegin_;
+    f.typeBegin = attrs_.empty() ? *declBegin_ : attrs_.back().close + 1;
+    f.nameTok = open - 1;
+    f.paramOpen = open;
+    f.paramClose = close;
+    f.semColon = semColon;
+    f.semTok = semTok;
+    f.bodyOpen = body;
+    f.bodyClose = match_[body];
+    f.params = parseParams(open, close);
+    topNames_[std::string(text(open - 1))] = open - 1;
+    functions_.push_back(std::move(f));
+    return match_[body] + 1;
+  }
+
+ public:
   // Names declared by the declaration tokens [b, e): identifiers followed by ; , : = [ ( at
   // bracket depth 0, outside initializers.
   void collectNames(size_t b, size_t e) {
@@ -363,6 +363,11 @@ class TopLevelParser {
   std::vector<Function>& functions_;
   std::vector<StructDef>& structs_;
   std::map<std::string, size_t>& topNames_;
+  // The declaration being read: where it began, its attributes, the token after them.
+  std::optional<size_t> declBegin_;
+  std::vector<Attr> attrs_;
+  size_t afterAttrs_ = npos;
+  std::set<size_t> namespaceOpeners_;
 };
 
 }  // namespace

@@ -4,7 +4,7 @@
 // bodies of functions are only bracket ranges here.
 #pragma once
 
-#include "transpiler/backend/hlsl_splice/scanner.h"
+#include "transpiler/backend/hlsl_splice/token_view.h"
 
 #include <cstdint>
 #include <map>

@@ -1,7 +1,11 @@
-// The HLSL splice's scanner: turns source text into tokens (identifiers, numbers, strings,
-// punctuation), the preprocessor lines and the block comments between them, and pairs up brackets.
-// Comments, strings and directives are never tokens, so nothing inside them is ever rewritten.
+// The HLSL splice's view of a file: turns the lexer's tokens (transpiler/source/lexer.h) into what
+// the splice reads — the tokens of code (identifiers, numbers, strings, punctuation), the
+// preprocessor lines with their macro bodies, the block comments — and pairs up brackets. Comments,
+// strings and directive lines are never tokens of code, so nothing inside them is ever rewritten
+// (except a #define body's `.Append(`, which the geometry rewriter reads from the directive).
 #pragma once
+
+#include "transpiler/source/identifiers.h"
 
 #include <cstddef>
 #include <optional>
@@ -23,10 +27,12 @@ struct Token {
 
 struct Directive {
   size_t begin = 0;  // offset of '#'
-  size_t end = 0;    // offset of the terminating newline (or end of text)
+  size_t end = 0;    // the end of its logical line (before the line break)
   std::string name;  // "define", "if", "ifdef", "endif", ...
   std::string macroName;
-  size_t bodyBegin = 0;  // #define: first offset after the name and the parameter list
+  size_t bodyBegin = 0;     // #define: first offset after the name and the parameter list
+  std::vector<Token> body;  // #define: the tokens of the body (comments left out)
+  bool bodyReadable = true;  // false: the body holds a string left open
 };
 
 struct Span {
@@ -41,45 +47,20 @@ struct SpliceError {
   bool clash = false;
 };
 
-bool isIdentStart(char c);
 std::string lower(std::string_view s);
-bool isValidIdentifier(const std::string& s);
-
-class Scanner {
- public:
-  // Scans [begin, end) of `src`. `directives`: recognise preprocessor lines (false when scanning
-  // the body of a #define, where '#' is the stringizing operator).
-  Scanner(const std::string& src, size_t begin, size_t end, bool directives)
-      : s_(src), begin_(begin), end_(end), directives_(directives) {}
-
-  std::optional<SpliceError> run();
-
-  std::vector<Token> tokens;
-  std::vector<Directive> directivesList;
-  std::vector<Span> blockComments;
-
- private:
-  char at(size_t i) const { return i < end_ ? s_[i] : '\0'; }
-  size_t lineSplice(size_t i) const;
-  size_t lineCommentEnd(size_t i) const;
-  std::optional<SpliceError> directive(size_t hash);
-
-  const std::string& s_;
-  size_t begin_, end_;
-  bool directives_;
-};
 
 // Matching bracket for every (, [, { and their closers; npos elsewhere.
 std::optional<SpliceError> matchBrackets(const std::string& s, const std::vector<Token>& toks,
                                          std::vector<size_t>& match);
 
-// A whole file scanned, with its brackets matched, and the questions the parser and the rewriters
+// A whole file lexed, with its brackets matched, and the questions the parser and the rewriters
 // ask about its tokens.
 class TokenView {
  public:
   explicit TokenView(const std::string& source) : s(source) {}
 
-  // Scans the whole source and matches its brackets.
+  // Lexes the whole source and matches its brackets. Refused: a block comment or a string left
+  // open (a `'` inside a directive's line is text, as in `#error don't`), unbalanced brackets.
   std::optional<SpliceError> scan();
 
   std::string_view text(size_t k) const {
