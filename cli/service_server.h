@@ -12,7 +12,7 @@
 #pragma once
 
 #include "cli/service_protocol.h"
-#include "passes/shader.h"
+#include "transpiler/transpile_options.h"
 
 #include <string>
 

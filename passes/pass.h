@@ -8,6 +8,7 @@
 #include "passes/diagnostics.h"
 #include "passes/ir/module.h"
 #include "passes/next_stage_facts.h"
+#include "passes/pass_options.h"
 #include "passes/run_record.h"
 #include "passes/shader.h"
 

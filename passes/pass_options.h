@@ -1,6 +1,7 @@
 // The options the passes read: where the eye parameters come from and what they are called, the
 // shift's form and cutoff, the per-eye fixes, and how the pass pipeline runs. The front and back
-// ends have options of their own (FrontEndOptions, BackEndOptions in passes/shader.h); a
+// ends have options of their own (transpiler/frontend/front_end_options.h,
+// transpiler/backend/back_end_options.h); a
 // conversion's TranspileOptions is all three.
 #pragma once
 

@@ -1,6 +1,8 @@
-// What the passes know about a shader and about the conversion asked for: the stage, the language
-// and dialect it was written in, and the options of a conversion (the passes read the middle part;
-// the front and back ends read theirs). The bottom layer: everything above includes it.
+// What every layer knows about a shader: its stage, the language and dialect it was written in
+// (SourceInfo), the output languages and environments there are. The bottom layer: everything
+// above includes it. The options of a conversion are per layer: PassOptions (passes/pass_options.h),
+// FrontEndOptions and BackEndOptions (transpiler/frontend, transpiler/backend), all three in
+// TranspileOptions (transpiler/transpile_options.h).
 #pragma once
 
 #include <cstdint>
@@ -11,7 +13,6 @@
 #include <string_view>
 #include <vector>
 
-#include "passes/pass_options.h"
 
 namespace stereoshift {
 
@@ -35,28 +36,6 @@ enum class TargetEnv { Vulkan1_0, Vulkan1_1, Vulkan1_2, Vulkan1_3, OpenGL45 };
 // Which output language: `Auto` keeps the input's own language and version.
 enum class TargetLanguage { Auto, Glsl, Essl, Hlsl, Msl, Spirv, SpirvAsm };
 
-// The options of one conversion, one part per layer: FrontEndOptions (transpiler/frontend),
-// PassOptions (passes/pass_options.h), BackEndOptions (transpiler/backend). Each layer reads its own.
-struct FrontEndOptions {
-  std::optional<Stage> stage;        // -S; default: decideStage (file name, #pragma shader_stage)
-  // --stage-ext / the manifest's [stages]: more stage extensions (lower case, no dot: "vp" -> vert).
-  std::map<std::string, Stage> stageExtensions;
-  std::optional<TargetEnv> targetEnv;  // --target-env; default: Vulkan 1.0 or OpenGL, from the source
-  std::optional<int> targetSpv;        // --target-spv: the SPIR-V minor version (spv1.4 -> 4)
-  std::optional<SourceLanguage> language;  // -x glsl|hlsl; default: from the file name, else the content
-  std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
-  std::vector<std::string> defines;  // NAME or NAME=VALUE
-  std::vector<std::string> includeDirs;
-};
-
-struct BackEndOptions {
-  TargetLanguage target = TargetLanguage::Auto;
-  std::optional<int> targetVersion;  // GLSL/ESSL version or HLSL shader model (50, 51, 60, ...)
-  bool verify = false;               // recompile emitted GLSL/HLSL with glslang
-  bool forceReemit = false;          // re-emit even when nothing changed
-};
-
-struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {};
 
 // What the back end must know about the original source to emit a drop-in replacement.
 struct SourceInfo {

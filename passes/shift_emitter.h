@@ -6,6 +6,7 @@
 #pragma once
 
 #include "passes/ir/module.h"
+#include "passes/pass_options.h"
 #include "passes/shader.h"
 
 #include <cstdint>

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "passes/shader.h"
+#include "transpiler/transpile_options.h"
 
 #include <optional>
 #include <string>

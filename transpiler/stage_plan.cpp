@@ -287,6 +287,7 @@ void noteDecline(StagePlan& plan, const std::string& note) {
 bool emitStage(StagePlan& plan) {
   const std::string& file = plan.input->path;
   EmitRequest request{*plan.input, *plan.context, plan.options, *plan.record.target, plan.changed};
+  request.entryPointOption = plan.options.entryPoint;
   bool validated = false;
   auto backStarted = std::chrono::steady_clock::now();
   for (const auto& route : routes()) {

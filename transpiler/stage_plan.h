@@ -20,6 +20,7 @@
 #include "transpiler/backend/route.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/report.h"
+#include "transpiler/transpile_options.h"
 
 #include <chrono>
 #include <memory>

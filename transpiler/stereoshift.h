@@ -3,6 +3,7 @@
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/transpile_options.h"
 #include "transpiler/report.h"
 
 #include <nlohmann/json.hpp>

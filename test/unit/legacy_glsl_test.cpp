@@ -4,6 +4,7 @@
 #include "transpiler/backend/glsl_splice.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/legacy_glsl.h"
+#include "transpiler/transpile_options.h"
 
 #include <gtest/gtest.h>
 

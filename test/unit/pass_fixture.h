@@ -5,6 +5,7 @@
 #pragma once
 
 #include "passes/pass.h"
+#include "transpiler/transpile_options.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

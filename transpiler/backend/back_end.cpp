@@ -80,7 +80,8 @@ std::string renameEntryPoint(std::string text, const std::string& entryPoint) {
 
 }  // namespace
 
-EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const TranspileOptions& options,
+EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const BackEndOptions& options,
+                         EyeSelect eyeSelect,
                       const EmitHints& hints, const std::string& file, Diagnostics& diags) {
   EmittedSource result;
   result.language = resolveTarget(info, options);
@@ -162,7 +163,7 @@ EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& i
         // Single-pass multiview: Metal has no view index of its own; SPIRV-Cross emulates it with
         // instancing (the application draws instanceCount * 2 and binds the view mask buffer), the
         // view going to [[render_target_array_index]] of a two-layer target.
-        if (options.eye.select == EyeSelect::ViewIndex) {
+        if (eyeSelect == EyeSelect::ViewIndex) {
           msl.multiview = true;
           msl.multiview_layered_rendering = true;
         }

@@ -5,6 +5,8 @@
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "passes/pass_options.h"
+#include "transpiler/backend/back_end_options.h"
 #include "transpiler/backend/route.h"
 
 #include <map>
@@ -29,7 +31,8 @@ struct EmittedSource {
 };
 
 // SPIRV-Cross's text of `words` in the target language the options ask for (route.h resolves it).
-EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const TranspileOptions& options,
+EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const BackEndOptions& options,
+                         EyeSelect eyeSelect,
                       const EmitHints& hints, const std::string& file, Diagnostics& diags);
 
 }  // namespace stereoshift

@@ -150,8 +150,8 @@ class HlslSpliceRoute final : public BackEndRoute {
                      other.name + " -S " + stageName(other.stage);
       return true;
     }
-    if (!r.options.entryPoint.empty()) {
-      facts.note = "not shifted: -e " + r.options.entryPoint + " names another entry point";
+    if (!r.entryPointOption.empty()) {
+      facts.note = "not shifted: -e " + r.entryPointOption + " names another entry point";
       return true;
     }
     if (!other.ok) {

@@ -33,10 +33,10 @@ class ReemitRoute final : public BackEndRoute {
     const SourceInfo& info = ctx.source;
     spirv::Module emitModule = ctx.module;
     SourceInfo emitInfo = info;
-    if (r.options.eye.glBinding && ctx.eye.variable) emitInfo.explicitBinding.insert(ctx.module.name(ctx.eye.variable));
+    if (ctx.options.eye.glBinding && ctx.eye.variable) emitInfo.explicitBinding.insert(ctx.module.name(ctx.eye.variable));
     stripAutoAssignedQualifiers(emitModule, emitInfo);
     EmitHints hints = collectHints(emitModule);
-    EmittedSource emitted = emitSource(emitModule.encode(), info, r.options, hints, r.input.path, diags);
+    EmittedSource emitted = emitSource(emitModule.encode(), info, r.options, ctx.options.eye.select, hints, r.input.path, diags);
     if (!emitted.ok) return result;  // Failed, with SPIRV-Cross's reason
     result.output = std::move(emitted.text);
     if (r.target != TargetLanguage::Msl) {

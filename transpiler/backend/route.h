@@ -8,6 +8,7 @@
 #include "passes/diagnostics.h"
 #include "passes/pass.h"
 #include "passes/shader.h"
+#include "transpiler/backend/back_end_options.h"
 #include "transpiler/backend/emit_facts.h"
 
 #include <map>
@@ -39,11 +40,12 @@ struct OtherEntryPoint {
 struct EmitRequest {
   const SourceFile& input;
   const PassContext& context;  // module, eye parameters, classification, the run record
-  const TranspileOptions& options;
+  const BackEndOptions& options;
   TargetLanguage target = TargetLanguage::Auto;  // resolved
   bool changed = false;                          // some pass changed the module
   std::vector<uint32_t> finalWords;              // the module after the passes, encoded
   std::string inheritedInvalid;                  // the front end's module already did not validate: why
+  std::string entryPointOption;                  // -e NAME, when given
   std::vector<OtherEntryPoint>* otherEntries = nullptr;  // HLSL files: the file's other entry points
 };
 

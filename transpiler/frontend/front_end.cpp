@@ -59,7 +59,7 @@ void recordDecisions(FrontEndResult& result, Stage stage, const LanguageDecision
 
 // HLSL: the entry point (-e, else as the text names it), tried on the text with its effect blocks
 // blanked.
-void compileHlsl(const SourceFile& input, const TranspileOptions& options, Stage stage,
+void compileHlsl(const SourceFile& input, const FrontEndOptions& options, Stage stage,
                  const LanguageDecision& decided, FrontEndResult& result, Diagnostics& diags) {
   std::set<std::string> functions = mentionedFunctions(input.contents);
   std::string entry = chooseHlslEntry(input.contents, functions, stage, options.entryPoint);
@@ -109,7 +109,7 @@ void compileHlsl(const SourceFile& input, const TranspileOptions& options, Stage
 
 // GLSL: the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL (tried
 // first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
-void compileGlsl(const SourceFile& input, const TranspileOptions& options, Stage stage,
+void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage stage,
                  const LanguageDecision& decided, FrontEndResult& result, Diagnostics& diags) {
   VersionLine v = findVersion(input.contents);
   if (!v.problem.empty()) {
@@ -173,7 +173,7 @@ void compileGlsl(const SourceFile& input, const TranspileOptions& options, Stage
 
 }  // namespace
 
-FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags,
+FrontEndResult compileToSpirv(const SourceFile& input, const FrontEndOptions& options, Diagnostics& diags,
                               const StageDecision* stageGiven) {
   FrontEndResult result;
   ensureGlslangInitialized();

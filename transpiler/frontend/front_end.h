@@ -6,6 +6,7 @@
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/frontend/front_end_options.h"
 #include "transpiler/frontend/glsl_version.h"
 #include "transpiler/source/stage_rules.h"
 
@@ -29,14 +30,14 @@ struct FrontEndResult {
 
 // Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form. `stage`: the stage the
 // driver decided for it (decideStage), when it did; else the front end decides it.
-FrontEndResult compileToSpirv(const SourceFile& input, const TranspileOptions& options, Diagnostics& diags,
+FrontEndResult compileToSpirv(const SourceFile& input, const FrontEndOptions& options, Diagnostics& diags,
                               const StageDecision* stage = nullptr);
 
 // Re-compiles emitted GLSL/HLSL text to check that it is valid (`--verify`); `environment` (when
 // given) carries the conversion's --target-env / --target-spv, so a subgroup shader checks under them.
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
                     bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
-                    const TranspileOptions* environment = nullptr, const std::string& includeFrom = "");
+                    const FrontEndOptions* environment = nullptr, const std::string& includeFrom = "");
 
 // glslang's process-wide initialisation, done once.
 void ensureGlslangInitialized();

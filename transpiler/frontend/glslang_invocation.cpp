@@ -197,7 +197,7 @@ int defaultSpirvMinor(TargetEnv env) {
 }  // namespace
 
 int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage language, Client client,
-                         const std::string& entry, const TranspileOptions* options) {
+                         const std::string& entry, const FrontEndOptions* options) {
   EShLanguage lang = toGlslang(stage);
   if (language == SourceLanguage::Glsl && client == Client::AstOnly) return EShMsgDefault;
   // An OpenGL environment has no Vulkan version: HLSL (always Vulkan rules) then keeps 1.0.
@@ -242,7 +242,7 @@ int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage l
 }
 
 Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
-                           Client client, const std::string& entry, const TranspileOptions& options) {
+                           Client client, const std::string& entry, const FrontEndOptions& options) {
   Attempt attempt;
   EShLanguage lang = toGlslang(stage);
   glslang::TShader shader(lang);

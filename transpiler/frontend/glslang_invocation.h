@@ -7,6 +7,7 @@
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/frontend/front_end_options.h"
 
 #include <glslang/Public/ShaderLang.h>
 
@@ -29,7 +30,7 @@ std::string buildPreamble(const std::vector<std::string>& defines, bool glsl);
 // parse and link with. HLSL always goes through Vulkan rules (descriptor sets, registers).
 // `options` (absent when checking emitted text) carries --target-env and --target-spv.
 int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage language, Client client,
-                         const std::string& entry, const TranspileOptions* options = nullptr);
+                         const std::string& entry, const FrontEndOptions* options = nullptr);
 
 // One glslang run over `text` (the input's text, or its legacy translation) as `client`.
 struct Attempt {
@@ -40,6 +41,6 @@ struct Attempt {
   std::vector<std::string> included;
 };
 Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
-                           Client client, const std::string& entry, const TranspileOptions& options);
+                           Client client, const std::string& entry, const FrontEndOptions& options);
 
 }  // namespace stereoshift

@@ -16,7 +16,7 @@ namespace stereoshift {
 
 bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stage, const std::string& entryPoint,
                     bool vulkanSemantics, const std::string& displayName, Diagnostics& diags,
-                    const TranspileOptions* environment, const std::string& includeFrom) {
+                    const FrontEndOptions* environment, const std::string& includeFrom) {
   ensureGlslangInitialized();
   glslang::TShader shader(toGlslang(stage));
   const char* strings[] = {text.c_str()};

@@ -9,6 +9,7 @@
 
 #include "passes/diagnostics.h"
 #include "passes/shader.h"
+#include "transpiler/transpile_options.h"
 
 #include <nlohmann/json.hpp>
 

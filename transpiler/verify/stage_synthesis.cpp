@@ -5,6 +5,7 @@
 #include "transpiler/verify/stage_synthesis.h"
 
 #include "transpiler/frontend/front_end.h"
+#include "transpiler/transpile_options.h"
 #include "transpiler/verify/capture_instrument.h"
 
 #include <algorithm>

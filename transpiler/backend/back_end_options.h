@@ -1,0 +1,17 @@
+// The options the back end reads: the output language and version, and how it writes it.
+#pragma once
+
+#include "passes/shader.h"
+
+#include <optional>
+
+namespace stereoshift {
+
+struct BackEndOptions {
+  TargetLanguage target = TargetLanguage::Auto;
+  std::optional<int> targetVersion;  // GLSL/ESSL version or HLSL shader model (50, 51, 60, ...)
+  bool verify = false;               // recompile emitted GLSL/HLSL with glslang
+  bool forceReemit = false;          // re-emit even when nothing changed
+};
+
+}  // namespace stereoshift

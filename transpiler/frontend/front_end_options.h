@@ -1,0 +1,26 @@
+// The options the front end reads: the stage and language when the file does not say, the SPIR-V
+// environment glslang parses for, the HLSL entry point, defines and include directories.
+#pragma once
+
+#include "passes/shader.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct FrontEndOptions {
+  std::optional<Stage> stage;        // -S; default: decideStage (file name, #pragma shader_stage)
+  // --stage-ext / the manifest's [stages]: more stage extensions (lower case, no dot: "vp" -> vert).
+  std::map<std::string, Stage> stageExtensions;
+  std::optional<TargetEnv> targetEnv;  // --target-env; default: Vulkan 1.0 or OpenGL, from the source
+  std::optional<int> targetSpv;        // --target-spv: the SPIR-V minor version (spv1.4 -> 4)
+  std::optional<SourceLanguage> language;  // -x glsl|hlsl; default: from the file name, else the content
+  std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
+  std::vector<std::string> defines;  // NAME or NAME=VALUE
+  std::vector<std::string> includeDirs;
+};
+
+}  // namespace stereoshift
