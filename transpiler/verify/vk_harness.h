@@ -224,6 +224,11 @@ bool buildDescriptorLayout(const PipelineInputs& inputs,
 VkResult createColourDepthRenderPass(VkDevice device, VkFormat colourFormat, VkFormat depthFormat, uint32_t viewMask,
                                      bool keepDepth, VkRenderPass* renderPass);
 
+// A view of `range` of `image` as `type`: how the harness views its attachments and textures, for
+// callers that create their own images (benchmarks) too.
+VkResult createImageView(VkDevice device, VkImage image, VkImageViewType type, VkFormat format,
+                         const VkImageSubresourceRange& range, VkImageView* view);
+
 // ---------------------------------------------------------------------------------------------
 // The context
 // ---------------------------------------------------------------------------------------------
