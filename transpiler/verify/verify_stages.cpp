@@ -1,0 +1,93 @@
+// verify's compile step: the pre-rasterization stages of the given sources, in pipeline order,
+// each compiled to SPIR-V twice — the original as the front end makes it, and through
+// stereoshift's passes (only the last stage shifted) — with what the comparison must know about
+// each: which outputs may differ between the eyes, and whether its bindings are D3D registers.
+#include "transpiler/verify/stereo_verify.h"
+
+#include "transpiler/verify/harness_rewrites.h"
+#include "passes/ir/module.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace stereoshift::harness {
+
+namespace {
+
+// The outputs the conversion computes differently per eye by design: those the halo pass
+// re-derived from the shifted position, and those computed from the per-eye camera (per-eye-view:
+// relief view vectors). The comparison lets them move between the eyes; eyeSign = 0 still has to
+// be bit for bit. Read from the report as verify always has (its operator[] may add keys, hence
+// not const) until the transpile result carries these as typed fields.
+std::vector<std::string> outputsExpectedToDiffer(TranspileResult& result) {
+  std::vector<std::string> outputs;
+  for (const auto& n : result.report["passes"]["halo"].value("shifted_outputs", nlohmann::json::array()))
+    outputs.push_back(n.get<std::string>());
+  for (const auto& n : result.report["passes"]["per-eye-view"].value("per_eye_outputs", nlohmann::json::array()))
+    outputs.push_back(n.get<std::string>());
+  return outputs;
+}
+
+// Whether the stage's bindings are D3D registers (b, t, s, u in separate namespaces), which the
+// harness moves apart before binding. The front end's rule (SourceInfo::vulkanBindings): HLSL
+// written for Vulkan says [[vk::binding]].
+bool bindsByD3DRegisters(const TranspileResult& result, const SourceFile& source) {
+  return result.report.value("language", "") == "hlsl" && source.contents.find("vk::binding") == std::string::npos;
+}
+
+}  // namespace
+
+bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                       std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags) {
+  std::vector<const SourceFile*> ordered;
+  for (const auto& s : sources) {
+    auto stage = decideStage(s.path, s.contents, options.stage, options.stageExtensions).stage;
+    if (stage && isPreRasterization(*stage)) ordered.push_back(&s);
+  }
+  if (ordered.empty()) {
+    diags.error(sources.empty() ? std::string() : sources.front().path,
+                "nothing to verify: no vertex, tessellation or geometry stage");
+    return false;
+  }
+  std::stable_sort(ordered.begin(), ordered.end(), [&](const SourceFile* a, const SourceFile* b) {
+    auto of = [&](const SourceFile* f) { return decideStage(f->path, f->contents, options.stage, options.stageExtensions).stage; };
+    return static_cast<int>(*of(a)) < static_cast<int>(*of(b));
+  });
+  for (size_t i = 0; i < ordered.size(); ++i) {
+    // The single-pass modes refuse what the output language cannot express (ESSL vertex shaders
+    // and gl_Layer, OpenGL multiview and geometry stages, ...): verify runs SPIR-V, so it first
+    // converts for the output the user asked for and reports that conversion's refusal as its own.
+    if (options.eye.select != EyeSelect::Parameter && options.target != TargetLanguage::Spirv) {
+      TranspileOptions asAsked = options;
+      asAsked.shiftThisStage = i + 1 == ordered.size();
+      TranspileResult check = transpile(*ordered[i], asAsked);
+      if (!check.ok) {
+        diags.append(check.diagnostics);
+        return false;
+      }
+    }
+    TranspileOptions o = options;
+    o.target = TargetLanguage::Spirv;
+    o.forceReemit = true;
+    o.shiftThisStage = i + 1 == ordered.size();
+    TranspileResult result = transpile(*ordered[i], o);
+    diags.append(result.diagnostics);
+    if (!result.ok) return false;
+    *classification = result.report.value("classification", "");
+    std::vector<uint32_t> words(result.output.size() / 4);
+    std::memcpy(words.data(), result.output.data(), words.size() * 4);
+    std::string error;
+    auto original = spirv::Module::parse(result.originalSpirv, &error);
+    if (!original) {
+      diags.error(ordered[i]->path, error);
+      return false;
+    }
+    std::vector<std::string> halo = outputsExpectedToDiffer(result);
+    const bool d3dRegisters = bindsByD3DRegisters(result, *ordered[i]);
+    stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
+                       original->entryPointName(), std::move(halo), d3dRegisters});
+  }
+  return true;
+}
+
+}  // namespace stereoshift::harness
