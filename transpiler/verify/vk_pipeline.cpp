@@ -201,28 +201,61 @@ VkPipelineLayout VulkanContext::Impl::pipelineLayout(Scope& scope, const Pipelin
   return layout;
 }
 
-namespace {
+struct FixedFunctionState::CreateInfos {
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  VkPipelineRasterizationStateCreateInfo rasterization{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  VkPipelineDepthStencilStateCreateInfo depthStencil{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  VkPipelineColorBlendAttachmentState blendAttachment{};
+  VkPipelineColorBlendStateCreateInfo colorBlend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+};
 
-// Depth test and colour writes / blending of a rendered draw (capture has neither).
-void drawState(const Draw& draw, VkPipelineDepthStencilStateCreateInfo* ds, VkPipelineColorBlendAttachmentState* cba) {
-  ds->depthTestEnable = draw.depthTest;
-  ds->depthWriteEnable = draw.depthTest && draw.depthWrite;
-  ds->depthCompareOp = draw.depthCompare;
-  cba->colorWriteMask = draw.colorWrite ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                           VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT)
-                                        : 0;
-  if (draw.alphaBlend) {
-    cba->blendEnable = VK_TRUE;
-    cba->srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-    cba->dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    cba->colorBlendOp = VK_BLEND_OP_ADD;
-    cba->srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-    cba->dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    cba->alphaBlendOp = VK_BLEND_OP_ADD;
+FixedFunctionState::FixedFunctionState(const Draw* draw, bool discard, bool colourAttachment)
+    : infos_(std::make_unique<CreateInfos>()) {
+  CreateInfos& s = *infos_;
+  s.viewport.viewportCount = 1;
+  s.viewport.scissorCount = 1;
+  s.rasterization.rasterizerDiscardEnable = discard ? VK_TRUE : VK_FALSE;
+  s.rasterization.polygonMode = VK_POLYGON_MODE_FILL;
+  s.rasterization.cullMode = VK_CULL_MODE_NONE;
+  s.rasterization.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  s.rasterization.lineWidth = 1.f;
+  s.multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  if (draw) {
+    s.depthStencil.depthTestEnable = draw->depthTest;
+    s.depthStencil.depthWriteEnable = draw->depthTest && draw->depthWrite;
+    s.depthStencil.depthCompareOp = draw->depthCompare;
+    s.blendAttachment.colorWriteMask = draw->colorWrite ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                                           VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT)
+                                                        : 0;
+    if (draw->alphaBlend) {
+      s.blendAttachment.blendEnable = VK_TRUE;
+      s.blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+      s.blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+      s.blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+      s.blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      s.blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+      s.blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
   }
+  s.colorBlend.attachmentCount = colourAttachment ? 1 : 0;
+  s.colorBlend.pAttachments = &s.blendAttachment;
+  s.dynamic.dynamicStateCount = 2;
+  s.dynamic.pDynamicStates = s.dynamicStates;
 }
 
-}  // namespace
+FixedFunctionState::~FixedFunctionState() = default;
+
+void FixedFunctionState::applyTo(VkGraphicsPipelineCreateInfo* gci) const {
+  gci->pViewportState = &infos_->viewport;
+  gci->pRasterizationState = &infos_->rasterization;
+  gci->pMultisampleState = &infos_->multisample;
+  gci->pDepthStencilState = &infos_->depthStencil;
+  gci->pColorBlendState = &infos_->colorBlend;
+  gci->pDynamicState = &infos_->dynamic;
+}
 
 VkPipeline VulkanContext::Impl::graphicsPipeline(Scope& scope, const PipelineInputs& in, const RasterConfig& raster,
                                                  VkRenderPass renderPass,
@@ -238,27 +271,7 @@ VkPipeline VulkanContext::Impl::graphicsPipeline(Scope& scope, const PipelineInp
   ias.topology = in.topology;
   VkPipelineTessellationStateCreateInfo ts{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
   ts.patchControlPoints = in.patchControlPoints;
-  VkPipelineViewportStateCreateInfo vps{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  vps.viewportCount = 1;
-  vps.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  rs.rasterizerDiscardEnable = raster.discard ? VK_TRUE : VK_FALSE;
-  rs.polygonMode = VK_POLYGON_MODE_FILL;
-  rs.cullMode = VK_CULL_MODE_NONE;
-  rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  rs.lineWidth = 1.f;
-  VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  VkPipelineColorBlendAttachmentState cba{};
-  if (raster.draw) drawState(*raster.draw, &ds, &cba);
-  VkPipelineColorBlendStateCreateInfo cbs{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  cbs.attachmentCount = raster.colorAttachment ? 1 : 0;
-  cbs.pAttachments = &cba;
-  VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dys{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dys.dynamicStateCount = 2;
-  dys.pDynamicStates = dyn;
+  const FixedFunctionState state(raster.draw, raster.discard, raster.colorAttachment);
 
   VkGraphicsPipelineCreateInfo gci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
   gci.stageCount = uint32_t(stages.size());
@@ -266,12 +279,8 @@ VkPipeline VulkanContext::Impl::graphicsPipeline(Scope& scope, const PipelineInp
   gci.pVertexInputState = &vis;
   gci.pInputAssemblyState = &ias;
   gci.pTessellationState = in.topology == VK_PRIMITIVE_TOPOLOGY_PATCH_LIST ? &ts : nullptr;
-  gci.pViewportState = &vps;
-  gci.pRasterizationState = &rs;
-  gci.pMultisampleState = &ms;
-  gci.pDepthStencilState = raster.depthAttachment ? &ds : nullptr;
-  gci.pColorBlendState = &cbs;
-  gci.pDynamicState = &dys;
+  state.applyTo(&gci);
+  if (!raster.depthAttachment) gci.pDepthStencilState = nullptr;
   gci.layout = layout;
   gci.renderPass = renderPass;
   gci.subpass = 0;

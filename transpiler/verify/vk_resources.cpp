@@ -93,12 +93,11 @@ Image VulkanContext::Impl::deviceImage(Scope& scope, const VkImageCreateInfo& ic
   return img;
 }
 
-Image VulkanContext::Impl::image2D(Scope& scope, VkFormat format, uint32_t w, uint32_t h, uint32_t layers,
-                                   VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* what) {
+VkImageCreateInfo imageInfo2D(VkFormat format, uint32_t width, uint32_t height, uint32_t layers, VkImageUsageFlags usage) {
   VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   ici.imageType = VK_IMAGE_TYPE_2D;
   ici.format = format;
-  ici.extent = {w, h, 1};
+  ici.extent = {width, height, 1};
   ici.mipLevels = 1;
   ici.arrayLayers = layers;
   ici.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -106,7 +105,13 @@ Image VulkanContext::Impl::image2D(Scope& scope, VkFormat format, uint32_t w, ui
   ici.usage = usage;
   ici.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  return deviceImage(scope, ici, layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, aspect, what);
+  return ici;
+}
+
+Image VulkanContext::Impl::image2D(Scope& scope, VkFormat format, uint32_t w, uint32_t h, uint32_t layers,
+                                   VkImageUsageFlags usage, VkImageAspectFlags aspect, const char* what) {
+  return deviceImage(scope, imageInfo2D(format, w, h, layers, usage),
+                     layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, aspect, what);
 }
 
 Image VulkanContext::Impl::textureImage(Scope& scope, VkCommandBuffer uploads, const SampledTexture& t,
