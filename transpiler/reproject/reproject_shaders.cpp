@@ -303,6 +303,14 @@ void appendSearch(std::ostringstream& s, const std::array<std::string, 3>& acces
        "  bool bracketed = tHi > tLo;\n";
 }
 
+// One step inside the bracket, shared by the refinement and the background fill: the residual at
+// t, and t replaces the bracket's end on its side. `indent` is the loop body's.
+std::string bracketStep(const std::string& indent) {
+  return indent + "float r = residual(t, target, k, row, width, screenDepth);\n" + indent + "if (r <= 0.0) {\n" +
+         indent + "  tHi = t;\n" + indent + "  rHi = r;\n" + indent + "} else {\n" + indent + "  tLo = t;\n" +
+         indent + "  rLo = r;\n" + indent + "}\n";
+}
+
 // The bracket's refinement (bisection or secant steps), when asked for.
 void appendRefinement(std::ostringstream& s, const ReprojectOptions& o) {
   if (o.refinement != ReprojectRefinement::None && o.refinementSteps > 0) {
@@ -312,15 +320,7 @@ void appendRefinement(std::ostringstream& s, const ReprojectOptions& o) {
       s << "    float t = 0.5 * (tLo + tHi);\n";
     else
       s << "    float t = tLo + (tHi - tLo) * (rLo / (rLo - rHi));  // rLo > 0 >= rHi\n";
-    s << "    float r = residual(t, target, k, row, width, screenDepth);\n"
-         "    if (r <= 0.0) {\n"
-         "      tHi = t;\n"
-         "      rHi = r;\n"
-         "    } else {\n"
-         "      tLo = t;\n"
-         "      rLo = r;\n"
-         "    }\n"
-         "  }\n";
+    s << bracketStep("    ") << "  }\n";
   }
 }
 
@@ -337,15 +337,7 @@ void appendResolve(std::ostringstream& s, const ReprojectOptions& o) {
     s << "    // Background repeat: narrow the bracket onto the edge, then take the far side's texel there.\n"
          "    for (int j = 0; j < 16 && spread * (tHi - tLo) > 1.0; ++j) {\n"
          "      float t = 0.5 * (tLo + tHi);\n"
-         "      float r = residual(t, target, k, row, width, screenDepth);\n"
-         "      if (r <= 0.0) {\n"
-         "        tHi = t;\n"
-         "        rHi = r;\n"
-         "      } else {\n"
-         "        tLo = t;\n"
-         "        rLo = r;\n"
-         "      }\n"
-         "    }\n";
+      << bracketStep("      ") << "    }\n";
   else
     s << "    // Nearest farther sample: the bracket's far end as the search found it.\n";
   s << "    colour = colourAt(target - k * tLo, row, width);\n"
