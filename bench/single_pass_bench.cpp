@@ -199,15 +199,7 @@ class Device {
   };
   LayeredImage layeredImage(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, uint32_t size) {
     LayeredImage img;
-    VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    ici.imageType = VK_IMAGE_TYPE_2D;
-    ici.format = format;
-    ici.extent = {size, size, 1};
-    ici.mipLevels = 1;
-    ici.arrayLayers = 2;
-    ici.samples = VK_SAMPLE_COUNT_1_BIT;
-    ici.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ici.usage = usage;
+    const VkImageCreateInfo ici = imageInfo2D(format, size, size, 2, usage);
     check(vkCreateImage(device_, &ici, nullptr, &img.image), "vkCreateImage");
     VkImage image = img.image;
     onDestroy([this, image] { vkDestroyImage(device_, image, nullptr); });
@@ -216,13 +208,8 @@ class Device {
     check(vkBindImageMemory(device_, img.image, allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false), 0),
           "vkBindImageMemory");
     auto view = [&](VkImageViewType type, uint32_t first, uint32_t count) {
-      VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-      vci.image = img.image;
-      vci.viewType = type;
-      vci.format = format;
-      vci.subresourceRange = {aspect, 0, 1, first, count};
       VkImageView v = VK_NULL_HANDLE;
-      check(vkCreateImageView(device_, &vci, nullptr, &v), "vkCreateImageView");
+      check(createImageView(device_, img.image, type, format, {aspect, 0, 1, first, count}, &v), "vkCreateImageView");
       onDestroy([this, v] { vkDestroyImageView(device_, v, nullptr); });
       return v;
     };
@@ -255,7 +242,8 @@ class Device {
     return fb;
   }
 
-  // Opaque, depth-tested, no culling; viewport and scissor set per render pass as an engine would.
+  // Opaque, depth-tested, no culling (the harness's fixed-function state); viewport and scissor set
+  // per render pass as an engine would.
   VkPipeline pipeline(VkPipelineLayout layout, VkRenderPass rp, const std::vector<uint32_t>& vertex,
                       const std::vector<uint32_t>& fragment) {
     VkPipelineShaderStageCreateInfo stages[2]{};
@@ -279,38 +267,14 @@ class Device {
     vis.pVertexAttributeDescriptions = &attribute;
     VkPipelineInputAssemblyStateCreateInfo ias{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     ias.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo vps{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    vps.viewportCount = vps.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    rs.polygonMode = VK_POLYGON_MODE_FILL;
-    rs.cullMode = VK_CULL_MODE_NONE;
-    rs.lineWidth = 1;
-    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    ds.depthTestEnable = ds.depthWriteEnable = VK_TRUE;
-    ds.depthCompareOp = VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState cba{};
-    cba.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                         VK_COLOR_COMPONENT_A_BIT;
-    VkPipelineColorBlendStateCreateInfo cbs{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    cbs.attachmentCount = 1;
-    cbs.pAttachments = &cba;
-    VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dys{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dys.dynamicStateCount = 2;
-    dys.pDynamicStates = dynamic;
+    const Draw opaque;  // depth-tested (less, written), colour written, no blending
+    const FixedFunctionState state(&opaque);
     VkGraphicsPipelineCreateInfo gci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     gci.stageCount = 2;
     gci.pStages = stages;
     gci.pVertexInputState = &vis;
     gci.pInputAssemblyState = &ias;
-    gci.pViewportState = &vps;
-    gci.pRasterizationState = &rs;
-    gci.pMultisampleState = &ms;
-    gci.pDepthStencilState = &ds;
-    gci.pColorBlendState = &cbs;
-    gci.pDynamicState = &dys;
+    state.applyTo(&gci);
     gci.layout = layout;
     gci.renderPass = rp;
     VkPipeline p = VK_NULL_HANDLE;
@@ -453,316 +417,385 @@ size_t differingLayers(const std::vector<uint8_t>& image, uint32_t size) {
   return n;
 }
 
-int run(VulkanContext& context, uint32_t drawCount, uint32_t triangles, int reps, uint32_t size) {
-  Device gpu(context);
-  const VkDevice dev = gpu.handle();
-  const Scene scene = makeScene(drawCount, triangles);
+// One run of the benchmark, phase by phase: the modes and their shaders, the Vulkan objects they
+// share (layouts, eye descriptor sets, vertex buffer, 2-layer target, command buffers, queries),
+// the interleaved frames, then the table and the image verdict.
+class SinglePassBench {
+ public:
+  SinglePassBench(VulkanContext& context, uint32_t drawCount, uint32_t triangles, int reps, uint32_t size)
+      : context_(context), gpu_(context), dev_(gpu_.handle()), scene_(makeScene(drawCount, triangles)),
+        drawCount_(drawCount), triangles_(triangles), reps_(reps), size_(size) {}
 
-  std::vector<Mode> modes(3);
-  modes[0].name = "two-pass";
-  modes[0].select = EyeSelect::Parameter;
-  modes[0].setup.instanceCount = 1;  // the mono draw, once per eye
-  modes[0].setup.layerCount = 2;
-  modes[1].name = "multiview";
-  modes[1].select = EyeSelect::ViewIndex;
-  modes[1].setup = runtime::singlePassSetup(runtime::SinglePassMode::Multiview, 1, 0);
-  modes[2].name = "instanced";
-  modes[2].select = EyeSelect::InstanceIndex;
-  modes[2].setup = runtime::singlePassSetup(runtime::SinglePassMode::InstancedLayer, 1, 0);
-  if (!context.multiviewSupported()) {
-    std::printf("multiview: not supported by %s, left out\n", context.deviceName().c_str());
-    modes.erase(modes.begin() + 1);
+  int run() {
+    chooseModes();
+    convertShaders();
+    createLayouts();
+    writeEyeSets();
+    Device::Buffer vertexBuffer = gpu_.hostBuffer(scene_.vertices.size() * 4, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    std::memcpy(vertexBuffer.mapped, scene_.vertices.data(), scene_.vertices.size() * 4);
+    frame_.vertices = vertexBuffer.buffer;
+    createTargetsAndPipelines();
+    createCommandBuffers();
+    createQueries();
+    measure();
+    printTable();
+    return verdict();
   }
 
-  TranspileResult fragment = transpile(SourceFile{"scene.frag", kFragmentShader}, TranspileOptions{});
-  if (!fragment.ok) throw std::runtime_error("the fragment shader does not compile:\n" + fragment.diagnostics.format());
-  std::vector<Converted> vertex;
-  for (const Mode& m : modes) {
-    vertex.push_back(convertVertexShader(m.select));
-    if (vertex.back().eyeSet != 0 || vertex.back().eyeBinding == 0)
-      throw std::runtime_error("the eye block is not in set 0 beside the camera block: set " +
-                               std::to_string(vertex.back().eyeSet) + ", binding " +
-                               std::to_string(vertex.back().eyeBinding));
-    if (vertex.back().eyeBinding != vertex[0].eyeBinding)
-      throw std::runtime_error("the modes put the eye block at different bindings");
-  }
-  const uint32_t eyeBinding = vertex[0].eyeBinding;
-
-  // Set 0: the camera at binding 0, StereoParams at the binding the conversion chose. One set per
-  // eye for two-pass, one with eyeSign 0 (ignored by the shaders) for both single-pass modes.
-  VkDescriptorSetLayoutBinding bindings[2] = {
-      {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-      {eyeBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
-  VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  lci.bindingCount = 2;
-  lci.pBindings = bindings;
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  check(vkCreateDescriptorSetLayout(dev, &lci, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
-  gpu.onDestroy([dev, setLayout] { vkDestroyDescriptorSetLayout(dev, setLayout, nullptr); });
-  VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(PerDraw)};
-  VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  plci.setLayoutCount = 1;
-  plci.pSetLayouts = &setLayout;
-  plci.pushConstantRangeCount = 1;
-  plci.pPushConstantRanges = &push;
-  Frame frame;
-  frame.scene = &scene;
-  frame.size = size;
-  check(vkCreatePipelineLayout(dev, &plci, nullptr, &frame.layout), "vkCreatePipelineLayout");
-  const VkPipelineLayout pipelineLayout = frame.layout;
-  gpu.onDestroy([dev, pipelineLayout] { vkDestroyPipelineLayout(dev, pipelineLayout, nullptr); });
-
-  const VkDeviceSize align = std::max<VkDeviceSize>(context.properties().limits.minUniformBufferOffsetAlignment, 64);
-  Device::Buffer uniforms = gpu.hostBuffer(4 * align, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  auto* uniformBytes = static_cast<uint8_t*>(uniforms.mapped);
-  std::memcpy(uniformBytes, scene.viewProjection, sizeof scene.viewProjection);
-  const runtime::StereoParams eyes[3] = {
-      {-1.0f, kSeparation, kConvergence}, {1.0f, kSeparation, kConvergence},
-      runtime::singlePassParams(kSeparation, kConvergence)};
-  for (int e = 0; e < 3; ++e) std::memcpy(uniformBytes + (e + 1) * align, &eyes[e], sizeof eyes[e]);
-
-  VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 6};
-  VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  dpci.maxSets = 3;
-  dpci.poolSizeCount = 1;
-  dpci.pPoolSizes = &poolSize;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  check(vkCreateDescriptorPool(dev, &dpci, nullptr, &pool), "vkCreateDescriptorPool");
-  gpu.onDestroy([dev, pool] { vkDestroyDescriptorPool(dev, pool, nullptr); });
-  VkDescriptorSetLayout setLayouts[3] = {setLayout, setLayout, setLayout};
-  VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  dai.descriptorPool = pool;
-  dai.descriptorSetCount = 3;
-  dai.pSetLayouts = setLayouts;
-  VkDescriptorSet eyeSets[3];  // left, right, single-pass
-  check(vkAllocateDescriptorSets(dev, &dai, eyeSets), "vkAllocateDescriptorSets");
-  for (int e = 0; e < 3; ++e) {
-    VkDescriptorBufferInfo infos[2] = {{uniforms.buffer, 0, sizeof scene.viewProjection},
-                                       {uniforms.buffer, (e + 1) * align, sizeof(runtime::StereoParams)}};
-    VkWriteDescriptorSet writes[2]{};
-    for (int b = 0; b < 2; ++b) {
-      writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-      writes[b].dstSet = eyeSets[e];
-      writes[b].dstBinding = bindings[b].binding;
-      writes[b].descriptorCount = 1;
-      writes[b].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-      writes[b].pBufferInfo = &infos[b];
+ private:
+  void chooseModes() {
+    modes_.resize(3);
+    modes_[0].name = "two-pass";
+    modes_[0].select = EyeSelect::Parameter;
+    modes_[0].setup.instanceCount = 1;  // the mono draw, once per eye
+    modes_[0].setup.layerCount = 2;
+    modes_[1].name = "multiview";
+    modes_[1].select = EyeSelect::ViewIndex;
+    modes_[1].setup = runtime::singlePassSetup(runtime::SinglePassMode::Multiview, 1, 0);
+    modes_[2].name = "instanced";
+    modes_[2].select = EyeSelect::InstanceIndex;
+    modes_[2].setup = runtime::singlePassSetup(runtime::SinglePassMode::InstancedLayer, 1, 0);
+    if (!context_.multiviewSupported()) {
+      std::printf("multiview: not supported by %s, left out\n", context_.deviceName().c_str());
+      modes_.erase(modes_.begin() + 1);
     }
-    vkUpdateDescriptorSets(dev, 2, writes, 0, nullptr);
   }
 
-  Device::Buffer vertexBuffer = gpu.hostBuffer(scene.vertices.size() * 4, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  std::memcpy(vertexBuffer.mapped, scene.vertices.data(), scene.vertices.size() * 4);
-  frame.vertices = vertexBuffer.buffer;
+  void convertShaders() {
+    fragment_ = transpile(SourceFile{"scene.frag", kFragmentShader}, TranspileOptions{});
+    if (!fragment_.ok) throw std::runtime_error("the fragment shader does not compile:\n" + fragment_.diagnostics.format());
+    for (const Mode& m : modes_) {
+      vertex_.push_back(convertVertexShader(m.select));
+      if (vertex_.back().eyeSet != 0 || vertex_.back().eyeBinding == 0)
+        throw std::runtime_error("the eye block is not in set 0 beside the camera block: set " +
+                                 std::to_string(vertex_.back().eyeSet) + ", binding " +
+                                 std::to_string(vertex_.back().eyeBinding));
+      if (vertex_.back().eyeBinding != vertex_[0].eyeBinding)
+        throw std::runtime_error("the modes put the eye block at different bindings");
+    }
+  }
 
-  const uint32_t layers = modes[0].setup.layerCount;
-  Device::LayeredImage colour = gpu.layeredImage(
-      kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT, size);
-  Device::LayeredImage depth =
-      gpu.layeredImage(kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT, size);
-  const VkRenderPass plainPass = gpu.renderPass(0);
-  for (size_t i = 0; i < modes.size(); ++i) {
-    Mode& m = modes[i];
-    if (std::popcount(m.setup.viewMask) > int(kQueriesPerPass) || (m.select == EyeSelect::Parameter ? 2 : 1) > kMaxPasses)
-      throw std::runtime_error("the statistics query pool is too small for this mode");
-    if (m.setup.layerCount != layers) throw std::runtime_error("the modes disagree on the target's layers");
-    m.renderPass = m.setup.viewMask ? gpu.renderPass(m.setup.viewMask) : plainPass;
-    m.pipeline = gpu.pipeline(frame.layout, m.renderPass, vertex[i].spirv, fragment.originalSpirv);
-    if (m.select == EyeSelect::Parameter) {
-      for (uint32_t eye = 0; eye < 2; ++eye) {
-        m.passes.push_back(gpu.framebuffer(m.renderPass, colour.layer[eye], depth.layer[eye], size, 1));
-        m.sets.push_back(eyeSets[eye]);
+  // Set 0: the camera at binding 0, StereoParams at the binding the conversion chose; the per-draw
+  // push constants.
+  void createLayouts() {
+    const VkDevice dev = dev_;
+    bindings_[0] = {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr};
+    bindings_[1] = {vertex_[0].eyeBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    lci.bindingCount = 2;
+    lci.pBindings = bindings_;
+    check(vkCreateDescriptorSetLayout(dev, &lci, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
+    const VkDescriptorSetLayout setLayout = setLayout_;
+    gpu_.onDestroy([dev, setLayout] { vkDestroyDescriptorSetLayout(dev, setLayout, nullptr); });
+    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(PerDraw)};
+    VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    plci.setLayoutCount = 1;
+    plci.pSetLayouts = &setLayout_;
+    plci.pushConstantRangeCount = 1;
+    plci.pPushConstantRanges = &push;
+    frame_.scene = &scene_;
+    frame_.size = size_;
+    check(vkCreatePipelineLayout(dev, &plci, nullptr, &frame_.layout), "vkCreatePipelineLayout");
+    const VkPipelineLayout pipelineLayout = frame_.layout;
+    gpu_.onDestroy([dev, pipelineLayout] { vkDestroyPipelineLayout(dev, pipelineLayout, nullptr); });
+  }
+
+  // One set per eye for two-pass, one with eyeSign 0 (ignored by the shaders) for both single-pass
+  // modes, each pointing at the camera and its StereoParams in one uniform buffer.
+  void writeEyeSets() {
+    const VkDevice dev = dev_;
+    const VkDeviceSize align = std::max<VkDeviceSize>(context_.properties().limits.minUniformBufferOffsetAlignment, 64);
+    Device::Buffer uniforms = gpu_.hostBuffer(4 * align, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    auto* uniformBytes = static_cast<uint8_t*>(uniforms.mapped);
+    std::memcpy(uniformBytes, scene_.viewProjection, sizeof scene_.viewProjection);
+    const runtime::StereoParams eyes[3] = {
+        {-1.0f, kSeparation, kConvergence}, {1.0f, kSeparation, kConvergence},
+        runtime::singlePassParams(kSeparation, kConvergence)};
+    for (int e = 0; e < 3; ++e) std::memcpy(uniformBytes + (e + 1) * align, &eyes[e], sizeof eyes[e]);
+
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 6};
+    VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    dpci.maxSets = 3;
+    dpci.poolSizeCount = 1;
+    dpci.pPoolSizes = &poolSize;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    check(vkCreateDescriptorPool(dev, &dpci, nullptr, &pool), "vkCreateDescriptorPool");
+    gpu_.onDestroy([dev, pool] { vkDestroyDescriptorPool(dev, pool, nullptr); });
+    VkDescriptorSetLayout setLayouts[3] = {setLayout_, setLayout_, setLayout_};
+    VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    dai.descriptorPool = pool;
+    dai.descriptorSetCount = 3;
+    dai.pSetLayouts = setLayouts;
+    check(vkAllocateDescriptorSets(dev, &dai, eyeSets_), "vkAllocateDescriptorSets");
+    for (int e = 0; e < 3; ++e) {
+      VkDescriptorBufferInfo infos[2] = {{uniforms.buffer, 0, sizeof scene_.viewProjection},
+                                         {uniforms.buffer, (e + 1) * align, sizeof(runtime::StereoParams)}};
+      VkWriteDescriptorSet writes[2]{};
+      for (int b = 0; b < 2; ++b) {
+        writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[b].dstSet = eyeSets_[e];
+        writes[b].dstBinding = bindings_[b].binding;
+        writes[b].descriptorCount = 1;
+        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        writes[b].pBufferInfo = &infos[b];
       }
-    } else {
-      // Multiview: the view mask picks the layers, the framebuffer has one. Instanced: gl_Layer does.
-      m.passes.push_back(gpu.framebuffer(m.renderPass, colour.bothLayers, depth.bothLayers, size,
-                                         m.setup.viewMask ? 1 : layers));
-      m.sets.push_back(eyeSets[2]);
+      vkUpdateDescriptorSets(dev, 2, writes, 0, nullptr);
     }
   }
 
-  VkCommandPoolCreateInfo cpci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  cpci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  cpci.queueFamilyIndex = context.queueFamilyIndex();
-  VkCommandPool commandPool = VK_NULL_HANDLE;
-  check(vkCreateCommandPool(dev, &cpci, nullptr, &commandPool), "vkCreateCommandPool");
-  gpu.onDestroy([dev, commandPool] { vkDestroyCommandPool(dev, commandPool, nullptr); });
-  std::vector<VkCommandBuffer> commandBuffers(modes.size() + 1);
-  VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  cai.commandPool = commandPool;
-  cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  cai.commandBufferCount = uint32_t(commandBuffers.size());
-  check(vkAllocateCommandBuffers(dev, &cai, commandBuffers.data()), "vkAllocateCommandBuffers");
-  for (size_t i = 0; i < modes.size(); ++i) modes[i].frame = commandBuffers[i];
+  // The 2-layer colour and depth target, and per mode its render pass, pipeline, framebuffers and sets.
+  void createTargetsAndPipelines() {
+    layers_ = modes_[0].setup.layerCount;
+    colour_ = gpu_.layeredImage(kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                VK_IMAGE_ASPECT_COLOR_BIT, size_);
+    Device::LayeredImage depth =
+        gpu_.layeredImage(kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT, size_);
+    const VkRenderPass plainPass = gpu_.renderPass(0);
+    for (size_t i = 0; i < modes_.size(); ++i) {
+      Mode& m = modes_[i];
+      if (std::popcount(m.setup.viewMask) > int(kQueriesPerPass) || (m.select == EyeSelect::Parameter ? 2 : 1) > kMaxPasses)
+        throw std::runtime_error("the statistics query pool is too small for this mode");
+      if (m.setup.layerCount != layers_) throw std::runtime_error("the modes disagree on the target's layers");
+      m.renderPass = m.setup.viewMask ? gpu_.renderPass(m.setup.viewMask) : plainPass;
+      m.pipeline = gpu_.pipeline(frame_.layout, m.renderPass, vertex_[i].spirv, fragment_.originalSpirv);
+      if (m.select == EyeSelect::Parameter) {
+        for (uint32_t eye = 0; eye < 2; ++eye) {
+          m.passes.push_back(gpu_.framebuffer(m.renderPass, colour_.layer[eye], depth.layer[eye], size_, 1));
+          m.sets.push_back(eyeSets_[eye]);
+        }
+      } else {
+        // Multiview: the view mask picks the layers, the framebuffer has one. Instanced: gl_Layer does.
+        m.passes.push_back(gpu_.framebuffer(m.renderPass, colour_.bothLayers, depth.bothLayers, size_,
+                                            m.setup.viewMask ? 1 : layers_));
+        m.sets.push_back(eyeSets_[2]);
+      }
+    }
+  }
 
-  // The read-back of both layers, recorded once and submitted after every frame (not timed).
-  const size_t imageBytes = size_t(size) * size * 4 * layers;
-  Device::Buffer readback = gpu.hostBuffer(imageBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  const VkCommandBuffer copy = commandBuffers.back();
-  {
+  // One command buffer per mode's frame, and the read-back of both layers, recorded once and
+  // submitted after every frame (not timed).
+  void createCommandBuffers() {
+    const VkDevice dev = dev_;
+    VkCommandPoolCreateInfo cpci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cpci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    cpci.queueFamilyIndex = context_.queueFamilyIndex();
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    check(vkCreateCommandPool(dev, &cpci, nullptr, &commandPool), "vkCreateCommandPool");
+    gpu_.onDestroy([dev, commandPool] { vkDestroyCommandPool(dev, commandPool, nullptr); });
+    std::vector<VkCommandBuffer> commandBuffers(modes_.size() + 1);
+    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cai.commandPool = commandPool;
+    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cai.commandBufferCount = uint32_t(commandBuffers.size());
+    check(vkAllocateCommandBuffers(dev, &cai, commandBuffers.data()), "vkAllocateCommandBuffers");
+    for (size_t i = 0; i < modes_.size(); ++i) modes_[i].frame = commandBuffers[i];
+
+    imageBytes_ = size_t(size_) * size_ * 4 * layers_;
+    readback_ = gpu_.hostBuffer(imageBytes_, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    copy_ = commandBuffers.back();
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    check(vkBeginCommandBuffer(copy, &bi), "vkBeginCommandBuffer");
+    check(vkBeginCommandBuffer(copy_, &bi), "vkBeginCommandBuffer");
     VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers};
-    region.imageExtent = {size, size, 1};
-    vkCmdCopyImageToBuffer(copy, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers_};
+    region.imageExtent = {size_, size_, 1};
+    vkCmdCopyImageToBuffer(copy_, colour_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
     VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     mb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(copy, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &mb, 0, nullptr, 0,
+    vkCmdPipelineBarrier(copy_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &mb, 0, nullptr, 0,
                          nullptr);
-    check(vkEndCommandBuffer(copy), "vkEndCommandBuffer");
+    check(vkEndCommandBuffer(copy_), "vkEndCommandBuffer");
   }
 
-  const bool statistics = context.features().pipelineStatisticsQuery;
-  if (statistics) {
-    VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    qci.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
-    qci.queryCount = kQueriesPerPass * kMaxPasses;
-    qci.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
-                             VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT;
-    check(vkCreateQueryPool(dev, &qci, nullptr, &frame.statistics), "vkCreateQueryPool");
-    const VkQueryPool q = frame.statistics;
-    gpu.onDestroy([dev, q] { vkDestroyQueryPool(dev, q, nullptr); });
+  // Pipeline statistics (where the device has them), timestamps (where the queue writes them), a fence.
+  void createQueries() {
+    const VkDevice dev = dev_;
+    statistics_ = context_.features().pipelineStatisticsQuery;
+    if (statistics_) {
+      VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+      qci.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+      qci.queryCount = kQueriesPerPass * kMaxPasses;
+      qci.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
+                               VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT;
+      check(vkCreateQueryPool(dev, &qci, nullptr, &frame_.statistics), "vkCreateQueryPool");
+      const VkQueryPool q = frame_.statistics;
+      gpu_.onDestroy([dev, q] { vkDestroyQueryPool(dev, q, nullptr); });
+    }
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(context_.physicalDevice(), &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(context_.physicalDevice(), &familyCount, families.data());
+    timestampBits_ = families[context_.queueFamilyIndex()].timestampValidBits;
+    tickNs_ = context_.properties().limits.timestampPeriod;
+    if (timestampBits_ && tickNs_ > 0) {
+      VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+      qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
+      qci.queryCount = 2;
+      check(vkCreateQueryPool(dev, &qci, nullptr, &frame_.timestamps), "vkCreateQueryPool");
+      const VkQueryPool q = frame_.timestamps;
+      gpu_.onDestroy([dev, q] { vkDestroyQueryPool(dev, q, nullptr); });
+    }
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    check(vkCreateFence(dev, &fci, nullptr, &fence_), "vkCreateFence");
+    const VkFence fence = fence_;
+    gpu_.onDestroy([dev, fence] { vkDestroyFence(dev, fence, nullptr); });
   }
-  uint32_t familyCount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(context.physicalDevice(), &familyCount, nullptr);
-  std::vector<VkQueueFamilyProperties> families(familyCount);
-  vkGetPhysicalDeviceQueueFamilyProperties(context.physicalDevice(), &familyCount, families.data());
-  const uint32_t timestampBits = families[context.queueFamilyIndex()].timestampValidBits;
-  const double tickNs = context.properties().limits.timestampPeriod;
-  if (timestampBits && tickNs > 0) {
-    VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    qci.queryCount = 2;
-    check(vkCreateQueryPool(dev, &qci, nullptr, &frame.timestamps), "vkCreateQueryPool");
-    const VkQueryPool q = frame.timestamps;
-    gpu.onDestroy([dev, q] { vkDestroyQueryPool(dev, q, nullptr); });
-  }
-  VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence = VK_NULL_HANDLE;
-  check(vkCreateFence(dev, &fci, nullptr, &fence), "vkCreateFence");
-  gpu.onDestroy([dev, fence] { vkDestroyFence(dev, fence, nullptr); });
 
   // Frame 0 is the warm-up (first recordings grow the driver's command memory); then `reps` frames
   // per mode, the order rotating so that no mode always follows the same one.
-  size_t eyesDiffer = 0;
-  for (int rep = 0; rep <= reps; ++rep) {
-    for (size_t k = 0; k < modes.size(); ++k) {
-      Mode& m = modes[(size_t(rep) + k) % modes.size()];
-      check(vkResetCommandBuffer(m.frame, 0), "vkResetCommandBuffer");
-      const auto start = std::chrono::steady_clock::now();
-      m.drawCalls = recordFrame(m, frame);
-      const double recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      VkCommandBuffer submitted[2] = {m.frame, copy};
-      VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-      si.commandBufferCount = 2;
-      si.pCommandBuffers = submitted;
-      check(vkQueueSubmit(context.queue(), 1, &si, fence), "vkQueueSubmit");
-      check(vkWaitForFences(dev, 1, &fence, VK_TRUE, 120ull * 1000 * 1000 * 1000), "vkWaitForFences");
-      check(vkResetFences(dev, 1, &fence), "vkResetFences");
-      if (frame.statistics) {
-        // The fence has signalled: what is not available now never will be. The queries after a
-        // multiview pass's first may stay unavailable (lavapipe puts the whole count in the first).
-        m.vertexInvocations = m.fragmentInvocations = 0;
-        const uint32_t views = m.setup.viewMask ? uint32_t(std::popcount(m.setup.viewMask)) : 1;
-        for (uint32_t pass = 0; pass < m.passes.size(); ++pass) {
-          uint64_t counts[kQueriesPerPass][3] = {};  // per query: vertex, fragment invocations, available
-          VkResult r = vkGetQueryPoolResults(dev, frame.statistics, kQueriesPerPass * pass, views, sizeof counts,
-                                             counts, sizeof counts[0],
-                                             VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
-          if (r != VK_NOT_READY) check(r, "vkGetQueryPoolResults");
-          if (!counts[0][2]) throw std::runtime_error(std::string("no statistics from the ") + m.name + " frame");
-          for (uint32_t v = 0; v < views; ++v) {
-            if (!counts[v][2]) {
-              ++m.unavailableViewQueries;
-              continue;
-            }
-            m.vertexInvocations += counts[v][0];
-            m.fragmentInvocations += counts[v][1];
-          }
+  void measure() {
+    for (int rep = 0; rep <= reps_; ++rep) {
+      for (size_t k = 0; k < modes_.size(); ++k) runFrame(modes_[(size_t(rep) + k) % modes_.size()], rep);
+      // This repetition's frames, each against the two-pass one.
+      for (size_t i = 1; i < modes_.size(); ++i) {
+        size_t l0 = differingPixels(modes_[i].pixels, modes_[0].pixels, 0, size_);
+        size_t l1 = differingPixels(modes_[i].pixels, modes_[0].pixels, 1, size_);
+        if (l0 || l1) {
+          ++modes_[i].framesDiffering;
+          modes_[i].lastDifferingPixels[0] = l0;
+          modes_[i].lastDifferingPixels[1] = l1;
         }
       }
-      double gpuMs = -1;
-      if (frame.timestamps) {
-        uint64_t ticks[2] = {0, 0};
-        check(vkGetQueryPoolResults(dev, frame.timestamps, 0, 2, sizeof ticks, ticks, sizeof(uint64_t),
-                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-              "vkGetQueryPoolResults");
-        const uint64_t mask = timestampBits >= 64 ? ~uint64_t(0) : (uint64_t(1) << timestampBits) - 1;
-        gpuMs = double((ticks[1] - ticks[0]) & mask) * tickNs * 1e-6;
-      }
-      if (rep > 0) {
-        m.recordMs.push_back(recordMs);
-        if (gpuMs >= 0) m.gpuMs.push_back(gpuMs);
-      }
-      const auto* bytes = static_cast<const uint8_t*>(readback.mapped);
-      m.pixels.assign(bytes, bytes + imageBytes);
+      eyesDiffer_ = differingLayers(modes_[0].pixels, size_);
     }
-    // This repetition's frames, each against the two-pass one.
-    for (size_t i = 1; i < modes.size(); ++i) {
-      size_t l0 = differingPixels(modes[i].pixels, modes[0].pixels, 0, size);
-      size_t l1 = differingPixels(modes[i].pixels, modes[0].pixels, 1, size);
-      if (l0 || l1) {
-        ++modes[i].framesDiffering;
-        modes[i].lastDifferingPixels[0] = l0;
-        modes[i].lastDifferingPixels[1] = l1;
-      }
-    }
-    eyesDiffer = differingLayers(modes[0].pixels, size);
   }
 
-  // ---- the table ----
-  const Mode& base = modes[0];
-  const double baseRecord = median(base.recordMs), baseGpu = base.gpuMs.empty() ? -1 : median(base.gpuMs);
-  std::printf("%s: %u draws x %u triangles (%u vertices a draw), %ux%u x 2 layers; median of %d frames per mode, "
-              "modes interleaved\n",
-              context.deviceName().c_str(), drawCount, triangles, scene.verticesPerMesh, size, size, reps);
-  std::printf("%-10s %6s %10s %10s %10s %9s | %7s %7s %8s %7s\n", "mode", "draws", "VS invoc.", "FS invoc.",
-              "record ms", "GPU ms", "draws x", "VS x", "record x", "GPU x");
-  for (const Mode& m : modes) {
-    const double record = median(m.recordMs), gpuTime = m.gpuMs.empty() ? -1 : median(m.gpuMs);
-    char vs[32] = "n/a", fs[32] = "n/a", vsRatio[16] = "n/a", gpuText[16] = "n/a", gpuRatio[16] = "n/a";
-    if (statistics) {
-      std::snprintf(vs, sizeof vs, "%llu", static_cast<unsigned long long>(m.vertexInvocations));
-      std::snprintf(fs, sizeof fs, "%llu", static_cast<unsigned long long>(m.fragmentInvocations));
-      if (base.vertexInvocations)
-        std::snprintf(vsRatio, sizeof vsRatio, "%.2f", double(m.vertexInvocations) / double(base.vertexInvocations));
+  // One frame of `m`: recorded (timed), submitted with the read-back, its queries and pixels read.
+  void runFrame(Mode& m, int rep) {
+    check(vkResetCommandBuffer(m.frame, 0), "vkResetCommandBuffer");
+    const auto start = std::chrono::steady_clock::now();
+    m.drawCalls = recordFrame(m, frame_);
+    const double recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    VkCommandBuffer submitted[2] = {m.frame, copy_};
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 2;
+    si.pCommandBuffers = submitted;
+    check(vkQueueSubmit(context_.queue(), 1, &si, fence_), "vkQueueSubmit");
+    check(vkWaitForFences(dev_, 1, &fence_, VK_TRUE, 120ull * 1000 * 1000 * 1000), "vkWaitForFences");
+    check(vkResetFences(dev_, 1, &fence_), "vkResetFences");
+    if (frame_.statistics) readStatistics(m);
+    const double gpuMs = readGpuMilliseconds();
+    if (rep > 0) {
+      m.recordMs.push_back(recordMs);
+      if (gpuMs >= 0) m.gpuMs.push_back(gpuMs);
     }
-    if (gpuTime >= 0) {
-      std::snprintf(gpuText, sizeof gpuText, "%.3f", gpuTime);
-      if (baseGpu > 0) std::snprintf(gpuRatio, sizeof gpuRatio, "%.2f", gpuTime / baseGpu);
-    }
-    std::printf("%-10s %6u %10s %10s %10.3f %9s | %7.2f %7s %8.2f %7s\n", m.name, m.drawCalls, vs, fs, record, gpuText,
-                double(m.drawCalls) / double(base.drawCalls), vsRatio, record / baseRecord, gpuRatio);
+    const auto* bytes = static_cast<const uint8_t*>(readback_.mapped);
+    m.pixels.assign(bytes, bytes + imageBytes_);
   }
-  std::printf("VS/FS invoc.: %s\n", statistics ? "pipeline statistics queries in each render pass (last frame)"
-                                               : "n/a: the device has no pipelineStatisticsQuery");
-  for (const Mode& m : modes)
-    if (m.unavailableViewQueries)
-      std::printf("%s: the second view's query stayed unavailable; the counts are the first query's alone\n", m.name);
-  std::printf("record ms: CPU, vkBeginCommandBuffer .. vkEndCommandBuffer; GPU ms: %s\n",
-              frame.timestamps ? "timestamps before and after the render passes" : "n/a: the queue writes no timestamps");
 
-  bool failed = false;
-  if (eyesDiffer == 0) {
-    std::printf("FAILED: the two eyes of the two-pass frame are the same image: the comparison would mean nothing\n");
-    failed = true;
+  // The fence has signalled: what is not available now never will be. The queries after a
+  // multiview pass's first may stay unavailable (lavapipe puts the whole count in the first).
+  void readStatistics(Mode& m) {
+    m.vertexInvocations = m.fragmentInvocations = 0;
+    const uint32_t views = m.setup.viewMask ? uint32_t(std::popcount(m.setup.viewMask)) : 1;
+    for (uint32_t pass = 0; pass < m.passes.size(); ++pass) {
+      uint64_t counts[kQueriesPerPass][3] = {};  // per query: vertex, fragment invocations, available
+      VkResult r = vkGetQueryPoolResults(dev_, frame_.statistics, kQueriesPerPass * pass, views, sizeof counts, counts,
+                                         sizeof counts[0], VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+      if (r != VK_NOT_READY) check(r, "vkGetQueryPoolResults");
+      if (!counts[0][2]) throw std::runtime_error(std::string("no statistics from the ") + m.name + " frame");
+      for (uint32_t v = 0; v < views; ++v) {
+        if (!counts[v][2]) {
+          ++m.unavailableViewQueries;
+          continue;
+        }
+        m.vertexInvocations += counts[v][0];
+        m.fragmentInvocations += counts[v][1];
+      }
+    }
   }
-  for (size_t i = 1; i < modes.size(); ++i) {
-    const Mode& m = modes[i];
-    if (m.framesDiffering) {
-      std::printf("FAILED: %s differs from two-pass in %zu of %d frames (last: %zu pixels in layer 0, %zu in layer 1)\n",
-                  m.name, m.framesDiffering, reps + 1, m.lastDifferingPixels[0], m.lastDifferingPixels[1]);
+
+  // The GPU time of the last frame's render passes; -1 without timestamps.
+  double readGpuMilliseconds() {
+    if (!frame_.timestamps) return -1;
+    uint64_t ticks[2] = {0, 0};
+    check(vkGetQueryPoolResults(dev_, frame_.timestamps, 0, 2, sizeof ticks, ticks, sizeof(uint64_t),
+                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+          "vkGetQueryPoolResults");
+    const uint64_t mask = timestampBits_ >= 64 ? ~uint64_t(0) : (uint64_t(1) << timestampBits_) - 1;
+    return double((ticks[1] - ticks[0]) & mask) * tickNs_ * 1e-6;
+  }
+
+  void printTable() const {
+    const Mode& base = modes_[0];
+    const double baseRecord = median(base.recordMs), baseGpu = base.gpuMs.empty() ? -1 : median(base.gpuMs);
+    std::printf("%s: %u draws x %u triangles (%u vertices a draw), %ux%u x 2 layers; median of %d frames per mode, "
+                "modes interleaved\n",
+                context_.deviceName().c_str(), drawCount_, triangles_, scene_.verticesPerMesh, size_, size_, reps_);
+    std::printf("%-10s %6s %10s %10s %10s %9s | %7s %7s %8s %7s\n", "mode", "draws", "VS invoc.", "FS invoc.",
+                "record ms", "GPU ms", "draws x", "VS x", "record x", "GPU x");
+    for (const Mode& m : modes_) {
+      const double record = median(m.recordMs), gpuTime = m.gpuMs.empty() ? -1 : median(m.gpuMs);
+      char vs[32] = "n/a", fs[32] = "n/a", vsRatio[16] = "n/a", gpuText[16] = "n/a", gpuRatio[16] = "n/a";
+      if (statistics_) {
+        std::snprintf(vs, sizeof vs, "%llu", static_cast<unsigned long long>(m.vertexInvocations));
+        std::snprintf(fs, sizeof fs, "%llu", static_cast<unsigned long long>(m.fragmentInvocations));
+        if (base.vertexInvocations)
+          std::snprintf(vsRatio, sizeof vsRatio, "%.2f", double(m.vertexInvocations) / double(base.vertexInvocations));
+      }
+      if (gpuTime >= 0) {
+        std::snprintf(gpuText, sizeof gpuText, "%.3f", gpuTime);
+        if (baseGpu > 0) std::snprintf(gpuRatio, sizeof gpuRatio, "%.2f", gpuTime / baseGpu);
+      }
+      std::printf("%-10s %6u %10s %10s %10.3f %9s | %7.2f %7s %8.2f %7s\n", m.name, m.drawCalls, vs, fs, record, gpuText,
+                  double(m.drawCalls) / double(base.drawCalls), vsRatio, record / baseRecord, gpuRatio);
+    }
+    std::printf("VS/FS invoc.: %s\n", statistics_ ? "pipeline statistics queries in each render pass (last frame)"
+                                                  : "n/a: the device has no pipelineStatisticsQuery");
+    for (const Mode& m : modes_)
+      if (m.unavailableViewQueries)
+        std::printf("%s: the second view's query stayed unavailable; the counts are the first query's alone\n", m.name);
+    std::printf("record ms: CPU, vkBeginCommandBuffer .. vkEndCommandBuffer; GPU ms: %s\n",
+                frame_.timestamps ? "timestamps before and after the render passes" : "n/a: the queue writes no timestamps");
+  }
+
+  // 1 when the eyes of two-pass are the same image or a single-pass mode's frames differ from it.
+  int verdict() const {
+    bool failed = false;
+    if (eyesDiffer_ == 0) {
+      std::printf("FAILED: the two eyes of the two-pass frame are the same image: the comparison would mean nothing\n");
       failed = true;
-    } else {
-      std::printf("images: %s equals two-pass layer by layer, bit for bit, in all %d frames (the eyes differ in %zu "
-                  "pixels)\n",
-                  m.name, reps + 1, eyesDiffer);
     }
+    for (size_t i = 1; i < modes_.size(); ++i) {
+      const Mode& m = modes_[i];
+      if (m.framesDiffering) {
+        std::printf("FAILED: %s differs from two-pass in %zu of %d frames (last: %zu pixels in layer 0, %zu in layer 1)\n",
+                    m.name, m.framesDiffering, reps_ + 1, m.lastDifferingPixels[0], m.lastDifferingPixels[1]);
+        failed = true;
+      } else {
+        std::printf("images: %s equals two-pass layer by layer, bit for bit, in all %d frames (the eyes differ in %zu "
+                    "pixels)\n",
+                    m.name, reps_ + 1, eyesDiffer_);
+      }
+    }
+    return failed ? 1 : 0;
   }
-  return failed ? 1 : 0;
-}
+
+  VulkanContext& context_;
+  Device gpu_;
+  const VkDevice dev_;
+  const Scene scene_;
+  const uint32_t drawCount_, triangles_;
+  const int reps_;
+  const uint32_t size_;
+  std::vector<Mode> modes_;
+  TranspileResult fragment_;
+  std::vector<Converted> vertex_;
+  VkDescriptorSetLayoutBinding bindings_[2] = {};
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkDescriptorSet eyeSets_[3] = {};  // left, right, single-pass
+  Frame frame_;
+  uint32_t layers_ = 0;
+  Device::LayeredImage colour_;
+  VkCommandBuffer copy_ = VK_NULL_HANDLE;
+  Device::Buffer readback_;
+  size_t imageBytes_ = 0;
+  bool statistics_ = false;
+  uint32_t timestampBits_ = 0;
+  double tickNs_ = 0;
+  VkFence fence_ = VK_NULL_HANDLE;
+  size_t eyesDiffer_ = 0;
+};
 
 }  // namespace
 
@@ -796,7 +829,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    return run(*context, draws, triangles, reps, size);
+    return SinglePassBench(*context, draws, triangles, reps, size).run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "single_pass_bench: %s\n", e.what());
     return 1;

@@ -238,7 +238,7 @@ def ratio(numerator, denominator):
     return numerator / denominator if denominator > 0 else float("inf")
 
 
-def main():
+def parse_args():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--stereoshift", default=os.path.join(PROJECT_ROOT, "build", "stereoshift"))
     parser.add_argument("--corpus", default=os.path.join(PROJECT_ROOT, "corpus"))
@@ -249,13 +249,216 @@ def main():
     parser.add_argument("--json", help="write the figures to this file")
     parser.add_argument("--quick", action="store_true",
                         help="smoke run: 1 repetition, %d shaders through the process pipeline" % QUICK_PROCESS_SUBSET)
-    args = parser.parse_args()
-    reps = 1 if args.quick else max(1, args.reps)
+    return parser.parse_args()
 
+
+def missing_tool(args):
+    """The first of the three tools that is neither an executable file nor on PATH, else None."""
     for tool in (args.stereoshift, args.glslang, args.spirv_cross):
         if not (os.path.isfile(tool) and os.access(tool, os.X_OK)) and shutil.which(tool) is None:
-            print("tree_bench: error: %s not found or not executable" % tool, file=sys.stderr)
-            return 2
+            return tool
+    return None
+
+
+def measure(args, corpus, commands, work_dir, reps):
+    """Every variant `reps` times, interleaved; the warm-up first. Returns the stereoshift samples,
+    the process pipeline's runs and the report summaries. Raises RuntimeError when a run fails."""
+    scratch = os.path.join(work_dir, "process-pipeline")
+    out_j1 = os.path.join(work_dir, "out-j1")
+    out_j2 = os.path.join(work_dir, "out-j2")
+    samples = {"j1": [], "j2": [], "noop": []}
+    process_runs, summaries = [], {"j1": [], "j2": [], "noop": []}
+    # Warm-up (untimed): loads both binaries and the corpus into the page cache, so the variant that
+    # happens to run first in repetition 1 pays no cold start the others do not.
+    run_stereoshift_build(args.stereoshift, corpus, os.path.join(work_dir, "warm-up"), 1, fresh=True)
+    run_process_pipeline(commands[:1], scratch)
+
+    def measure_process():
+        result = run_process_pipeline(commands, scratch)
+        process_runs.append(result)
+
+    def measure_full(jobs):
+        key, out_dir = ("j1", out_j1) if jobs == 1 else ("j2", out_j2)
+        result = run_stereoshift_build(args.stereoshift, corpus, out_dir, jobs, fresh=True)
+        samples[key].append(result["seconds"])
+        summaries[key].append(report_summary(result["report"]))
+        if jobs == 1:
+            # The no-op rebuild follows the full -j1 conversion it reuses, before anything else
+            # touches that directory.
+            noop = run_stereoshift_build(args.stereoshift, corpus, out_j1, 1, fresh=False)
+            samples["noop"].append(noop["seconds"])
+            summaries["noop"].append(report_summary(noop["report"]))
+
+    # Machines are shared and noisy: every repetition runs every variant, and the order rotates
+    # from one repetition to the next so none always runs first or last.
+    variants = [measure_process, lambda: measure_full(1), lambda: measure_full(2)]
+    for rep in range(reps):
+        for i in range(len(variants)):
+            variants[(rep + i) % len(variants)]()
+        print("repetition %d/%d done" % (rep + 1, reps), file=sys.stderr, flush=True)
+    return samples, process_runs, summaries
+
+
+class Figures:
+    """What the measurements say: per variant its samples, median and minimum, and the ratios."""
+
+    def __init__(self, shaders, process_shaders, samples, process_runs, summaries):
+        self.shaders, self.process_shaders = shaders, process_shaders
+        self.samples, self.process_runs, self.summaries = samples, process_runs, summaries
+        # The process pipeline is compared per shader, over the shaders whose two commands both
+        # succeeded: timing a command that stops at an error would flatter the baseline.
+        self.failures = {}
+        for run in process_runs:
+            self.failures.update(run["failures"])
+        self.process_ok_count = len(process_shaders) - len(self.failures)
+
+    def compute(self):
+        shaders = self.shaders
+        process_ok_seconds = [run["succeeded_seconds"] for run in self.process_runs]
+        # Scaled to the whole tree so the row compares with stereoshift's whole-tree rows.
+        tree_scale = len(shaders) / self.process_ok_count
+        self.rows = [
+            ("process pipeline (glslangValidator + spirv-cross)", [s * tree_scale for s in process_ok_seconds],
+             self.process_ok_count),
+            ("stereoshift build -j 1 (full)", self.samples["j1"], len(shaders)),
+            ("stereoshift build -j 2 (full)", self.samples["j2"], len(shaders)),
+            ("stereoshift build -j 1 (no-op rebuild)", self.samples["noop"], len(shaders)),
+        ]
+        self.median = {name: statistics.median(values) for name, values, _ in self.rows}
+        self.minimum = {name: min(values) for name, values, _ in self.rows}
+        names = [name for name, _, _ in self.rows]
+        self.names = names
+        self.cores, self.cpu_count = available_cores(), os.cpu_count()
+        self.process_over_j1 = ratio(self.median[names[0]], self.median[names[1]])
+        self.process_over_j2 = ratio(self.median[names[0]], self.median[names[2]])
+        self.j1_over_j2 = ratio(self.median[names[1]], self.median[names[2]])
+        self.noop_percent = 100.0 * ratio(self.median[names[3]], self.median[names[1]])
+        self.process_steps = {step: statistics.median(run["step_seconds"][step] for run in self.process_runs)
+                              for step in ("glslangValidator", "spirv-cross")}
+
+    def per_shader_ms(self, name):
+        return self.median[name] * 1000.0 / len(self.shaders)
+
+
+def print_tables(f, corpus, args, reps):
+    """The variants' table and the ratios against the aims."""
+    shaders = f.shaders
+    print()
+    print("Tree conversion of %s: %d shaders, %d repetition(s), %s" %
+          (os.path.relpath(corpus), len(shaders), reps, "quick" if args.quick else "full"))
+    print("stereoshift: %s" % args.stereoshift)
+    print()
+    header = "| variant | shaders | median s | min s | ms/shader |"
+    print(header)
+    print("| --- | ---: | ---: | ---: | ---: |")
+    for name, _, timed in f.rows:
+        shown = "%d" % timed if timed == len(shaders) else "%d timed, scaled to %d" % (timed, len(shaders))
+        print("| %s | %s | %.3f | %.3f | %.2f |" % (name, shown, f.median[name], f.minimum[name], f.per_shader_ms(name)))
+    print()
+
+    def verdict(met):
+        return "met" if met else "NOT met"
+
+    core_note = "os.cpu_count() = %s" % f.cpu_count + ("" if f.cores == f.cpu_count else ", %d usable here" % f.cores)
+    if f.cores < 2:
+        core_note += "; fewer than 2 cores: -j 2 cannot be faster"
+    print("| ratio (medians) | measured | aim | |")
+    print("| --- | ---: | ---: | --- |")
+    print("| process pipeline / stereoshift -j1 | %.1fx | >= %.0fx | %s |" %
+          (f.process_over_j1, AIM_PROCESS_OVER_J1, verdict(f.process_over_j1 >= AIM_PROCESS_OVER_J1)))
+    print("| stereoshift -j1 / -j2 (%s) | %.2fx | >= %.1fx | %s |" %
+          (core_note, f.j1_over_j2, AIM_J1_OVER_J2, verdict(f.j1_over_j2 >= AIM_J1_OVER_J2)))
+    print("| no-op rebuild / full -j1 | %.1f%% | <= %.0f%% | %s |" %
+          (f.noop_percent, AIM_NOOP_PERCENT, verdict(f.noop_percent <= AIM_NOOP_PERCENT)))
+    print("| process pipeline / stereoshift -j2 (the default: one worker per core) | %.1fx | | |" % f.process_over_j2)
+    print()
+
+
+def print_breakdown(f):
+    """Where the time goes: glslang's set-up floor, the process pipeline's steps and failures, the
+    steps of stereoshift's last -j1 run, and what the reports counted."""
+    # The floor under any one-process conversion with glslang: its built-in symbol tables, built once
+    # per dialect in a process (the process pipeline builds them once per shader). Read from the last
+    # -j1 run's report: in each dialect the first shader's front end carries the set-up, the others not.
+    setup = setup_per_dialect(f.summaries["j1"][-1].get("front_end_by_dialect", {}))
+    if setup:
+        floor_s = sum(setup.values()) / 1000.0
+        print("glslang built-in tables, once per dialect in the -j1 run (first shader's front end minus the "
+              "dialect's median): %s = %.0f ms; with no other work at all, process pipeline / -j1 could reach "
+              "at most %.1fx on this tree" %
+              (", ".join("%s %.0f ms" % kv for kv in sorted(setup.items())), floor_s * 1000.0,
+               ratio(f.median[f.names[0]], floor_s)))
+
+    # Where the time goes.
+    process_shaders = f.process_shaders
+    processes_per_shader = 2
+    print("process pipeline: %d processes for %d shaders; per shader: glslangValidator %.1f ms, "
+          "spirv-cross %.1f ms (medians, failed shaders included)" %
+          (processes_per_shader * len(process_shaders), len(process_shaders),
+           f.process_steps["glslangValidator"] * 1000.0 / len(process_shaders),
+           f.process_steps["spirv-cross"] * 1000.0 / len(process_shaders)))
+    if f.failures:
+        print("process pipeline: %d of %d shaders failed and are left out of its timing "
+              "(the tree row is scaled from the %d that went through):" %
+              (len(f.failures), len(process_shaders), f.process_ok_count))
+        for rel, why in sorted(f.failures.items()):
+            print("  %s: %s" % (rel, why))
+    last_j1 = f.summaries["j1"][-1]
+    timing_sums = last_j1["timings_ms_sum"]
+    if timing_sums:
+        # The three steps of a conversion; `pipeline_wall` is per pipeline (repeated on each of its
+        # stages) and `total` excludes a pipeline's shared front-end run, so neither is summed.
+        steps_measured = ("front_end", "passes", "back_end")
+        in_shaders = sum(timing_sums.get(step, 0.0) for step in steps_measured)
+        steps = ", ".join("%s %.0f ms" % (step, timing_sums.get(step, 0.0)) for step in steps_measured)
+        print("stereoshift -j1, last run: front end, passes and back end of every shader add up to %.0f ms (%s) "
+              "of %.0f ms wall; the rest is process start, worker processes, reading and writing files, the "
+              "cache and the report" % (in_shaders, steps, f.samples["j1"][-1] * 1000.0))
+    for key, label in (("j1", "full -j1"), ("noop", "no-op rebuild")):
+        counts = {k: v for k, v in f.summaries[key][-1].items() if k not in ("timings_ms_sum", "front_end_by_dialect")}
+        print("report of the %s run: %s" % (label, ", ".join("%s %s" % kv for kv in sorted(counts.items()))))
+    not_ok = sum(s["not_ok"] for key in f.summaries for s in f.summaries[key])
+    if not_ok:
+        print("warning: stereoshift reported %d shader(s) not ok across the runs" % not_ok)
+
+
+def write_json(path, f, corpus, args, reps):
+    figures = {
+        "corpus": corpus, "shaders": len(f.shaders), "repetitions": reps, "quick": args.quick,
+        "stereoshift": args.stereoshift, "cores_available": f.cores, "cpu_count": f.cpu_count,
+        "variants": {
+            key: {"name": name, "seconds": values, "median_s": f.median[name], "min_s": f.minimum[name],
+                  "ms_per_shader": f.per_shader_ms(name)}
+            for key, (name, values, _) in zip(("process_pipeline", "j1", "j2", "noop"), f.rows)
+        },
+        "process_pipeline": {
+            "shaders_timed": f.process_ok_count, "shaders_run": len(f.process_shaders),
+            "wall_seconds": [run["seconds"] for run in f.process_runs],
+            "step_seconds_median": f.process_steps, "failures": f.failures,
+        },
+        "ratios": {
+            "process_over_j1": {"value": f.process_over_j1, "aim_min": AIM_PROCESS_OVER_J1,
+                                "met": f.process_over_j1 >= AIM_PROCESS_OVER_J1},
+            "process_over_j2": {"value": f.process_over_j2},
+            "j1_over_j2": {"value": f.j1_over_j2, "aim_min": AIM_J1_OVER_J2, "met": f.j1_over_j2 >= AIM_J1_OVER_J2},
+            "noop_percent_of_full": {"value": f.noop_percent, "aim_max": AIM_NOOP_PERCENT,
+                                     "met": f.noop_percent <= AIM_NOOP_PERCENT},
+        },
+        "reports": {key: values[-1] for key, values in f.summaries.items()},
+    }
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as out:
+        json.dump(figures, out, indent=2, sort_keys=True)
+        out.write("\n")
+
+
+def main():
+    args = parse_args()
+    reps = 1 if args.quick else max(1, args.reps)
+    tool = missing_tool(args)
+    if tool is not None:
+        print("tree_bench: error: %s not found or not executable" % tool, file=sys.stderr)
+        return 2
     corpus = os.path.abspath(args.corpus)
     shaders = find_shaders(corpus)
     if not shaders:
@@ -270,44 +473,12 @@ def main():
         print("tree_bench: error: --work-dir must not be inside the corpus", file=sys.stderr)
         return 2
     scratch = os.path.join(work_dir, "process-pipeline")
-    out_j1 = os.path.join(work_dir, "out-j1")
-    out_j2 = os.path.join(work_dir, "out-j2")
     commands = [(rel, process_pipeline_commands(args.glslang, args.spirv_cross, corpus, rel,
                                                 os.path.join(scratch, rel.replace(os.sep, "_") + ".spv"),
                                                 os.path.join(scratch, rel.replace(os.sep, "_"))))
                 for rel in process_shaders]
-
-    samples = {"j1": [], "j2": [], "noop": []}
-    process_runs, summaries = [], {"j1": [], "j2": [], "noop": []}
     try:
-        # Warm-up (untimed): loads both binaries and the corpus into the page cache, so the variant that
-        # happens to run first in repetition 1 pays no cold start the others do not.
-        run_stereoshift_build(args.stereoshift, corpus, os.path.join(work_dir, "warm-up"), 1, fresh=True)
-        run_process_pipeline(commands[:1], scratch)
-
-        def measure_process():
-            result = run_process_pipeline(commands, scratch)
-            process_runs.append(result)
-
-        def measure_full(jobs):
-            key, out_dir = ("j1", out_j1) if jobs == 1 else ("j2", out_j2)
-            result = run_stereoshift_build(args.stereoshift, corpus, out_dir, jobs, fresh=True)
-            samples[key].append(result["seconds"])
-            summaries[key].append(report_summary(result["report"]))
-            if jobs == 1:
-                # The no-op rebuild follows the full -j1 conversion it reuses, before anything else
-                # touches that directory.
-                noop = run_stereoshift_build(args.stereoshift, corpus, out_j1, 1, fresh=False)
-                samples["noop"].append(noop["seconds"])
-                summaries["noop"].append(report_summary(noop["report"]))
-
-        # Machines are shared and noisy: every repetition runs every variant, and the order rotates
-        # from one repetition to the next so none always runs first or last.
-        variants = [measure_process, lambda: measure_full(1), lambda: measure_full(2)]
-        for rep in range(reps):
-            for i in range(len(variants)):
-                variants[(rep + i) % len(variants)]()
-            print("repetition %d/%d done" % (rep + 1, reps), file=sys.stderr, flush=True)
+        samples, process_runs, summaries = measure(args, corpus, commands, work_dir, reps)
     except RuntimeError as error:
         print("tree_bench: error: %s" % error, file=sys.stderr)
         return 1
@@ -315,143 +486,17 @@ def main():
         if own_work_dir:
             shutil.rmtree(work_dir, ignore_errors=True)
 
-    # The process pipeline is compared per shader, over the shaders whose two commands both succeeded:
-    # timing a command that stops at an error would flatter the baseline.
-    failures = {}
-    for run in process_runs:
-        failures.update(run["failures"])
-    process_ok_count = len(process_shaders) - len(failures)
-    if process_ok_count <= 0:
+    figures = Figures(shaders, process_shaders, samples, process_runs, summaries)
+    if figures.process_ok_count <= 0:
         print("tree_bench: error: no shader went through glslangValidator + spirv-cross", file=sys.stderr)
-        for rel, why in sorted(failures.items()):
+        for rel, why in sorted(figures.failures.items()):
             print("  %s: %s" % (rel, why), file=sys.stderr)
         return 1
-    process_ok_seconds = [run["succeeded_seconds"] for run in process_runs]
-    # Scaled to the whole tree so the row compares with stereoshift's whole-tree rows.
-    tree_scale = len(shaders) / process_ok_count
-    rows = [
-        ("process pipeline (glslangValidator + spirv-cross)", [s * tree_scale for s in process_ok_seconds],
-         process_ok_count),
-        ("stereoshift build -j 1 (full)", samples["j1"], len(shaders)),
-        ("stereoshift build -j 2 (full)", samples["j2"], len(shaders)),
-        ("stereoshift build -j 1 (no-op rebuild)", samples["noop"], len(shaders)),
-    ]
-    median = {name: statistics.median(values) for name, values, _ in rows}
-    minimum = {name: min(values) for name, values, _ in rows}
-    names = [name for name, _, _ in rows]
-    cores, cpu_count = available_cores(), os.cpu_count()
-
-    def per_shader_ms(name):
-        return median[name] * 1000.0 / len(shaders)
-
-    process_over_j1 = ratio(median[names[0]], median[names[1]])
-    process_over_j2 = ratio(median[names[0]], median[names[2]])
-    j1_over_j2 = ratio(median[names[1]], median[names[2]])
-    noop_percent = 100.0 * ratio(median[names[3]], median[names[1]])
-
-    print()
-    print("Tree conversion of %s: %d shaders, %d repetition(s), %s" %
-          (os.path.relpath(corpus), len(shaders), reps, "quick" if args.quick else "full"))
-    print("stereoshift: %s" % args.stereoshift)
-    print()
-    header = "| variant | shaders | median s | min s | ms/shader |"
-    print(header)
-    print("| --- | ---: | ---: | ---: | ---: |")
-    for name, _, timed in rows:
-        shown = "%d" % timed if timed == len(shaders) else "%d timed, scaled to %d" % (timed, len(shaders))
-        print("| %s | %s | %.3f | %.3f | %.2f |" % (name, shown, median[name], minimum[name], per_shader_ms(name)))
-    print()
-
-    def verdict(met):
-        return "met" if met else "NOT met"
-
-    core_note = "os.cpu_count() = %s" % cpu_count + ("" if cores == cpu_count else ", %d usable here" % cores)
-    if cores < 2:
-        core_note += "; fewer than 2 cores: -j 2 cannot be faster"
-    print("| ratio (medians) | measured | aim | |")
-    print("| --- | ---: | ---: | --- |")
-    print("| process pipeline / stereoshift -j1 | %.1fx | >= %.0fx | %s |" %
-          (process_over_j1, AIM_PROCESS_OVER_J1, verdict(process_over_j1 >= AIM_PROCESS_OVER_J1)))
-    print("| stereoshift -j1 / -j2 (%s) | %.2fx | >= %.1fx | %s |" %
-          (core_note, j1_over_j2, AIM_J1_OVER_J2, verdict(j1_over_j2 >= AIM_J1_OVER_J2)))
-    print("| no-op rebuild / full -j1 | %.1f%% | <= %.0f%% | %s |" %
-          (noop_percent, AIM_NOOP_PERCENT, verdict(noop_percent <= AIM_NOOP_PERCENT)))
-    print("| process pipeline / stereoshift -j2 (the default: one worker per core) | %.1fx | | |" % process_over_j2)
-    print()
-
-    # The floor under any one-process conversion with glslang: its built-in symbol tables, built once
-    # per dialect in a process (the process pipeline builds them once per shader). Read from the last
-    # -j1 run's report: in each dialect the first shader's front end carries the set-up, the others not.
-    setup = setup_per_dialect(summaries["j1"][-1].get("front_end_by_dialect", {}))
-    if setup:
-        floor_s = sum(setup.values()) / 1000.0
-        print("glslang built-in tables, once per dialect in the -j1 run (first shader's front end minus the "
-              "dialect's median): %s = %.0f ms; with no other work at all, process pipeline / -j1 could reach "
-              "at most %.1fx on this tree" %
-              (", ".join("%s %.0f ms" % kv for kv in sorted(setup.items())), floor_s * 1000.0,
-               ratio(median[names[0]], floor_s)))
-
-    # Where the time goes.
-    process_steps = {step: statistics.median(run["step_seconds"][step] for run in process_runs)
-                     for step in ("glslangValidator", "spirv-cross")}
-    processes_per_shader = 2
-    print("process pipeline: %d processes for %d shaders; per shader: glslangValidator %.1f ms, "
-          "spirv-cross %.1f ms (medians, failed shaders included)" %
-          (processes_per_shader * len(process_shaders), len(process_shaders),
-           process_steps["glslangValidator"] * 1000.0 / len(process_shaders),
-           process_steps["spirv-cross"] * 1000.0 / len(process_shaders)))
-    if failures:
-        print("process pipeline: %d of %d shaders failed and are left out of its timing "
-              "(the tree row is scaled from the %d that went through):" %
-              (len(failures), len(process_shaders), process_ok_count))
-        for rel, why in sorted(failures.items()):
-            print("  %s: %s" % (rel, why))
-    last_j1 = summaries["j1"][-1]
-    timing_sums = last_j1["timings_ms_sum"]
-    if timing_sums:
-        # The three steps of a conversion; `pipeline_wall` is per pipeline (repeated on each of its
-        # stages) and `total` excludes a pipeline's shared front-end run, so neither is summed.
-        steps_measured = ("front_end", "passes", "back_end")
-        in_shaders = sum(timing_sums.get(step, 0.0) for step in steps_measured)
-        steps = ", ".join("%s %.0f ms" % (step, timing_sums.get(step, 0.0)) for step in steps_measured)
-        print("stereoshift -j1, last run: front end, passes and back end of every shader add up to %.0f ms (%s) "
-              "of %.0f ms wall; the rest is process start, worker processes, reading and writing files, the "
-              "cache and the report" % (in_shaders, steps, samples["j1"][-1] * 1000.0))
-    for key, label in (("j1", "full -j1"), ("noop", "no-op rebuild")):
-        counts = {k: v for k, v in summaries[key][-1].items() if k not in ("timings_ms_sum", "front_end_by_dialect")}
-        print("report of the %s run: %s" % (label, ", ".join("%s %s" % kv for kv in sorted(counts.items()))))
-    not_ok = sum(s["not_ok"] for key in summaries for s in summaries[key])
-    if not_ok:
-        print("warning: stereoshift reported %d shader(s) not ok across the runs" % not_ok)
-
+    figures.compute()
+    print_tables(figures, corpus, args, reps)
+    print_breakdown(figures)
     if args.json:
-        figures = {
-            "corpus": corpus, "shaders": len(shaders), "repetitions": reps, "quick": args.quick,
-            "stereoshift": args.stereoshift, "cores_available": cores, "cpu_count": cpu_count,
-            "variants": {
-                key: {"name": name, "seconds": values, "median_s": median[name], "min_s": minimum[name],
-                      "ms_per_shader": per_shader_ms(name)}
-                for key, (name, values, _) in zip(("process_pipeline", "j1", "j2", "noop"), rows)
-            },
-            "process_pipeline": {
-                "shaders_timed": process_ok_count, "shaders_run": len(process_shaders),
-                "wall_seconds": [run["seconds"] for run in process_runs],
-                "step_seconds_median": process_steps, "failures": failures,
-            },
-            "ratios": {
-                "process_over_j1": {"value": process_over_j1, "aim_min": AIM_PROCESS_OVER_J1,
-                                    "met": process_over_j1 >= AIM_PROCESS_OVER_J1},
-                "process_over_j2": {"value": process_over_j2},
-                "j1_over_j2": {"value": j1_over_j2, "aim_min": AIM_J1_OVER_J2, "met": j1_over_j2 >= AIM_J1_OVER_J2},
-                "noop_percent_of_full": {"value": noop_percent, "aim_max": AIM_NOOP_PERCENT,
-                                         "met": noop_percent <= AIM_NOOP_PERCENT},
-            },
-            "reports": {key: values[-1] for key, values in summaries.items()},
-        }
-        os.makedirs(os.path.dirname(os.path.abspath(args.json)), exist_ok=True)
-        with open(args.json, "w", encoding="utf-8") as f:
-            json.dump(figures, f, indent=2, sort_keys=True)
-            f.write("\n")
+        write_json(args.json, figures, corpus, args, reps)
     return 0
 
 

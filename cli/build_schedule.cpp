@@ -1,8 +1,9 @@
 // The schedule of `stereoshift build`: copy-through in the parent, conversions in worker processes,
-// the worker's side of a conversion and the result it sends back, progress.
+// the worker's side of a conversion (its result travels through result_codec.h), progress.
 #include "cli/build_schedule.h"
 
 #include "cli/cli_support.h"
+#include "cli/result_codec.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/source/file_io.h"
@@ -21,37 +22,6 @@ namespace fs = std::filesystem;
 namespace stereoshift {
 
 namespace {
-
-// ---- what a worker sends back -------------------------------------------------------------------
-
-std::string serialize(const JobResult& r) {
-  nlohmann::json head = {{"errors", r.errors}, {"log", r.log}, {"reports", r.reports},
-                         {"dependencies", r.dependencies}, {"key", r.key}, {"outputs", r.outputs.size()},
-                         {"replayable", r.replayable}};
-  std::string out;
-  putString(out, head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
-  for (const auto& o : r.outputs) putString(out, o);
-  return out;
-}
-
-bool deserialize(const std::string& in, JobResult* r) {
-  size_t at = 0;
-  std::string text;
-  if (!getString(in, at, &text)) return false;
-  nlohmann::json head = nlohmann::json::parse(text, nullptr, false);
-  if (head.is_discarded()) return false;
-  r->errors = head.value("errors", 1);
-  r->log = head.value("log", "");
-  r->reports = head.value("reports", nlohmann::json::array());
-  r->dependencies = head.value("dependencies", std::vector<std::string>{});
-  r->key = head.value("key", "");
-  r->replayable = head.value("replayable", false);
-  size_t count = head.value("outputs", size_t{0});
-  r->outputs.resize(count);
-  for (auto& o : r->outputs)
-    if (!getString(in, at, &o)) return false;
-  return true;
-}
 
 // Runs in a worker: converts one pipeline, keeping everything in memory.
 JobResult convertJob(const BuildJob& job, const std::string& tool) {
@@ -164,7 +134,7 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
     size_t i = toConvert[slot];
     const BuildJob& job = plan.jobs[i];
     JobResult& result = results[i];
-    if (!outcome.completed || !deserialize(outcome.payload, &result)) {
+    if (!outcome.completed || !decodeJobResult(outcome.payload, &result)) {
       result = workerFailure(job, outcome.completed ? "sent back an unreadable result" : outcome.failure);
     } else {
       nlohmann::json outputs = nlohmann::json::object();
@@ -205,7 +175,7 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
   for (size_t i : toConvert) affinity.push_back(dialectOf(plan.jobs[i].stages.front()));
   runIsolated(
       toConvert.size(), workers, options.jobTimeoutSeconds,
-      [&](size_t slot) { return serialize(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
+      [&](size_t slot) { return encodeJobResult(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
   if (tty) std::cerr << "\n";
 }
 

@@ -4,6 +4,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/fd_io.h"
+#include "cli/result_codec.h"
 #include "cli/worker_pool.h"
 
 #include <nlohmann/json.hpp>
@@ -124,8 +125,7 @@ class ConverterProcess {
                 std::string(std::strerror(errno)) + "\n1 error generated.\n";
       return 1;
     }
-    std::string request;
-    for (const auto& a : args) putString(request, a);
+    std::string request = encodeCommandLine(args);
     double timeout = 300;  // the CLI's default --timeout
     if (auto given = optionValue(args, "--timeout")) timeout = std::atof(given->c_str());
     std::string reply;
@@ -147,14 +147,13 @@ class ConverterProcess {
       *output = "stereoshift: error: stereoshift " + failure + " while converting; no output was written\n1 error generated.\n";
       return 1;
     }
-    size_t at = 0;
-    std::string status;
-    if (!getString(reply, at, &status) || !getString(reply, at, output)) {
+    int status = 1;
+    if (!decodeCommandReply(reply, &status, output)) {
       finish();
       *output = "stereoshift: error: the converter process answered garbage; no output was written\n1 error generated.\n";
       return 1;
     }
-    return std::atoi(status.c_str());
+    return status;
   }
 
  private:
@@ -177,15 +176,10 @@ class ConverterProcess {
       ::setenv("STEREOSHIFT_NO_FORK", "1", 1);
       std::string request;
       while (receiveMessage(down[0], &request)) {
-        std::vector<std::string> args;
-        size_t at = 0;
-        for (std::string a; at < request.size() && getString(request, at, &a);) args.push_back(a);
+        std::vector<std::string> args = decodeCommandLine(request);
         std::string output;
         int status = runCaptured(entry_, args, &output);
-        std::string reply;
-        putString(reply, std::to_string(status));
-        putString(reply, output);
-        if (!sendMessage(up[1], reply)) break;
+        if (!sendMessage(up[1], encodeCommandReply(status, output))) break;
       }
       ::_exit(0);  // no atexit handlers or static destructors: they belong to the worker
     }
@@ -294,45 +288,6 @@ std::optional<std::vector<std::string>> expandArgsFiles(const std::vector<std::s
     }
   }
   return expanded;
-}
-
-std::optional<Depfile> parseDepfile(const std::string& text) {
-  // The inverse of makeDepfile: `\ ` and `\#` are literal, `$$` is `$`, a backslash before a
-  // newline continues the line; the first word ending in ':' closes the targets.
-  Depfile parsed;
-  bool inTargets = true, sawColon = false;
-  std::string word;
-  auto endWord = [&] {
-    if (word.empty()) return;
-    if (inTargets && word.back() == ':') {
-      word.pop_back();
-      if (!word.empty()) parsed.targets.push_back(word);
-      inTargets = false;
-      sawColon = true;
-    } else {
-      (inTargets ? parsed.targets : parsed.dependencies).push_back(word);
-    }
-    word.clear();
-  };
-  for (size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if (c == '\\' && i + 1 < text.size() && (text[i + 1] == ' ' || text[i + 1] == '#')) {
-      word += text[++i];
-    } else if (c == '\\' && i + 1 < text.size() && text[i + 1] == '\n') {
-      endWord();
-      ++i;
-    } else if (c == '$' && i + 1 < text.size() && text[i + 1] == '$') {
-      word += '$';
-      ++i;
-    } else if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
-      endWord();
-    } else {
-      word += c;
-    }
-  }
-  endWord();
-  if (!sawColon) return std::nullopt;
-  return parsed;
 }
 
 int runBazelAction(const std::vector<std::string>& args, const CommandLineEntry& entry, std::ostream& log) {

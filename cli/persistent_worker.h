@@ -16,6 +16,8 @@
 //   (an error response) and a fresh converter, never the worker.
 #pragma once
 
+#include "cli/depfile.h"  // parseDepfile: the action checks the depfile it wrote
+
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -38,13 +40,6 @@ std::optional<std::vector<std::string>> expandArgsFiles(const std::vector<std::s
 // --declared-input= arguments, runs `entry`, then checks the depfile against them (see above).
 // Diagnostics go to `log`. Returns the exit status.
 int runBazelAction(const std::vector<std::string>& args, const CommandLineEntry& entry, std::ostream& log);
-
-// A parsed Makefile-style depfile (the CLI's --depfile): its targets and its dependencies.
-struct Depfile {
-  std::vector<std::string> targets;
-  std::vector<std::string> dependencies;
-};
-std::optional<Depfile> parseDepfile(const std::string& text);
 
 // The worker loop over file descriptors (standard input and output for Bazel). `startupArgs` are
 // the arguments the worker was started with besides --persistent_worker (Bazel passes an action's

@@ -111,9 +111,10 @@ std::optional<E> parseChoice(const std::string& text, const char* option, const 
 
 }  // namespace
 
-int runReprojectCommand(const ReprojectCliOptions& c) {
-  Problems problems;
-  ReprojectOptions base;
+namespace {
+
+// --target (repeatable; the default set without one) and --target-version.
+std::vector<TargetLanguage> parseTargets(const ReprojectCliOptions& c, ReprojectOptions& base, Problems& problems) {
   static const std::map<std::string, TargetLanguage> targets = {
       {"glsl", TargetLanguage::Glsl}, {"essl", TargetLanguage::Essl}, {"hlsl", TargetLanguage::Hlsl},
       {"msl", TargetLanguage::Msl}, {"spirv", TargetLanguage::Spirv}, {"spirv-asm", TargetLanguage::SpirvAsm}};
@@ -123,6 +124,11 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
   if (c.targets.empty())
     languages = {TargetLanguage::Glsl, TargetLanguage::Essl, TargetLanguage::Hlsl, TargetLanguage::Msl, TargetLanguage::Spirv};
   if (!c.targetVersion.empty()) base.targetVersion = parseNumber<int>(c.targetVersion, "--target-version", problems);
+  return languages;
+}
+
+// The eye parameters, as the converted shaders declare them, and the two textures' bindings.
+void parseEyeOptions(const ReprojectCliOptions& c, ReprojectOptions& base, Problems& problems) {
   if (auto s = parseChoice(c.eyeSource, "--eye-source",
                            std::map<std::string, EyeSource>{{"auto", EyeSource::Auto},
                                                             {"uniform-block", EyeSource::UniformBlock},
@@ -139,6 +145,10 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
   if (auto v = parseNumber<uint32_t>(c.specIdBase, "--spec-id-base", problems)) base.eye.specIdBase = *v;
   if (auto v = parseNumber<uint32_t>(c.colourBinding, "--colour-binding", problems)) base.colourBinding = *v;
   if (auto v = parseNumber<uint32_t>(c.depthBinding, "--depth-binding", problems)) base.depthBinding = *v;
+}
+
+// The source view and what its depth texture holds.
+void parseDepthOptions(const ReprojectCliOptions& c, ReprojectOptions& base, Problems& problems) {
   if (auto s = parseChoice(c.sourceEye, "--source-eye",
                            std::map<std::string, ReprojectSource>{{"left", ReprojectSource::LeftEye},
                                                                   {"right", ReprojectSource::RightEye},
@@ -165,6 +175,10 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
       base.depthOffset = parseNumber<double>(parts[1], "--depth-coefficients", problems);
     }
   }
+}
+
+// The search, the colour of a hit and the disocclusion fill.
+void parseSearchOptions(const ReprojectCliOptions& c, ReprojectOptions& base, Problems& problems) {
   if (auto v = parseNumber<int>(c.samples, "--samples", problems)) base.samples = *v;
   if (auto v = parseNumber<double>(c.searchNear, "--search-near", problems)) base.searchNear = *v;
   if (auto r = parseChoice(c.refine, "--refine",
@@ -185,19 +199,12 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
                            problems))
     base.fill = *v;
   base.maskOutput = c.mask;
-  for (TargetLanguage lang : languages) {
-    ReprojectOptions o = base;
-    o.target = lang;
-    auto found = checkReprojectOptions(o);
-    for (auto& p : found) problems.add(p);
-    if (!found.empty()) break;  // the same problems again for every other target
-  }
-  if (!problems.list.empty()) {
-    for (const auto& p : problems.list) std::cerr << "stereoshift: error: " << p << "\n";
-    printErrorSummary(static_cast<int>(problems.list.size()));
-    return 1;
-  }
+}
 
+// The shaders of every target and the report, generated, then written all or none. Returns the
+// exit status.
+int generateAndWrite(const ReprojectCliOptions& c, const ReprojectOptions& base,
+                     const std::vector<TargetLanguage>& languages) {
   nlohmann::json report;
   report["tool"] = std::string("stereoshift ") + version();
   report["options"] = describeReprojectOptions(base);
@@ -235,6 +242,30 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int runReprojectCommand(const ReprojectCliOptions& c) {
+  Problems problems;
+  ReprojectOptions base;
+  std::vector<TargetLanguage> languages = parseTargets(c, base, problems);
+  parseEyeOptions(c, base, problems);
+  parseDepthOptions(c, base, problems);
+  parseSearchOptions(c, base, problems);
+  for (TargetLanguage lang : languages) {
+    ReprojectOptions o = base;
+    o.target = lang;
+    auto found = checkReprojectOptions(o);
+    for (auto& p : found) problems.add(p);
+    if (!found.empty()) break;  // the same problems again for every other target
+  }
+  if (!problems.list.empty()) {
+    for (const auto& p : problems.list) std::cerr << "stereoshift: error: " << p << "\n";
+    printErrorSummary(static_cast<int>(problems.list.size()));
+    return 1;
+  }
+  return generateAndWrite(c, base, languages);
 }
 
 }  // namespace stereoshift

@@ -1,5 +1,6 @@
 // The conversion service's client (see the header): finding or starting the server, one request,
 // the answer relayed; every failure a quiet fall-back to the in-process conversion.
+#include "cli/result_codec.h"
 #include "cli/service_client.h"
 
 #include "cli/fd_io.h"
@@ -238,8 +239,8 @@ std::optional<int> runThroughService(int argc, char** argv, const ServiceOptions
   std::string bytes;
   ServiceAnswer answer;
   double limit = command.timeoutSeconds > 0 ? command.timeoutSeconds + kAnswerSlackSeconds : 0;
-  bool answered = sendMessage(connection, encodeRequest(request)) && receiveMessage(connection, &bytes, limit) &&
-                  decodeAnswer(bytes, &answer);
+  bool answered = sendMessage(connection, encodeServiceRequest(request)) && receiveMessage(connection, &bytes, limit) &&
+                  decodeServiceAnswer(bytes, &answer);
   ::close(connection);
   if (!answered) return fallBack("the server on " + paths->socket + " gave no answer");
   note("served by the server on " + paths->socket);

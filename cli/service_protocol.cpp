@@ -1,7 +1,7 @@
-// The conversion service's wire format, tool identity and socket directory (see the header).
+// The conversion service's message framing, tool identity and socket directory (see the header;
+// the messages' bodies are result_codec's).
 #include "cli/service_protocol.h"
 
-#include "cli/cli_support.h"
 #include "cli/fd_io.h"
 
 #include <fcntl.h>
@@ -27,9 +27,6 @@ namespace stereoshift {
 
 namespace {
 
-// A new protocol gets a new string: an old client and a new server refuse each other's bytes.
-constexpr const char* kRequestMagic = "stereoshift-service-request-1";
-constexpr const char* kAnswerMagic = "stereoshift-service-answer-1";
 // Far beyond any shader and its outputs; a larger length is a broken or foreign peer.
 constexpr uint64_t kLargestMessage = uint64_t(1) << 32;
 // The variables that switch the service itself: a worker must not look at them.
@@ -40,15 +37,6 @@ bool isServiceSwitch(const std::string& name) {
   for (const char* s : kServiceSwitches)
     if (name == s) return true;
   return false;
-}
-
-bool getNumber(const std::string& wire, size_t& at, long long* value) {
-  std::string text;
-  if (!getString(wire, at, &text) || text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  *value = std::strtoll(text.c_str(), &end, 10);
-  return errno == 0 && end && *end == '\0';
 }
 
 // Reads exactly `size` bytes before `deadline` (none when timeoutSeconds <= 0).
@@ -81,70 +69,6 @@ uint64_t fnv1a(const std::string& bytes) {
 }
 
 }  // namespace
-
-std::string encodeRequest(const ServiceRequest& r) {
-  std::string wire;
-  putString(wire, kRequestMagic);
-  putString(wire, r.identity);
-  putString(wire, std::to_string(r.arguments.size()));
-  for (const auto& a : r.arguments) putString(wire, a);
-  putString(wire, r.workingDirectory);
-  putString(wire, std::to_string(r.fileModeMask));
-  putString(wire, std::to_string(r.environment.size()));
-  for (const auto& [name, value] : r.environment) {
-    putString(wire, name);
-    putString(wire, value ? "1" : "0");
-    putString(wire, value.value_or(""));
-  }
-  putString(wire, r.standardInput ? "1" : "0");
-  putString(wire, r.standardInput.value_or(""));
-  return wire;
-}
-
-bool decodeRequest(const std::string& wire, ServiceRequest* r) {
-  size_t at = 0;
-  std::string magic, flag, text;
-  long long count = 0;
-  if (!getString(wire, at, &magic) || magic != kRequestMagic) return false;
-  if (!getString(wire, at, &r->identity) || !getNumber(wire, at, &count) || count < 1) return false;
-  r->arguments.clear();
-  for (long long i = 0; i < count; ++i) {
-    if (!getString(wire, at, &text)) return false;
-    r->arguments.push_back(text);
-  }
-  long long mask = 0;
-  if (!getString(wire, at, &r->workingDirectory) || !getNumber(wire, at, &mask) || mask < 0 || mask > 0777) return false;
-  r->fileModeMask = static_cast<unsigned>(mask);
-  if (!getNumber(wire, at, &count) || count < 0) return false;
-  r->environment.clear();
-  for (long long i = 0; i < count; ++i) {
-    std::string name;
-    if (!getString(wire, at, &name) || !getString(wire, at, &flag) || !getString(wire, at, &text)) return false;
-    r->environment.emplace_back(name, flag == "1" ? std::optional<std::string>(text) : std::nullopt);
-  }
-  if (!getString(wire, at, &flag) || !getString(wire, at, &text)) return false;
-  r->standardInput = flag == "1" ? std::optional<std::string>(text) : std::nullopt;
-  return at == wire.size();
-}
-
-std::string encodeAnswer(const ServiceAnswer& a) {
-  std::string wire;
-  putString(wire, kAnswerMagic);
-  putString(wire, std::to_string(a.exitStatus));
-  putString(wire, a.standardOutput);
-  putString(wire, a.standardError);
-  return wire;
-}
-
-bool decodeAnswer(const std::string& wire, ServiceAnswer* a) {
-  size_t at = 0;
-  std::string magic;
-  long long status = 0;
-  if (!getString(wire, at, &magic) || magic != kAnswerMagic || !getNumber(wire, at, &status)) return false;
-  if (status < 0 || status > 255) return false;
-  a->exitStatus = static_cast<int>(status);
-  return getString(wire, at, &a->standardOutput) && getString(wire, at, &a->standardError) && at == wire.size();
-}
 
 bool sendMessage(int fd, const std::string& bytes) {
   uint64_t size = bytes.size();

@@ -30,10 +30,7 @@ struct ServiceAnswer {
   std::string standardOutput, standardError;
 };
 
-std::string encodeRequest(const ServiceRequest& request);
-bool decodeRequest(const std::string& bytes, ServiceRequest* request);
-std::string encodeAnswer(const ServiceAnswer& answer);
-bool decodeAnswer(const std::string& bytes, ServiceAnswer* answer);
+// Their bytes: encodeServiceRequest / encodeServiceAnswer and the decoders (result_codec.h).
 
 // One length-prefixed message on a socket (a peer gone is `false`, not SIGPIPE). receiveMessage gives up (false) at end of stream, on a message
 // larger than the protocol allows, or when `timeoutSeconds` (> 0) pass before it is complete.

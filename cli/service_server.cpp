@@ -1,5 +1,6 @@
 // The conversion service's server process (see the header): warm-up, the accept loop, forked
 // workers, idle exit.
+#include "cli/result_codec.h"
 #include "cli/service_server.h"
 
 #include "transpiler/frontend/front_end.h"
@@ -129,7 +130,7 @@ std::string readWhole(int fd) {
   ServiceRequest request;
   // Nothing is answered to a request this server must not run (another tool build, a cwd it cannot
   // enter): the client sees the connection close and converts in-process.
-  if (!receiveMessage(connection, &bytes, kRequestTimeoutSeconds) || !decodeRequest(bytes, &request) ||
+  if (!receiveMessage(connection, &bytes, kRequestTimeoutSeconds) || !decodeServiceRequest(bytes, &request) ||
       request.identity != settings.identity || ::chdir(request.workingDirectory.c_str()) != 0)
     ::_exit(0);
   applyServiceEnvironment(request.environment);
@@ -153,7 +154,7 @@ std::string readWhole(int fd) {
   answer.exitStatus = status & 0xff;
   answer.standardOutput = readWhole(output);
   answer.standardError = readWhole(error);
-  sendMessage(connection, encodeAnswer(answer));
+  sendMessage(connection, encodeServiceAnswer(answer));
   ::_exit(0);
 }
 

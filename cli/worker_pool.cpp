@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <map>
@@ -113,97 +114,111 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 
 }  // namespace
 
-void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
-                 const std::function<std::string(size_t)>& task,
-                 const std::function<void(size_t, TaskOutcome&&)>& onDone,
-                 const std::vector<std::string>& affinity) {
-  if (count == 0) return;
-  // A dead worker's request pipe must not kill the parent.
-  struct sigaction ignore {}, previous{};
-  ignore.sa_handler = SIG_IGN;
-  ::sigaction(SIGPIPE, &ignore, &previous);
+namespace {
 
-  std::deque<size_t> pending;
-  for (size_t i = 0; i < count; ++i) pending.push_back(i);
-  std::vector<Worker> pool(std::max(1u, std::min<unsigned>(workers, static_cast<unsigned>(count))));
+// One runIsolated call: the pool, the pending tasks and what the scheduler has learnt so far.
+//
+// Scheduling by affinity group (glslang builds its built-in tables once per dialect per process):
+// a worker keeps to its group; a free worker starts the untouched group with the most pending
+// tasks (largest first balances the workers' loads); when every group has been started it joins
+// another worker's group only when that pays for the group's set-up. The set-up cost is learnt
+// while running: a worker's first task of a group takes set-up + t, its later ones t.
+class IsolatedRun {
+ public:
+  IsolatedRun(size_t count, unsigned workers, double timeoutSeconds, const std::function<std::string(size_t)>& task,
+              const std::function<void(size_t, TaskOutcome&&)>& onDone, const std::vector<std::string>& affinity)
+      : count_(count), timeoutSeconds_(timeoutSeconds), task_(task), onDone_(onDone), affinity_(affinity),
+        pool_(std::max(1u, std::min<unsigned>(workers, static_cast<unsigned>(count)))) {
+    for (size_t i = 0; i < count; ++i) pending_.push_back(i);
+    if (grouped())
+      for (const auto& group : affinity) ++pendingOf_[group];
+  }
 
-  auto fail = [&](size_t index, std::string why, double seconds) {
-    TaskOutcome outcome;
-    outcome.failure = std::move(why);
-    outcome.seconds = seconds;
-    onDone(index, std::move(outcome));
-  };
-  // Scheduling by affinity group (glslang builds its built-in tables once per dialect per process):
-  // a worker keeps to its group; a free worker starts the untouched group with the most pending
-  // tasks (largest first balances the workers' loads); when every group has been started it joins
-  // another worker's group only when that pays for the group's set-up. The set-up cost is learnt
-  // while running: a worker's first task of a group takes set-up + t, its later ones t.
+  void run() {
+    for (auto& w : pool_)
+      if (!dispatch(w)) break;
+    while (waitForWorkers()) {
+    }
+    for (auto& w : pool_)
+      if (w.pid > 0) stopWorker(w, false);
+  }
+
+ private:
   struct GroupTimes {
     double firstSeconds = -1;  // quickest first task of the group in a worker
     double restSeconds = 0;    // later tasks: total and count
     size_t restCount = 0;
   };
-  std::map<std::string, GroupTimes> groupTimes;
-  std::vector<std::string> groupsStarted;
-  auto started = [&](const std::string& group) {
-    return std::find(groupsStarted.begin(), groupsStarted.end(), group) != groupsStarted.end();
-  };
-  std::map<std::string, size_t> pendingOf;  // pending tasks per group
-  if (affinity.size() == count)
-    for (const auto& group : affinity) ++pendingOf[group];
+
+  bool grouped() const { return affinity_.size() == count_; }
+
+  void fail(size_t index, std::string why, double seconds) {
+    TaskOutcome outcome;
+    outcome.failure = std::move(why);
+    outcome.seconds = seconds;
+    onDone_(index, std::move(outcome));
+  }
+
+  bool started(const std::string& group) const {
+    return std::find(groupsStarted_.begin(), groupsStarted_.end(), group) != groupsStarted_.end();
+  }
+
   // Whether one more worker on `group` finishes it sooner: with w workers on it and p tasks of t
   // seconds left, a newcomer paying set-up s finishes at (p·t + s)/(w + 1), against p·t/w without it.
-  auto worthJoining = [&](const std::string& group) {
-    const GroupTimes& times = groupTimes[group];
+  bool worthJoining(const std::string& group) {
+    const GroupTimes& times = groupTimes_[group];
     if (times.firstSeconds < 0 || times.restCount == 0) return true;  // nothing learnt yet: join
     double t = times.restSeconds / static_cast<double>(times.restCount);
     double setup = std::max(0.0, times.firstSeconds - t);
-    size_t onIt = static_cast<size_t>(std::count_if(pool.begin(), pool.end(), [&](const Worker& o) { return o.busy && o.group == group; }));
-    return onIt == 0 || static_cast<double>(pendingOf[group]) * t > static_cast<double>(onIt) * setup;
-  };
-  // The pending task `w` should take next, or pending.end() when it had better stay idle.
-  auto choose = [&](const Worker& w) -> std::deque<size_t>::iterator {
-    if (affinity.size() != count) return pending.begin();
-    auto same = std::find_if(pending.begin(), pending.end(), [&](size_t i) { return affinity[i] == w.group; });
-    if (same != pending.end()) return same;
+    size_t onIt = static_cast<size_t>(
+        std::count_if(pool_.begin(), pool_.end(), [&](const Worker& o) { return o.busy && o.group == group; }));
+    return onIt == 0 || static_cast<double>(pendingOf_[group]) * t > static_cast<double>(onIt) * setup;
+  }
+
+  // The pending task `w` should take next, or pending_.end() when it had better stay idle.
+  std::deque<size_t>::iterator choose(const Worker& w) {
+    if (!grouped()) return pending_.begin();
+    auto same = std::find_if(pending_.begin(), pending_.end(), [&](size_t i) { return affinity_[i] == w.group; });
+    if (same != pending_.end()) return same;
     auto firstOf = [&](const std::string& group) {
-      return std::find_if(pending.begin(), pending.end(), [&](size_t i) { return affinity[i] == group; });
+      return std::find_if(pending_.begin(), pending_.end(), [&](size_t i) { return affinity_[i] == group; });
     };
     const std::string* fresh = nullptr;
     const std::string* largest = nullptr;
-    for (const auto& [group, n] : pendingOf) {
+    for (const auto& [group, n] : pendingOf_) {
       if (n == 0) continue;
-      if (!started(group) && (!fresh || n > pendingOf[*fresh])) fresh = &group;
-      if (!largest || n > pendingOf[*largest]) largest = &group;
+      if (!started(group) && (!fresh || n > pendingOf_[*fresh])) fresh = &group;
+      if (!largest || n > pendingOf_[*largest]) largest = &group;
     }
     if (fresh) return firstOf(*fresh);
-    if (!largest) return pending.end();
+    if (!largest) return pending_.end();
     // Every group is started: join the one with the most pending tasks, if that pays (or if nobody
     // else would run it).
-    bool anotherBusy = std::any_of(pool.begin(), pool.end(), [&](const Worker& o) { return &o != &w && o.busy; });
-    return !anotherBusy || worthJoining(*largest) ? firstOf(*largest) : pending.end();
-  };
+    bool anotherBusy = std::any_of(pool_.begin(), pool_.end(), [&](const Worker& o) { return &o != &w && o.busy; });
+    return !anotherBusy || worthJoining(*largest) ? firstOf(*largest) : pending_.end();
+  }
+
   // Hands the next task to `w`, starting it first when needed; false when it gets none.
-  auto dispatch = [&](Worker& w) {
-    while (!pending.empty()) {
-      if (w.pid < 0 && !startWorker(w, pool, task)) {
-        size_t index = pending.front();
-        pending.pop_front();
-        if (affinity.size() == count) --pendingOf[affinity[index]];
+  bool dispatch(Worker& w) {
+    while (!pending_.empty()) {
+      if (w.pid < 0 && !startWorker(w, pool_, task_)) {
+        size_t index = pending_.front();
+        pending_.pop_front();
+        if (grouped()) --pendingOf_[affinity_[index]];
         fail(index, std::string("cannot start a worker process: ") + std::strerror(errno), 0);
         continue;
       }
       auto next = choose(w);
-      if (next == pending.end()) return false;
+      if (next == pending_.end()) return false;
       size_t index = *next;
-      pending.erase(next);
+      pending_.erase(next);
       w.firstOfGroup = false;
-      if (affinity.size() == count) {
-        --pendingOf[affinity[index]];
-        w.group = affinity[index];
+      if (grouped()) {
+        --pendingOf_[affinity_[index]];
+        w.group = affinity_[index];
         w.firstOfGroup = std::find(w.warmGroups.begin(), w.warmGroups.end(), w.group) == w.warmGroups.end();
         if (w.firstOfGroup) w.warmGroups.push_back(w.group);
-        if (!started(w.group)) groupsStarted.push_back(w.group);
+        if (!started(w.group)) groupsStarted_.push_back(w.group);
       }
       uint64_t wire = index;
       w.busy = true;
@@ -214,87 +229,119 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
       fail(index, reapDead(w), 0);  // died between tasks
     }
     return false;
-  };
-  auto learn = [&](const Worker& w, double seconds) {
-    if (affinity.size() != count) return;
-    GroupTimes& times = groupTimes[w.group];
+  }
+
+  void learn(const Worker& w, double seconds) {
+    if (!grouped()) return;
+    GroupTimes& times = groupTimes_[w.group];
     if (w.firstOfGroup) {
       times.firstSeconds = times.firstSeconds < 0 ? seconds : std::min(times.firstSeconds, seconds);
     } else {
       times.restSeconds += seconds;
       ++times.restCount;
     }
-  };
+  }
+
   // Workers left idle by choose() are offered work again whenever a task ends (estimates change,
   // and the last busy worker may have died).
-  auto dispatchIdle = [&] {
-    for (auto& o : pool)
-      if (!o.busy && o.pid > 0 && !pending.empty()) dispatch(o);
-  };
+  void dispatchIdle() {
+    for (auto& o : pool_)
+      if (!o.busy && o.pid > 0 && !pending_.empty()) dispatch(o);
+  }
 
-  for (auto& w : pool)
-    if (!dispatch(w)) break;
-
-  while (true) {
+  // One poll over the busy workers and what it found; false when none is busy (or poll failed).
+  bool waitForWorkers() {
     std::vector<pollfd> fds;
     std::vector<Worker*> owners;
-    for (auto& w : pool)
+    for (auto& w : pool_)
       if (w.busy) {
         fds.push_back({w.results, POLLIN, 0});
         owners.push_back(&w);
       }
-    if (fds.empty()) break;
-    int waitMs = timeoutSeconds > 0 ? 100 : -1;
+    if (fds.empty()) return false;
+    int waitMs = timeoutSeconds_ > 0 ? 100 : -1;
     int ready = ::poll(fds.data(), fds.size(), waitMs);
-    if (ready < 0 && errno != EINTR) break;
+    if (ready < 0 && errno != EINTR) return false;
     for (size_t k = 0; k < fds.size(); ++k) {
       Worker& w = *owners[k];
       if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
-        char chunk[65536];
-        ssize_t n = ::read(w.results, chunk, sizeof chunk);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {  // EOF mid-task: the worker died
-          size_t index = w.task;
-          double seconds = secondsSince(w.started);
-          fail(index, reapDead(w), seconds);
-          dispatch(w);
-          dispatchIdle();
-          continue;
-        }
-        w.buffer.append(chunk, static_cast<size_t>(n));
-        uint64_t size = 0;
-        if (w.buffer.size() >= sizeof size) {
-          std::memcpy(&size, w.buffer.data(), sizeof size);
-          if (w.buffer.size() - sizeof size >= size) {
-            TaskOutcome outcome;
-            outcome.completed = true;
-            outcome.payload = w.buffer.substr(sizeof size, size);
-            outcome.seconds = secondsSince(w.started);
-            size_t index = w.task;
-            w.busy = false;
-            w.buffer.clear();
-            learn(w, outcome.seconds);
-            // The worker gets its next task before the parent handles this result (writing files),
-            // so the two overlap.
-            dispatch(w);
-            dispatchIdle();
-            onDone(index, std::move(outcome));
-          }
-        }
-      } else if (timeoutSeconds > 0 && secondsSince(w.started) > timeoutSeconds) {
-        size_t index = w.task;
-        double seconds = secondsSince(w.started);
-        stopWorker(w, true);
-        char text[64];
-        std::snprintf(text, sizeof text, "timed out after %g s", timeoutSeconds);
-        fail(index, text, seconds);
-        dispatch(w);
-        dispatchIdle();
+        readFrom(w);
+      } else if (timeoutSeconds_ > 0 && secondsSince(w.started) > timeoutSeconds_) {
+        stopLate(w);
       }
     }
+    return true;
   }
-  for (auto& w : pool)
-    if (w.pid > 0) stopWorker(w, false);
+
+  // What a worker's pipe holds: more of its answer, the whole answer, or the end (it died).
+  void readFrom(Worker& w) {
+    char chunk[65536];
+    ssize_t n = ::read(w.results, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) return;
+    if (n <= 0) {  // EOF mid-task: the worker died
+      size_t index = w.task;
+      double seconds = secondsSince(w.started);
+      fail(index, reapDead(w), seconds);
+      dispatch(w);
+      dispatchIdle();
+      return;
+    }
+    w.buffer.append(chunk, static_cast<size_t>(n));
+    uint64_t size = 0;
+    if (w.buffer.size() < sizeof size) return;
+    std::memcpy(&size, w.buffer.data(), sizeof size);
+    if (w.buffer.size() - sizeof size < size) return;
+    TaskOutcome outcome;
+    outcome.completed = true;
+    outcome.payload = w.buffer.substr(sizeof size, size);
+    outcome.seconds = secondsSince(w.started);
+    size_t index = w.task;
+    w.busy = false;
+    w.buffer.clear();
+    learn(w, outcome.seconds);
+    // The worker gets its next task before the parent handles this result (writing files), so the
+    // two overlap.
+    dispatch(w);
+    dispatchIdle();
+    onDone_(index, std::move(outcome));
+  }
+
+  // A task past the time limit: its worker is killed and replaced.
+  void stopLate(Worker& w) {
+    size_t index = w.task;
+    double seconds = secondsSince(w.started);
+    stopWorker(w, true);
+    char text[64];
+    std::snprintf(text, sizeof text, "timed out after %g s", timeoutSeconds_);
+    fail(index, text, seconds);
+    dispatch(w);
+    dispatchIdle();
+  }
+
+  const size_t count_;
+  const double timeoutSeconds_;
+  const std::function<std::string(size_t)>& task_;
+  const std::function<void(size_t, TaskOutcome&&)>& onDone_;
+  const std::vector<std::string>& affinity_;
+  std::deque<size_t> pending_;
+  std::vector<Worker> pool_;
+  std::map<std::string, GroupTimes> groupTimes_;
+  std::vector<std::string> groupsStarted_;
+  std::map<std::string, size_t> pendingOf_;  // pending tasks per group
+};
+
+}  // namespace
+
+void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
+                 const std::function<std::string(size_t)>& task,
+                 const std::function<void(size_t, TaskOutcome&&)>& onDone,
+                 const std::vector<std::string>& affinity) {
+  if (count == 0) return;
+  // A dead worker's request pipe must not kill the parent.
+  struct sigaction ignore {}, previous{};
+  ignore.sa_handler = SIG_IGN;
+  ::sigaction(SIGPIPE, &ignore, &previous);
+  IsolatedRun(count, workers, timeoutSeconds, task, onDone, affinity).run();
   ::sigaction(SIGPIPE, &previous, nullptr);
 }
 

@@ -7,27 +7,37 @@
 #include "transpiler/stereoshift.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 namespace stereoshift {
 
-const char* reprojectDepthName(ReprojectDepth d) {
-  switch (d) {
-    case ReprojectDepth::Linear: return "linear";
-    case ReprojectDepth::ZeroToOne: return "zero-to-one";
-    case ReprojectDepth::MinusOneToOne: return "minus-one-to-one";
-  }
+namespace {
+
+// The name of `value` in `names`; "?" for a value the table lacks.
+template <class E, size_t N>
+const char* nameIn(const std::pair<E, const char*> (&names)[N], E value) {
+  for (const auto& [known, name] : names)
+    if (known == value) return name;
   return "?";
 }
+
+}  // namespace
+
+const char* reprojectDepthName(ReprojectDepth d) {
+  static constexpr std::pair<ReprojectDepth, const char*> kNames[] = {
+      {ReprojectDepth::Linear, "linear"}, {ReprojectDepth::ZeroToOne, "zero-to-one"},
+      {ReprojectDepth::MinusOneToOne, "minus-one-to-one"}};
+  return nameIn(kNames, d);
+}
 const char* reprojectRefinementName(ReprojectRefinement r) {
-  switch (r) {
-    case ReprojectRefinement::None: return "none";
-    case ReprojectRefinement::Bisection: return "bisection";
-    case ReprojectRefinement::Secant: return "secant";
-  }
-  return "?";
+  static constexpr std::pair<ReprojectRefinement, const char*> kNames[] = {
+      {ReprojectRefinement::None, "none"}, {ReprojectRefinement::Bisection, "bisection"},
+      {ReprojectRefinement::Secant, "secant"}};
+  return nameIn(kNames, r);
 }
 const char* reprojectColourName(ReprojectColour c) {
   return c == ReprojectColour::Nearest ? "nearest" : "interpolated";
@@ -36,12 +46,9 @@ const char* disocclusionFillName(DisocclusionFill f) {
   return f == DisocclusionFill::Background ? "background" : "farther-sample";
 }
 const char* reprojectSourceName(ReprojectSource s) {
-  switch (s) {
-    case ReprojectSource::LeftEye: return "left";
-    case ReprojectSource::RightEye: return "right";
-    case ReprojectSource::Centre: return "centre";
-  }
-  return "?";
+  static constexpr std::pair<ReprojectSource, const char*> kNames[] = {
+      {ReprojectSource::LeftEye, "left"}, {ReprojectSource::RightEye, "right"}, {ReprojectSource::Centre, "centre"}};
+  return nameIn(kNames, s);
 }
 
 namespace {
@@ -158,13 +165,13 @@ std::string reprojectVertexSource(const ReprojectOptions& o) {
          "}\n";
 }
 
-std::string reprojectFragmentSource(const ReprojectOptions& o) {
+namespace {
+
+// The fragment shader's opening comment and its two source textures.
+void appendSourceTextures(std::ostringstream& s, const ReprojectOptions& o) {
   const EyeParamOptions& e = o.eye;
-  const EyeSource source = effectiveEyeSource(o);
   const bool gl = openGlSource(o);
   const uint32_t set = e.descriptorSet.value_or(0);
-  std::ostringstream s;
-  s << versionLine(o);
   s << "// stereoshift reproject: synthesizes the eye " << e.eyeSignName << " (-1 left, +1 right) from the "
     << (o.source == ReprojectSource::Centre ? "centre (mono) view" : std::string(reprojectSourceName(o.source)) + " eye")
     << "'s colour and depth.\n"
@@ -176,9 +183,17 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
   };
   s << binding(o.colourBinding) << "uniform sampler2D sourceColour;\n";
   s << binding(o.depthBinding) << "uniform sampler2D sourceDepth;\n";
+}
+
+// The eye parameters, declared the way the eye-params pass declares them; returns how the code
+// reads each (eyeSign, separation, convergence).
+std::array<std::string, 3> appendEyeParameters(std::ostringstream& s, const ReprojectOptions& o) {
+  const EyeParamOptions& e = o.eye;
+  const EyeSource source = effectiveEyeSource(o);
+  const uint32_t set = e.descriptorSet.value_or(0);
   // The eye parameters: the first three of the eye-params pass's (member i at byte offset 4*i).
   const std::string* names[3] = {&e.eyeSignName, &e.separationName, &e.convergenceName};
-  std::string access[3];
+  std::array<std::string, 3> access;
   switch (source) {
     case EyeSource::SpecConstant:
       for (int i = kEyeSign; i <= kConvergence; ++i) {
@@ -207,9 +222,13 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
       break;
     }
   }
+  return access;
+}
+
+// The outputs, the search's constants and the depth decode's.
+void appendConstants(std::ostringstream& s, const ReprojectOptions& o, const DepthDecode& decode) {
   s << "layout(location = 0) out vec4 reprojectedColour;\n";
   if (o.maskOutput) s << "layout(location = 1) out float disocclusionMask;  // 1: not seen by the source\n";
-  DepthDecode decode = depthDecode(o);
   s << "\n"
     << "const float kSourceEyeSign = " << floatLiteral(sourceEyeSign(o.source)) << ";\n"
     << "const int kSamples = " << o.samples << ";\n"
@@ -220,6 +239,10 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
       << (o.reversedZ ? ", reversed-Z" : "") << ")\n"
       << "const float kDepthScale = " << floatLiteral(decode.scale) << ";\n"
       << "const float kDepthOffset = " << floatLiteral(decode.offset) << ";\n";
+}
+
+// The helpers: 1/w of a texel, the column clamp, the residual of a hypothesis, a colour fetch.
+void appendHelpers(std::ostringstream& s, const DepthDecode& decode) {
   s << "\n"
        "// 1/w of texel `column` of `row`: exact from the stored depth, no division for device depth.\n"
        "float inverseEyeDepth(int column, int row) {\n"
@@ -242,8 +265,12 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
        "vec4 colourAt(float x, int row, int width) {\n"
        "  return texelFetch(sourceColour, ivec2(columnAt(x, width), row), 0);\n"
        "}\n"
-       "\n"
-       "void main() {\n"
+       "\n";
+}
+
+// main() up to the linear search's bracket of the visible surface.
+void appendSearch(std::ostringstream& s, const std::array<std::string, 3>& access) {
+  s << "void main() {\n"
        "  int width = textureSize(sourceDepth, 0).x;\n"
        "  int row = int(gl_FragCoord.y);\n"
        "  float target = gl_FragCoord.x;\n"
@@ -274,6 +301,18 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
        "    rHi = rLo;\n"
        "  }\n"
        "  bool bracketed = tHi > tLo;\n";
+}
+
+// One step inside the bracket, shared by the refinement and the background fill: the residual at
+// t, and t replaces the bracket's end on its side. `indent` is the loop body's.
+std::string bracketStep(const std::string& indent) {
+  return indent + "float r = residual(t, target, k, row, width, screenDepth);\n" + indent + "if (r <= 0.0) {\n" +
+         indent + "  tHi = t;\n" + indent + "  rHi = r;\n" + indent + "} else {\n" + indent + "  tLo = t;\n" +
+         indent + "  rLo = r;\n" + indent + "}\n";
+}
+
+// The bracket's refinement (bisection or secant steps), when asked for.
+void appendRefinement(std::ostringstream& s, const ReprojectOptions& o) {
   if (o.refinement != ReprojectRefinement::None && o.refinementSteps > 0) {
     s << "  // Refinement: " << reprojectRefinementName(o.refinement) << " steps inside the bracket.\n"
       << "  for (int j = 0; j < " << o.refinementSteps << " && bracketed; ++j) {\n";
@@ -281,16 +320,12 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
       s << "    float t = 0.5 * (tLo + tHi);\n";
     else
       s << "    float t = tLo + (tHi - tLo) * (rLo / (rLo - rHi));  // rLo > 0 >= rHi\n";
-    s << "    float r = residual(t, target, k, row, width, screenDepth);\n"
-         "    if (r <= 0.0) {\n"
-         "      tHi = t;\n"
-         "      rHi = r;\n"
-         "    } else {\n"
-         "      tLo = t;\n"
-         "      rLo = r;\n"
-         "    }\n"
-         "  }\n";
+    s << bracketStep("    ") << "  }\n";
   }
+}
+
+// The end of main(): disocclusion, the colour of a hit, the outputs.
+void appendResolve(std::ostringstream& s, const ReprojectOptions& o) {
   s << "  // The bracket's two source points land |k|*(rLo - rHi) pixels apart; a continuous surface lands\n"
        "  // them about as far apart as they are (|k|*(tHi - tLo)). Much farther: the bracket spans a depth\n"
        "  // edge whose far side moved away from its near side, and this pixel is disoccluded.\n"
@@ -302,15 +337,7 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
     s << "    // Background repeat: narrow the bracket onto the edge, then take the far side's texel there.\n"
          "    for (int j = 0; j < 16 && spread * (tHi - tLo) > 1.0; ++j) {\n"
          "      float t = 0.5 * (tLo + tHi);\n"
-         "      float r = residual(t, target, k, row, width, screenDepth);\n"
-         "      if (r <= 0.0) {\n"
-         "        tHi = t;\n"
-         "        rHi = r;\n"
-         "      } else {\n"
-         "        tLo = t;\n"
-         "        rLo = r;\n"
-         "      }\n"
-         "    }\n";
+      << bracketStep("      ") << "    }\n";
   else
     s << "    // Nearest farther sample: the bracket's far end as the search found it.\n";
   s << "    colour = colourAt(target - k * tLo, row, width);\n"
@@ -325,6 +352,21 @@ std::string reprojectFragmentSource(const ReprojectOptions& o) {
        "  reprojectedColour = colour;\n";
   if (o.maskOutput) s << "  disocclusionMask = disoccluded ? 1.0 : 0.0;\n";
   s << "}\n";
+}
+
+}  // namespace
+
+std::string reprojectFragmentSource(const ReprojectOptions& o) {
+  std::ostringstream s;
+  s << versionLine(o);
+  appendSourceTextures(s, o);
+  const std::array<std::string, 3> access = appendEyeParameters(s, o);
+  const DepthDecode decode = depthDecode(o);
+  appendConstants(s, o, decode);
+  appendHelpers(s, decode);
+  appendSearch(s, access);
+  appendRefinement(s, o);
+  appendResolve(s, o);
   return s.str();
 }
 

@@ -151,18 +151,20 @@ void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, b
   }
 }
 
-}  // namespace
-
-bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string* error) {
+// gl_VertexID / gl_InstanceID become Vulkan's VertexIndex / InstanceIndex. True when one was there.
+bool renameVertexBuiltIns(spirv::Module& m) {
   bool changed = false;
   for (auto& inst : m.annotations)
     if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationBuiltIn)) {
       if (inst.operand(2) == uint32_t(spv::BuiltInVertexId)) inst.operands[2] = spv::BuiltInVertexIndex, changed = true;
       if (inst.operand(2) == uint32_t(spv::BuiltInInstanceId)) inst.operands[2] = spv::BuiltInInstanceIndex, changed = true;
     }
+  return changed;
+}
+
+// The loose (non-opaque) uniforms, in declaration order, and the highest binding of the others.
+std::vector<uint32_t> looseUniforms(const spirv::Module& m, uint32_t* highestBinding, bool* anyBinding) {
   std::vector<uint32_t> loose;
-  uint32_t highestBinding = 0;
-  bool anyBinding = false;
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable) continue;
     if (inst.operand(0) == spv::StorageClassUniformConstant && !m.isOpaqueType(m.pointeeType(inst.typeId))) {
@@ -170,15 +172,18 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
       continue;
     }
     if (auto b = m.decorationValue(inst.resultId, spv::DecorationBinding)) {
-      highestBinding = anyBinding ? std::max(highestBinding, *b) : *b;
-      anyBinding = true;
+      *highestBinding = *anyBinding ? std::max(*highestBinding, *b) : *b;
+      *anyBinding = true;
     }
   }
-  for (const auto& inst : m.typesValues)
-    if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniformConstant)
-      m.removeDecorations(inst.resultId, spv::DecorationLocation);
-  // glslang's auto-mapped locations can collide with explicit ones in OpenGL shaders (the GL linker
-  // would have assigned them); give each collider the next free location, the same way in every copy.
+  return loose;
+}
+
+// glslang's auto-mapped locations can collide with explicit ones in OpenGL shaders (the GL linker
+// would have assigned them); give each collider the next free location, the same way in every copy.
+// True when one collided.
+bool separateCollidingLocations(spirv::Module& m) {
+  bool changed = false;
   for (auto storage : {spv::StorageClassInput, spv::StorageClassOutput}) {
     std::set<uint32_t> used;
     std::vector<uint32_t> colliders;
@@ -196,10 +201,13 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
       changed = true;
     }
   }
-  if (loose.empty()) return changed;
+  return changed;
+}
 
-  // The block: one member per loose uniform, std140 offsets.
-  std::vector<uint32_t> memberTypes, offsets;
+// The default uniform block: one member per loose uniform, std140 offsets; its variable in set 0
+// (the binding is the caller's). `memberTypes` receives each member's type.
+uint32_t defaultUniformBlock(spirv::Module& m, const std::vector<uint32_t>& loose, std::vector<uint32_t>* memberTypes) {
+  std::vector<uint32_t> offsets;
   std::vector<bool> matrices;
   uint32_t offset = 0;
   for (uint32_t var : loose) {
@@ -207,12 +215,12 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
     bool matrix;
     std140(m, &type, &size, &align, &matrix);
     offset = (offset + align - 1) / align * align;
-    memberTypes.push_back(type);
+    memberTypes->push_back(type);
     offsets.push_back(offset);
     matrices.push_back(matrix);
     offset += size;
   }
-  uint32_t block = m.newStruct(memberTypes);
+  uint32_t block = m.newStruct(*memberTypes);
   m.decorate(block, spv::DecorationBlock);
   m.setName(block, "gl_DefaultUniformBlock");
   for (uint32_t i = 0; i < loose.size(); ++i) {
@@ -225,13 +233,13 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
   }
   uint32_t blockVar = m.addGlobalVariable(m.typePointer(spv::StorageClassUniform, block), spv::StorageClassUniform);
   m.decorate(blockVar, spv::DecorationDescriptorSet, {0});
-  if (anyBinding && highestBinding >= blockBinding) {
-    *error = "binding " + std::to_string(blockBinding) + " for the default uniform block is taken";
-    return false;
-  }
-  m.decorate(blockVar, spv::DecorationBinding, {blockBinding});
+  return blockVar;
+}
 
-  // Every use of a loose uniform becomes a chain into the block, made at the top of the function.
+// Every use of a loose uniform becomes a chain into the block, made at the top of the function;
+// chains built on those pointers point into Uniform storage then.
+void readLooseUniformsFromBlock(spirv::Module& m, const std::vector<uint32_t>& loose,
+                                const std::vector<uint32_t>& memberTypes, uint32_t blockVar) {
   std::map<uint32_t, uint32_t> memberOf;
   for (uint32_t i = 0; i < loose.size(); ++i) memberOf[loose[i]] = i;
   std::set<uint32_t> uniformPointers;
@@ -263,7 +271,6 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
     while (at < first.size() && first[at].opcode == spv::OpVariable) ++at;
     first.insert(first.begin() + static_cast<long>(at), chains.begin(), chains.end());
   }
-  // Chains built on those pointers point into Uniform storage now.
   for (bool grew = true; grew;) {
     grew = false;
     for (auto& fn : m.functions)
@@ -276,15 +283,41 @@ bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string
             grew = true;
           }
   }
-  // Drop the loose variables and everything that names them.
-  std::set<uint32_t> gone(loose.begin(), loose.end());
+}
+
+// Drops the loose variables and everything that names them.
+void dropVariables(spirv::Module& m, const std::vector<uint32_t>& variables) {
+  std::set<uint32_t> gone(variables.begin(), variables.end());
   std::erase_if(m.typesValues, [&](const Instruction& i) { return gone.count(i.resultId) > 0; });
   std::erase_if(m.annotations, [&](const Instruction& i) { return gone.count(i.operand(0)) > 0; });
   std::erase_if(m.debugNames, [&](const Instruction& i) { return i.opcode == spv::OpName && gone.count(i.operand(0)) > 0; });
   for (auto& entry : m.entryPoints)
     std::erase_if(entry.operands, [&](uint32_t id) { return gone.count(id) > 0; });
   m.invalidateDefinitions();
-  (void)error;
+}
+
+}  // namespace
+
+bool convertOpenGLForVulkan(spirv::Module& m, uint32_t blockBinding, std::string* error) {
+  bool changed = renameVertexBuiltIns(m);
+  uint32_t highestBinding = 0;
+  bool anyBinding = false;
+  const std::vector<uint32_t> loose = looseUniforms(m, &highestBinding, &anyBinding);
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable && inst.operand(0) == spv::StorageClassUniformConstant)
+      m.removeDecorations(inst.resultId, spv::DecorationLocation);
+  changed |= separateCollidingLocations(m);
+  if (loose.empty()) return changed;
+
+  std::vector<uint32_t> memberTypes;
+  uint32_t blockVar = defaultUniformBlock(m, loose, &memberTypes);
+  if (anyBinding && highestBinding >= blockBinding) {
+    *error = "binding " + std::to_string(blockBinding) + " for the default uniform block is taken";
+    return false;
+  }
+  m.decorate(blockVar, spv::DecorationBinding, {blockBinding});
+  readLooseUniformsFromBlock(m, loose, memberTypes, blockVar);
+  dropVariables(m, loose);
   return true;
 }
 

@@ -224,6 +224,32 @@ bool buildDescriptorLayout(const PipelineInputs& inputs,
 VkResult createColourDepthRenderPass(VkDevice device, VkFormat colourFormat, VkFormat depthFormat, uint32_t viewMask,
                                      bool keepDepth, VkRenderPass* renderPass);
 
+// The fixed-function state of the harness's graphics pipelines, for callers that build their own
+// (benchmarks) too: one viewport and scissor, both dynamic; filled polygons, no culling,
+// counter-clockwise front faces; one sample; depth test and colour writes / blending as `draw` says
+// (none at all without a draw). `discard`: the rasterizer discards (capture); `colourAttachment`:
+// the render pass has one colour attachment.
+class FixedFunctionState {
+ public:
+  explicit FixedFunctionState(const Draw* draw, bool discard = false, bool colourAttachment = true);
+  ~FixedFunctionState();
+  FixedFunctionState(const FixedFunctionState&) = delete;
+  FixedFunctionState& operator=(const FixedFunctionState&) = delete;
+  // Points `gci`'s viewport, rasterization, multisample, depth-stencil, colour-blend and dynamic
+  // state here (valid while this object lives).
+  void applyTo(VkGraphicsPipelineCreateInfo* gci) const;
+
+ private:
+  struct CreateInfos;
+  std::unique_ptr<CreateInfos> infos_;
+};
+
+// How the harness describes a 2D attachment image (one mip level, `layers` layers, optimal tiling,
+// exclusive, layout undefined) and views an image, for callers that create their own (benchmarks).
+VkImageCreateInfo imageInfo2D(VkFormat format, uint32_t width, uint32_t height, uint32_t layers, VkImageUsageFlags usage);
+VkResult createImageView(VkDevice device, VkImage image, VkImageViewType type, VkFormat format,
+                         const VkImageSubresourceRange& range, VkImageView* view);
+
 // ---------------------------------------------------------------------------------------------
 // The context
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,89 @@
+// The forked child of the single-shader command (see conversion_child.h).
+#include "cli/conversion_child.h"
+
+#include "cli/convert_command.h"
+#include "cli/depfile.h"
+#include "cli/diagnostic_output.h"
+#include "cli/source_reading.h"
+#include "cli/worker_pool.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+namespace stereoshift {
+
+namespace {
+
+// Runs in the conversion child: reads and converts, prints the diagnostics, writes nothing.
+ConversionRun convertInChild(const CliOptions& o, const std::vector<std::string>& paths,
+                             const std::function<std::string(size_t)>& outputFor) {
+  ConversionRun run;
+  std::vector<SourceFile> sources;
+  run.errors = readSources(paths, &sources, std::cerr);
+  if (run.errors) return run;
+  nlohmann::json reports = nlohmann::json::array();
+  run.errors = convert(sources, o, outputFor, reports, std::cerr, &run.outputs);
+  if (!run.errors && !o.depfile.empty()) {
+    if (auto text = conversionDepfile(reports, sources)) {
+      run.depfileText = std::move(*text);
+    } else {
+      std::cerr << "stereoshift: error: --depfile needs an output file (-o)\n";
+      ++run.errors;
+    }
+  }
+  if (run.errors) {
+    // A failed pipeline writes nothing, so no stage's report names an output file.
+    run.outputs.clear();
+    run.depfileText.clear();
+    for (auto& r : reports) r.erase("output_file");
+  }
+  run.hasReport = true;
+  run.report = sources.size() == 1 && !reports.empty() ? reports[0] : reports;
+  return run;
+}
+
+}  // namespace
+
+bool runConversionChild(const CliOptions& o, const std::vector<std::string>& paths,
+                        const std::function<std::string(size_t)>& outputFor, ConversionRun* run) {
+  // The conversion runs in a forked child: a crash in the front end (glslang overflows its stack
+  // on some inputs) or a conversion past the time limit becomes a clear error instead of a core
+  // dump or a hang. STEREOSHIFT_NO_FORK=1 keeps it in process, for a debugger (no time limit then).
+  if (const char* noFork = std::getenv("STEREOSHIFT_NO_FORK"); noFork && *noFork && std::string(noFork) != "0") {
+    *run = convertInChild(o, paths, outputFor);
+  } else {
+    const std::string shown = paths.front() == "-" ? std::string(kStdinName) : paths.front();  // as diagnostics name it
+    TaskOutcome outcome = runIsolatedOnce(
+        [&] {
+          std::string wire = encodeConversionRun(convertInChild(o, paths, outputFor));
+          std::cout.flush();
+          std::cerr.flush();
+          std::fflush(nullptr);
+          return wire;
+        },
+        o.timeoutSeconds);
+    if (!outcome.completed) {
+      // runIsolated's words for a task it stopped at the limit start with "timed out".
+      if (outcome.failure.rfind("timed out", 0) == 0) {
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%g", o.timeoutSeconds);
+        std::cerr << shown << ": error: conversion exceeded the " << limit
+                  << " s time limit (--timeout); no output was written\n";
+      } else {
+        std::cerr << shown << ": error: stereoshift " << outcome.failure
+                  << " while converting this shader; no output was written\n";
+      }
+      printErrorSummary(1);
+      return false;
+    }
+    if (!decodeConversionRun(outcome.payload, run)) {
+      std::cerr << shown << ": error: stereoshift's conversion process answered garbage; no output was written\n";
+      printErrorSummary(1);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,58 @@
+// The conversion options of the command line: the CliOptions the main command, `build` and
+// `verify` share, their registration on a CLI11 app, their translation into TranspileOptions
+// (finishOptions, with the messages for a bad value), the sets of values the enumerated ones take,
+// and the description of TranspileOptions that keys the incremental cache.
+#pragma once
+
+#include "cli/cli11_fwd.h"
+#include "transpiler/stereoshift.h"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct CliOptions {
+  TranspileOptions t;
+  std::vector<std::string> inputs;
+  std::string output;
+  std::string stage, target, eyeSource = "auto", shiftForm = "branch";
+  std::string singlePassParams = "auto", eyeRoute = "layer";  // --multiview-params, --eye-route (single-pass stereo)
+  std::string language;  // -x glsl|hlsl
+  std::string targetEnv, targetSpv;     // --target-env vulkan1.2, --target-spv spv1.5
+  std::vector<std::string> stageExts;   // --stage-ext vp=vert (repeatable)
+  std::string pipeline;
+  std::string reportPath;
+  std::string depfile;  // single shader / pipeline: Makefile-style dependencies of the outputs
+  bool noCutoff = false, noInvariant = false, noHalo = false;
+  bool noPerEyeView = false, noDeferredUnprojection = false;
+  std::optional<uint32_t> set, binding, hlslRegister, glBinding;
+  std::optional<int> targetVersion;
+  // Single shader / --pipeline: seconds the conversion may take before it is stopped (0: no limit).
+  // 300, like `build --job-timeout`: far beyond any real shader, but an input that never finishes
+  // (an include cycle, a pathological expression) still ends with an error.
+  double timeoutSeconds = 300;
+};
+
+// Registers the conversion options (shared by the main command, `build` and `verify`) on `app`.
+void addConversionOptions(CLI::App& app, CliOptions& o);
+// Turns the parsed strings into TranspileOptions; an error message when one is invalid.
+std::optional<std::string> finishOptions(CliOptions& o);
+
+// The options whose values come from a fixed set, and the set: for the messages about a bad or a
+// missing value.
+const std::map<std::string, std::vector<std::string>>& enumeratedOptions();
+// "(a, b, c)": the valid values of an enumerated option.
+std::string validValues(const std::string& option);
+
+std::vector<std::string> splitCommas(const std::string& s);
+
+// Every field of the options, for the incremental cache's key: two runs with the same description
+// produce the same outputs from the same inputs. A new TranspileOptions field must be added here.
+nlohmann::json describeOptions(const TranspileOptions& options);
+
+}  // namespace stereoshift

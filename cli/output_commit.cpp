@@ -1,0 +1,157 @@
+// How the CLI commits what it made (see output_commit.h): atomic writes, all-or-nothing sets of
+// outputs, reports, and the output-is-an-input check.
+#include "cli/output_commit.h"
+
+#include "transpiler/source/file_io.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+namespace {
+
+// Where an output's bytes go: a symbolic link is followed (the link stays a link); a device or pipe
+// (/dev/null, /dev/stdout) is written in place: renaming over it would replace it with a regular file.
+struct OutputTarget {
+  fs::path path;
+  bool inPlace = false;
+};
+
+OutputTarget targetOf(const fs::path& requested) {
+  std::error_code ec;
+  OutputTarget target{requested, false};
+  if (fs::is_symlink(target.path, ec)) target.path = fs::weakly_canonical(target.path, ec);
+  target.inPlace = fs::exists(target.path, ec) && !fs::is_regular_file(target.path, ec);
+  return target;
+}
+
+bool writeInPlace(const fs::path& path, const std::string& bytes, std::string* error) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out.flush()) {
+    *error = "cannot write '" + path.string() + "'";
+    return false;
+  }
+  return true;
+}
+
+// The first half of an atomic write: the bytes in a temporary file beside `path`.
+bool writeTemporary(const fs::path& path, const std::string& bytes, fs::path* temp, std::string* error) {
+  std::error_code ec;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+  *temp = path;
+  *temp += ".stereoshift-tmp-" + std::to_string(::getpid());
+  std::ofstream out(*temp, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    *error = "cannot write '" + temp->string() + "'";
+    return false;
+  }
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out.flush()) {
+    *error = "cannot write '" + temp->string() + "'";
+    out.close();
+    fs::remove(*temp, ec);
+    return false;
+  }
+  return true;
+}
+
+// The second half: the temporary renamed into place (removed when that fails).
+bool renameIntoPlace(const fs::path& temp, const fs::path& path, std::string* error) {
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) {
+    *error = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message();
+    fs::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+// Writes through a temporary file renamed into place: a failure never leaves a partial output.
+bool writeAtomically(const fs::path& requested, const std::string& bytes, std::string* error) {
+  OutputTarget target = targetOf(requested);
+  if (target.inPlace) return writeInPlace(target.path, bytes, error);
+  fs::path temp;
+  return writeTemporary(target.path, bytes, &temp, error) && renameIntoPlace(temp, target.path, error);
+}
+
+int writeAllOrNothing(const std::vector<PendingOutput>& outputs, std::ostream& log) {
+  struct Staged {
+    const PendingOutput* output;
+    OutputTarget target;
+    fs::path temp;
+  };
+  std::vector<Staged> staged;
+  std::error_code ec;
+  for (const auto& output : outputs) {
+    if (output.path == "-" || output.path.empty()) continue;
+    Staged s{&output, targetOf(output.path), {}};
+    std::string error;
+    if (!s.target.inPlace && !writeTemporary(s.target.path, output.bytes, &s.temp, &error)) {
+      log << output.path << ": error: " << error << "\n";
+      for (const auto& done : staged)
+        if (!done.temp.empty()) fs::remove(done.temp, ec);
+      return 1;
+    }
+    staged.push_back(std::move(s));
+  }
+  int errors = 0;
+  for (const auto& s : staged) {
+    std::string error;
+    bool written = s.target.inPlace ? writeInPlace(s.target.path, s.output->bytes, &error)
+                                    : renameIntoPlace(s.temp, s.target.path, &error);
+    if (!written) {
+      log << s.output->path << ": error: " << error << "\n";
+      ++errors;
+    }
+  }
+  for (const auto& output : outputs)
+    if (output.path == "-" || output.path.empty()) std::cout << output.bytes;
+  return errors;
+}
+
+bool writeReport(const std::string& path, const nlohmann::json& report) {
+  return writeReportText(path, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+}
+
+bool writeReportText(const std::string& path, const std::string& text) {
+  if (path.empty()) return true;
+  if (path == "-") {
+    std::cout << text;
+    return true;
+  }
+  // An identical report is left alone (a repeated no-op build rewrites nothing).
+  std::string existing, error;
+  if (readFile(path, &existing) && existing == text) return true;
+  if (!writeAtomically(path, text, &error)) {
+    std::cerr << "stereoshift: error: " << error << "\n";
+    return false;
+  }
+  return true;
+}
+
+std::optional<std::string> outputThatIsAnInput(const std::vector<std::string>& outputs,
+                                               const std::vector<std::string>& inputs) {
+  struct stat in {}, out {};
+  for (const auto& output : outputs) {
+    if (output.empty() || output == "-") continue;
+    // stat() follows links: a symbolic link to the input is the input. A device (-o /dev/stdout
+    // with the input /dev/stdin on one terminal) is written in place, never replaced: not compared.
+    if (::stat(output.c_str(), &out) != 0 || !S_ISREG(out.st_mode)) continue;
+    for (const auto& input : inputs)
+      if (::stat(input.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+        return "output '" + output + "' is the input '" + input + "'; it would be overwritten";
+  }
+  return std::nullopt;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,38 @@
+// How the CLI reads its input shaders (see source_reading.h).
+#include "cli/source_reading.h"
+
+#include "cli/test_hook.h"
+#include "transpiler/source/file_io.h"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace stereoshift {
+
+int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* sources, std::ostream& log) {
+  int failed = 0;
+  for (const auto& p : paths) {
+    hangIfTestAsks(p);
+    SourceFile s{p, {}};
+    std::error_code ec;
+    if (p == "-") {
+      // Standard input, as glslc reads it: the stage and language then come from -S / -x or the
+      // text, and diagnostics name it <stdin>.
+      s.path = kStdinName;
+      std::ostringstream text;
+      text << std::cin.rdbuf();
+      s.contents = text.str();
+    } else if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
+      log << p << ": error: cannot read file\n";
+      ++failed;
+      continue;
+    }
+    sources->push_back(std::move(s));
+  }
+  return failed;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,90 @@
+// verify's compile step: the pre-rasterization stages of the given sources, in pipeline order,
+// each compiled to SPIR-V twice — the original as the front end makes it, and through
+// stereoshift's passes (only the last stage shifted) — with what the comparison must know about
+// each: which outputs may differ between the eyes, and whether its bindings are D3D registers.
+#include "transpiler/verify/stereo_verify.h"
+
+#include "transpiler/verify/harness_rewrites.h"
+#include "passes/ir/module.h"
+#include "passes/pass.h"
+#include "transpiler/source/stage_rules.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace stereoshift::harness {
+
+namespace {
+
+// The outputs the conversion computes differently per eye by design: those the halo pass
+// re-derived from the shifted position, and those computed from the per-eye camera (per-eye-view:
+// relief view vectors). The comparison lets them move between the eyes; eyeSign = 0 still has to
+// be bit for bit.
+std::vector<std::string> outputsExpectedToDiffer(const TranspileResult& result) {
+  const RunRecord& passes = result.record.passes;
+  std::vector<std::string> outputs = passes.halo.shiftedOutputs.value_or(std::vector<std::string>{});
+  outputs.insert(outputs.end(), passes.perEyeView.perEyeOutputs.begin(), passes.perEyeView.perEyeOutputs.end());
+  return outputs;
+}
+
+// Whether the stage's bindings are D3D registers (b, t, s, u in separate namespaces), which the
+// harness moves apart before binding: the front end's rule (HLSL not written for Vulkan with
+// [[vk::binding]]; SourceInfo::vulkanBindings).
+bool bindsByD3DRegisters(const TranspileResult& result) { return perClassRegisters(result.source); }
+
+}  // namespace
+
+bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                       std::vector<StageModules>* stages, std::string* classification, Diagnostics& diags) {
+  std::vector<const SourceFile*> ordered;
+  for (const auto& s : sources) {
+    auto stage = decideStage(s.path, s.contents, options.stage, options.stageExtensions).stage;
+    if (stage && isPreRasterization(*stage)) ordered.push_back(&s);
+  }
+  if (ordered.empty()) {
+    diags.error(sources.empty() ? std::string() : sources.front().path,
+                "nothing to verify: no vertex, tessellation or geometry stage");
+    return false;
+  }
+  std::stable_sort(ordered.begin(), ordered.end(), [&](const SourceFile* a, const SourceFile* b) {
+    auto of = [&](const SourceFile* f) { return decideStage(f->path, f->contents, options.stage, options.stageExtensions).stage; };
+    return static_cast<int>(*of(a)) < static_cast<int>(*of(b));
+  });
+  for (size_t i = 0; i < ordered.size(); ++i) {
+    // The single-pass modes refuse what the output language cannot express (ESSL vertex shaders
+    // and gl_Layer, OpenGL multiview and geometry stages, ...): verify runs SPIR-V, so it first
+    // converts for the output the user asked for and reports that conversion's refusal as its own.
+    if (options.eye.select != EyeSelect::Parameter && options.target != TargetLanguage::Spirv) {
+      TranspileOptions asAsked = options;
+      asAsked.shiftThisStage = i + 1 == ordered.size();
+      TranspileResult check = transpile(*ordered[i], asAsked);
+      if (!check.ok) {
+        diags.append(check.diagnostics);
+        return false;
+      }
+    }
+    TranspileOptions o = options;
+    o.target = TargetLanguage::Spirv;
+    o.forceReemit = true;
+    o.shiftThisStage = i + 1 == ordered.size();
+    TranspileResult result = transpile(*ordered[i], o);
+    diags.append(result.diagnostics);
+    if (!result.ok) return false;
+    *classification = result.record.classification ? toString(*result.record.classification) : "";
+    std::vector<uint32_t> words(result.output.size() / 4);
+    std::memcpy(words.data(), result.output.data(), words.size() * 4);
+    std::string error;
+    auto original = spirv::Module::parse(result.originalSpirv, &error);
+    if (!original) {
+      diags.error(ordered[i]->path, error);
+      return false;
+    }
+    std::vector<std::string> halo = outputsExpectedToDiffer(result);
+    const bool d3dRegisters = bindsByD3DRegisters(result);
+    stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
+                       original->entryPointName(), std::move(halo), d3dRegisters});
+  }
+  return true;
+}
+
+}  // namespace stereoshift::harness
