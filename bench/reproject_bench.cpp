@@ -1,4 +1,4 @@
-// Depth reprojection, run time against error, side by side in one run (README "Depth reprojection"):
+// Depth reprojection, run time against error, side by side in one run (docs/accuracy-and-benchmarks.md "Depth reprojection"):
 // for N in {2, 4, 8, 16, 32} samples x refinement (none, 3 bisection, 3 secant steps) x colour rule
 // (nearest, interpolated), the pass's time on lavapipe relative to drawing the scene once, and its
 // error against the truth of the execution test's scene (test/harness/reproject_scene.h), left eye

@@ -1,4 +1,4 @@
-// Single-pass stereo against two passes, side by side in one run (issue 14; README "Single-pass
+// Single-pass stereo against two passes, side by side in one run (issue 14; docs/accuracy-and-benchmarks.md "Single-pass
 // stereo"). One mono vertex shader in a common engine style (a camera block, a per-draw model matrix
 // and colour in a push constant) is converted three ways to SPIR-V, and one frame of N small draws
 // (default 2000 meshes of 4 triangles) is recorded and submitted in each mode into a 2-layer target:

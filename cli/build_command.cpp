@@ -39,7 +39,7 @@ bool reportPlanProblems(const Plan& plan) {
 }  // namespace
 
 void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
-  build.add_option("source", o.source, "Source directory, or a scene manifest (.toml; see README \"Scene manifest\")")
+  build.add_option("source", o.source, "Source directory, or a scene manifest (.toml; see docs/trees-and-manifests.md)")
       ->required();
   build.add_option("-o,--output", o.output, "Output directory (mirrors the source tree)")->required();
   build.add_option("-j,--jobs", o.jobs, "Worker processes (default: one per core); the output does not depend on it");

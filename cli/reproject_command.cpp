@@ -21,7 +21,7 @@ CLI::App* addReprojectCommand(CLI::App& app, ReprojectCliOptions& o) {
   auto* r = app.add_subcommand(
       "reproject",
       "Generate the shaders of a full-screen pass that synthesizes the other eye (or both eyes from the centre "
-      "view) from one rendered view's colour and depth (README \"Depth reprojection\")");
+      "view) from one rendered view's colour and depth (docs/reprojection.md)");
   r->add_option("-o,--output", o.outputDir, "Directory the shaders and reproject-report.json are written to")->required();
   r->add_option("--target", o.targets,
                 "Output language, repeatable: glsl, essl, hlsl, msl, spirv, spirv-asm (default: glsl essl hlsl msl spirv)")

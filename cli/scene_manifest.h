@@ -1,5 +1,5 @@
 // The scene manifest (TOML): the render passes of a scene, what each does with stereo, the
-// pipelines each one draws with, and per-pass conversion options. See README "Scene manifest".
+// pipelines each one draws with, and per-pass conversion options. See docs/trees-and-manifests.md "Scene manifest".
 //
 //   source = "shaders"            # shader tree root, relative to the manifest (default: its directory)
 //   [defaults]                    # conversion options for every converted pass (CLI long names)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Fails when a source file includes a header of a higher layer.
 
-The layers, bottom up (README "Architecture"): passes/ (with passes/ir/), transpiler/ (frontend/,
+The layers, bottom up (docs/architecture.md): passes/ (with passes/ir/), transpiler/ (frontend/,
 backend/, verify/, the driver), cli/. A file may include headers of its own layer and of the layers
 below. Product code (passes/, transpiler/, cli/) never includes test/ or bench/. Inside transpiler/,
 source/ (the lexer and the stage and file-name rules) is at the bottom: it includes only itself
