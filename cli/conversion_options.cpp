@@ -69,6 +69,11 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_flag("--print-all", o.t.printAll, "Print the SPIR-V after every pass to stderr");
   app.add_flag("--validate-each", o.t.validateEach, "Validate the SPIR-V after every pass");
   app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
+  app.add_flag("--require-analysis", o.t.requireAnalysis,
+               "Refuse a shader glslang cannot parse instead of splicing the shift from its text alone");
+  app.add_flag("--diff", o.diff,
+               "Print the edits as a unified diff against the input (instead of the output text when it "
+               "goes to standard output), to review them like a patch");
   app.add_flag("--force-reemit", o.t.forceReemit, "Re-emit shaders that need no change instead of copying them");
   app.add_option("--report", o.reportPath, "Write a JSON report of what was done ('-': standard output)");
 }

@@ -4,6 +4,8 @@
 
 #include "cli/conversion_child.h"
 #include "cli/diagnostic_output.h"
+#include "cli/unified_diff.h"
+#include "transpiler/source/file_io.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -40,6 +42,32 @@ int convert(const std::vector<SourceFile>& sources, const CliOptions& o, const s
   return errors;
 }
 
+namespace {
+
+// --diff: each output against its input, on standard output; an output meant for standard output
+// is then not printed as well. Binary outputs (SPIR-V) are named, as diff names them.
+void printDiffs(const std::vector<std::string>& paths, std::vector<PendingOutput>& outputs) {
+  for (size_t i = 0; i < outputs.size() && i < paths.size(); ++i) {
+    std::string input;
+    if (!readFile(paths[i], &input)) continue;
+    std::string name = paths[i], converted = outputs[i].path.empty() || outputs[i].path == "-" ? paths[i] : outputs[i].path;
+    // git's a/ and b/ prefixes for relative paths (`patch -p1` applies them), none for absolute ones.
+    auto side = [](const char* prefix, const std::string& path) {
+      return fs::path(path).is_absolute() ? path : prefix + path;
+    };
+    bool binary = input.find('\0') != std::string::npos || outputs[i].bytes.find('\0') != std::string::npos;
+    if (binary && input != outputs[i].bytes)
+      std::cout << "Binary files " << side("a/", name) << " and " << side("b/", converted) << " differ\n";
+    else if (!binary)
+      std::cout << unifiedDiff(input, outputs[i].bytes, side("a/", name), side("b/", converted));
+  }
+  // An output meant for standard output was shown as its diff.
+  std::erase_if(outputs, [](const PendingOutput& out) { return out.path.empty() || out.path == "-"; });
+  std::cout.flush();
+}
+
+}  // namespace
+
 int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths) {
   auto outputFor = [&](size_t i) {
     if (paths.size() == 1) return o.output;
@@ -60,6 +88,7 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
   if (!runConversionChild(o, paths, outputFor, &run)) return 1;
 
   int errors = run.errors;
+  if (!errors && o.diff) printDiffs(paths, run.outputs);
   if (!errors) errors += writeAllOrNothing(run.outputs, std::cerr);
   if (run.hasReport) writeReport(o.reportPath, run.report);
   if (!errors && !run.depfileText.empty()) {

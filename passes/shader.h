@@ -61,6 +61,9 @@ struct SourceInfo {
   // Legacy GLSL that uses compatibility built-ins (gl_Vertex, gl_ModelViewProjectionMatrix, ...),
   // which the front end's translation declares as stereoshift_* inputs and uniforms.
   bool compatibilityBuiltIns = false;
+  // GLSL glslang refused as written and parsed as a lifted copy (transpiler/frontend/glsl_lift.h):
+  // what was lifted. The analysis ran on the copy; the output is the original text.
+  std::string liftedBecause;
 };
 
 struct SourceFile {

@@ -14,8 +14,9 @@ packages=(cmake ninja-build g++ python3 glslang-dev glslang-tools spirv-tools
           libspirv-cross-c-shared-dev spirv-cross libcli11-dev llvm-14-tools
           mesa-vulkan-drivers libvulkan-dev nlohmann-json3-dev libxxhash-dev libtomlplusplus-dev
           googletest libgtest-dev)
-# The sanitizer tree (test mode only): clang and its runtimes (ASan, UBSan, libFuzzer).
-if [ "$mode" = test ]; then packages+=(clang-14 libclang-rt-14-dev); fi
+# Test mode only: clang and its runtimes for the sanitizer tree (ASan, UBSan, libFuzzer), and piglit,
+# whose shader_runner runs the GL-side execution tests in Mesa's OpenGL driver (execution.piglit).
+if [ "$mode" = test ]; then packages+=(clang-14 libclang-rt-14-dev piglit); fi
 # Bazel (its example test, integration.bazel_example, is skipped without it): opt-in, because its
 # install and its test add about a minute to a suite that CI runs within its time on two cores.
 if [ "$mode" = test ] && [ -n "${STEREOSHIFT_WITH_BAZEL:-}" ]; then packages+=(bazel-bootstrap); fi

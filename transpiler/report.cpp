@@ -212,6 +212,16 @@ json renderStageReport(const StageRecord& record) {
   if (record.target) report["target"] = targetName(*record.target);
   if (!record.frontEndSpirvInvalid.empty()) report["front_end_spirv_invalid"] = record.frontEndSpirvInvalid;
   renderEmitFacts(record.emit, report);
+  if (!record.lifted.empty()) {
+    report["analysis"] = "lifted";
+    report["lifted"] = record.lifted;
+  }
+  if (record.textOnly) {
+    report["analysis"] = "text-only";
+    report["analysis_reason"] = record.textOnly->reason;
+    report["not_done"] = record.textOnly->notDone;
+    report["eye_params"] = record.textOnly->eyeParams;
+  }
   if (record.output == StageRecord::Output::Copied) report["output"] = "copied";
   if (record.output == StageRecord::Output::Emitted) report["output"] = "emitted";
   if (record.verified) report["verified"] = true;

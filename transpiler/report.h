@@ -44,6 +44,14 @@ struct StageRecord {
   // The back end:
   std::string frontEndSpirvInvalid;        // glslang's module does not validate (and why)
   EmitFacts emit;
+  // Shifted from the text alone (text_only_shift.h): the front end's reason, what was not done.
+  struct TextOnly {
+    std::string reason;
+    std::vector<std::string> notDone;
+    std::string eyeParams;
+  };
+  std::optional<TextOnly> textOnly;
+  std::string lifted;  // analysed on a lifted copy (frontend/glsl_lift.h): what was lifted
   enum class Output { None, Copied, Emitted } output = Output::None;
   bool verified = false;
 };

@@ -5,6 +5,7 @@
 #include "passes/pass_manager.h"
 #include "transpiler/backend/hlsl_splice.h"
 #include "transpiler/backend/splice_routes.h"
+#include "transpiler/text_only_shift.h"
 #include "transpiler/frontend/hlsl_effects.h"
 #include "transpiler/frontend/legacy_glsl.h"
 #include "transpiler/output_version.h"
@@ -94,10 +95,40 @@ StageDecision decideInputStage(const SourceFile& input, const TranspileOptions& 
   return decideStage(input.path, input.contents, options.stage, options.stageExtensions);
 }
 
+// Whether a module declares any resource variable (uniform, push constant, storage buffer, image,
+// sampler): a scan of its OpVariable instructions' storage classes.
+bool declaresResources(const std::vector<uint32_t>& words) {
+  for (size_t i = 5; i < words.size();) {
+    uint32_t count = words[i] >> 16, opcode = words[i] & 0xffff;
+    if (count == 0) break;
+    if (opcode == spv::OpVariable && i + 3 < words.size()) {
+      uint32_t storage = words[i + 3];
+      if (storage == spv::StorageClassUniformConstant || storage == spv::StorageClassUniform ||
+          storage == spv::StorageClassPushConstant || storage == spv::StorageClassStorageBuffer)
+        return true;
+    }
+    i += count;
+  }
+  return false;
+}
+
 void runFrontEnd(StagePlan& plan, const TranspileOptions& options) {
   auto started = std::chrono::steady_clock::now();
   if (!plan.stage) plan.stage = decideInputStage(*plan.input, options);
   plan.front = compileToSpirv(*plan.input, options, plan.diags, &*plan.stage);
+  // An explicit --eye-source loose-uniforms asks for OpenGL's default-block uniforms: it says a
+  // shader the source alone leaves open (desktop >= 400 / ES >= 310 with no resources of its own,
+  // which glslang reads as Vulkan GLSL first) is OpenGL GLSL, as --target-env opengl does. A shader
+  // with Vulkan resources (sets, push constants) stays Vulkan, and eye-params says why loose
+  // uniforms cannot be had there.
+  bool openGlAsked = options.eye.source == EyeSource::LooseUniforms && !options.targetEnv;
+  if (openGlAsked && plan.front.ok && plan.front.info.vulkan && !declaresResources(plan.front.spirv)) {
+    FrontEndOptions openGl = options;
+    openGl.targetEnv = TargetEnv::OpenGL45;
+    Diagnostics openGlDiags;
+    FrontEndResult reparsed = compileToSpirv(*plan.input, openGl, openGlDiags, &*plan.stage);
+    if (reparsed.ok) plan.front = std::move(reparsed);
+  }
   plan.frontEndRan = true;
   plan.frontEndMs = msSince(started);
 }
@@ -137,12 +168,62 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
     plan.words = plan.front.spirv;
     plan.info = plan.front.info;
     plan.record.dialectReason = plan.front.dialectReason;
+    plan.record.lifted = plan.front.info.liftedBecause;
     plan.includedFiles = plan.front.includedFiles;
     plan.record.includedFiles = plan.includedFiles;
     plan.record.frontEndMs = msSince(plan.started) + earlier;
     return true;
   }
   plan.record.frontEndMs = msSince(plan.started);
+  return true;
+}
+
+bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
+  if (!plan.frontEndRan || !plan.front.glslangRejected || plan.front.info.language != SourceLanguage::Glsl ||
+      !plan.stage || !plan.stage->stage || !plan.diags.hasErrors())
+    return false;
+  Stage stage = *plan.stage->stage;
+  if (!mayShiftFromText(stage, options, options)) return false;
+  // Only where glslang's refusal may be its own gap: the source uses what glslang reads more
+  // narrowly than drivers do (an #extension it enables, a line continuation, the compatibility
+  // profile), and no error is about the shader's #include files (those are the input's).
+  for (const auto& d : plan.diags.all())
+    if (d.severity == Severity::Error &&
+        (d.message.find("includ") != std::string::npos || d.message.find("requires SPIR-V") != std::string::npos ||
+         (!d.file.empty() && d.file != plan.input->path)))
+      return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
+  if (glslangGapIn(plan.input->contents).empty()) return false;  // the shader's own error, said as it is
+  TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
+  const std::string& file = plan.input->path;
+  if (!shifted.ok) {
+    plan.diags.note(file, "no shift from the text alone either: " + shifted.whyNot);
+    return false;
+  }
+  // glslang's errors say what it could not analyse; the shader itself goes to its driver as written.
+  Diagnostics kept;
+  std::string reason;
+  for (Diagnostic d : plan.diags.all()) {
+    if (d.severity == Severity::Error) {
+      if (reason.empty()) reason = d.format();
+      d.severity = Severity::Warning;
+    }
+    kept.add(std::move(d));
+  }
+  std::string notDone;
+  for (const auto& what : shifted.notDone) notDone += (notDone.empty() ? "" : ", ") + what;
+  kept.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "
+                     "done: " + notDone + "); --require-analysis makes this an error");
+  plan.diags = std::move(kept);
+  StageRecord& record = plan.record;
+  record.stage = stage;
+  record.stageReason = plan.stage->reason;
+  record.textOnly = StageRecord::TextOnly{reason, shifted.notDone, shifted.eyeParams};
+  record.emit.route = "glsl-text-only";
+  record.emit.spliceSites = shifted.sites;
+  record.output = StageRecord::Output::Emitted;
+  record.totalMs = msSince(plan.started);
+  plan.output = std::move(shifted.output);
+  plan.changed = true;
   return true;
 }
 
@@ -254,6 +335,16 @@ bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options,
                      Diagnostics& diags) {
   Diagnostics verifyDiags;
   std::string display = file + " (emitted)";
+  if (check.throughFrontEnd) {
+    StageDecision stage;
+    stage.stage = check.stage;
+    stage.reason = "the input's stage";
+    FrontEndResult again = compileToSpirv(SourceFile{file, check.text}, options, verifyDiags, &stage);
+    if (again.ok) return true;
+    diags.append(verifyDiags);
+    diags.error(file, check.failure);
+    return false;
+  }
   bool ok = check.legacy ? verifyLegacyCompiles(check.text, check.stage, check.version, check.es, display, verifyDiags)
                          : verifyCompiles(check.blankEffects ? blankEffectBlocks(check.text) : check.text, check.language,
                                           check.stage, check.entryPoint, check.vulkanSemantics, display, verifyDiags,
@@ -262,6 +353,19 @@ bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options,
   diags.append(verifyDiags);
   diags.error(file, check.failure);
   return false;
+}
+
+// The first of a route's checks that fails, as its first error ("" when all pass). Its errors go to
+// `diags` unless the route declines on a failed check.
+std::string failedCheck(const EmitResult& emitted, const TranspileOptions& options, const std::string& file,
+                        Diagnostics& diags) {
+  for (const auto& check : emitted.checks) {
+    Diagnostics checkDiags;
+    if (runCompileCheck(check, options, file, checkDiags)) continue;
+    if (!emitted.declineIfChecksFail) diags.append(checkDiags);
+    return checkDiags.hasErrors() ? checkDiags.all().front().message : check.failure;
+  }
+  return {};
 }
 
 // The module must validate before any route writes it; a module the front end already made invalid
@@ -309,14 +413,20 @@ bool emitStage(StagePlan& plan) {
       convertOtherEntryPoints(plan);
       request.otherEntries = &plan.otherEntries;
     }
+    EmitFacts before = plan.record.emit;
     EmitResult emitted = route->emit(request, plan.record.emit, plan.diags);
     if (emitted.status == EmitResult::Declined) {
+      plan.record.emit = std::move(before);
       noteDecline(plan, emitted.declinedBecause);
       continue;
     }
     if (emitted.status == EmitResult::Failed) return false;
-    for (const auto& check : emitted.checks)
-      if (!runCompileCheck(check, plan.options, file, plan.diags)) return false;
+    if (std::string failed = failedCheck(emitted, plan.options, file, plan.diags); !failed.empty()) {
+      if (!emitted.declineIfChecksFail) return false;
+      plan.record.emit = std::move(before);
+      noteDecline(plan, std::string(route->name()) + ": its text does not compile (" + failed + "); the next route writes the stage");
+      continue;
+    }
     plan.record.verified = emitted.reportsVerified;
     plan.output = std::move(emitted.output);
     plan.binaryOutput = emitted.binary;

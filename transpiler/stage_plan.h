@@ -75,6 +75,11 @@ bool parseEarly(StagePlan& plan);
 // Steps 1 and 2: false (the reason in plan.diags) when the stage cannot be converted.
 bool readStage(StagePlan& plan, const TranspileOptions& options);
 bool parseStage(StagePlan& plan);
+// Steps 1 and 2 failed because the front end could not parse a GLSL pre-rasterisation stage: the
+// text-only shift (text_only_shift.h) writes the stage instead, the front end's errors
+// becoming warnings, when the options allow it and the text is enough. False (a note in
+// plan.diags saying why, the errors kept) when it is not.
+bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options);
 // Step 1 for the stages of a pipeline, before anything else: the stage each input is, decided once.
 StageDecision decideInputStage(const SourceFile& input, const TranspileOptions& options);
 // Step 3: the options the plan converts with, from those given.

@@ -31,13 +31,15 @@ namespace {
 TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
   plan.started = std::chrono::steady_clock::now();
   bool ok = readStage(plan, options) && parseStage(plan);
+  bool fromText = !ok && shiftStageFromText(plan, options);
   if (ok) {
     chooseStageOptions(plan, options);
     ok = runStagePasses(plan) && emitStage(plan);
   }
   TranspileResult result;
+  ok = ok || fromText;
   result.ok = ok;
-  result.changed = plan.record.classification && plan.changed;
+  result.changed = fromText || (plan.record.classification && plan.changed);
   result.copiedThrough = ok && plan.copied;
   if (ok) {
     result.output = std::move(plan.output);

@@ -5,10 +5,15 @@ Converts corpus/ with `stereoshift build`, then for every shader:
   - compares the output with test/corpus/reference/<same path> byte for byte (shaders that need no
     change must come out as the very bytes of their source, and keep no reference),
   - re-compiles the output with glslangValidator (every output, copied or re-emitted),
-  - checks the classification in the JSON report against the `// stereoshift-expect:` header.
+  - checks the classification in the JSON report against the `// stereoshift-expect:` header,
+  - for every output spliced into its own text (the GLSL and HLSL source-splice routes): undoes the
+    marked edits (the blocks between the "---- stereoshift" markers, the renamed `main`, the
+    wrapped emits and returns) and requires the very bytes of the input back, so the splice changes
+    nothing a user did not see marked.
 `--update` rewrites the references instead of comparing them.
 """
 import argparse
+import difflib
 import json
 import os
 import re
@@ -113,6 +118,86 @@ def recompile(glslang, path, rel, language, reported_stage=None):
     return run.returncode == 0, run.stdout + run.stderr
 
 
+SPLICE_ROUTES = {"glsl-source-splice", "hlsl-source-splice"}
+
+
+def unwrap_calls(text, prefix):
+    """`prefix_T(expr)` -> `expr` for every call of a helper whose name starts with `prefix`."""
+    out, i = [], 0
+    pattern = re.compile(r"\b%s\w*\(" % re.escape(prefix))
+    while True:
+        m = pattern.search(text, i)
+        if not m:
+            out.append(text[i:])
+            return "".join(out)
+        out.append(text[i:m.start()])
+        depth, j = 1, m.end()
+        while j < len(text) and depth:
+            depth += {"(": 1, ")": -1}.get(text[j], 0)
+            j += 1
+        out.append(text[m.end():j - 1])
+        i = j
+
+
+def undo_inline_edits(text):
+    """The splices' edits inside lines undone: renamed entry points, wrapped emits, returns and out
+    parameters, attributes moved to a wrapper, one-line marked insertions."""
+    text = re.sub(r"/\* ---- stereoshift ---- \*/.*?/\* ---- end stereoshift ---- \*/ ", "", text)
+    text = re.sub(r"/\* stereoshift: moved to the wrapper: (.*?) \*/", r"\1", text)
+    text = re.sub(r"\{ stereoshift_shiftPosition\(\); (.*?) \}", r"\1", text)
+    # HLSL `out` parameters shifted before a return (`{ p = stereoshift_shift_T(p); return; }`) or
+    # at the end of the body (a line of its own, or before the closing brace).
+    text = re.sub(r"\{ ((?:\w+ = stereoshift_shift_\w+\(\w+\); )+)(return\b[^;]*;) \}", r"\2", text)
+    text = re.sub(r"(?m)^[ \t]*(?:\w+ = stereoshift_shift_\w+\(\w+\); ?)+\r?\n", "", text)
+    text = re.sub(r"(?:\w+ = stereoshift_shift_\w+\(\w+\); )+(?=\})", "", text)
+    text = unwrap_calls(text, "stereoshift_shift_")
+    return re.sub(r"\b(\w+)_stereoshift_mono\b", r"\1", text)
+
+
+def only_marked_edits(source, output):
+    """Whether `output` is `source` plus the splices' marked edits: the inline edits undone, every
+    block between a "// ---- stereoshift" line and "// ---- end stereoshift ----" removed (with a
+    blank line beside it, which the splices add to set it apart), the lines must be the source's."""
+    lines = undo_inline_edits(output).splitlines(True)
+    kept, optional, i = [], [], 0
+    while i < len(lines):
+        if lines[i].startswith("// ---- stereoshift"):
+            j = i
+            while j < len(lines) and not lines[j].startswith("// ---- end stereoshift ----"):
+                j += 1
+            if j == len(lines):
+                return False  # a block that does not end
+            if kept and not kept[-1].strip():
+                optional[-1] = True
+            i = j + 1
+            if i < len(lines) and not lines[i].strip():
+                kept.append(lines[i])
+                optional.append(True)
+                i += 1
+            continue
+        kept.append(lines[i])
+        optional.append(False)
+        i += 1
+    want = source.splitlines(True)
+    # A blank line beside a block may be the splice's or the source's: match with that choice open.
+    seen = set()
+
+    def match(a, b):
+        while True:
+            if (a, b) in seen:
+                return False
+            seen.add((a, b))
+            if b == len(kept):
+                return a == len(want)
+            if optional[b] and match(a, b + 1):
+                return True
+            if a == len(want) or want[a] != kept[b]:
+                return False
+            a, b = a + 1, b + 1
+
+    return match(0, 0)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--stereoshift", required=True)
@@ -134,6 +219,7 @@ def main():
         by_file = {os.path.relpath(s["file"], args.corpus): s for s in report["shaders"]}
 
         checked = 0
+        spliced = 0
         for root, _, files in os.walk(args.corpus):
             for name in sorted(files):
                 src = os.path.join(root, name)
@@ -164,6 +250,14 @@ def main():
                     failures.append("%s: output does not compile:\n%s" % (rel, log))
                 ref = os.path.join(args.reference, rel)
                 data = open(produced, "rb").read()
+                if entry.get("route") in SPLICE_ROUTES:
+                    source = open(src, "rb").read().decode("utf-8", "surrogateescape")
+                    spliced_text = data.decode("utf-8", "surrogateescape")
+                    if not only_marked_edits(source, spliced_text):
+                        diff = "".join(difflib.unified_diff(source.splitlines(True), spliced_text.splitlines(True),
+                                                            "input", "output"))
+                        failures.append("%s: edits outside the marked regions:\n%s" % (rel, diff[:3000]))
+                    spliced += 1
                 if entry.get("output") == "copied":
                     # Nothing injected: the output must be the input, byte for byte; no reference kept.
                     if data != open(src, "rb").read():
@@ -187,7 +281,7 @@ def main():
 
     for f in failures:
         print("FAIL:", f)
-    print("corpus: %d shaders checked" % checked)
+    print("corpus: %d shaders checked, %d spliced into their own text" % (checked, spliced))
     print("%d passed, %d failed" % (checked - len(failures), len(failures)) if len(failures) <= checked
           else "0 passed, %d failed" % len(failures))
     return 1 if failures else 0

@@ -51,7 +51,8 @@ TEST(BackEndRoutes, AskedInThisOrderWithTheReemitLast) {
   std::vector<std::string> names;
   for (const auto& r : routes()) names.push_back(r->name());
   EXPECT_EQ(names, (std::vector<std::string>{"copy-through", "spirv", "spirv-asm", "hlsl-source-splice",
-                                              "glsl-source-splice", "spirv-cross"}));
+                                              "legacy-glsl-source-splice", "glsl-source-splice",
+                                              "spirv-cross"}));
   EXPECT_FALSE(route("copy-through").needsValidModule());
   EXPECT_TRUE(route("spirv").needsValidModule());
   EXPECT_TRUE(route("hlsl-source-splice").needsOtherEntryPoints());
@@ -122,19 +123,74 @@ TEST(BackEndRoutes, HlslSpliceCannotCarryWhatOnlyTheIrHolds) {
 TEST(BackEndRoutes, LegacyGlslSpliceKeepsOldVertexShadersInTheirDialect) {
   Stage_ gl120(SourceLanguage::Glsl, Stage::Vertex, 120), es100(SourceLanguage::Glsl, Stage::Vertex, 100, true);
   for (Stage_* s : {&gl120, &es100}) s->context->eye.source = EyeSource::LooseUniforms;
-  EXPECT_EQ(gl120.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Accept);
-  EXPECT_EQ(es100.ask("glsl-source-splice", TargetLanguage::Essl).kind, RouteDecision::Accept);
-  EXPECT_EQ(es100.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
-  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Vertex, 330).ask("glsl-source-splice", TargetLanguage::Glsl).kind,
+  EXPECT_EQ(gl120.ask("legacy-glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Accept);
+  EXPECT_EQ(es100.ask("legacy-glsl-source-splice", TargetLanguage::Essl).kind, RouteDecision::Accept);
+  EXPECT_EQ(es100.ask("legacy-glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Vertex, 330).ask("legacy-glsl-source-splice", TargetLanguage::Glsl).kind,
             RouteDecision::Decline);
-  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Fragment, 120).ask("glsl-source-splice", TargetLanguage::Glsl).kind,
+  EXPECT_EQ(Stage_(SourceLanguage::Glsl, Stage::Fragment, 120).ask("legacy-glsl-source-splice", TargetLanguage::Glsl).kind,
             RouteDecision::Decline);
   gl120.options.targetVersion = 120;  // an explicit version asks for a re-emit
-  EXPECT_EQ(gl120.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  EXPECT_EQ(gl120.ask("legacy-glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
   Stage_ block(SourceLanguage::Glsl, Stage::Vertex, 120);  // eye parameters in a block: 1xx has none
-  RouteDecision refused = block.ask("glsl-source-splice", TargetLanguage::Glsl);
+  RouteDecision refused = block.ask("legacy-glsl-source-splice", TargetLanguage::Glsl);
   EXPECT_EQ(refused.kind, RouteDecision::Refuse);
   EXPECT_NE(refused.why.find("use --eye-source loose-uniforms"), std::string::npos);
+}
+
+TEST(BackEndRoutes, GlslSpliceTakesEveryPreRasterStageKeptInItsDialect) {
+  for (Stage stage : {Stage::Vertex, Stage::TessEvaluation, Stage::Geometry}) {
+    Stage_ s(SourceLanguage::Glsl, stage, 330);
+    s.context->shiftPosition = true;
+    s.changedBy("stereo-shift");
+    s.changedBy("eye-params");
+    EXPECT_EQ(s.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Accept) << stageName(stage);
+    EXPECT_EQ(s.ask("glsl-source-splice", TargetLanguage::Hlsl).kind, RouteDecision::Decline);
+  }
+  Stage_ es(SourceLanguage::Glsl, Stage::Vertex, 300, true);
+  es.context->shiftPosition = true;
+  es.changedBy("stereo-shift");
+  EXPECT_EQ(es.ask("glsl-source-splice", TargetLanguage::Essl).kind, RouteDecision::Accept);
+  EXPECT_EQ(es.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  // Not the splice's: fragment, tessellation-control, compute and mesh stages; another version;
+  // --force-reemit.
+  for (Stage stage : {Stage::Fragment, Stage::TessControl, Stage::Compute, Stage::Mesh})
+    EXPECT_EQ(Stage_(SourceLanguage::Glsl, stage, 450).ask("glsl-source-splice", TargetLanguage::Glsl).kind,
+              RouteDecision::Decline);
+  Stage_ versioned(SourceLanguage::Glsl, Stage::Vertex, 330);
+  versioned.context->shiftPosition = true;
+  versioned.options.targetVersion = 450;
+  EXPECT_EQ(versioned.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  Stage_ forced(SourceLanguage::Glsl, Stage::Vertex, 330);
+  forced.context->shiftPosition = true;
+  forced.options.forceReemit = true;
+  EXPECT_EQ(forced.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+}
+
+TEST(BackEndRoutes, GlslSpliceLeavesToTheReemitWhatOnlyTheIrCarries) {
+  Stage_ perEye(SourceLanguage::Glsl, Stage::Vertex, 450);
+  perEye.context->shiftPosition = true;
+  perEye.changedBy("stereo-shift");
+  perEye.changedBy("hud-at-depth");
+  RouteDecision d = perEye.ask("glsl-source-splice", TargetLanguage::Glsl);
+  EXPECT_EQ(d.kind, RouteDecision::Decline);
+  EXPECT_TRUE(d.noted);
+  EXPECT_NE(d.why.find("cannot carry what the hud-at-depth pass changed"), std::string::npos) << d.why;
+  Stage_ multiview(SourceLanguage::Glsl, Stage::Vertex, 450);
+  multiview.context->shiftPosition = true;
+  multiview.options.eye.select = EyeSelect::ViewIndex;
+  EXPECT_EQ(multiview.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  Stage_ fused(SourceLanguage::Glsl, Stage::Vertex, 330);  // GLSL 330 has no fma
+  fused.context->shiftPosition = true;
+  fused.changedBy("stereo-shift");
+  fused.options.fusedShift = true;
+  RouteDecision f = fused.ask("glsl-source-splice", TargetLanguage::Glsl);
+  EXPECT_EQ(f.kind, RouteDecision::Decline);
+  EXPECT_NE(f.why.find("needs fma"), std::string::npos) << f.why;
+  Stage_ declaredOnly(SourceLanguage::Glsl, Stage::Vertex, 450);  // --pass eye-params: no shift to write
+  declaredOnly.context->shiftPosition = true;
+  declaredOnly.changedBy("eye-params");
+  EXPECT_EQ(declaredOnly.ask("glsl-source-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
 }
 
 TEST(BackEndRoutes, ReemitTakesWhatIsLeft) {

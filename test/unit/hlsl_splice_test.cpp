@@ -253,7 +253,7 @@ TEST(HlslSplice, DomainWrapperCarriesTheAttributesAndShiftsTheResult) {
   ASSERT_TRUE(r.ok) << r.line << ":" << r.column << ": " << r.error;
   EXPECT_EQ(r.sites, 1);
   // The mono function keeps its body under the new name; its attribute is commented out.
-  EXPECT_NE(r.text.find("/* [domain(\"tri\")] */\nDSOut DSMain_stereoshift_mono(PatchTess tess, float3 bary : "
+  EXPECT_NE(r.text.find("/* stereoshift: moved to the wrapper: [domain(\"tri\")] */\nDSOut DSMain_stereoshift_mono(PatchTess tess, float3 bary : "
                         "SV_DomainLocation, const OutputPatch<HSControlPoint, 3> patch)\n{\n    DSOut o;"),
             std::string::npos)
       << r.text;
@@ -266,7 +266,7 @@ TEST(HlslSplice, DomainWrapperCarriesTheAttributesAndShiftsTheResult) {
   ASSERT_NE(w, std::string::npos) << r.text;
   EXPECT_LT(r.text.find("return o;\n}"), w);
   EXPECT_EQ(countOf(r.text, "[domain(\"tri\")]"), 2);  // the wrapper's and the comment's
-  EXPECT_EQ(countOf(r.text, "/* [domain(\"tri\")] */"), 1);
+  EXPECT_EQ(countOf(r.text, "/* stereoshift: moved to the wrapper: [domain(\"tri\")] */"), 1);
   EXPECT_NE(r.text.find("stereoshift_v.position.x + (eyeSign * separation) * (stereoshift_v.position.w - "
                         "convergence)"),
             std::string::npos);

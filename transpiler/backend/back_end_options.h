@@ -12,6 +12,9 @@ struct BackEndOptions {
   std::optional<int> targetVersion;  // GLSL/ESSL version or HLSL shader model (50, 51, 60, ...)
   bool verify = false;               // recompile emitted GLSL/HLSL with glslang
   bool forceReemit = false;          // re-emit even when nothing changed
+  // --require-analysis: a stage glslang cannot parse is an error, never shifted from its text alone
+  // (text_only_shift.h).
+  bool requireAnalysis = false;
 };
 
 }  // namespace stereoshift

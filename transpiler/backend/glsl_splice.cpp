@@ -1,5 +1,5 @@
-// This turns the passes' decisions for a legacy GLSL vertex shader into stereo GLSL of the same
-// dialect by a source splice: see glsl_splice.h.
+// This turns the passes' decisions for a GLSL vertex, tessellation-evaluation or geometry shader into
+// stereo GLSL of the same dialect by a source splice: see glsl_splice.h.
 #include "transpiler/backend/glsl_splice.h"
 
 #include "transpiler/source/lexer.h"
@@ -15,11 +15,14 @@ namespace stereoshift {
 namespace {
 
 constexpr const char* kMonoMain = "main_stereoshift_mono";
+constexpr const char* kShiftHelper = "stereoshift_shiftPosition";
+constexpr const char* kShiftedX = "stereoshift_x";
 
 struct Word {
   size_t begin, end;
   std::string text;     // as spelled (line splices removed)
   std::string splices;  // the line splices inside it, kept by a rename
+  bool inDefine = false;  // in a #define's body
 };
 
 // The identifiers and punctuation of `text` outside comments and outside directives other than
@@ -37,7 +40,7 @@ std::vector<Word> words(const std::string& text) {
     }
     if (t.inDirective() && (t.directive != source::DirectiveKind::Define || k == defineName)) continue;
     if (t.kind == source::TokenKind::Identifier || t.kind == source::TokenKind::Punctuation)
-      out.push_back({t.begin, t.end, source::spelledString(text, t), source::splicesOf(text, t)});
+      out.push_back({t.begin, t.end, source::spelledString(text, t), source::splicesOf(text, t), t.inDirective()});
   }
   return out;
 }
@@ -68,12 +71,113 @@ std::string conditionText(const GlslSpliceOptions& spec, const std::string& p) {
   return stereo;
 }
 
-std::string shiftedX(const GlslSpliceOptions& spec, const std::string& p) {
-  return p + ".x + (" + spec.eyeSignName + " * " + spec.separationName + ") * (" + p + ".w - " +
-         spec.convergenceName + ")";
+std::string shiftedX(const GlslSpliceOptions& spec, const std::string& p, bool fused) {
+  std::string scale = spec.eyeSignName + " * " + spec.separationName;
+  if (fused) return "fma(" + scale + ", " + p + ".w - " + spec.convergenceName + ", " + p + ".x)";
+  return p + ".x + (" + scale + ") * (" + p + ".w - " + spec.convergenceName + ")";
+}
+
+// The statements that shift gl_Position under the cutoff and give the halo copies the shifted
+// value, each line starting with `ind`. With `precise` (GLSL 400 / ESSL 320) the shifted x is a
+// precise temporary, so no compiler contracts it differently in a depth pre-pass and the colour pass.
+std::string shiftStatements(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
+  const std::string p = "gl_Position";
+  bool modern = glslHasPreciseAndFma(o.version, o.es);
+  bool precise = modern && o.precise;
+  std::string x = shiftedX(o, p, modern && o.fused), t;
+  auto assign = [&](const std::string& at, const std::string& value) {
+    if (!precise) return at + p + ".x = " + value + ";" + nl;
+    return at + "precise float " + kShiftedX + " = " + value + ";" + nl + at + p + ".x = " + kShiftedX + ";" + nl;
+  };
+  if (o.form == ShiftForm::Select) {
+    t += assign(ind, "(" + conditionText(o, p) + ") ? " + x + " : " + p + ".x");
+  } else {
+    t += ind + "if (" + conditionText(o, p) + ")" + nl + ind + "{" + nl;
+    t += assign(ind + ind, x) + ind + "}" + nl;
+  }
+  for (const auto& copy : o.haloCopies) t += ind + copy + " = " + p + ";" + nl;
+  return t;
+}
+
+std::string declarationText(const GlslSpliceOptions& o, const std::string& nl) {
+  std::string t;
+  if (o.declarations.empty())
+    for (const std::string* name : {&o.eyeSignName, &o.separationName, &o.convergenceName})
+      t += "uniform float " + *name + ";" + nl;
+  for (const auto& line : o.declarations) t += line + nl;
+  return t;
+}
+
+bool isEmit(const std::string& word) { return word == "EmitVertex" || word == "EmitStreamVertex"; }
+
+// Geometry shaders: the statements `EmitVertex();` / `EmitStreamVertex(n);` wrapped as
+// `{ stereoshift_shiftPosition(); ... }`, and the helper's prototype before every top-level
+// function that emits (each #if branch that defines one gets its own). Line numbers do not move.
+bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::string& text, GlslSpliceResult& result) {
+  std::map<size_t, std::string> inserts;  // offset -> text inserted there
+  const std::string prototype = std::string("/* ---- stereoshift ---- */ void ") + kShiftHelper +
+                                "(); /* ---- end stereoshift ---- */ ";
+  size_t itemStart = 0;  // the word that starts the top-level declaration being read
+  int depth = 0;
+  std::vector<bool> functionBody;  // per open brace: whether it opens a function body
+  for (size_t k = 0; k < w.size(); ++k) {
+    if (w[k].inDefine) {
+      if (isEmit(w[k].text)) {
+        result.error = "the shader emits vertices inside a macro";
+        return false;
+      }
+      continue;
+    }
+    const std::string& t = w[k].text;
+    if (t == "{") {
+      size_t before = k;
+      while (before > 0 && w[before - 1].inDefine) --before;
+      functionBody.push_back(depth == 0 && before > 0 && w[before - 1].text == ")");
+      ++depth;
+    } else if (t == "}" && depth > 0) {
+      --depth;
+      bool body = functionBody.back();
+      functionBody.pop_back();
+      if (depth == 0 && body) itemStart = k + 1;
+    } else if (t == ";" && depth == 0) {
+      itemStart = k + 1;
+    } else if (isEmit(t) && k + 1 < w.size() && w[k + 1].text == "(" && !(k > 0 && w[k - 1].text == ".")) {
+      int parens = 0;
+      size_t close = k + 1;
+      for (; close < w.size() && !w[close].inDefine; ++close) {
+        if (w[close].text == "(") ++parens;
+        if (w[close].text == ")" && --parens == 0) break;
+      }
+      if (depth == 0 || close + 1 >= w.size() || w[close].text != ")" || w[close + 1].text != ";" ||
+          w[close + 1].inDefine) {
+        result.error = "`" + t + "` is not called as a statement of its own";
+        return false;
+      }
+      inserts[w[k].begin] += std::string("{ ") + kShiftHelper + "(); ";
+      inserts[w[close + 1].end] += " }";
+      size_t at = w[itemStart].begin;
+      if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
+      ++result.sites;
+      k = close + 1;
+    }
+  }
+  if (result.sites == 0) {
+    result.error = "the shader calls neither EmitVertex nor EmitStreamVertex in its own text";
+    return false;
+  }
+  size_t pos = 0;
+  for (const auto& [at, insert] : inserts) {
+    text.append(source, pos, at - pos);
+    text += insert;
+    pos = at;
+  }
+  text.append(source, pos, std::string::npos);
+  return true;
 }
 
 }  // namespace
+
+bool glslHasPreciseAndFma(int version, bool es) { return es ? version >= 320 : version >= 400; }
 
 std::vector<std::string> exactPositionCopies(const std::string& source) {
   std::vector<Word> w = words(source);
@@ -97,42 +201,42 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
   GlslSpliceResult result;
   std::string nl = source.find("\r\n") != std::string::npos ? "\r\n" : "\n";
   std::vector<Word> w = words(source);
-  std::string text;
-  size_t pos = 0;
-  int mains = 0;
-  for (const auto& word : w) {
-    if (word.text != "main") continue;
-    text.append(source, pos, word.begin - pos);
-    text += kMonoMain + word.splices;  // a `main` written across a line splice keeps its lines
-    pos = word.end;
-    ++mains;
-  }
-  text.append(source, pos, std::string::npos);
-  if (mains == 0) {
-    result.error = "the shader defines no `main`";
-    return result;
-  }
   for (const auto& word : w)
-    if (word.text == kMonoMain) {
-      result.error = std::string("the shader already uses the name `") + kMonoMain + "`";
+    for (const char* ours : {kMonoMain, kShiftHelper, kShiftedX})
+      if (word.text == ours) {
+        result.error = std::string("the shader already uses the name `") + ours + "` (is it converted already?)";
+        return result;
+      }
+  const std::string ind = "    ";
+  std::string text;
+  std::string t;
+  if (options.stage == Stage::Geometry) {
+    if (!wrapEmits(source, w, text, result)) return result;
+    if (!text.empty() && text.back() != '\n') t += nl;
+    t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
+    t += declarationText(options, nl);
+    t += std::string("void ") + kShiftHelper + "()" + nl + "{" + nl + shiftStatements(options, ind, nl) + "}" + nl;
+  } else {
+    size_t pos = 0;
+    for (const auto& word : w) {
+      if (word.text != "main") continue;
+      text.append(source, pos, word.begin - pos);
+      text += kMonoMain + word.splices;  // a `main` written across a line splice keeps its lines
+      pos = word.end;
+      ++result.sites;
+    }
+    text.append(source, pos, std::string::npos);
+    if (result.sites == 0) {
+      result.error = "the shader defines no `main` in its own text";
       return result;
     }
-
-  const std::string p = "gl_Position", ind = "    ";
-  std::string t;
-  if (!text.empty() && text.back() != '\n') t += nl;
-  t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
-  for (const std::string* name : {&options.eyeSignName, &options.separationName, &options.convergenceName})
-    t += "uniform float " + *name + ";" + nl;
-  t += "void main()" + nl + "{" + nl + ind + kMonoMain + "();" + nl;
-  if (options.form == ShiftForm::Select) {
-    t += ind + p + ".x = (" + conditionText(options, p) + ") ? " + shiftedX(options, p) + " : " + p + ".x;" + nl;
-  } else {
-    t += ind + "if (" + conditionText(options, p) + ")" + nl + ind + "{" + nl;
-    t += ind + ind + p + ".x = " + shiftedX(options, p) + ";" + nl + ind + "}" + nl;
+    result.sites = 1;
+    if (!text.empty() && text.back() != '\n') t += nl;
+    t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
+    t += declarationText(options, nl);
+    t += "void main()" + nl + "{" + nl + ind + kMonoMain + "();" + nl + shiftStatements(options, ind, nl) + "}" + nl;
   }
-  for (const auto& copy : options.haloCopies) t += ind + copy + " = " + p + ";" + nl;
-  t += "}" + nl + "// ---- end stereoshift ----" + nl;
+  t += "// ---- end stereoshift ----" + nl;
   result.text = text + t;
   result.ok = true;
   return result;

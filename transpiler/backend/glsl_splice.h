@@ -1,19 +1,31 @@
-// Legacy GLSL source splice: this turns an ESSL 100 / desktop GLSL 110-150 vertex shader into its
-// stereo version in the same dialect, drop-in. The passes ran on the analysis translation
-// (transpiler/frontend/legacy_glsl.h); their decisions are rendered back into the user's own text:
+// GLSL source splice: this turns a GLSL / ESSL vertex, tessellation-evaluation or geometry shader
+// of any version into its stereo version in the same dialect, drop-in: the original text with a
+// few marked edits. The passes decided what to change (for ESSL 100 / GLSL 1xx on the analysis
+// translation, transpiler/frontend/legacy_glsl.h); their decisions are rendered into the user's own
+// text, so every declaration, layout, qualifier, struct or block varying, #version line, #extension,
+// comment, #include, #ifdef branch and macro stays as written:
 //
-//   - every token `main` (outside comments) becomes `main_stereoshift_mono`, so nothing the
-//     application binds by name (attributes, varyings, uniforms) is renamed;
-//   - appended at the end of the file: the eye parameters as loose uniforms (ESSL 100 has no
-//     blocks; the names --eye-source loose-uniforms uses, after clash resolution) and a new `main`
-//     that calls the mono one, then shifts gl_Position under the cutoff, then gives the outputs that
-//     are exact copies of the clip position (halo) the shifted value.
+//   - vertex and tessellation-evaluation shaders: every token `main` (outside comments) becomes
+//     `main_stereoshift_mono`, and a new `main` appended at the end of the file calls it, then
+//     shifts gl_Position under the cutoff, then gives the outputs that are exact copies of the clip
+//     position (halo) the shifted value;
+//   - geometry shaders: every statement `EmitVertex();` / `EmitStreamVertex(n);` becomes
+//     `{ stereoshift_shiftPosition(); EmitVertex(); }` (the shift of the vertex about to be
+//     emitted), with a prototype of the helper before each function that emits and its definition
+//     appended at the end of the file;
+//   - appended with it: the eye parameters, as the passes declared them (`declarations`: a uniform
+//     block with its layout, or loose uniforms when none are given).
+//
+// Every edit outside the appended block is one of those renames or wraps; the appended block and
+// each prototype sit between the marker comments "---- stereoshift" and "---- end stereoshift".
 //
 // The shift is the ShiftSpec's (passes/shift_emitter.h): `x + (eyeSign*separation)*(w - convergence)`
 // under `eyeSign != 0 && |w - 1| > epsilon && w finite` (or `w != 1`, or no cutoff), as a branch or a
 // select. GLSL 1xx has neither `precise` nor `fma` nor (below 130) `isinf`: the plain form is used
 // and "finite" is `abs(w) <= 3.40282347e+38` (false for inf and NaN, as `!isinf(w)` with the other
-// terms is). Every byte of the original stays where it was.
+// terms is). From GLSL 400 / ESSL 320 on, the shift is a `precise` temporary when the spec asks
+// for NoContraction, and `fma` when it asks for the fused form. Every byte of the original stays
+// where it was.
 #pragma once
 
 #include "passes/diagnostics.h"
@@ -28,6 +40,11 @@ namespace stereoshift {
 struct GlslSpliceOptions : ShiftSpec {
   int version = 100;
   bool es = true;
+  Stage stage = Stage::Vertex;  // Vertex, TessEvaluation or Geometry
+  // The eye parameters' declaration, one line each; empty: `uniform float <name>;` for the three
+  // names of the spec (loose uniforms). With a block, the spec's names are its members as the shift
+  // reads them (`stereo.eyeSign`).
+  std::vector<std::string> declarations;
   // Outputs (as written in the source) that are exact copies of gl_Position: given the shifted value.
   std::vector<std::string> haloCopies;
 };
@@ -37,7 +54,11 @@ struct GlslSpliceResult {
   std::string text;
   std::string error;
   int line = 0, column = 0;  // where the problem is; 0: whole file
+  int sites = 0;             // places that shift: 1 for a wrapped main, one per emit of a geometry shader
 };
+
+// Whether GLSL `version` (ESSL when `es`) has `precise` and `fma` (GLSL 400, ESSL 320).
+bool glslHasPreciseAndFma(int version, bool es);
 
 GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOptions& options);
 

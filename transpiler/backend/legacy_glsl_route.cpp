@@ -14,24 +14,25 @@
 namespace stereoshift {
 
 bool takesLegacyGlslRoute(const SourceInfo& info, TargetLanguage target, const BackEndOptions& options) {
-  bool legacy = info.language == SourceLanguage::Glsl && !info.vulkan &&
-                (info.es ? info.version < 300 : info.version < 330);
-  return legacy && info.stage == Stage::Vertex && target == (info.es ? TargetLanguage::Essl : TargetLanguage::Glsl) &&
+  return isLegacyGlslDialect(info) && info.stage == Stage::Vertex && target == (info.es ? TargetLanguage::Essl : TargetLanguage::Glsl) &&
          !options.targetVersion && !options.forceReemit;
 }
 
-namespace {
+bool isLegacyGlslDialect(const SourceInfo& info) {
+  return info.language == SourceLanguage::Glsl && !info.vulkan && (info.es ? info.version < 300 : info.version < 330);
+}
 
-// The source's name of a name in the analysis translation (stereoshift_TexCoord -> gl_TexCoord).
 std::string sourceName(const std::string& translated) {
   static constexpr std::string_view kPrefix = "stereoshift_";
   if (translated.starts_with(kPrefix)) return "gl_" + translated.substr(kPrefix.size());
   return translated;
 }
 
+namespace {
+
 class LegacyGlslRoute final : public BackEndRoute {
  public:
-  const char* name() const override { return "glsl-source-splice"; }
+  const char* name() const override { return "legacy-glsl-source-splice"; }
 
   RouteDecision accepts(const EmitRequest& r) const override {
     if (!takesLegacyGlslRoute(r.context.source, r.target, r.options))
@@ -88,6 +89,8 @@ class LegacyGlslRoute final : public BackEndRoute {
     check.text = result.output;
     check.stage = ctx.source.stage;
     check.legacy = true;
+    // A lifted copy's source (frontend/glsl_lift.h): through the front end, which lifts it again.
+    check.throughFrontEnd = !ctx.source.liftedBecause.empty();
     check.version = ctx.source.version;
     check.es = ctx.source.es;
     check.failure = "the emitted shader does not compile at its original version";

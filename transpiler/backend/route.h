@@ -57,6 +57,10 @@ struct CompileCheck {
   std::string entryPoint = "main";
   bool vulkanSemantics = false;
   bool legacy = false;          // GLSL 1xx / ESSL 100 at `version`, AST only (verifyLegacyCompiles)
+  // Through the front end, as the input was read (the analysis translation of 1xx included): for
+  // dialects whose built-ins glslang declares only in that translation (compatibility-profile
+  // geometry stages' gl_FrontColor, ...).
+  bool throughFrontEnd = false;
   int version = 0;
   bool es = false;
   bool blankEffects = false;    // compile with effect-file technique / state blocks blanked
@@ -72,6 +76,9 @@ struct EmitResult {
   std::vector<CompileCheck> checks;
   bool reportsVerified = false;         // the report says "verified" once the checks pass
   std::string declinedBecause;          // Declined: why (the next route takes the stage)
+  // A check that fails declines (with the compiler's first error as the note) instead of failing
+  // the stage: the next route, which carries everything, takes it.
+  bool declineIfChecksFail = false;
 };
 
 // Whether a route takes a stage: Accept; Decline (the next route may, with `why` noted when it
@@ -108,7 +115,8 @@ bool sameLanguageOutput(const SourceInfo& info, TargetLanguage target, const Bac
 std::vector<std::string> changesBeyond(const RunRecord& record, std::initializer_list<std::string_view> rendered);
 
 // The routes in the order the driver asks them: copy-through, SPIR-V binary, SPIR-V assembly, the
-// HLSL source splice, the legacy GLSL source splice, SPIRV-Cross's re-emit (which takes the rest).
+// HLSL source splice, the legacy GLSL source splice, the GLSL source splice, SPIRV-Cross's re-emit
+// (which takes the rest).
 const std::vector<std::unique_ptr<BackEndRoute>>& routes();
 
 }  // namespace stereoshift

@@ -5,6 +5,7 @@
 // glslang_invocation.cpp, #include resolved by include_resolver.cpp; recompile.cpp checks output.
 #include "transpiler/frontend/front_end.h"
 
+#include "transpiler/frontend/glsl_lift.h"
 #include "transpiler/frontend/glslang_invocation.h"
 #include "transpiler/frontend/hlsl_effects.h"
 #include "transpiler/frontend/language_detect.h"
@@ -153,7 +154,21 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
     }
     if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
   }
+  // Refused as written: a lifted copy (glsl_lift.h) for the analysis, OpenGL GLSL only.
+  std::string lifted;
+  if (!best->ok && !v.es) {
+    LiftedGlsl copy = liftGlsl(text);
+    if (copy.lifted) {
+      Attempt a = compileGlslangOnce(input, copy.text, stage, SourceLanguage::Glsl, Client::OpenGL, "main", options);
+      if (a.ok) {
+        a.info.vulkan = false;
+        best = std::move(a);
+        lifted = copy.what;
+      }
+    }
+  }
   if (!best->ok) {
+    result.glslangRejected = true;
     diags.append(best->diags);
     if (decided.source == LanguageSource::Content && v.begin == std::string::npos)
       diags.note(input.path, "parsed as GLSL (" + decided.reason + "); if this is HLSL, say so with -x hlsl");
@@ -167,6 +182,7 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   result.info.version = v.version;
   result.info.es = v.es;
   result.info.compatibilityBuiltIns = usesCompatibilityBuiltIns;
+  result.info.liftedBecause = lifted;
   result.info.entryPoint = "main";
   result.includedFiles = std::move(best->included);
 }

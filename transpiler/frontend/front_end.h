@@ -26,6 +26,9 @@ struct FrontEndResult {
   SourceInfo info;
   std::vector<std::string> includedFiles;
   std::string dialectReason;  // GLSL without #version or below 330: why this dialect (legacy_glsl.h)
+  // GLSL: glslang itself refused the text (after the source limits, the #version line and the
+  // legacy translation passed), so its errors may be its own gaps rather than the shader's.
+  bool glslangRejected = false;
 };
 
 // Parses `input` into SPIR-V. Errors go to `diags` in file:line:col form. `stage`: the stage the

@@ -1,5 +1,5 @@
 // --cutoff-epsilon 0 reproduces the driver's exact rule: shift when w != 1.0 (ordered, so a NaN w
-// stays unshifted; an infinite w too), with no abs() and no tolerance constant.
+// stays unshifted; an infinite w too), with no absolute value and no tolerance constant.
 // RUN: %stereoshift --verify --cutoff-epsilon 0 %s -o - | %rmchecks | FileCheck %s
 // RUN: %stereoshift --cutoff-epsilon 0 --target spirv-asm %s -o - | %rmchecks | FileCheck %s --check-prefix=SPIRV
 #version 450
@@ -9,7 +9,7 @@ void main() {
   gl_Position = camera.viewProj * vec4(inPosition, 1.0);
 }
 // CHECK-NOT: abs(
-// CHECK: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((gl_Position.w != 1.0) && (!isinf(gl_Position.w))))
+// CHECK: if (stereo.eyeSign != 0.0 && gl_Position.w != 1.0 && !isinf(gl_Position.w))
 // CHECK-NEXT: {
 // CHECK: gl_Position.x =
 // CHECK-NOT: abs(

@@ -8,8 +8,8 @@ layout(location = 0) in vec3 inPosition;
 void main() {
   gl_Position = camera.viewProj * vec4(inPosition, 1.0);
 }
-// CHECK: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{0\.00100000004[0-9]*}}) && (!isinf(gl_Position.w))))
+// CHECK: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 0.00100000005 && !isinf(gl_Position.w))
 // SPIRV: %float_0_00100000005 = OpConstant %float 0.00100000005
 // SPIRV: OpExtInst %float {{%[0-9]+}} FAbs
 // SPIRV-NEXT: OpFOrdGreaterThan %bool {{%[0-9]+}} %float_0_00100000005
-// DEFAULT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
+// DEFAULT: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))

@@ -1,5 +1,5 @@
 // --eye-source=loose-uniforms asks for loose OpenGL uniforms even in a GL shader that only uses a
-// uniform block (where the default would be the StereoParams block).
+// uniform block (where the default would be the uniform block).
 // RUN: %stereoshift --verify --eye-source loose-uniforms %s -o - | %rmchecks | FileCheck %s
 // RUN: %stereoshift --verify %s -o - | %rmchecks | FileCheck %s --check-prefix=AUTO
 #version 330
@@ -12,7 +12,7 @@ void main() {
 // CHECK-DAG: {{^}}uniform float eyeSign;
 // CHECK-DAG: {{^}}uniform float separation;
 // CHECK-DAG: {{^}}uniform float convergence;
-// CHECK: float {{_[0-9]+}} = eyeSign * separation;
+// CHECK: (eyeSign * separation)
 // AUTO: uniform StereoParams
 // AUTO-NOT: {{^}}uniform float eyeSign;
 // AUTO: stereo.eyeSign * stereo.separation

@@ -8,7 +8,7 @@ layout(location = 0) in vec3 inPosition;
 void main() {
   gl_Position = camera.viewProj * vec4(inPosition, 1.0);
 }
-// CHECK: layout(push_constant, std430) uniform StereoParams
+// CHECK: layout(push_constant) uniform StereoParams
 // CHECK-NEXT: {
 // CHECK-NEXT: float eyeSign;
 // CHECK-NEXT: float separation;

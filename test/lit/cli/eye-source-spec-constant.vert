@@ -13,7 +13,7 @@ void main() {
 // CHECK-NEXT: layout(constant_id = 101) const float separation = 0.0;
 // CHECK-NEXT: layout(constant_id = 102) const float convergence = 1.0;
 // CHECK-NOT: StereoParams
-// CHECK: = eyeSign * separation;
+// CHECK: (eyeSign * separation)
 // SPIRV-DAG: OpDecorate %eyeSign SpecId 100
 // SPIRV-DAG: OpDecorate %separation SpecId 101
 // SPIRV-DAG: OpDecorate %convergence SpecId 102

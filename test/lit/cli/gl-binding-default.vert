@@ -7,8 +7,9 @@ layout(location = 0) in vec3 aPosition;
 void main() {
   gl_Position = uMVP * vec4(aPosition, 1.0);
 }
-// CHECK-NOT: binding
-// CHECK: {{^}}layout(std140) uniform StereoParams
+// CHECK: {{^}}#version 450
 // CHECK-NOT: binding
 // CHECK: {{^}}uniform mat4 uMVP;
+// CHECK-NOT: binding
+// CHECK: {{^}}layout(std140) uniform StereoParams
 // CHECK-NOT: binding

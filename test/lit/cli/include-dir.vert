@@ -12,7 +12,8 @@ layout(location = 0) in vec3 inPosition;
 void main() {
   gl_Position = toClip(camera.viewProj, inPosition);
 }
-// CHECK: vec4 toClip(mat4 m, vec3 p)
-// CHECK: void main()
+// The spliced output keeps the #include (the driver resolves it as it did for the input).
+// CHECK: #include "clip.glsl"
+// CHECK: void main_stereoshift_mono()
 // CHECK: toClip(
 // CHECK: stereo.eyeSign * stereo.separation

@@ -12,6 +12,6 @@ void main() {
 // CHECK-NEXT: float separation;
 // CHECK-NEXT: float convergence;
 // CHECK-NEXT: } eye;
-// CHECK: precise float {{_[0-9]+}} = gl_Position.w - eye.convergence;
-// CHECK-NEXT: precise float {{_[0-9]+}} = eye.eyeSign * eye.separation;
+// CHECK: if (eye.eyeSign != 0.0
+// CHECK: precise float stereoshift_x = gl_Position.x + (eye.eyeSign * eye.separation) * (gl_Position.w - eye.convergence);
 // CHECK-NOT: stereo.

@@ -2,7 +2,10 @@
 // by default they are shifted with the position.
 // RUN: %stereoshift --verify --no-halo %s -o - --report %t.json | %rmchecks | FileCheck %s
 // RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
-// RUN: %stereoshift --verify %s -o - | %rmchecks | FileCheck %s --check-prefix=DEFAULT
+// By default vScreenUV (derived from the position, not a copy) needs the IR: re-emitted, with a note.
+// RUN: %stereoshift --verify %s -o - 2>%t.notes | %rmchecks | FileCheck %s --check-prefix=DEFAULT
+// RUN: FileCheck %s --check-prefix=NOTE --input-file %t.notes
+// NOTE: note: GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: the halo pass changed the output 'vScreenUV', which
 #version 450
 layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
 layout(location = 0) in vec3 inPosition;
@@ -13,9 +16,13 @@ void main() {
   vClip = gl_Position;
   vScreenUV = gl_Position.xy / gl_Position.w * 0.5 + 0.5;
 }
+// The spliced text: the outputs keep the mono position, nothing re-copies them after the shift.
 // CHECK: vClip = gl_Position;
-// CHECK-NEXT: vScreenUV = ((gl_Position.xy / vec2(gl_Position.w)) * 0.5) + vec2(0.5);
-// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
+// CHECK-NEXT: vScreenUV = gl_Position.xy / gl_Position.w * 0.5 + 0.5;
+// CHECK: main_stereoshift_mono();
+// CHECK-NEXT: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) >
+// CHECK-NOT: vClip =
+// CHECK-NOT: vScreenUV =
 // REPORT: "halo": {
 // REPORT-NEXT: "result": "unchanged"
 // REPORT-NEXT: },

@@ -32,7 +32,7 @@ void main() {
 // REPORT-NOT: "halo"
 // REPORT-NOT: "stereo-shift"
 // ALL: uniform StereoParams
-// ALL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
+// ALL: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) >
 // REQUIRED: "passes": {
 // REQUIRED-NEXT: "clip-position-detection": {
 // REQUIRED: "required_by": "stereo-shift",

@@ -21,6 +21,9 @@ void main() {
 // CHECK-NEXT: "classification": "perspective",
 // CHECK-NEXT: "dialect": "450 vulkan",
 // CHECK-NEXT: "file": "{{.*}}report.vert",
+// CHECK-NEXT: "halo_copies": [
+// CHECK-NEXT: "vClip"
+// CHECK-NEXT: ],
 // CHECK-NEXT: "language": "glsl",
 // CHECK-NEXT: "language_reason": "#version directive",
 // CHECK-NEXT: "language_source": "content",
@@ -58,6 +61,7 @@ void main() {
 // CHECK-NEXT: "sites": 1
 // CHECK-NEXT: }
 // CHECK-NEXT: },
+// CHECK-NEXT: "route": "glsl-source-splice",
 // CHECK-NEXT: "stage": "vert",
 // CHECK-NEXT: "stage_reason": "extension .vert",
 // CHECK-NEXT: "target": "glsl",

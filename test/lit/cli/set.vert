@@ -10,6 +10,6 @@ void main() {
   float h = textureLod(heightMap, inPosition.xz, 0.0).r;
   gl_Position = camera.viewProj * vec4(inPosition + vec3(0.0, h, 0.0), 1.0);
 }
-// CHECK: layout(set = 0, binding = 0, std140) uniform Camera
+// CHECK: layout(set = 0, binding = 0) uniform Camera
 // CHECK: layout(set = 3, binding = 0, std140) uniform StereoParams
 // SET0: layout(set = 0, binding = 2, std140) uniform StereoParams

@@ -11,9 +11,8 @@ void main() {
 }
 // CHECK: void main()
 // CHECK-NOT: if (
-// CHECK: precise float [[X:_[0-9]+]] = {{_[0-9]+}}.x + {{_[0-9]+}};
-// CHECK-NEXT: [[V:_[0-9]+]].x = ((stereo.eyeSign != 0.0) && ((abs([[V]].w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf([[V]].w)))) ? [[X]] : [[V]].x;
-// CHECK-NEXT: gl_Position = [[V]];
+// CHECK: precise float stereoshift_x = (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w)) ? gl_Position.x + (stereo.eyeSign * stereo.separation) * (gl_Position.w - stereo.convergence) : gl_Position.x;
+// CHECK-NEXT: gl_Position.x = stereoshift_x;
 // CHECK-NOT: if (
 // SPIRV-NOT: OpSelectionMerge
 // SPIRV: [[FAR:%[0-9]+]] = OpFOrdGreaterThan %bool
@@ -26,4 +25,4 @@ void main() {
 // SPIRV-NEXT: OpStore {{%[0-9]+}} [[NEW]]
 // SPIRV-NOT: OpSelectionMerge
 // REPORT: "form": "select",
-// BRANCH: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) >
+// BRANCH: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) >

@@ -15,4 +15,5 @@ void main() {
 // V410: precise float {{_[0-9]+}} = eyeSign * separation;
 // V330: {{^}}#version 330{{$}}
 // V330-NOT: precise
-// V330: {{^ *}}float {{_[0-9]+}} = eyeSign * separation;
+// Without --target-version the 330 source is spliced at its own version, the plain shift (no precise):
+// V330: {{^ *}}gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);

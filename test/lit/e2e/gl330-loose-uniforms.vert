@@ -14,9 +14,6 @@ uniform sampler2D uHeight;
 // CHECK-DAG: {{^}}uniform mat4 uModel;
 // CHECK-DAG: {{^}}uniform mat4 uViewProj;
 // CHECK-DAG: {{^}}uniform sampler2D uHeight;
-// CHECK-DAG: {{^}}uniform float eyeSign;
-// CHECK-DAG: {{^}}uniform float separation;
-// CHECK-DAG: {{^}}uniform float convergence;
 layout(location = 0) in vec3 aPosition;
 in vec3 aOffset;
 in vec2 aTexCoord;
@@ -29,14 +26,18 @@ void main() {
   vTexCoord = aTexCoord + vec2(float(gl_InstanceID), 0.0);
   float h = texture(uHeight, aTexCoord).r;
   gl_Position = uViewProj * uModel * vec4(aPosition + aOffset + vec3(0.0, h, 0.0), 1.0);
-// CHECK: void main()
+// CHECK: void main_stereoshift_mono()
 // CHECK: gl_InstanceID
 // CHECK: gl_Position =
-// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
+// CHECK: {{^}}uniform float eyeSign;
+// CHECK-NEXT: {{^}}uniform float separation;
+// CHECK-NEXT: {{^}}uniform float convergence;
+// CHECK: main_stereoshift_mono();
+// CHECK-NEXT: if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
 // CHECK-NEXT: {
-// CHECK: float [[S:_[0-9]+]] = eyeSign * separation;
-// CHECK: gl_Position.x =
+// CHECK-NEXT: gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
 }
+// NEG: {{^}}#version 330
 // NEG-NOT: gl_DefaultUniformBlock
 // NEG-NOT: SPIRV_Cross_BaseInstance
 // NEG-NOT: StereoParams

@@ -4,7 +4,7 @@
 // RUN: %stereoshift --validate-each %s -o %t.plain.vert
 // RUN: cmp %t.hud.vert %t.plain.vert
 // RUN: FileCheck %s --input-file %t.json
-// RUN: FileCheck %s --check-prefix=OUT --input-file %t.hud.vert
+// RUN: %rmchecks %t.hud.vert | FileCheck %s --check-prefix=OUT
 #version 450
 layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
 layout(location = 0) in vec3 inPosition;

@@ -9,10 +9,7 @@ layout(location = 0) in vec3 inPosition;
 void main() {
   gl_Position = stereo.viewProj * vec4(inPosition, 1.0);
 }
-// CHECK: uniform StereoParams
-// CHECK-NEXT: {
-// CHECK-NEXT: mat4 viewProj;
-// CHECK-NEXT: } stereo;
+// CHECK: layout(set = 0, binding = 0) uniform StereoParams { mat4 viewProj; } stereo;
 // CHECK: uniform [[BLOCK:StereoParams[_0-9a-z]+]]
 // CHECK: } [[INST:stereo[_0-9a-z]+]];
 // CHECK: [[INST]].eyeSign * [[INST]].separation

@@ -1,5 +1,6 @@
 // One Vulkan GLSL input, every output language: each keeps the StereoParams parameters and the
-// guarded shift in that language's own form.
+// guarded shift in that language's own form (GLSL, the input's own language, is the original text
+// plus the splice's edits; the others are written by SPIRV-Cross).
 // RUN: %stereoshift --verify --target glsl %s -o - | %rmchecks | FileCheck %s --check-prefix=GLSL
 // RUN: %stereoshift --verify --target essl %s -o - | %rmchecks | FileCheck %s --check-prefix=ESSL
 // RUN: %stereoshift --verify --target hlsl %s -o - | %rmchecks | FileCheck %s --check-prefix=HLSL
@@ -12,8 +13,7 @@
 // ESSL: #version 310 es
 // SPVASM: OpEntryPoint Vertex %main "main"
 layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
-// GLSL: layout(set = 0, binding = 0, std140) uniform Camera
-// GLSL: layout(set = 0, binding = 1, std140) uniform StereoParams
+// GLSL: layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
 // ESSL: layout(binding = 0, std140) uniform Camera
 // ESSL: layout(binding = 1, std140) uniform StereoParams
 // HLSL: cbuffer Camera : register(b0)
@@ -28,9 +28,10 @@ layout(location = 0) in vec3 inPosition;
 void main() {
   gl_Position = camera.viewProj * vec4(inPosition, 1.0);
 }
-// GLSL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
-// GLSL: precise float {{_[0-9]+}} = stereo.eyeSign * stereo.separation;
-// GLSL: gl_Position.x =
+// GLSL: layout(set = 0, binding = 1, std140) uniform StereoParams
+// GLSL: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
+// GLSL: precise float stereoshift_x = gl_Position.x + (stereo.eyeSign * stereo.separation) * (gl_Position.w - stereo.convergence);
+// GLSL: gl_Position.x = stereoshift_x;
 // ESSL does not have `precise` before 320: the shift is plain float arithmetic.
 // ESSL: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
 // ESSL: {{^ *}}float {{_[0-9]+}} = stereo.eyeSign * stereo.separation;

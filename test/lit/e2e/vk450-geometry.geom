@@ -2,25 +2,36 @@
 // the called function emitOne(); EndPrimitive gets nothing.
 // RUN: %stereoshift --verify %s --report %t.json -o - | %rmchecks | FileCheck %s
 // RUN: FileCheck %s --check-prefix=REPORT < %t.json
+// Each emit statement is wrapped with the shift of the vertex it emits; each function that emits
+// gets the helper's prototype first.
+// CHECK: /* ---- stereoshift ---- */ void stereoshift_shiftPosition(); /* ---- end stereoshift ---- */ void emitOne(vec3 p) {
+// CHECK-NEXT: gl_Position = camera.viewProj * vec4(p + vec3(0.0, 0.0, 1.0), 1.0);
+// CHECK-NEXT: { stereoshift_shiftPosition(); EmitVertex(); }
+// CHECK: /* ---- stereoshift ---- */ void stereoshift_shiftPosition(); /* ---- end stereoshift ---- */ void main() {
+// CHECK-NEXT: for (int i = 0; i < 3; ++i) {
+// CHECK-NEXT: gl_Position = camera.viewProj * vec4(inPos[i], 1.0);
+// CHECK-NEXT: { stereoshift_shiftPosition(); EmitVertex(); }
+// CHECK-NEXT: }
+// CHECK-NEXT: EndPrimitive();
+// CHECK-NOT: stereoshift_shiftPosition(); EmitVertex
+// CHECK: emitOne(inPos[0]);
+// CHECK-NEXT: emitOne(inPos[1]);
+// CHECK-NEXT: emitOne(inPos[2]);
+// CHECK-NEXT: EndPrimitive();
+// CHECK: layout(set = 0, binding = 1, std140) uniform StereoParams
+// CHECK: void stereoshift_shiftPosition()
+// CHECK-NEXT: {
+// CHECK-NEXT: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
 #version 450
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 6) out;
 layout(set = 0, binding = 0) uniform Camera { mat4 viewProj; } camera;
 layout(location = 0) in vec3 inPos[];
-// CHECK: layout(set = 0, binding = 1, std140) uniform StereoParams
 
 void emitOne(vec3 p) {
   gl_Position = camera.viewProj * vec4(p + vec3(0.0, 0.0, 1.0), 1.0);
   EmitVertex();
 }
-// CHECK: void emitOne(vec3 p)
-// CHECK: gl_Position =
-// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
-// CHECK-NEXT: {
-// CHECK: gl_Position.x =
-// CHECK-NEXT: }
-// CHECK-NEXT: EmitVertex();
-// CHECK-NEXT: }
 
 void main() {
   for (int i = 0; i < 3; ++i) {
@@ -28,25 +39,10 @@ void main() {
     EmitVertex();
   }
   EndPrimitive();
-// CHECK: void main()
-// CHECK: for (int i = 0; i < 3; i++)
-// CHECK: gl_Position =
-// CHECK-NEXT: if (({{[A-Za-z_.]*}}eyeSign != 0.0{{f?}}) && ((abs(gl_Position.w - 1.0) > {{9\.9999997[0-9]*e-0*6}}) && (!isinf(gl_Position.w))))
-// CHECK-NEXT: {
-// CHECK: gl_Position.x =
-// CHECK-NEXT: }
-// CHECK-NEXT: EmitVertex();
-// CHECK-NEXT: }
-// CHECK-NEXT: EndPrimitive();
   emitOne(inPos[0]);
   emitOne(inPos[1]);
   emitOne(inPos[2]);
   EndPrimitive();
-// CHECK-NOT: stereo.eyeSign
-// CHECK: emitOne(
-// CHECK-NOT: stereo.eyeSign
-// CHECK: EndPrimitive();
-// CHECK-NEXT: }
 }
 
 // REPORT: "stereo-shift": {

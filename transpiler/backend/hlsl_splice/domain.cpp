@@ -84,7 +84,7 @@ class DomainRewriter : Rewriter {
         std::string at = tokSpan(a.open, a.close);
         attrs += at + nl;
         size_t b = toks_[a.open].begin;
-        addEdit(b, at.size(), at.find("*/") == npos ? "/* " + at + " */" : std::string());
+        addEdit(b, at.size(), at.find("*/") == npos ? "/* stereoshift: moved to the wrapper: " + at + " */" : std::string());
       }
       addEdit(toks_[f->nameTok].begin, toks_[f->nameTok].end - toks_[f->nameTok].begin, mono);
 
@@ -104,10 +104,10 @@ class DomainRewriter : Rewriter {
         for (const auto& [param, helper] : plan.outShifts) body += ind + param + " = " + helper + "(" + param + ");" + nl;
         if (!isVoid) body += ind + "return " + result + ";" + nl;
       }
-      std::string wrapper = "// stereoshift: entry point wrapper, shifts the clip position of '" + mono + "'" + nl;
+      std::string wrapper = "// ---- stereoshift: entry point wrapper, shifts the clip position of '" + mono + "' ----" + nl;
       wrapper += attrs + retType + " " + opt_.entryPoint + tokSpan(f->paramOpen, f->paramClose);
       if (f->semTok != npos) wrapper += " : " + std::string(text(f->semTok));
-      wrapper += nl + "{" + nl + body + "}" + nl;
+      wrapper += nl + "{" + nl + body + "}" + nl + "// ---- end stereoshift ----" + nl;
       insertBlockAfter(f->bodyClose, wrapper);
       sites_ += static_cast<int>((plan.returnShift.empty() ? 0 : 1) + plan.outShifts.size());
     }

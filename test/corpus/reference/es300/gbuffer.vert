@@ -1,40 +1,41 @@
 #version 300 es
+// stereoshift-expect: shift
+// G-buffer geometry-pass vertex shader: world normal and tangent frame for normal mapping.
 
-invariant gl_Position;
+precision highp float;
 
-uniform mat4 uModel;
-uniform mat4 uViewProj;
-uniform float eyeSign;
-uniform float separation;
-uniform float convergence;
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 aTangent;
+layout(location = 3) in vec2 aTexCoord;
+
+uniform highp mat4 uModel;
+uniform highp mat4 uViewProj;
 
 out mediump vec3 vNormal;
-layout(location = 1) in vec3 aNormal;
 out mediump vec3 vTangent;
-layout(location = 2) in vec4 aTangent;
 out mediump vec3 vBitangent;
 out mediump vec2 vTexCoord;
-layout(location = 3) in vec2 aTexCoord;
-layout(location = 0) in vec3 aPosition;
 
-void main()
+void main_stereoshift_mono()
 {
-    mat3 m = mat3(uModel[0].xyz, uModel[1].xyz, uModel[2].xyz);
+    mat3 m = mat3(uModel);
     vNormal = normalize(m * aNormal);
     vTangent = normalize(m * aTangent.xyz);
     vBitangent = cross(vNormal, vTangent) * aTangent.w;
     vTexCoord = aTexCoord;
-    mat4 _63 = uViewProj * uModel;
-    vec4 _70 = vec4(aPosition, 1.0);
-    vec4 _71 = _63 * _70;
-    gl_Position = _71;
-    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
+    gl_Position = uViewProj * uModel * vec4(aPosition, 1.0);
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
+uniform float eyeSign;
+uniform float separation;
+uniform float convergence;
+void main()
+{
+    main_stereoshift_mono();
+    if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        float _102 = gl_Position.w - convergence;
-        float _103 = eyeSign * separation;
-        float _104 = _103 * _102;
-        float _105 = gl_Position.x + _104;
-        gl_Position.x = _105;
+        gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
     }
 }
-
+// ---- end stereoshift ----

@@ -1,39 +1,38 @@
 #version 300 es
+// stereoshift-expect: shift
+// HUD objective-marker vertex shader: a 2D icon placed at eye depth d with vec4(p.xy*d, z, d).
 
-invariant gl_Position;
+precision highp float;
 
-uniform vec2 uMarkerNdc;
-uniform vec2 uMarkerHalfSize;
-uniform float uMarkerDepth;
-uniform float uDepthZ;
+layout(location = 0) in vec2 aCorner;
+layout(location = 1) in vec2 aTexCoord;
+
+uniform highp vec2 uMarkerNdc;      // projected marker centre in NDC
+uniform highp vec2 uMarkerHalfSize; // half extent in NDC
+uniform highp float uMarkerDepth;   // eye-space depth d of the tracked object
+uniform highp float uDepthZ;        // matching clip z / d for the depth test
+
+out mediump vec2 vTexCoord;
+out mediump float vFade;
+
+void main_stereoshift_mono()
+{
+    vec2 p = uMarkerNdc + aCorner * uMarkerHalfSize;
+    float d = max(uMarkerDepth, 0.1);
+    vTexCoord = aTexCoord;
+    vFade = clamp(d / 50.0, 0.3, 1.0);
+    gl_Position = vec4(p.xy * d, uDepthZ * d, d);
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 uniform float eyeSign;
 uniform float separation;
 uniform float convergence;
-
-layout(location = 0) in vec2 aCorner;
-out mediump vec2 vTexCoord;
-layout(location = 1) in vec2 aTexCoord;
-out mediump float vFade;
-
 void main()
 {
-    vec2 p = uMarkerNdc + (aCorner * uMarkerHalfSize);
-    float d = max(uMarkerDepth, 0.100000001490116119384765625);
-    vTexCoord = aTexCoord;
-    vFade = clamp(d / 50.0, 0.300000011920928955078125, 1.0);
-    vec2 _47 = p * d;
-    float _51 = uDepthZ * d;
-    float _53 = _47.x;
-    float _54 = _47.y;
-    vec4 _55 = vec4(_53, _54, _51, d);
-    gl_Position = _55;
-    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
+    main_stereoshift_mono();
+    if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        float _85 = gl_Position.w - convergence;
-        float _86 = eyeSign * separation;
-        float _87 = _86 * _85;
-        float _88 = gl_Position.x + _87;
-        gl_Position.x = _88;
+        gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
     }
 }
-
+// ---- end stereoshift ----

@@ -1,35 +1,35 @@
 #version 330
+// stereoshift-expect: shift
+// HUD text vertex shader: glyph quads in pixels through an orthographic matrix (w is 1 only via the matrix).
 
-invariant gl_Position;
+layout(location = 0) in vec2 aPosition;
+layout(location = 1) in vec2 aGlyphUV;
+in vec4 aColor;
 
+uniform mat4 uProjection;
 uniform vec2 uTextOrigin;
 uniform float uTextScale;
-uniform mat4 uProjection;
+
+out vec2 vGlyphUV;
+out vec4 vColor;
+
+void main_stereoshift_mono()
+{
+    vec2 pixel = uTextOrigin + aPosition * uTextScale;
+    vGlyphUV = aGlyphUV;
+    vColor = aColor;
+    gl_Position = uProjection * vec4(pixel, 0.0, 1.0);
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 uniform float eyeSign;
 uniform float separation;
 uniform float convergence;
-
-layout(location = 0) in vec2 aPosition;
-out vec2 vGlyphUV;
-layout(location = 1) in vec2 aGlyphUV;
-out vec4 vColor;
-in vec4 aColor;
-
 void main()
 {
-    vec2 pixel = uTextOrigin + (aPosition * uTextScale);
-    vGlyphUV = aGlyphUV;
-    vColor = aColor;
-    vec4 _48 = vec4(pixel, 0.0, 1.0);
-    vec4 _49 = uProjection * _48;
-    gl_Position = _49;
-    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
+    main_stereoshift_mono();
+    if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        float _77 = gl_Position.w - convergence;
-        float _78 = eyeSign * separation;
-        float _79 = _78 * _77;
-        float _80 = gl_Position.x + _79;
-        gl_Position.x = _80;
+        gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
     }
 }
-
+// ---- end stereoshift ----

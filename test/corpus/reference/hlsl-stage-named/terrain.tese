@@ -53,7 +53,7 @@ DSOutput stereoshift_shift_DSOutput(DSOutput stereoshift_v)
 }
 // ---- end stereoshift ----
 
-/* [domain("tri")] */
+/* stereoshift: moved to the wrapper: [domain("tri")] */
 DSOutput main_stereoshift_mono(ConstantsHSOutput input, float3 TessCoord : SV_DomainLocation, const OutputPatch<HSOutput, 3> patch)
 {
     DSOutput output = (DSOutput)0;
@@ -67,9 +67,10 @@ DSOutput main_stereoshift_mono(ConstantsHSOutput input, float3 TessCoord : SV_Do
     return output;
 }
 
-// stereoshift: entry point wrapper, shifts the clip position of 'main_stereoshift_mono'
+// ---- stereoshift: entry point wrapper, shifts the clip position of 'main_stereoshift_mono' ----
 [domain("tri")]
 DSOutput main(ConstantsHSOutput input, float3 TessCoord : SV_DomainLocation, const OutputPatch<HSOutput, 3> patch)
 {
     return stereoshift_shift_DSOutput(main_stereoshift_mono(input, TessCoord, patch));
 }
+// ---- end stereoshift ----

@@ -50,7 +50,7 @@ DSOutput stereoshift_shift_DSOutput(DSOutput stereoshift_v)
 }
 // ---- end stereoshift ----
 
-/* [domain("tri")] */
+/* stereoshift: moved to the wrapper: [domain("tri")] */
 DSOutput DSMain_stereoshift_mono(PatchConstants pc, float3 bary : SV_DomainLocation, const OutputPatch<DSInput, 3> patch)
 {
     float3 p0 = patch[0].WorldPos, p1 = patch[1].WorldPos, p2 = patch[2].WorldPos;
@@ -74,9 +74,10 @@ DSOutput DSMain_stereoshift_mono(PatchConstants pc, float3 bary : SV_DomainLocat
     return output;
 }
 
-// stereoshift: entry point wrapper, shifts the clip position of 'DSMain_stereoshift_mono'
+// ---- stereoshift: entry point wrapper, shifts the clip position of 'DSMain_stereoshift_mono' ----
 [domain("tri")]
 DSOutput DSMain(PatchConstants pc, float3 bary : SV_DomainLocation, const OutputPatch<DSInput, 3> patch)
 {
     return stereoshift_shift_DSOutput(DSMain_stereoshift_mono(pc, bary, patch));
 }
+// ---- end stereoshift ----

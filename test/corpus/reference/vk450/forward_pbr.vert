@@ -1,50 +1,48 @@
 #version 450
+// stereoshift-expect: shift
+// Vulkan forward PBR vertex shader: camera UBO at set 0, per-object model matrix in a push-constant block.
 
-invariant gl_Position;
-
-layout(set = 0, binding = 0, std140) uniform CameraUBO
-{
+layout(set = 0, binding = 0) uniform CameraUBO {
     mat4 view;
     mat4 proj;
     vec4 cameraPos;
 } camera;
 
+layout(push_constant) uniform PushConstants {
+    mat4 model;
+    vec4 tint;
+} pc;
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUV;
+
+layout(location = 0) out vec3 outWorldPos;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec2 outUV;
+
+void main_stereoshift_mono()
+{
+    vec4 world = pc.model * vec4(inPosition, 1.0);
+    outWorldPos = world.xyz;
+    outNormal = mat3(pc.model) * inNormal;
+    outUV = inUV;
+    gl_Position = camera.proj * camera.view * world;
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 layout(set = 0, binding = 1, std140) uniform StereoParams
 {
     float eyeSign;
     float separation;
     float convergence;
 } stereo;
-
-layout(push_constant, std430) uniform PushConstants
-{
-    mat4 model;
-    vec4 tint;
-} pc;
-
-layout(location = 0) in vec3 inPosition;
-layout(location = 0) out vec3 outWorldPos;
-layout(location = 1) out vec3 outNormal;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) out vec2 outUV;
-layout(location = 2) in vec2 inUV;
-
 void main()
 {
-    vec4 world = pc.model * vec4(inPosition, 1.0);
-    outWorldPos = world.xyz;
-    outNormal = mat3(pc.model[0].xyz, pc.model[1].xyz, pc.model[2].xyz) * inNormal;
-    outUV = inUV;
-    mat4 _68 = camera.proj * camera.view;
-    vec4 _70 = _68 * world;
-    gl_Position = _70;
-    if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
+    main_stereoshift_mono();
+    if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        precise float _103 = gl_Position.w - stereo.convergence;
-        precise float _104 = stereo.eyeSign * stereo.separation;
-        precise float _105 = _104 * _103;
-        precise float _106 = gl_Position.x + _105;
-        gl_Position.x = _106;
+        precise float stereoshift_x = gl_Position.x + (stereo.eyeSign * stereo.separation) * (gl_Position.w - stereo.convergence);
+        gl_Position.x = stereoshift_x;
     }
 }
-
+// ---- end stereoshift ----

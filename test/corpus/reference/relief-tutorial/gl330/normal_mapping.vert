@@ -1,54 +1,49 @@
-#version 330
+#version 330 core
+// stereoshift-expect: shift
+// Normal-mapped wall, vertex stage: the same tangent-space camera as parallax mapping, but the fragment stage only lights with it.
+layout (location = 0) in vec3 aPos;
+layout (location = 1) in vec3 aNormal;
+layout (location = 2) in vec2 aTexCoords;
+layout (location = 3) in vec3 aTangent;
+layout (location = 4) in vec3 aBitangent;
 
-invariant gl_Position;
-
-uniform mat4 model;
-uniform vec3 lightPos;
-uniform vec3 viewPos;
-uniform mat4 projection;
-uniform mat4 view;
-uniform float eyeSign;
-uniform float separation;
-uniform float convergence;
-
-layout(location = 0) in vec3 aPos;
-layout(location = 3) in vec3 aTangent;
-layout(location = 4) in vec3 aBitangent;
-layout(location = 1) in vec3 aNormal;
-out VS_OUT
-{
+out VS_OUT {
     vec2 TexCoords;
     vec3 TangentLightPos;
     vec3 TangentViewPos;
     vec3 TangentFragPos;
 } vs_out;
 
-layout(location = 2) in vec2 aTexCoords;
+uniform mat4 projection;
+uniform mat4 view;
+uniform mat4 model;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
 
-void main()
+void main_stereoshift_mono()
 {
-    vec3 fragPos = vec3((model * vec4(aPos, 1.0)).xyz);
-    mat3 normalMatrix = transpose(inverse(mat3(model[0].xyz, model[1].xyz, model[2].xyz)));
+    vec3 fragPos = vec3(model * vec4(aPos, 1.0));
+    mat3 normalMatrix = transpose(inverse(mat3(model)));
     vec3 T = normalize(normalMatrix * aTangent);
     vec3 B = normalize(normalMatrix * aBitangent);
     vec3 N = normalize(normalMatrix * aNormal);
-    mat3 TBN = transpose(mat3(vec3(T), vec3(B), vec3(N)));
+    mat3 TBN = transpose(mat3(T, B, N));
     vs_out.TexCoords = aTexCoords;
     vs_out.TangentLightPos = TBN * lightPos;
-    vs_out.TangentViewPos = TBN * viewPos;
-    vs_out.TangentFragPos = TBN * fragPos;
-    mat4 _118 = projection * view;
-    mat4 _120 = _118 * model;
-    vec4 _125 = vec4(aPos, 1.0);
-    vec4 _126 = _120 * _125;
-    gl_Position = _126;
-    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
+    vs_out.TangentViewPos  = TBN * viewPos;
+    vs_out.TangentFragPos  = TBN * fragPos;
+    gl_Position = projection * view * model * vec4(aPos, 1.0);
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
+uniform float eyeSign;
+uniform float separation;
+uniform float convergence;
+void main()
+{
+    main_stereoshift_mono();
+    if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        float _156 = gl_Position.w - convergence;
-        float _157 = eyeSign * separation;
-        float _158 = _157 * _156;
-        float _159 = gl_Position.x + _158;
-        gl_Position.x = _159;
+        gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
     }
 }
-
+// ---- end stereoshift ----

@@ -1,56 +1,51 @@
 #version 450
-layout(triangles) in;
-layout(max_vertices = 3, triangle_strip) out;
+// stereoshift-expect: shift
+// Parallax mapping with a wireframe overlay, geometry stage: adds each vertex's distance to the opposite edge and passes the tangent-space vectors on by location.
+layout (triangles) in;
+layout (triangle_strip, max_vertices = 3) out;
 
-invariant gl_Position;
+layout (binding = 1) uniform Viewport { vec2 size; } viewport;
 
-layout(set = 0, binding = 1, std140) uniform Viewport
+layout (location = 0) in vec2 inUV[];
+layout (location = 1) in vec3 inTangentViewPos[];
+layout (location = 2) in vec3 inTangentFragPos[];
+
+layout (location = 0) out vec2 outUV;
+layout (location = 1) out vec3 outTangentViewPos;
+layout (location = 2) out vec3 outTangentFragPos;
+layout (location = 3) noperspective out vec3 outEdgeDistance;
+
+/* ---- stereoshift ---- */ void stereoshift_shiftPosition(); /* ---- end stereoshift ---- */ void main()
 {
-    vec2 size;
-} viewport;
-
+	vec2 p[3];
+	for (int i = 0; i < 3; i++)
+		p[i] = viewport.size * gl_in[i].gl_Position.xy / gl_in[i].gl_Position.w;
+	float area = abs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
+	for (int i = 0; i < 3; i++) {
+		vec3 edge = vec3(0.0);
+		edge[i] = area / length(p[(i + 2) % 3] - p[(i + 1) % 3]);
+		gl_Position = gl_in[i].gl_Position;
+		outUV = inUV[i];
+		outTangentViewPos = inTangentViewPos[i];
+		outTangentFragPos = inTangentFragPos[i];
+		outEdgeDistance = edge;
+		{ stereoshift_shiftPosition(); EmitVertex(); }
+	}
+	EndPrimitive();
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 layout(set = 0, binding = 5, std140) uniform StereoParams
 {
     float eyeSign;
     float separation;
     float convergence;
 } stereo;
-
-layout(location = 0) out vec2 outUV;
-layout(location = 0) in vec2 inUV[3];
-layout(location = 1) out vec3 outTangentViewPos;
-layout(location = 1) in vec3 inTangentViewPos[3];
-layout(location = 2) out vec3 outTangentFragPos;
-layout(location = 2) in vec3 inTangentFragPos[3];
-layout(location = 3) noperspective out vec3 outEdgeDistance;
-
-void main()
+void stereoshift_shiftPosition()
 {
-    vec2 p[3];
-    for (int i = 0; i < 3; i++)
+    if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        p[i] = (viewport.size * gl_in[i].gl_Position.xy) / vec2(gl_in[i].gl_Position.w);
+        precise float stereoshift_x = gl_Position.x + (stereo.eyeSign * stereo.separation) * (gl_Position.w - stereo.convergence);
+        gl_Position.x = stereoshift_x;
     }
-    float area = abs(((p[1].x - p[0].x) * (p[2].y - p[0].y)) - ((p[2].x - p[0].x) * (p[1].y - p[0].y)));
-    for (int i_1 = 0; i_1 < 3; i_1++)
-    {
-        vec3 edge = vec3(0.0);
-        edge[i_1] = area / length(p[(i_1 + 2) % 3] - p[(i_1 + 1) % 3]);
-        gl_Position = gl_in[i_1].gl_Position;
-        outUV = inUV[i_1];
-        outTangentViewPos = inTangentViewPos[i_1];
-        outTangentFragPos = inTangentFragPos[i_1];
-        outEdgeDistance = edge;
-        if ((stereo.eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
-        {
-            precise float _176 = gl_Position.w - stereo.convergence;
-            precise float _177 = stereo.eyeSign * stereo.separation;
-            precise float _178 = _177 * _176;
-            precise float _179 = gl_Position.x + _178;
-            gl_Position.x = _179;
-        }
-        EmitVertex();
-    }
-    EndPrimitive();
 }
-
+// ---- end stereoshift ----

@@ -1,0 +1,120 @@
+// Accuracy by execution of the GLSL source-splice routes: the *text* a user gets back (the original
+// with `main` renamed and the shifting `main` appended, or a geometry shader's emits wrapped) is
+// compiled again by stereoshift's own front end, as an application's driver would get it, and run
+// on lavapipe against the original, with eyeSign = 0 (bit-exact mono identity), -1 and +1 (stereo
+// error against the double reference). `stereoshift verify` and execution.corpus check the SPIR-V
+// route; this checks the spliced text itself, for every corpus pipeline whose stages are all
+// spliced or copied (legacy GLSL 1xx / ESSL 100, GLSL 330, ESSL 300, Vulkan GLSL, the relief
+// tutorials, the file-naming conventions).
+#include "transpiler/frontend/front_end.h"
+#include "transpiler/stereoshift.h"
+#include "transpiler/verify/stereo_verify.h"
+#include "test/harness/vulkan_suite.h"
+#include "transpiler/source/file_io.h"
+#include "transpiler/source/stage_rules.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+namespace fs = std::filesystem;
+using namespace stereoshift;
+using namespace stereoshift::harness;
+
+namespace {
+
+struct PipelineCase {
+  std::string name;
+  std::vector<fs::path> stages;  // pre-rasterization stages, in pipeline order
+};
+
+std::vector<PipelineCase> glslPipelines() {
+  std::map<std::string, std::vector<fs::path>> groups;
+  for (auto& e : fs::recursive_directory_iterator(fs::path(CORPUS_DIR))) {
+    if (!e.is_regular_file()) continue;
+    std::string rel = fs::relative(e.path(), CORPUS_DIR).string();
+    if (rel.find("hlsl") != std::string::npos || rel.find("d3d") != std::string::npos ||
+        rel.find("include") != std::string::npos)
+      continue;
+    auto stage = stageFromPath(e.path().string());
+    if (!stage || !isPreRasterization(*stage)) continue;
+    groups[pipelineKey(e.path().string())].push_back(e.path());
+  }
+  auto order = [](const fs::path& p) { return static_cast<int>(*stageFromPath(p.string())); };
+  std::vector<PipelineCase> cases;
+  for (auto& [key, stages] : groups) {
+    std::sort(stages.begin(), stages.end(), [&](auto& a, auto& b) { return order(a) < order(b); });
+    cases.push_back({fs::relative(key, CORPUS_DIR).string(), stages});
+  }
+  return cases;
+}
+
+VkShaderStageFlagBits vkStage(Stage stage) {
+  switch (stage) {
+    case Stage::TessControl: return VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
+    case Stage::TessEvaluation: return VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
+    case Stage::Geometry: return VK_SHADER_STAGE_GEOMETRY_BIT;
+    default: return VK_SHADER_STAGE_VERTEX_BIT;
+  }
+}
+
+class SplicedTextExecution : public VulkanSuite<::testing::TestWithParam<PipelineCase>> {};
+
+TEST_P(SplicedTextExecution, SplicedTextMatchesReference) {
+  ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
+  const PipelineCase& c = GetParam();
+  std::vector<StageModules> stages;
+  bool spliced = false;
+  for (size_t i = 0; i < c.stages.size(); ++i) {
+    SourceFile input{c.stages[i].string(), {}};
+    ASSERT_TRUE(readFile(input.path, &input.contents));
+    TranspileOptions options;
+    options.includeDirs = {(c.stages[i].parent_path() / "include").string()};
+    options.shiftThisStage = i + 1 == c.stages.size();
+    TranspileResult converted = transpile(input, options);
+    ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
+    std::string route = converted.report.value("route", "");
+    bool copied = converted.report.value("output", "") == "copied";
+    if (options.shiftThisStage) {
+      if (converted.report.value("classification", "") != "perspective") GTEST_SKIP() << "needs no shift";
+      if (route != "glsl-source-splice") GTEST_SKIP() << "re-emitted (execution.corpus runs that route)";
+      spliced = true;
+    } else if (!copied && route != "glsl-source-splice") {
+      GTEST_SKIP() << c.stages[i].filename() << " re-emitted (execution.corpus runs that route)";
+    }
+    // The emitted text, through the front end as an application's driver would get it.
+    Diagnostics diags;
+    FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
+    ASSERT_TRUE(stereo.ok) << diags.format();
+    StageModules stage;
+    stage.stage = vkStage(stereo.info.stage);
+    stage.original = converted.originalSpirv;
+    stage.transpiled = stereo.spirv;
+    for (const auto& n : converted.report.value("halo_copies", nlohmann::json::array()))
+      stage.haloOutputs.push_back(n.get<std::string>());
+    stages.push_back(std::move(stage));
+  }
+  ASSERT_TRUE(spliced);
+  VerifySettings settings;
+  VerifyResult r = verifyStereo(*context_, stages, settings);
+  if (!r.error.empty() && r.error.find("harness cannot") != std::string::npos) GTEST_SKIP() << r.error;
+  ASSERT_TRUE(r.error.empty()) << r.error;
+  std::cout << "[verify] " << c.name << ": vertices " << r.vertices << ", mono identical " << r.monoIdentical
+            << ", max stereo error " << r.maxStereoUlps << " ULP, cutoff vertices " << r.cutoffVertices << "\n";
+  EXPECT_GT(r.vertices, 0u);
+  EXPECT_TRUE(r.monoIdentical);
+  EXPECT_TRUE(r.otherOutputsUnchanged) << (r.problems.empty() ? "" : r.problems.front());
+  EXPECT_LE(r.maxStereoUlps, settings.maxUlps);
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, SplicedTextExecution, ::testing::ValuesIn(glslPipelines()),
+                         [](const ::testing::TestParamInfo<PipelineCase>& info) {
+                           std::string n = info.param.name;
+                           for (char& ch : n)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return n;
+                         });
+
+}  // namespace

@@ -1,0 +1,219 @@
+// This turns the passes' decisions for a GLSL / ESSL vertex, tessellation-evaluation or geometry
+// shader that comes back in its own dialect into the original text plus marked edits (glsl_splice.h):
+// the ShiftSpec of the conversion, the eye parameters as eye-params declared them (a uniform block
+// with its block, instance, set and binding; a fresh push-constant block; specialization constants;
+// loose uniforms) and the halo copies. ESSL 100 / GLSL 1xx vertex shaders take the legacy route
+// before this one (legacy_glsl_route.cpp): their passes ran on the analysis translation.
+//
+// SPIRV-Cross's re-emission of the same module is no drop-in: it flattens struct varyings, drops
+// `component` layouts and extensions the source enabled, turns compatibility-profile stages into
+// core ones, respells interpolation qualifiers and redeclared built-in blocks. So this route takes
+// every stage it can carry; where the text cannot carry a decision (another pass's change, a halo
+// output derived from the position, a shift inside an #include, an eye source it cannot declare in
+// the source's version) it declines with a note and SPIRV-Cross re-emits, as before. The spliced
+// text is re-compiled at the source's own version and environment; if that fails, the re-emit is
+// tried too (EmitResult::declineIfChecksFail), never a text that does not compile.
+#include "transpiler/backend/splice_routes.h"
+
+#include "passes/shift_emitter.h"
+#include "transpiler/backend/glsl_splice.h"
+#include "transpiler/source/lexer.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace stereoshift {
+
+bool takesGlslSpliceRoute(const SourceInfo& info, TargetLanguage target, const BackEndOptions& options) {
+  bool stage = info.stage == Stage::Vertex || info.stage == Stage::TessEvaluation || info.stage == Stage::Geometry;
+  return info.language == SourceLanguage::Glsl && stage &&
+         target == (info.es ? TargetLanguage::Essl : TargetLanguage::Glsl) && !options.targetVersion &&
+         !options.forceReemit;
+}
+
+namespace {
+
+std::string fallbackNote(const std::string& why) {
+  return "GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: " + why;
+}
+
+std::string floatText(float value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
+  std::string text = buf;
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+
+// Whether the source enables `extension` in an #extension directive (any behaviour but disable).
+bool enablesExtension(const std::string& text, const std::string& extension) {
+  source::LexedText lexed(text);
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Extension) continue;
+    std::string line = source::spelledString(text, t);
+    if (line.find(extension) != std::string::npos && line.find("disable") == std::string::npos) return true;
+  }
+  return false;
+}
+
+// The eye parameters' declaration as text, and the names the shift reads them by (`spec`), from
+// what eye-params declared; empty with `why` set when the source's dialect cannot declare them so.
+bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string& why) {
+  const PassContext& ctx = r.context;
+  const SourceInfo& info = ctx.source;
+  const EyeParamFacts& facts = ctx.record.eyeParams;
+  std::vector<std::string> names = facts.names;
+  if (names.size() < 3) names = {spec.eyeSignName, spec.separationName, spec.convergenceName};
+  switch (ctx.eye.source) {
+    case EyeSource::LooseUniforms:
+      return true;  // `uniform float <name>;` (the splice's default)
+    case EyeSource::SpecConstant: {
+      if (!info.vulkan) {
+        why = "specialization constants exist only in Vulkan GLSL";
+        return false;
+      }
+      for (size_t i = 0; i < names.size() && i < facts.specIds.size(); ++i)
+        spec.declarations.push_back("layout(constant_id = " + std::to_string(facts.specIds[i]) + ") const float " +
+                                    names[i] + " = " + floatText(eyeParamDefaultValue(static_cast<int>(i))) + ";");
+      return true;
+    }
+    case EyeSource::PushConstant:
+      if (ctx.eye.firstMember != 0) {
+        why = "the eye parameters join the shader's own push-constant block, which the splice does not edit";
+        return false;
+      }
+      [[fallthrough]];
+    default: {
+      const spirv::Module& m = ctx.module;
+      std::string block = m.name(ctx.eye.blockType), instance = m.name(ctx.eye.variable);
+      // Spelled as SPIRV-Cross spells the block, so the output reads the same on either route.
+      std::vector<std::string> layout;
+      if (ctx.eye.source == EyeSource::PushConstant) {
+        layout.push_back("push_constant");
+      } else {
+        if (info.vulkan && facts.set) layout.push_back("set = " + std::to_string(*facts.set));
+        if (facts.binding) {
+          bool has420pack = info.es ? info.version >= 310 : info.version >= 420;
+          if (!info.vulkan && !has420pack && !enablesExtension(r.input.contents, "GL_ARB_shading_language_420pack")) {
+            why = "--gl-binding needs GLSL 420 / ESSL 310 (or GL_ARB_shading_language_420pack) for a binding layout";
+            return false;
+          }
+          layout.push_back("binding = " + std::to_string(*facts.binding));
+        }
+        layout.push_back("std140");
+      }
+      std::string qualifiers;
+      for (const auto& q : layout) qualifiers += (qualifiers.empty() ? "" : ", ") + q;
+      spec.declarations.push_back("layout(" + qualifiers + ") uniform " + block);
+      spec.declarations.push_back("{");
+      for (const auto& name : names) spec.declarations.push_back("    float " + name + ";");
+      spec.declarations.push_back("} " + instance + ";");
+      spec.eyeSignName = instance + "." + names[0];
+      spec.separationName = instance + "." + names[1];
+      spec.convergenceName = instance + "." + names[2];
+      return true;
+    }
+  }
+}
+
+// The halo outputs the passes shifted, as the source names them, when each is an exact copy of
+// gl_Position the splice can re-copy; empty with `why` set when one is not.
+bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::string& why) {
+  const RunRecord& record = r.context.record;
+  if (!record.halo.derivedOutputs.empty()) {
+    why = "the halo pass changed the output '" + record.halo.derivedOutputs.front() +
+          "', which is computed from the clip position (not a copy of it), and only the IR carries that";
+    return false;
+  }
+  if (!record.halo.shiftedOutputs) return true;
+  std::vector<std::string> exact = exactPositionCopies(r.input.contents);
+  for (const auto& translated : *record.halo.shiftedOutputs) {
+    std::string out = sourceName(translated);
+    if (std::find(exact.begin(), exact.end(), out) == exact.end()) {
+      why = "the halo copy '" + out + "' of the clip position is not a plain `" + out + " = gl_Position;` in the text";
+      return false;
+    }
+    if (std::find(copies.begin(), copies.end(), out) == copies.end()) copies.push_back(out);
+  }
+  return true;
+}
+
+class GlslSpliceRoute final : public BackEndRoute {
+ public:
+  const char* name() const override { return "glsl-source-splice"; }
+
+  RouteDecision accepts(const EmitRequest& r) const override {
+    const PassContext& ctx = r.context;
+    if (!takesGlslSpliceRoute(ctx.source, r.target, r.options))
+      return RouteDecision::decline("not a GLSL pre-rasterisation stage kept in its own dialect");
+    if (ctx.options.eye.select != EyeSelect::Parameter)
+      return RouteDecision::decline(fallbackNote("the single-pass stereo modes are written by SPIRV-Cross"), true);
+    auto beyond = changesBeyond(ctx.record, {"clip-position-detection", "eye-params", "stereo-shift", "halo"});
+    if (!beyond.empty())
+      return RouteDecision::decline(fallbackNote("the splice cannot carry what the " + beyond.front() + " pass changed"),
+                                    true);
+    // The splice writes the shift: only where the stereo-shift pass put one in the IR (not under
+    // `--pass eye-params` alone, say).
+    bool shifted = std::any_of(ctx.record.passes.begin(), ctx.record.passes.end(), [](const PassStatus& p) {
+      return p.name == "stereo-shift" && p.result == PassResult::Changed;
+    });
+    if (!ctx.shiftPosition || !shifted)
+      return RouteDecision::decline(fallbackNote("the stage changed but its clip position is not shifted"), true);
+    ShiftSpec spec = shiftSpec(ctx);
+    if (spec.compensated)
+      return RouteDecision::decline(fallbackNote("--compensated-shift is written by SPIRV-Cross"), true);
+    if (spec.fused && !glslHasPreciseAndFma(ctx.source.version, ctx.source.es))
+      return RouteDecision::decline(fallbackNote("--fused-shift needs fma (GLSL 400, ESSL 320)"), true);
+    return RouteDecision::accept();
+  }
+
+  EmitResult emit(const EmitRequest& r, EmitFacts& facts, Diagnostics&) const override {
+    EmitResult result;
+    const PassContext& ctx = r.context;
+    GlslSpliceOptions splice;
+    static_cast<ShiftSpec&>(splice) = shiftSpec(ctx);
+    splice.version = ctx.source.version;
+    splice.es = ctx.source.es;
+    splice.stage = ctx.source.stage;
+    std::string why;
+    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why)) {
+      result.status = EmitResult::Declined;
+      result.declinedBecause = fallbackNote(why);
+      return result;
+    }
+    GlslSpliceResult spliced = spliceGlslStereo(r.input.contents, splice);
+    if (!spliced.ok) {
+      result.status = EmitResult::Declined;
+      result.declinedBecause = fallbackNote(spliced.error);
+      return result;
+    }
+    result.output = std::move(spliced.text);
+    facts.route = "glsl-source-splice";
+    facts.haloCopies = splice.haloCopies;
+    facts.spliceSites = spliced.sites;
+    // Re-compiled as a driver reads it: the source's version, profile and environment, its own
+    // #include files and -D macros.
+    CompileCheck check;
+    check.text = result.output;
+    check.stage = ctx.source.stage;
+    check.vulkanSemantics = ctx.source.vulkan;
+    check.includeFrom = r.input.path;
+    // ESSL 100 / GLSL below 330: through the front end and its analysis translation, as the input
+    // was read (glslang alone lacks some of those dialects' built-ins).
+    // A lifted copy's source (glsl_lift.h) likewise: glslang accepts only the lifted form of it.
+    check.throughFrontEnd = isLegacyGlslDialect(ctx.source) || !ctx.source.liftedBecause.empty();
+    check.failure = "the spliced GLSL does not compile at the source's version";
+    result.checks.push_back(std::move(check));
+    result.declineIfChecksFail = true;
+    result.reportsVerified = true;
+    result.status = EmitResult::Emitted;
+    return result;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<BackEndRoute> createGlslSpliceRoute() { return std::make_unique<GlslSpliceRoute>(); }
+
+}  // namespace stereoshift

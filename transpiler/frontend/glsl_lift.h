@@ -1,0 +1,30 @@
+// The lifted copy: this turns OpenGL GLSL that glslang refuses as written, though drivers compile
+// it, into a copy glslang accepts, for the analysis only (the output stays the original text plus
+// the splice's marked edits, glsl_splice.h):
+//   - line continuations (a backslash at a line's end) joined, the lost line breaks put back after
+//     the logical line so every later line keeps its number;
+//   - the #version raised to the lowest core version that has what the #extension lines enable
+//     (GL_ARB_gpu_shader5 -> 400, GL_ARB_arrays_of_arrays -> 430, ...): glslang knows some
+//     extensions' built-ins and syntax only at the version they became core in.
+// Desktop GLSL only; the profile word of the #version line is kept.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace stereoshift {
+
+struct LiftedGlsl {
+  bool lifted = false;  // the copy differs from the text
+  std::string text;
+  std::string what;     // "line continuations joined", "#version 150 raised to 400 for GL_ARB_gpu_shader5", ...
+};
+
+LiftedGlsl liftGlsl(const std::string& text);
+
+// The OpenGL core version an ARB / EXT extension's GLSL functionality became part of; none for an
+// extension that never did (or that this table does not know).
+std::optional<int> coreVersionOf(std::string_view extension);
+
+}  // namespace stereoshift

@@ -1,0 +1,237 @@
+// See text_only_shift.h.
+#include "transpiler/text_only_shift.h"
+
+#include "passes/pass.h"
+#include "passes/shift_emitter.h"
+#include "transpiler/backend/glsl_splice.h"
+#include "transpiler/frontend/glsl_version.h"
+#include "transpiler/source/lexer.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <optional>
+
+namespace stereoshift {
+
+namespace {
+
+// What the text says about itself, read with the lexer.
+struct TextFacts {
+  std::string problem;             // why the text is not clean enough to splice
+  bool writesPosition = false;     // gl_Position (or a component of it) assigned
+  bool vulkan = false;             // descriptor sets, push constants or Vulkan built-ins
+  bool hasPushConstants = false;
+  std::optional<uint32_t> highestBinding;
+  std::vector<std::string> identifiers;  // every identifier, for clashes
+};
+
+std::string floatText(float value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
+  std::string text = buf;
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+
+bool isPunct(const source::LexedText& lexed, size_t k, char c) { return lexed.isPunct(k, c); }
+
+TextFacts readText(const std::string& text) {
+  TextFacts facts;
+  source::LexedText lexed(text);
+  std::vector<char> open;
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.unterminated) {
+      facts.problem = "an unterminated comment or string at line " + std::to_string(t.line);
+      return facts;
+    }
+    if (t.kind == source::TokenKind::Comment || t.kind == source::TokenKind::Directive) continue;
+    std::string_view word = lexed.text(k);
+    if (!t.inDirective() && t.kind == source::TokenKind::Punctuation) {
+      char c = word[0];
+      if (c == '(' || c == '[' || c == '{') open.push_back(c);
+      if (c == ')' || c == ']' || c == '}') {
+        char want = c == ')' ? '(' : c == ']' ? '[' : '{';
+        if (open.empty() || open.back() != want) {
+          facts.problem = "an unbalanced '" + std::string(1, c) + "' at line " + std::to_string(t.line);
+          return facts;
+        }
+        open.pop_back();
+      }
+    }
+    if (t.kind != source::TokenKind::Identifier) continue;
+    std::string name = source::spelledString(text, t);
+    facts.identifiers.push_back(name);
+    if (name == "set" || name == "gl_VertexIndex" || name == "gl_InstanceIndex" || name == "subpassInput" ||
+        name == "push_constant" || name == "GL_KHR_vulkan_glsl")
+      facts.vulkan = true;
+    if (name == "push_constant") facts.hasPushConstants = true;
+    if (name == "binding" && isPunct(lexed, k + 1, '=') && k + 2 < lexed.size() &&
+        lexed[k + 2].kind == source::TokenKind::Number) {
+      std::string_view digits = lexed.text(k + 2);
+      uint32_t value = 0;
+      auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+      if (ec == std::errc() && end == digits.data() + digits.size())
+        facts.highestBinding = std::max(facts.highestBinding.value_or(0), value);
+    }
+    if (name == "gl_Position") {
+      size_t n = k + 1;  // past `.xyz` or `[i]`
+      if (isPunct(lexed, n, '.') && lexed.isIdentifier(n + 1)) n += 2;
+      bool assigned = (isPunct(lexed, n, '=') && !isPunct(lexed, n + 1, '=')) ||
+                      ((isPunct(lexed, n, '+') || isPunct(lexed, n, '-') || isPunct(lexed, n, '*') ||
+                        isPunct(lexed, n, '/')) &&
+                       lexed.isPunctPair(n, std::string(1, lexed.text(n)[0]) + "="));
+      facts.writesPosition |= assigned;
+    }
+  }
+  if (!open.empty()) facts.problem = "an unclosed '" + std::string(1, open.back()) + "'";
+  return facts;
+}
+
+bool has(const TextFacts& facts, const std::string& name) {
+  return std::find(facts.identifiers.begin(), facts.identifiers.end(), name) != facts.identifiers.end();
+}
+
+// The eye parameters as text for the splice; false with `why` when the source cannot have them so.
+bool declareEyeParams(const TextFacts& facts, const VersionLine& v, bool legacy, const PassOptions& options,
+                      GlslSpliceOptions& spec, std::string& declared, std::string& why) {
+  const EyeParamOptions& o = options.eye;
+  EyeSource source = o.source;
+  if (source == EyeSource::Auto) source = facts.vulkan ? EyeSource::UniformBlock : EyeSource::LooseUniforms;
+  bool vulkanOnly = source == EyeSource::PushConstant || source == EyeSource::SpecConstant;
+  if (vulkanOnly && !facts.vulkan) {
+    why = "push constants and specialization constants need Vulkan GLSL, and the text does not say it is";
+    return false;
+  }
+  if (source == EyeSource::LooseUniforms && facts.vulkan) {
+    why = "--eye-source=loose-uniforms needs an OpenGL GLSL shader, and the text is Vulkan GLSL";
+    return false;
+  }
+  std::vector<std::string> names = {o.eyeSignName, o.separationName, o.convergenceName};
+  switch (source) {
+    case EyeSource::LooseUniforms:
+      declared = "loose uniforms";
+      return true;
+    case EyeSource::SpecConstant:
+      for (int i = 0; i < 3; ++i)
+        spec.declarations.push_back("layout(constant_id = " + std::to_string(o.specIdBase + i) + ") const float " +
+                                    names[i] + " = " + floatText(eyeParamDefaultValue(i)) + ";");
+      declared = "specialization constants";
+      return true;
+    default:
+      break;
+  }
+  if (legacy || (v.es ? v.version < 300 : v.version < 140)) {
+    why = "GLSL below 140 and ESSL 100 have no uniform blocks: use --eye-source loose-uniforms";
+    return false;
+  }
+  std::string layout;
+  if (source == EyeSource::PushConstant) {
+    if (facts.hasPushConstants) {
+      why = "the shader has push constants of its own, which the text-only splice does not extend";
+      return false;
+    }
+    layout = "push_constant";
+    declared = "push constants";
+  } else {
+    if (facts.vulkan) {
+      uint32_t binding = o.binding.value_or(facts.highestBinding ? *facts.highestBinding + 1 : 0);
+      layout = "set = " + std::to_string(o.descriptorSet.value_or(0)) + ", binding = " + std::to_string(binding) + ", ";
+    } else if (o.glBinding) {
+      layout = "binding = " + std::to_string(*o.glBinding) + ", ";
+    }
+    layout += "std140";
+    declared = "uniform block";
+  }
+  spec.declarations.push_back("layout(" + layout + ") uniform " + o.blockName);
+  spec.declarations.push_back("{");
+  for (const auto& name : names) spec.declarations.push_back("    float " + name + ";");
+  spec.declarations.push_back("} " + o.instanceName + ";");
+  spec.eyeSignName = o.instanceName + "." + names[0];
+  spec.separationName = o.instanceName + "." + names[1];
+  spec.convergenceName = o.instanceName + "." + names[2];
+  for (const std::string* taken : {&o.blockName, &o.instanceName})
+    if (has(facts, *taken)) {
+      why = "the shader already uses the name '" + *taken + "'";
+      return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+std::string glslangGapIn(const std::string& text) {
+  if (text.find("\\\n") != std::string::npos || text.find("\\\r\n") != std::string::npos) return "a line continuation";
+  source::LexedText lexed(text);
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.kind != source::TokenKind::Directive) continue;
+    std::string line = source::spelledString(text, t);
+    // #include's extensions are glslang's own; every other one it may know only in part.
+    bool include = line.find("include") != std::string::npos;
+    if (t.directive == source::DirectiveKind::Extension && !include && line.find("disable") == std::string::npos)
+      return "an #extension";
+    if (t.directive == source::DirectiveKind::Version && line.find("compatibility") != std::string::npos)
+      return "the compatibility profile";
+  }
+  return {};
+}
+
+bool mayShiftFromText(Stage stage, const PassOptions& passes, const BackEndOptions& backEnd) {
+  bool preRaster = stage == Stage::Vertex || stage == Stage::TessEvaluation || stage == Stage::Geometry;
+  bool sameLanguage = backEnd.target == TargetLanguage::Auto || backEnd.target == TargetLanguage::Glsl ||
+                      backEnd.target == TargetLanguage::Essl;
+  return preRaster && sameLanguage && !backEnd.targetVersion && !backEnd.forceReemit && !backEnd.requireAnalysis &&
+         passes.shiftThisStage && passes.eye.select == EyeSelect::Parameter;
+}
+
+TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options) {
+  TextOnlyShift result;
+  VersionLine v = findVersion(input.contents);
+  if (!v.problem.empty()) {
+    result.whyNot = v.problem;
+    return result;
+  }
+  TextFacts facts = readText(input.contents);
+  if (!facts.problem.empty()) {
+    result.whyNot = "the text has " + facts.problem;
+    return result;
+  }
+  if (!facts.writesPosition) {
+    result.whyNot = "the text writes no gl_Position of its own";
+    return result;
+  }
+  for (const std::string* name : {&options.eye.eyeSignName, &options.eye.separationName, &options.eye.convergenceName})
+    if (has(facts, *name)) {
+      result.whyNot = "the shader already uses the name '" + *name + "' (is it converted already?)";
+      return result;
+    }
+  bool legacy = !facts.vulkan && (v.es ? v.version < 300 : v.version < 330);
+  GlslSpliceOptions spec;
+  static_cast<ShiftSpec&>(spec) = makeShiftSpec(options, facts.vulkan || glslHasPreciseAndFma(v.version, v.es));
+  spec.eyeSignName = options.eye.eyeSignName;
+  spec.separationName = options.eye.separationName;
+  spec.convergenceName = options.eye.convergenceName;
+  spec.version = v.version;
+  spec.es = v.es;
+  spec.stage = stage;
+  if (spec.compensated || (spec.fused && !glslHasPreciseAndFma(v.version, v.es))) {
+    result.whyNot = "--compensated-shift, and --fused-shift below GLSL 400 / ESSL 320, need the analysis";
+    return result;
+  }
+  if (!declareEyeParams(facts, v, legacy, options, spec, result.eyeParams, result.whyNot)) return result;
+  GlslSpliceResult spliced = spliceGlslStereo(input.contents, spec);
+  if (!spliced.ok) {
+    result.whyNot = spliced.error;
+    return result;
+  }
+  result.ok = true;
+  result.output = std::move(spliced.text);
+  result.sites = spliced.sites;
+  result.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the clip position",
+                    "per-eye view vectors", "deferred unprojection", "HUD placement", "re-compile of the output"};
+  return result;
+}
+
+}  // namespace stereoshift

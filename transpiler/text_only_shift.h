@@ -1,0 +1,46 @@
+// The text-only shift: this turns a GLSL vertex, tessellation-evaluation or geometry shader that
+// glslang cannot parse (a construct it does not know at the source's version, or a crash inside it)
+// into its stereo version from the text alone, with the GLSL splice (glsl_splice.h): `main`
+// renamed and a shifting `main` appended, or every EmitVertex wrapped. No analysis ran, so what
+// needs one is not done: no proof that a shader is 2D (the runtime cutoff still keeps w = 1 draws
+// mono), no halo copies, no per-eye camera, no deferred unprojection, no re-compile. The driver
+// takes it only when the front end failed, warns, and records it (`"analysis": "text-only"`);
+// --require-analysis makes the front end's failure an error again.
+//
+// It never guesses: the text must lex cleanly (no open comment or string, brackets balanced), have
+// a #version the splice reads, write gl_Position in its own text (and, in a geometry shader, call
+// EmitVertex / EmitStreamVertex as statements), and not declare the eye parameters already.
+// The eye parameters are loose uniforms for OpenGL GLSL, and for Vulkan GLSL (told from the text:
+// descriptor sets, push constants, Vulkan built-ins) a uniform block in set 0 after the highest
+// binding the text names, unless the options ask for another source, set or binding.
+#pragma once
+
+#include "passes/pass_options.h"
+#include "passes/shader.h"
+#include "transpiler/backend/back_end_options.h"
+
+#include <string>
+#include <vector>
+
+namespace stereoshift {
+
+struct TextOnlyShift {
+  bool ok = false;
+  std::string output;
+  std::string whyNot;                // !ok: why the text alone is not enough
+  int sites = 0;
+  std::string eyeParams;             // "loose uniforms", "uniform block", ...
+  std::vector<std::string> notDone;  // what an analysis would have done
+};
+
+// What in `text` glslang may read more narrowly than drivers do: an #extension it enables (glslang
+// lacks some extensions' built-ins at some versions), a line continuation, the compatibility
+// profile; "" when none. The text-only shift is for those, never for a shader that is simply wrong.
+std::string glslangGapIn(const std::string& text);
+
+// Whether the driver may try the text-only shift for a stage the front end could not parse.
+bool mayShiftFromText(Stage stage, const PassOptions& passes, const BackEndOptions& backEnd);
+
+TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options);
+
+}  // namespace stereoshift
