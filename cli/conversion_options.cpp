@@ -3,11 +3,15 @@
 #include "cli/conversion_options.h"
 
 #include "passes/pass_registry.h"
+#include "passes/diagnostics.h"
+#include "transpiler/source/identifiers.h"
 #include "transpiler/source/stage_rules.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <set>
+#include <tuple>
 #include <sstream>
 
 namespace stereoshift {
@@ -165,6 +169,25 @@ std::optional<std::string> finishTargetOption(CliOptions& o) {
 }
 
 // Where the eye parameters live, and the single-pass stereo modes.
+// Why `name` cannot name an injected declaration in GLSL and HLSL alike, or nothing when it can.
+std::optional<std::string> notAnInjectableName(const std::string& name) {
+  static const std::set<std::string> kReserved = {
+      "main", "attribute", "const", "uniform", "varying", "buffer", "shared", "layout", "centroid", "flat",
+      "smooth", "noperspective", "patch", "sample", "break", "continue", "do", "for", "while", "switch", "case",
+      "default", "if", "else", "in", "out", "inout", "float", "double", "int", "void", "bool", "true", "false",
+      "invariant", "precise", "discard", "return", "struct", "highp", "mediump", "lowp", "precision", "cbuffer",
+      "tbuffer", "register", "static", "matrix", "vector", "packoffset", "technique", "pass", "typedef",
+      "namespace", "class", "interface", "template", "this", "half", "uint", "dword", "string", "sampler",
+      "texture", "row_major", "column_major", "nointerpolation", "groupshared", "volatile", "extern", "inline"};
+  if (name.empty()) return std::string("is empty: it must be an identifier");
+  if (!isIdentifierStart(name[0]) || !std::all_of(name.begin(), name.end(), isIdentifierChar))
+    return std::string("is not an identifier (letters, digits and '_', not starting with a digit)");
+  if (name.starts_with("gl_") || name.find("__") != std::string::npos)
+    return std::string("is reserved (names starting with gl_ or holding __ belong to the language)");
+  if (kReserved.count(name)) return std::string("is a keyword or the entry point");
+  return std::nullopt;
+}
+
 std::optional<std::string> finishEyeOptions(CliOptions& o) {
   static const std::map<std::string, EyeSource> sources = {
       {"auto", EyeSource::Auto}, {"uniform-block", EyeSource::UniformBlock},
@@ -183,6 +206,8 @@ std::optional<std::string> finishEyeOptions(CliOptions& o) {
   else return unknownValue("--eye-route", o.eyeRoute);
   auto src = sources.find(paramsSource);
   if (src == sources.end()) return unknownValue("--eye-source", o.eyeSource);
+  for (const auto& [option, name] : {std::pair{"--block-name", &o.t.eye.blockName}, std::pair{"--instance-name", &o.t.eye.instanceName}})
+    if (auto why = notAnInjectableName(*name)) return std::string(option) + " '" + escapeControlBytes(*name) + "' " + *why;
   o.t.eye.source = src->second;
   return std::nullopt;
 }
@@ -199,6 +224,23 @@ std::optional<std::string> finishShiftOptions(CliOptions& o) {
   o.t.haloFix = !o.noHalo;
   o.t.perEyeView = !o.noPerEyeView;
   o.t.deferredUnprojection = !o.noDeferredUnprojection;
+  // Layout numbers are written into the emitted text, which glslang re-compiles before anything is
+  // written; past the widths of its layout fields (a set below 63, a binding below 65535, a
+  // specialization-constant id below 2047, a location below 4095) that re-compile fails, and past
+  // 2^31 - 1 the number even reads as negative. Refused here instead, as the option's error.
+  auto outOfRange = [](const char* option, uint64_t value, uint64_t max) -> std::optional<std::string> {
+    if (value <= max) return std::nullopt;
+    return std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to " + std::to_string(max) + ")";
+  };
+  for (const auto& [name, value, max] : {std::tuple{"--set", o.set, uint64_t{62}},
+                                         std::tuple{"--binding", o.binding, uint64_t{65534}},
+                                         std::tuple{"--hlsl-register", o.hlslRegister, uint64_t{65534}},
+                                         std::tuple{"--gl-binding", o.glBinding, uint64_t{65534}}})
+    if (value)
+      if (auto problem = outOfRange(name, *value, max)) return problem;
+  // Up to eight eye parameters take consecutive ids from the base.
+  if (auto problem = outOfRange("--spec-id-base", o.t.eye.specIdBase, 2046 - 7)) return problem;
+  if (auto problem = outOfRange("--eye-varying-location", o.t.eye.eyeVaryingLocation, 4094)) return problem;
   o.t.eye.descriptorSet = o.set;
   o.t.eye.binding = o.binding;
   o.t.eye.hlslRegister = o.hlslRegister;
@@ -261,6 +303,7 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
       {"verify", t.verify},
       {"forceReemit", t.forceReemit},
   };
+  if (t.requireAnalysis) description["requireAnalysis"] = true;  // only when given: default keys unchanged
   // Only when given, so the cache keys of builds without -x stay what they were.
   if (t.language) description["language"] = static_cast<int>(*t.language);
   if (t.targetEnv) description["targetEnv"] = targetEnvName(*t.targetEnv);
