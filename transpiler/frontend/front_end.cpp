@@ -154,9 +154,9 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
     }
     if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
   }
-  // Refused as written: a lifted copy (glsl_lift.h) for the analysis, OpenGL GLSL only.
+  // Refused as written: a lifted copy (glsl_lift.h) for the analysis, with OpenGL rules.
   std::string lifted;
-  if (!best->ok && !v.es) {
+  if (!best->ok) {
     LiftedGlsl copy = liftGlsl(text);
     if (copy.lifted) {
       Attempt a = compileGlslangOnce(input, copy.text, stage, SourceLanguage::Glsl, Client::OpenGL, "main", options);

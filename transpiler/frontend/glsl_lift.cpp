@@ -5,6 +5,7 @@
 #include "transpiler/frontend/glsl_version.h"
 #include "transpiler/source/lexer.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -64,6 +65,17 @@ LiftedGlsl liftGlsl(const std::string& text) {
   result.text = joinContinuations(text);
   if (result.text != text) result.what = "line continuations joined";
   VersionLine v = findVersion(result.text);
+  // Comments or blank lines before #version (ESSL wants it first; glslang refuses, some drivers
+  // do not): the directive moved to the first line, the lines before it left blank, so every line
+  // after it keeps its number.
+  if (v.problem.empty() && v.begin != std::string::npos && v.begin > 0) {
+    std::string before = result.text.substr(0, v.begin);
+    size_t breaks = static_cast<size_t>(std::count(before.begin(), before.end(), '\n'));
+    result.text = result.text.substr(v.begin, v.end - v.begin) + std::string(breaks, '\n') + result.text.substr(v.end);
+    if (!result.what.empty()) result.what += "; ";
+    result.what += "the text before #version moved after it";
+    v = findVersion(result.text);
+  }
   if (!v.problem.empty() || v.es || v.begin == std::string::npos) {
     result.lifted = result.text != text;
     return result;

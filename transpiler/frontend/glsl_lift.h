@@ -3,10 +3,11 @@
 // the splice's marked edits, glsl_splice.h):
 //   - line continuations (a backslash at a line's end) joined, the lost line breaks put back after
 //     the logical line so every later line keeps its number;
+//   - comments or blank lines before the #version line (ESSL wants it first) moved after it;
 //   - the #version raised to the lowest core version that has what the #extension lines enable
 //     (GL_ARB_gpu_shader5 -> 400, GL_ARB_arrays_of_arrays -> 430, ...): glslang knows some
 //     extensions' built-ins and syntax only at the version they became core in.
-// Desktop GLSL only; the profile word of the #version line is kept.
+// The version raise is for desktop GLSL only; the profile word of the #version line is kept.
 #pragma once
 
 #include <optional>
