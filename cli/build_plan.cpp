@@ -371,6 +371,16 @@ std::string checkOutputPlacement(const Plan& plan, const fs::path& outDir) {
       return outDir.string() + ": error: the output directory is a symbolic link into the source tree (to '" +
              target.string() + "'); outputs would be written among the sources";
   }
+  // The output directory is the source tree or holds it (`build src/gl330 -o src`): the outputs and
+  // the cache would land beside other sources, so it is refused as `-o` naming an input is.
+  {
+    std::error_code resolveError;
+    fs::path out = fs::weakly_canonical(outDir, resolveError), root = fs::weakly_canonical(plan.root, resolveError);
+    if (!resolveError && insideDirectory(root, out))
+      return outDir.string() + ": error: the output directory " + (out == root ? "is" : "holds") +
+             " the source tree '" + plan.root.string() + "'; outputs would be written among the sources (choose a "
+             "directory outside the tree, or one inside it)";
+  }
   // Resolved paths: each directory once, then a file's own name unless the file itself is a
   // symbolic link. (Native strings as keys: std::filesystem::path compares component by component.)
   std::error_code ec;
