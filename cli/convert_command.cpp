@@ -88,6 +88,14 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
   if (!runConversionChild(o, paths, outputFor, &run)) return 1;
 
   int errors = run.errors;
+  // The report and the depfile are part of the set: a path that cannot take them stops the run
+  // before any output is written.
+  for (const std::string* extra : {&o.reportPath, &o.depfile})
+    if (std::string why = outputBlockedBecause(*extra); !errors && !why.empty()) {
+      std::cerr << *extra << ": error: cannot write the output: " << why << "; nothing was written\n";
+      printErrorSummary(1);
+      return 1;
+    }
   if (!errors && o.diff) printDiffs(paths, run.outputs);
   if (!errors) errors += writeAllOrNothing(run.outputs, std::cerr);
   if (run.hasReport) writeReport(o.reportPath, run.report);

@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 
@@ -31,6 +33,22 @@ OutputTarget targetOf(const fs::path& requested) {
   return target;
 }
 
+// Why nothing can be written at `path`, checked before anything of a set is written: a directory
+// there, or a regular file where one of its folders must go. "" when nothing blocks it.
+std::string blockedBecause(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return "it is a directory";
+  for (fs::path folder = path.parent_path(); !folder.empty(); folder = folder.parent_path()) {
+    fs::file_status status = fs::status(folder, ec);
+    if (fs::exists(status)) {
+      if (!fs::is_directory(status)) return "'" + folder.string() + "' is a file, where a directory must go";
+      break;
+    }
+    if (folder == folder.parent_path()) break;
+  }
+  return {};
+}
+
 bool writeInPlace(const fs::path& path, const std::string& bytes, std::string* error) {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -49,7 +67,8 @@ bool writeTemporary(const fs::path& path, const std::string& bytes, fs::path* te
   *temp += ".stereoshift-tmp-" + std::to_string(::getpid());
   std::ofstream out(*temp, std::ios::binary | std::ios::trunc);
   if (!out) {
-    *error = "cannot write '" + temp->string() + "'";
+    int why = errno;
+    *error = "cannot write '" + path.string() + "': " + std::strerror(why);
     return false;
   }
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -76,6 +95,11 @@ bool renameIntoPlace(const fs::path& temp, const fs::path& path, std::string* er
 
 }  // namespace
 
+std::string outputBlockedBecause(const std::string& path) {
+  if (path.empty() || path == "-") return {};
+  return blockedBecause(targetOf(path).path);
+}
+
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
 bool writeAtomically(const fs::path& requested, const std::string& bytes, std::string* error) {
   OutputTarget target = targetOf(requested);
@@ -92,6 +116,14 @@ int writeAllOrNothing(const std::vector<PendingOutput>& outputs, std::ostream& l
   };
   std::vector<Staged> staged;
   std::error_code ec;
+  // Every path first: one that cannot be written stops the set before any file of it is.
+  for (const auto& output : outputs) {
+    if (output.path == "-" || output.path.empty()) continue;
+    if (std::string why = blockedBecause(targetOf(output.path).path); !why.empty()) {
+      log << output.path << ": error: cannot write the output: " << why << "; nothing was written\n";
+      return 1;
+    }
+  }
   for (const auto& output : outputs) {
     if (output.path == "-" || output.path.empty()) continue;
     Staged s{&output, targetOf(output.path), {}};

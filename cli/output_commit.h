@@ -24,6 +24,10 @@ struct PendingOutput {
 // Writes every output or none: each file's temporary first, then, only when all of them were
 // written, the renames (the standard-output ones last). Returns the number of errors.
 int writeAllOrNothing(const std::vector<PendingOutput>& outputs, std::ostream& log);
+// Why nothing can be written at `path` (a directory there, a file where one of its folders must go),
+// for checking a report or depfile path before any output of the run is written; "" when nothing
+// blocks it (and for "-" and "").
+std::string outputBlockedBecause(const std::string& path);
 
 // Writes the report as JSON to `path` ('-': standard output; empty: nowhere).
 bool writeReport(const std::string& path, const nlohmann::json& report);

@@ -229,6 +229,7 @@ int generateAndWrite(const ReprojectCliOptions& c, const ReprojectOptions& base,
   }
   // Only now: a failed generation leaves no directory behind either.
   std::error_code ec;
+  const bool created = !fs::exists(c.outputDir, ec);
   fs::create_directories(c.outputDir, ec);
   if (ec) {
     std::cerr << c.outputDir << ": error: cannot create the output directory: " << ec.message() << "\n";
@@ -238,6 +239,7 @@ int generateAndWrite(const ReprojectCliOptions& c, const ReprojectOptions& base,
   std::string reportPath = c.reportPath.empty() ? (fs::path(c.outputDir) / "reproject-report.json").string() : c.reportPath;
   outputs.push_back({reportPath, report.dump(2) + "\n"});
   if (int failed = writeAllOrNothing(outputs, std::cerr)) {
+    if (created) fs::remove(c.outputDir, ec);  // only when still empty: a failed run leaves nothing
     printErrorSummary(failed);
     return 1;
   }
