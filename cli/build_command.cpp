@@ -18,6 +18,8 @@
 #include "cli/build_report.h"
 #include "cli/build_schedule.h"
 
+#include "cli/path_option.h"
+
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -41,7 +43,8 @@ bool reportPlanProblems(const Plan& plan) {
 void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
   build.add_option("source", o.source, "Source directory, or a scene manifest (.toml; see docs/trees-and-manifests.md)")
       ->required();
-  build.add_option("-o,--output", o.output, "Output directory (mirrors the source tree)")->required();
+  build.add_option("-o,--output", o.output, "Output directory (mirrors the source tree)")->required()
+      ->check(nonEmptyPath());
   build.add_option("-j,--jobs", o.jobs, "Worker processes (default: one per core); the output does not depend on it");
   build.add_option("--depfile", o.depfile, "Write the dependencies of the report (every input and included file) as a depfile");
   build.add_flag("--no-cache", o.noCache, "Convert every shader, even those the incremental cache says are up to date");

@@ -14,6 +14,8 @@
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/stereoshift.h"
 
+#include "cli/path_option.h"
+
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -34,7 +36,8 @@ static int runCommandLine(int argc, char** argv) {
   CliOptions o;
   addConversionOptions(app, o);
   app.add_option("input", o.inputs, "Input shader (.vert .frag ..., .vs .fs ..., .vsh .fsh, .glsl/.hlsl/.fx with -S or #pragma shader_stage, .spv); '-': standard input");
-  app.add_option("-o,--output", o.output, "Output file (a directory with --pipeline); '-' or none: standard output");
+  app.add_option("-o,--output", o.output, "Output file (a directory with --pipeline); '-' or none: standard output")
+      ->check(nonEmptyPath());
   app.add_option("--pipeline", o.pipeline, "Comma-separated stages of one pipeline; only its last pre-rasterization stage is shifted");
   app.add_option("--depfile", o.depfile,
                  "Write the outputs' dependencies (the inputs and every #included file) as a Makefile-style depfile");

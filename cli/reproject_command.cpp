@@ -5,6 +5,8 @@
 
 #include "cli/cli_support.h"
 
+#include "cli/path_option.h"
+
 #include <CLI/CLI.hpp>
 
 #include <charconv>
@@ -22,7 +24,8 @@ CLI::App* addReprojectCommand(CLI::App& app, ReprojectCliOptions& o) {
       "reproject",
       "Generate the shaders of a full-screen pass that synthesizes the other eye (or both eyes from the centre "
       "view) from one rendered view's colour and depth (docs/reprojection.md)");
-  r->add_option("-o,--output", o.outputDir, "Directory the shaders and reproject-report.json are written to")->required();
+  r->add_option("-o,--output", o.outputDir, "Directory the shaders and reproject-report.json are written to")->required()
+      ->check(nonEmptyPath());
   r->add_option("--target", o.targets,
                 "Output language, repeatable: glsl, essl, hlsl, msl, spirv, spirv-asm (default: glsl essl hlsl msl spirv)")
       ->allow_extra_args(false);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -138,6 +139,22 @@ std::vector<std::string> checkReprojectOptions(const ReprojectOptions& o) {
     if (o.farPlane && !(*o.farPlane > o.nearPlane && std::isfinite(*o.farPlane)))
       problems.push_back("--far must be farther than --near (or 'inf' for an infinite far plane)");
   }
+  // The decode's two coefficients are written as float literals: past FLT_MAX they read as `inf`
+  // (a near plane of 1e-40 gives a scale of about 1e40), and the shader decodes nothing.
+  if (problems.empty()) {
+    DepthDecode decode = depthDecode(o);
+    auto fits = [](double v) { return std::isfinite(v) && std::abs(v) <= static_cast<double>(FLT_MAX); };
+    if (!decode.linear && (!fits(decode.scale) || !fits(decode.offset)))
+    {
+      char values[96];
+      std::snprintf(values, sizeof values, "scale %g, offset %g", decode.scale, decode.offset);
+      problems.push_back(std::string("the depth decoding these --near/--far (or --depth-coefficients) give does not fit "
+                                     "a float (") + values + "): choose a near plane of at least 1e-30 eye units");
+    }
+  }
+  // Bindings are written as layout numbers; glslang's layout fields hold bindings below 65535.
+  for (const auto& [option, value] : {std::pair{"--colour-binding", o.colourBinding}, std::pair{"--depth-binding", o.depthBinding}})
+    if (value > 65534) problems.push_back(std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to 65534)");
   if (o.colourBinding == o.depthBinding) problems.push_back("the colour and depth textures need different bindings");
   EyeSource source = effectiveEyeSource(o);
   if (source == EyeSource::UniformBlock) {
