@@ -17,6 +17,7 @@ brace to the one that closes it.
 """
 import argparse
 import ast
+import os
 import pathlib
 import re
 import sys
@@ -171,8 +172,15 @@ def python_functions(text: str):
 
 def check(root: pathlib.Path):
     errors = []
-    files = sorted(p for p in root.rglob("*") if p.is_file() and ".git" not in p.parts and
-                   not p.relative_to(root).parts[0].startswith(("build", "out")))
+    # Walked with the build trees, out/ and .git pruned, not filtered afterwards: a test running
+    # beside this one (lit) creates and removes its temporaries under build/ while the walk goes on.
+    files = []
+    for folder, subfolders, names in os.walk(root):
+        if pathlib.Path(folder) == root:
+            subfolders[:] = [d for d in subfolders if not d.startswith(("build", "out")) and d != ".git"]
+        subfolders[:] = [d for d in subfolders if d != ".git"]
+        files.extend(p for p in (pathlib.Path(folder) / name for name in names) if p.is_file())
+    files.sort()
     for path in files:
         rel = path.relative_to(root).as_posix()
         top = rel.split("/", 1)[0]
