@@ -12,7 +12,8 @@ void main() {
 // CHECK-DAG: {{^}}uniform float eyeSign;
 // CHECK-DAG: {{^}}uniform float separation;
 // CHECK-DAG: {{^}}uniform float convergence;
-// CHECK: (eyeSign * separation)
+// CHECK: if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
+// CHECK: gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
 // AUTO: uniform StereoParams
 // AUTO-NOT: {{^}}uniform float eyeSign;
 // AUTO: stereo.eyeSign * stereo.separation

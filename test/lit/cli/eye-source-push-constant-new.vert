@@ -14,7 +14,7 @@ void main() {
 // CHECK-NEXT: float separation;
 // CHECK-NEXT: float convergence;
 // CHECK-NEXT: } stereo;
-// CHECK: stereo.eyeSign * stereo.separation
+// CHECK: precise float stereoshift_x = gl_Position.x + (stereo.eyeSign * stereo.separation) * (gl_Position.w - stereo.convergence);
 // SPIRV-NOT: OpDecorate %stereo DescriptorSet
 // SPIRV-NOT: OpDecorate %stereo Binding
 // SPIRV: %_ptr_PushConstant_StereoParams = OpTypePointer PushConstant %StereoParams

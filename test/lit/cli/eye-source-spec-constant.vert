@@ -13,7 +13,8 @@ void main() {
 // CHECK-NEXT: layout(constant_id = 101) const float separation = 0.0;
 // CHECK-NEXT: layout(constant_id = 102) const float convergence = 1.0;
 // CHECK-NOT: StereoParams
-// CHECK: (eyeSign * separation)
+// CHECK: if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
+// CHECK: precise float stereoshift_x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
 // SPIRV-DAG: OpDecorate %eyeSign SpecId 100
 // SPIRV-DAG: OpDecorate %separation SpecId 101
 // SPIRV-DAG: OpDecorate %convergence SpecId 102
