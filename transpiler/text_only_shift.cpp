@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdio>
 #include <optional>
 
 namespace stereoshift {
@@ -26,13 +25,6 @@ struct TextFacts {
   std::vector<std::string> identifiers;  // every identifier, for clashes
 };
 
-std::string floatText(float value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
-  std::string text = buf;
-  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
-  return text;
-}
 
 bool isPunct(const source::LexedText& lexed, size_t k, char c) { return lexed.isPunct(k, c); }
 
@@ -116,7 +108,7 @@ bool declareEyeParams(const TextFacts& facts, const VersionLine& v, bool legacy,
     case EyeSource::SpecConstant:
       for (int i = 0; i < 3; ++i)
         spec.declarations.push_back("layout(constant_id = " + std::to_string(o.specIdBase + i) + ") const float " +
-                                    names[i] + " = " + floatText(eyeParamDefaultValue(i)) + ";");
+                                    names[i] + " = " + glslFloatLiteral(eyeParamDefaultValue(i)) + ";");
       declared = "specialization constants";
       return true;
     default:

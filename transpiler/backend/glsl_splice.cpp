@@ -45,13 +45,6 @@ std::vector<Word> words(const std::string& text) {
   return out;
 }
 
-std::string floatLiteral(float value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
-  std::string lit = buf;
-  if (lit.find_first_of(".eEn") == std::string::npos) lit += ".0";
-  return lit;
-}
 
 // When `p` (the position) is shifted: the condition of emitCutoffCondition, in its order.
 std::string conditionText(const GlslSpliceOptions& spec, const std::string& p) {
@@ -62,7 +55,7 @@ std::string conditionText(const GlslSpliceOptions& spec, const std::string& p) {
   std::string finite = hasIsinf ? "!isinf(" + p + ".w)" : "abs(" + p + ".w) <= 3.40282347e+38";
   switch (spec.cutoff) {
     case CutoffMode::Epsilon:
-      return stereo + " && abs(" + p + ".w - 1.0) > " + floatLiteral(spec.epsilon) + " && " + finite;
+      return stereo + " && abs(" + p + ".w - 1.0) > " + glslFloatLiteral(spec.epsilon) + " && " + finite;
     case CutoffMode::Exact:
       return stereo + " && " + p + ".w != 1.0 && " + finite;
     case CutoffMode::None:
@@ -176,6 +169,14 @@ bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::strin
 }
 
 }  // namespace
+
+std::string glslFloatLiteral(float value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
+  std::string lit = buf;
+  if (lit.find_first_of(".eEn") == std::string::npos) lit += ".0";
+  return lit;
+}
 
 bool glslHasPreciseAndFma(int version, bool es) { return es ? version >= 320 : version >= 400; }
 

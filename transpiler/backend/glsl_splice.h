@@ -57,6 +57,10 @@ struct GlslSpliceResult {
   int sites = 0;             // places that shift: 1 for a wrapped main, one per emit of a geometry shader
 };
 
+// A GLSL float literal that reads back as `value` (9 significant digits, always with a `.` or an
+// exponent): the one spelling every GLSL text the splices and the text-only shift write uses.
+std::string glslFloatLiteral(float value);
+
 // Whether GLSL `version` (ESSL when `es`) has `precise` and `fma` (GLSL 400, ESSL 320).
 bool glslHasPreciseAndFma(int version, bool es);
 

@@ -20,7 +20,6 @@
 #include "transpiler/source/lexer.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace stereoshift {
 
@@ -37,13 +36,6 @@ std::string fallbackNote(const std::string& why) {
   return "GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: " + why;
 }
 
-std::string floatText(float value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
-  std::string text = buf;
-  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
-  return text;
-}
 
 // Whether the source enables `extension` in an #extension directive (any behaviour but disable).
 bool enablesExtension(const std::string& text, const std::string& extension) {
@@ -75,7 +67,7 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
       }
       for (size_t i = 0; i < names.size() && i < facts.specIds.size(); ++i)
         spec.declarations.push_back("layout(constant_id = " + std::to_string(facts.specIds[i]) + ") const float " +
-                                    names[i] + " = " + floatText(eyeParamDefaultValue(static_cast<int>(i))) + ";");
+                                    names[i] + " = " + glslFloatLiteral(eyeParamDefaultValue(static_cast<int>(i))) + ";");
       return true;
     }
     case EyeSource::PushConstant:
