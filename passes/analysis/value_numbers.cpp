@@ -11,6 +11,10 @@ using spirv::Instruction;
 namespace {
 
 constexpr int kMaxDepth = 64;
+// The numbering's budget, in visits: every instruction numbered at the top level and in the calls
+// of a few helpers around it. A shader past it has its remaining values numbered on their own.
+constexpr uint64_t kVisitsPerInstruction = 64;
+constexpr uint64_t kVisitsSlack = 65536;
 enum Tag : uint32_t { kConstantTag = 0x80000000u, kReadTag, kComponentTag, kOpTag, kVectorTag };
 
 bool isReadOnlyStorage(spv::StorageClass s) {
@@ -55,10 +59,15 @@ ValueNumbers::ValueNumbers(const spirv::Module& module) : m_(module) {
         if (inst.opcode == spv::OpReturnValue) returns_[fn.id()].push_back(inst.operand(0));
       }
   }
+  uint64_t instructions = 0;
+  for (const auto& fn : m_.functions)
+    for (const auto& block : fn.blocks) instructions += block.instructions.size();
+  budget_ = kVisitsPerInstruction * instructions + kVisitsSlack;
+  contexts_.emplace_back();  // context 0: the top level, nothing bound
   for (const auto& fn : m_.functions)
     for (const auto& block : fn.blocks)
       for (const auto& inst : block.instructions)
-        if (inst.resultId) numberOf(inst.resultId, {}, 0);
+        if (inst.resultId) numberOf(inst.resultId, 0, 0);
 }
 
 std::optional<uint32_t> ValueNumbers::number(uint32_t id) const {
@@ -75,20 +84,62 @@ uint32_t ValueNumbers::intern(Key key) {
 
 uint32_t ValueNumbers::fresh() { return next_++; }
 
-uint32_t ValueNumbers::numberOf(uint32_t id, const Bindings& bindings, int depth) {
-  if (auto bound = bindings.find(id); bound != bindings.end()) return bound->second;
-  if (bindings.empty())
+uint32_t ValueNumbers::numberOf(uint32_t id, Context context, int depth) {
+  if (context != 0)
+    if (auto bound = contexts_[context].find(id); bound != contexts_[context].end()) return bound->second;
+  uint64_t key = uint64_t{context} << 32 | id;
+  if (context == 0) {
     if (auto it = numbers_.find(id); it != numbers_.end()) return it->second;
-  uint32_t n = depth > kMaxDepth ? fresh() : compute(id, bindings, depth + 1);
-  // Only unbound answers are kept: inside a helper the same id means other values at other calls.
-  // A value that reads none of the bindings would be the same, but telling them apart costs more
-  // than recomputing small helpers.
-  if (bindings.empty()) numbers_[id] = n;
+  } else if (auto it = boundNumbers_.find(key); it != boundNumbers_.end()) {
+    return it->second;
+  }
+  uint32_t n;
+  if (depth > kMaxDepth || visits_ >= budget_) {
+    n = fresh();
+  } else {
+    ++visits_;
+    n = compute(id, context, depth + 1);
+  }
+  // Kept whichever way it was found: a value is one value within its context, and a number of its
+  // own (too deep, over the budget) is a safe answer for every later question about it.
+  if (context == 0) numbers_[id] = n;
+  else boundNumbers_[key] = n;
   return n;
 }
 
+// The context of `call` made from `parent`: the callee's parameters bound to the numbers of the
+// call's arguments. nullopt when an argument's value cannot be known (a pointer to memory written
+// more than once).
+std::optional<ValueNumbers::Context> ValueNumbers::callContext(const Instruction& call, Context parent, int depth) {
+  if (auto it = callContexts_.find({parent, call.resultId}); it != callContexts_.end()) return it->second;
+  Bindings inner;
+  const auto& parameters = functions_.at(call.operand(0))->parameters;
+  for (size_t k = 0; k < parameters.size() && k + 1 < call.operands.size(); ++k) {
+    uint32_t argument = call.operands[k + 1];
+    const Instruction* argDef = m_.definition(argument);
+    const Instruction* argType = argDef ? m_.definition(argDef->typeId) : nullptr;
+    if (argType && argType->opcode == spv::OpTypePointer) {
+      auto held = memoryValue(argument, parent, depth);  // glslang passes copies in locals
+      if (!held) return std::nullopt;
+      inner[parameters[k].resultId] = *held;
+    } else {
+      inner[parameters[k].resultId] = numberOf(argument, parent, depth);
+    }
+  }
+  Context context = static_cast<Context>(contexts_.size());
+  contexts_.push_back(std::move(inner));
+  callContexts_[{parent, call.resultId}] = context;
+  // The callee's values in program order, as the top level is numbered: each then finds its
+  // operands already numbered, so a long body does not become a deep recursion (which would end in
+  // numbers of their own at kMaxDepth).
+  for (const auto& block : functions_.at(call.operand(0))->blocks)
+    for (const auto& inst : block.instructions)
+      if (inst.resultId) numberOf(inst.resultId, context, depth);
+  return context;
+}
+
 // The number of one component of a vector value: `vec4(p, 1).y` and `p.y` are the same.
-uint32_t ValueNumbers::component(uint32_t vector, uint32_t index, const Bindings& bindings, int depth) {
+uint32_t ValueNumbers::component(uint32_t vector, uint32_t index, Context context, int depth) {
   const Instruction* def = m_.definition(vector);
   if (def && def->opcode == spv::OpCompositeConstruct && depth <= kMaxDepth) {
     const Instruction* type = m_.definition(def->typeId);
@@ -97,7 +148,7 @@ uint32_t ValueNumbers::component(uint32_t vector, uint32_t index, const Bindings
       for (uint32_t part : def->operands) {
         const Instruction* partType = m_.definition(m_.definition(part) ? m_.definition(part)->typeId : 0);
         uint32_t size = partType && partType->opcode == spv::OpTypeVector ? partType->operand(1) : 1;
-        if (index < at + size) return size == 1 ? numberOf(part, bindings, depth + 1) : component(part, index - at, bindings, depth + 1);
+        if (index < at + size) return size == 1 ? numberOf(part, context, depth + 1) : component(part, index - at, context, depth + 1);
         at += size;
       }
     }
@@ -107,16 +158,17 @@ uint32_t ValueNumbers::component(uint32_t vector, uint32_t index, const Bindings
     const Instruction* first = m_.definition(m_.definition(def->operand(0)) ? m_.definition(def->operand(0))->typeId : 0);
     uint32_t firstSize = first && first->opcode == spv::OpTypeVector ? first->operand(1) : 0;
     if (select != 0xFFFFFFFFu && firstSize)
-      return select < firstSize ? component(def->operand(0), select, bindings, depth + 1)
-                                : component(def->operand(1), select - firstSize, bindings, depth + 1);
+      return select < firstSize ? component(def->operand(0), select, context, depth + 1)
+                                : component(def->operand(1), select - firstSize, context, depth + 1);
   }
-  return intern({kComponentTag, numberOf(vector, bindings, depth + 1), index});
+  return intern({kComponentTag, numberOf(vector, context, depth + 1), index});
 }
 
 // The value a load from `pointer` reads, when that memory is written once, by one whole value.
-std::optional<uint32_t> ValueNumbers::memoryValue(uint32_t pointer, const Bindings& bindings, int depth) {
+std::optional<uint32_t> ValueNumbers::memoryValue(uint32_t pointer, Context context, int depth) {
   uint32_t root = m_.rootVariable(pointer);
   if (!root) return std::nullopt;
+  const Bindings& bindings = contexts_[context];
   if (auto bound = bindings.find(root); bound != bindings.end() && root == pointer) return bound->second;
   auto storage = m_.storageClassOf(root);
   const Instruction* rootDef = m_.definition(root);
@@ -155,10 +207,10 @@ std::optional<uint32_t> ValueNumbers::memoryValue(uint32_t pointer, const Bindin
   if (stores == storesTo_.end() || stores->second.size() != 1) return std::nullopt;
   const Instruction* store = stores->second.front();
   if (store->opcode != spv::OpStore || store->operand(0) != root) return std::nullopt;
-  return numberOf(store->operand(1), bindings, depth + 1);
+  return numberOf(store->operand(1), context, depth + 1);
 }
 
-uint32_t ValueNumbers::compute(uint32_t id, const Bindings& bindings, int depth) {
+uint32_t ValueNumbers::compute(uint32_t id, Context context, int depth) {
   const Instruction* def = m_.definition(id);
   if (!def) return fresh();
   switch (def->opcode) {
@@ -171,48 +223,37 @@ uint32_t ValueNumbers::compute(uint32_t id, const Bindings& bindings, int depth)
       const Instruction* type = m_.definition(def->typeId);
       if (!type || type->opcode != spv::OpTypeVector) break;
       Key key = {kVectorTag, def->typeId};
-      for (uint32_t i = 0; i < type->operand(1); ++i) key.push_back(component(id, i, bindings, depth));
+      for (uint32_t i = 0; i < type->operand(1); ++i) key.push_back(component(id, i, context, depth));
       return intern(key);
     }
     case spv::OpCopyObject:
-      return numberOf(def->operand(0), bindings, depth);
+      return numberOf(def->operand(0), context, depth);
     case spv::OpLoad:
-      if (auto bound = bindings.find(def->operand(0)); bound != bindings.end()) return bound->second;  // a pointer parameter
-      if (auto value = memoryValue(def->operand(0), bindings, depth)) return *value;
+      if (auto bound = contexts_[context].find(def->operand(0)); bound != contexts_[context].end())
+        return bound->second;  // a pointer parameter
+      if (auto value = memoryValue(def->operand(0), context, depth)) return *value;
       return fresh();
     case spv::OpCompositeExtract:
       if (def->operands.size() == 2) {
         const Instruction* from = m_.definition(def->operand(0));
         const Instruction* type = from ? m_.definition(from->typeId) : nullptr;
-        if (type && type->opcode == spv::OpTypeVector) return component(def->operand(0), def->operand(1), bindings, depth);
+        if (type && type->opcode == spv::OpTypeVector) return component(def->operand(0), def->operand(1), context, depth);
       }
       break;
     case spv::OpVectorShuffle: {
       const Instruction* type = m_.definition(def->typeId);
       if (!type || type->opcode != spv::OpTypeVector) break;
       Key key = {kVectorTag, def->typeId};
-      for (uint32_t i = 0; i < type->operand(1); ++i) key.push_back(component(id, i, bindings, depth));
+      for (uint32_t i = 0; i < type->operand(1); ++i) key.push_back(component(id, i, context, depth));
       return intern(key);
     }
     case spv::OpFunctionCall: {
       auto callee = functions_.find(def->operand(0));
       auto returned = returns_.find(def->operand(0));
       if (callee == functions_.end() || returned == returns_.end() || returned->second.size() != 1) break;
-      Bindings inner;
-      const auto& parameters = callee->second->parameters;
-      for (size_t k = 0; k < parameters.size() && k + 1 < def->operands.size(); ++k) {
-        uint32_t argument = def->operands[k + 1];
-        const Instruction* argDef = m_.definition(argument);
-        const Instruction* argType = argDef ? m_.definition(argDef->typeId) : nullptr;
-        if (argType && argType->opcode == spv::OpTypePointer) {
-          auto held = memoryValue(argument, bindings, depth);  // glslang passes copies in locals
-          if (!held) return fresh();
-          inner[parameters[k].resultId] = *held;
-        } else {
-          inner[parameters[k].resultId] = numberOf(argument, bindings, depth);
-        }
-      }
-      return numberOf(returned->second.front(), inner, depth);
+      auto inner = callContext(*def, context, depth);
+      if (!inner) return fresh();
+      return numberOf(returned->second.front(), *inner, depth);
     }
     default:
       break;
@@ -224,7 +265,7 @@ uint32_t ValueNumbers::compute(uint32_t id, const Bindings& bindings, int depth)
   if (def->opcode == spv::OpCompositeInsert) firstLiteral = 2;
   for (size_t k = 0; k < def->operands.size(); ++k) {
     bool literal = k >= firstLiteral || (def->opcode == spv::OpExtInst && k < 2);
-    operands.push_back(literal ? def->operands[k] : numberOf(def->operands[k], bindings, depth));
+    operands.push_back(literal ? def->operands[k] : numberOf(def->operands[k], context, depth));
   }
   // x * 1.0 and x + 0.0 are x (the optimizer folds them the same way).
   if ((def->opcode == spv::OpFMul || def->opcode == spv::OpFAdd) && operands.size() == 2) {

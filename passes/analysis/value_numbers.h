@@ -15,11 +15,20 @@
 //
 // Numbered once, when built: later edits to the module do not change the answers, and ids made
 // after it (a pass's clones) have no number.
+//
+// Linear in the module: every value is numbered once per context (the top level, or one call of a
+// helper reached along one chain of calls) and remembered, so shared sub-expressions
+// (`a1 = a0 * a0 + a0; a2 = a1 * a1 + a1; ...`) cost one visit each, not two to the power of the
+// chain's length; and the whole numbering does at most a fixed multiple of the module's
+// instruction count in visits, past which values get numbers of their own (conservative: unequal
+// numbers say nothing). HLSL puts the whole entry point in a helper its wrapper calls, so the
+// contexts are not a corner case.
 #pragma once
 
 #include "passes/ir/module.h"
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -37,6 +46,11 @@ class ValueNumbers {
     auto na = number(a), nb = number(b);
     return na && nb && *na == *nb;
   }
+  // How many values were computed (not looked up): the work the numbering did, for the tests that
+  // hold it linear.
+  uint64_t visits() const { return visits_; }
+  // The most visits one numbering may do: a multiple of the instruction count.
+  uint64_t visitBudget() const { return budget_; }
 
  private:
   using Key = std::vector<uint32_t>;
@@ -44,16 +58,28 @@ class ValueNumbers {
   // parameter, the number of the value the argument's variable holds.
   using Bindings = std::map<uint32_t, uint32_t>;
 
-  uint32_t numberOf(uint32_t id, const Bindings& bindings, int depth);
-  uint32_t compute(uint32_t id, const Bindings& bindings, int depth);
-  uint32_t component(uint32_t vector, uint32_t index, const Bindings& bindings, int depth);
-  std::optional<uint32_t> memoryValue(uint32_t pointer, const Bindings& bindings, int depth);
+  // A context: 0 is the top level; every other one is one call instruction reached from a parent
+  // context, with the bindings of that call.
+  using Context = uint32_t;
+
+  uint32_t numberOf(uint32_t id, Context context, int depth);
+  uint32_t compute(uint32_t id, Context context, int depth);
+  uint32_t component(uint32_t vector, uint32_t index, Context context, int depth);
+  std::optional<uint32_t> memoryValue(uint32_t pointer, Context context, int depth);
+  std::optional<Context> callContext(const spirv::Instruction& call, Context parent, int depth);
   uint32_t intern(Key key);
   uint32_t fresh();
 
   const spirv::Module& m_;
   std::map<Key, uint32_t> interned_;
-  std::unordered_map<uint32_t, uint32_t> numbers_;       // unbound (top-level) numbers
+  std::unordered_map<uint32_t, uint32_t> numbers_;       // top-level numbers (context 0)
+  // Numbers in the other contexts, by (context << 32 | id): inside a helper the same id means other
+  // values at other calls, so each call's numbers are kept apart.
+  std::unordered_map<uint64_t, uint32_t> boundNumbers_;
+  std::deque<Bindings> contexts_;                        // by Context; a deque keeps references valid
+  std::map<std::pair<Context, uint32_t>, Context> callContexts_;  // (parent, call id) -> context
+  uint64_t visits_ = 0;
+  uint64_t budget_ = 0;
   std::unordered_map<uint32_t, std::vector<const spirv::Instruction*>> storesTo_;  // root -> stores
   std::unordered_map<uint32_t, const spirv::Function*> functions_;
   std::unordered_map<uint32_t, std::vector<uint32_t>> returns_;
