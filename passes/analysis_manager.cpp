@@ -6,6 +6,8 @@
 #include <spirv-tools/optimizer.hpp>
 
 #include <functional>
+#include <map>
+#include <set>
 
 namespace stereoshift {
 
@@ -32,24 +34,81 @@ const ClipPositionAnalysis& AnalysisManager::clipPositions() {
 
 namespace {
 
-std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module) {
+bool runOptimizer(const std::vector<std::string>& flags, const std::vector<uint32_t>& in, std::vector<uint32_t>* out) {
   spvtools::Optimizer optimizer(SPV_ENV_UNIVERSAL_1_0);
   optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+  if (!optimizer.RegisterPassesFromFlags(flags)) return false;
+  spvtools::OptimizerOptions options;
+  options.set_run_validator(false);
+  return optimizer.Run(in.data(), in.size(), out, options);
+}
+
+// Removes the functions no entry point reaches through calls (after exhaustive inlining: every
+// helper), with the names and decorations of what they define. Linear, unlike SPIRV-Tools' own
+// dead-function pass, which kills one instruction at a time through its def-use sets.
+void dropUnreachableFunctions(spirv::Module& module) {
+  std::set<uint32_t> reached;
+  std::vector<uint32_t> work;
+  for (const auto& entry : module.entryPoints) work.push_back(entry.operand(1));
+  std::map<uint32_t, const spirv::Function*> byId;
+  for (const auto& fn : module.functions) byId[fn.id()] = &fn;
+  while (!work.empty()) {
+    uint32_t id = work.back();
+    work.pop_back();
+    if (!reached.insert(id).second || !byId.count(id)) continue;
+    for (const auto& block : byId[id]->blocks)
+      for (const auto& inst : block.instructions)
+        if (inst.opcode == spv::OpFunctionCall) work.push_back(inst.operand(0));
+  }
+  std::set<uint32_t> removedIds;
+  std::vector<spirv::Function> kept;
+  for (auto& fn : module.functions) {
+    if (reached.count(fn.id())) {
+      kept.push_back(std::move(fn));
+      continue;
+    }
+    removedIds.insert(fn.id());
+    for (const auto& parameter : fn.parameters) removedIds.insert(parameter.resultId);
+    for (const auto& block : fn.blocks) {
+      removedIds.insert(block.labelId);
+      for (const auto& inst : block.instructions)
+        if (inst.resultId) removedIds.insert(inst.resultId);
+    }
+  }
+  module.functions = std::move(kept);
+  if (removedIds.empty()) return;
+  auto targetsRemoved = [&](const spirv::Instruction& inst) { return removedIds.count(inst.operand(0)) > 0; };
+  std::erase_if(module.debugNames, targetsRemoved);
+  std::erase_if(module.annotations, [&](const spirv::Instruction& inst) {
+    return (inst.opcode == spv::OpDecorate || inst.opcode == spv::OpDecorateId || inst.opcode == spv::OpDecorateString ||
+            inst.opcode == spv::OpMemberDecorate) && targetsRemoved(inst);
+  });
+  module.invalidateDefinitions();
+}
+
+std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module) {
   // What the analyses need to see through, and no more (SPIRV-Tools' whole performance recipe
   // cost a fifth of a tree conversion; this one about a ninth): every call inlined, private and
   // function variables turned into SSA values, structs and arrays split, constants propagated
   // and folded, duplicate values merged (the matrix chains per-eye-view follows to gl_Position
   // need the last). Chosen by measurement: the shortest list tried that keeps every analysis result
   // of the corpus and the lit tests.
-  optimizer.RegisterPassesFromFlags({"--merge-return", "--inline-entry-points-exhaustive", "--private-to-local",
-                                     "--scalar-replacement=100", "--eliminate-local-single-block",
-                                     "--eliminate-local-single-store", "--eliminate-local-multi-store", "--ccp",
-                                     "--simplify-instructions", "--redundancy-elimination"});
-  spvtools::OptimizerOptions options;
-  options.set_run_validator(false);
-  std::vector<uint32_t> words = module.encode(), folded;
+  //
+  // In two runs, with the helpers inlining left dead removed between them: HLSL's entry point is a
+  // helper its wrapper calls, and the copy of it left beside the inlined one made the SSA rewrite
+  // quadratic in its statements (SPIRV-Tools checks every use of a variable once per use where a
+  // store to it survives the single-block pass): 6,000 statements took 5 s, 30,000 over a minute.
+  std::vector<uint32_t> inlined, folded;
   std::string error;
-  if (!optimizer.Run(words.data(), words.size(), &folded, options)) return std::nullopt;
+  if (!runOptimizer({"--merge-return", "--inline-entry-points-exhaustive"}, module.encode(), &inlined)) return std::nullopt;
+  auto reduced = spirv::Module::parse(inlined, &error);
+  if (!reduced) return std::nullopt;
+  dropUnreachableFunctions(*reduced);
+  if (!runOptimizer({"--private-to-local", "--scalar-replacement=100", "--eliminate-local-single-block",
+                     "--eliminate-local-single-store", "--eliminate-local-multi-store", "--ccp",
+                     "--simplify-instructions", "--redundancy-elimination"},
+                    reduced->encode(), &folded))
+    return std::nullopt;
   return spirv::Module::parse(folded, &error);
 }
 

@@ -124,6 +124,59 @@ TEST(AnalysisManager, ViewVectorFlowLivesAndDiesWithTheFoldedCopy) {
   EXPECT_NE(analyses.foldedViewVectorFlow(), nullptr);
 }
 
+// HLSL's entry point is a helper the wrapper calls: the folded copy inlines it and keeps only the
+// entry point (a dead copy of the helper beside it made SPIRV-Tools' SSA rewrite quadratic in the
+// helper's statements), and keeps it names its values by.
+TEST(AnalysisManager, TheFoldedCopyKeepsOnlyWhatTheEntryPointReaches) {
+  ManagedModule m(R"(
+               OpCapability Shader
+               OpMemoryModel Logical GLSL450
+               OpEntryPoint Vertex %main "main" %inPos %outPos
+               OpName %helper "@main("
+               OpName %local "x"
+               OpName %kept "kept"
+               OpDecorate %inPos Location 0
+               OpDecorate %outPos BuiltIn Position
+               OpDecorate %local RelaxedPrecision
+       %void = OpTypeVoid
+     %fnVoid = OpTypeFunction %void
+      %float = OpTypeFloat 32
+         %v4 = OpTypeVector %float 4
+        %pIn = OpTypePointer Input %v4
+       %pOut = OpTypePointer Output %v4
+       %pFun = OpTypePointer Function %v4
+       %fnV4 = OpTypeFunction %v4
+      %inPos = OpVariable %pIn Input
+     %outPos = OpVariable %pOut Output
+       %main = OpFunction %void None %fnVoid
+      %entry = OpLabel
+       %kept = OpFunctionCall %v4 %helper
+               OpStore %outPos %kept
+               OpReturn
+               OpFunctionEnd
+     %helper = OpFunction %v4 None %fnV4
+       %body = OpLabel
+      %local = OpVariable %pFun Function
+          %p = OpLoad %v4 %inPos
+               OpStore %local %p
+          %q = OpLoad %v4 %local
+         %pq = OpFAdd %v4 %q %p
+               OpStore %local %pq
+          %r = OpLoad %v4 %local
+               OpReturnValue %r
+               OpFunctionEnd
+)");
+  AnalysisManager analyses(m.module, m.source, "test.vert.hlsl");
+  const spirv::Module* folded = analyses.foldedCopy();
+  ASSERT_NE(folded, nullptr);
+  ASSERT_EQ(folded->functions.size(), 1u);
+  EXPECT_EQ(folded->functions[0].id(), m.module.entryPoints[0].operand(1));
+  for (const auto& name : folded->debugNames) EXPECT_NE(name.stringOperand(1), "@main(");
+  std::string text = spirv::disassemble(folded->encode());
+  EXPECT_EQ(text.find("OpLoad %v4float %x"), std::string::npos) << text;  // the local is SSA values now
+  EXPECT_NE(text.find("OpFAdd"), std::string::npos) << text;
+}
+
 // --validate-each checks every claim a pass makes about what it preserved.
 TEST(AnalysisManager, CheckPreservedCatchesEachStaleAnalysis) {
   ManagedModule m(perspectiveVertexShader(true));
