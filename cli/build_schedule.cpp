@@ -3,6 +3,7 @@
 #include "cli/build_schedule.h"
 
 #include "cli/cli_support.h"
+#include "cli/process_failure.h"
 #include "cli/result_codec.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
@@ -136,6 +137,12 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
     JobResult& result = results[i];
     if (!outcome.completed || !decodeJobResult(outcome.payload, &result)) {
       result = workerFailure(job, outcome.completed ? "sent back an unreadable result" : outcome.failure);
+      if (!outcome.completed && !outcome.phase.empty()) {
+        // Which part of the tool it died in; a known trigger in any of the pipeline's stages.
+        result = workerFailure(job, "failed: " + describeProcessFailure(outcome, "").what);
+        for (const auto& stage : job.stages)
+          for (const auto& note : describeProcessFailure(outcome, stage.string()).notes) result.log += note + "\n";
+      }
     } else {
       nlohmann::json outputs = nlohmann::json::object();
       bool writeFailed = false;

@@ -4,6 +4,7 @@
 #include "cli/convert_command.h"
 #include "cli/depfile.h"
 #include "cli/diagnostic_output.h"
+#include "cli/process_failure.h"
 #include "cli/source_reading.h"
 #include "cli/worker_pool.h"
 
@@ -68,11 +69,12 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
       if (outcome.failure.rfind("timed out", 0) == 0) {
         char limit[32];
         std::snprintf(limit, sizeof limit, "%g", o.timeoutSeconds);
-        std::cerr << shown << ": error: conversion exceeded the " << limit
-                  << " s time limit (--timeout); no output was written\n";
+        std::cerr << shown << ": error: conversion exceeded the " << limit << " s time limit (--timeout)"
+                  << (outcome.phase.empty() ? "" : " in " + outcome.phase) << "; no output was written\n";
       } else {
-        std::cerr << shown << ": error: stereoshift " << outcome.failure
-                  << " while converting this shader; no output was written\n";
+        ProcessFailureText failure = describeProcessFailure(outcome, paths.front());
+        std::cerr << shown << ": error: " << failure.what << " while converting this shader; no output was written\n";
+        for (const auto& note : failure.notes) std::cerr << note << "\n";
       }
       printErrorSummary(1);
       return false;

@@ -1,6 +1,7 @@
 #include "cli/worker_pool.h"
 
 #include "cli/fd_io.h"
+#include "passes/crash_phase.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -55,6 +56,7 @@ struct Worker {
   std::string group;   // affinity of its last task
   std::vector<std::string> warmGroups;  // groups this process has run a task of
   bool firstOfGroup = false;            // its current task is its first of `group` (pays the set-up)
+  CrashPhaseSlot* phase = nullptr;      // shared with the process: the phase its task is in
 };
 
 // `others`: the pool, whose parent-side pipe ends a new child must not keep open (a child holding
@@ -67,12 +69,15 @@ bool startWorker(Worker& w, const std::vector<Worker>& others, const std::functi
     ::close(toChild[1]);
     return false;
   }
+  CrashPhaseSlot* phase = newSharedCrashPhaseSlot();  // null without one: failures then name no phase
   pid_t pid = ::fork();
   if (pid < 0) {
     for (int fd : {toChild[0], toChild[1], fromChild[0], fromChild[1]}) ::close(fd);
+    freeSharedCrashPhaseSlot(phase);
     return false;
   }
   if (pid == 0) {
+    publishCrashPhasesTo(phase);
     ::close(toChild[1]);
     ::close(fromChild[0]);
     for (const auto& other : others)
@@ -85,6 +90,7 @@ bool startWorker(Worker& w, const std::vector<Worker>& others, const std::functi
   ::close(fromChild[1]);
   w = Worker{};
   w.pid = pid;
+  w.phase = phase;
   w.requests = toChild[1];
   w.results = fromChild[0];
   return true;
@@ -104,11 +110,17 @@ int stopWorker(Worker& w, bool kill) {
   }
   w.pid = -1;
   w.busy = false;
+  freeSharedCrashPhaseSlot(w.phase);
+  w.phase = nullptr;
   return status;
 }
 
-// Reaps a worker that closed its pipe mid-task and says why it died.
-std::string reapDead(Worker& w) { return describeExitStatus(stopWorker(w, false)); }
+// Reaps a worker that closed its pipe mid-task and says why it died; `phase` gets what it was
+// doing then (crash_phase.h), empty when it was in no marked phase.
+std::string reapDead(Worker& w, std::string* phase) {
+  *phase = crashPhaseOf(w.phase);
+  return describeExitStatus(stopWorker(w, false));
+}
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -152,11 +164,18 @@ class IsolatedRun {
 
   bool grouped() const { return affinity_.size() == count_; }
 
-  void fail(size_t index, std::string why, double seconds) {
+  void fail(size_t index, std::string why, double seconds, std::string phase = {}) {
     TaskOutcome outcome;
     outcome.failure = std::move(why);
+    outcome.phase = std::move(phase);
     outcome.seconds = seconds;
     onDone_(index, std::move(outcome));
+  }
+
+  void failDead(size_t index, Worker& w, double seconds) {
+    std::string phase;
+    std::string why = reapDead(w, &phase);
+    fail(index, why, seconds, phase);
   }
 
   bool started(const std::string& group) const {
@@ -226,7 +245,7 @@ class IsolatedRun {
       w.started = Clock::now();
       w.buffer.clear();
       if (writeAll(w.requests, &wire, sizeof wire)) return true;
-      fail(index, reapDead(w), 0);  // died between tasks
+      failDead(index, w, 0);  // died between tasks
     }
     return false;
   }
@@ -281,7 +300,7 @@ class IsolatedRun {
     if (n <= 0) {  // EOF mid-task: the worker died
       size_t index = w.task;
       double seconds = secondsSince(w.started);
-      fail(index, reapDead(w), seconds);
+      failDead(index, w, seconds);
       dispatch(w);
       dispatchIdle();
       return;
@@ -310,10 +329,11 @@ class IsolatedRun {
   void stopLate(Worker& w) {
     size_t index = w.task;
     double seconds = secondsSince(w.started);
+    std::string phase = crashPhaseOf(w.phase);
     stopWorker(w, true);
     char text[64];
     std::snprintf(text, sizeof text, "timed out after %g s", timeoutSeconds_);
-    fail(index, text, seconds);
+    fail(index, text, seconds, phase);
     dispatch(w);
     dispatchIdle();
   }

@@ -2,6 +2,7 @@
 #include "passes/analysis_manager.h"
 
 #include "passes/analysis/stage_interface.h"
+#include "passes/crash_phase.h"
 
 #include <spirv-tools/optimizer.hpp>
 
@@ -87,6 +88,7 @@ void dropUnreachableFunctions(spirv::Module& module) {
 }
 
 std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module) {
+  ScopedCrashPhase phase(kFoldedCopyPhase);
   // What the analyses need to see through, and no more (SPIRV-Tools' whole performance recipe
   // cost a fifth of a tree conversion; this one about a ninth): every call inlined, private and
   // function variables turned into SSA values, structs and arrays split, constants propagated

@@ -24,6 +24,27 @@ TEST(GlslangLog, LocatedErrorGetsTheTokensColumn) {
   EXPECT_EQ(d[0].message, "'foo' : undeclared identifier");
 }
 
+// HLSL's parser, where it gives up (a stray `}`), writes `file(line): error at column N, message`
+// without "ERROR:": its line and column are kept, and the text there is named.
+TEST(GlslangLog, HlslParserLineKeepsItsLineAndColumn) {
+  auto d = parse("main.vert(3): error at column 1, HLSL parsing failed.\n", "float4 main() : SV_Position {\n}\n}\n");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].severity, Severity::Error);
+  EXPECT_EQ(d[0].file, "main.vert");
+  EXPECT_EQ(d[0].line, 3);
+  EXPECT_EQ(d[0].column, 1);
+  EXPECT_EQ(d[0].message, "HLSL parsing failed at '}'");
+  // A file name with parentheses: the last "(" before the marker opens the line number.
+  d = parse("dir(1)/a.hlsl(12): error at column 7, HLSL parsing failed.\n");
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].file, "dir(1)/a.hlsl");
+  EXPECT_EQ(d[0].line, 12);
+  EXPECT_EQ(d[0].column, 7);
+  // Not that form: a line that only looks like it.
+  EXPECT_TRUE(parse("a(x): error at column 1, HLSL parsing failed.\n").empty());
+  EXPECT_TRUE(parse("a(1): error at column y, HLSL parsing failed.\n").empty());
+}
+
 TEST(GlslangLog, FileZeroAndEmptyTokenMeanTheMainFileAndTheLinesFirstCharacter) {
   auto d = parse("WARNING: 0:3: '' : something odd\n");
   ASSERT_EQ(d.size(), 1u);
@@ -74,6 +95,30 @@ TEST(GlslangLog, LineNumberPastIntReadsAsWholeFile) {
   auto d = parse("ERROR: main.vert:99999999999999999999: 'foo' : huge\n");
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].line, 0);
+}
+
+}  // namespace
+}  // namespace stereoshift
+
+// The HLSL construct known to crash glslang (frontend/known_crashes.h), recognised at file scope only.
+#include "transpiler/frontend/known_crashes.h"
+
+namespace stereoshift {
+namespace {
+
+TEST(KnownGlslangCrashes, AGlobalNamedLikeAStruct) {
+  auto found = knownGlslangCrashTrigger("struct P { float4 x; };\n// float4 P; in a comment\nfloat4 P;\n",
+                                        SourceLanguage::Hlsl);
+  ASSERT_TRUE(found);
+  EXPECT_EQ(found->line, 3);
+  EXPECT_EQ(found->column, 8);
+  EXPECT_NE(found->what.find("'P'"), std::string::npos);
+  EXPECT_TRUE(knownGlslangCrashTrigger("struct Light { float3 d; };\nfloat3 Light[4] : register(b1);\n", SourceLanguage::Hlsl));
+  // Not the construct: the struct used as a type, a local of its name, a member, GLSL.
+  EXPECT_FALSE(knownGlslangCrashTrigger("struct VSOut { float4 p : SV_Position; };\nVSOut main() { VSOut VSOut; return VSOut; }\n",
+                                        SourceLanguage::Hlsl));
+  EXPECT_FALSE(knownGlslangCrashTrigger("struct P { float4 P; };\nP p;\n", SourceLanguage::Hlsl));
+  EXPECT_FALSE(knownGlslangCrashTrigger("struct P { vec4 x; };\nvec4 P;\n", SourceLanguage::Glsl));
 }
 
 }  // namespace

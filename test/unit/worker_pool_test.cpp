@@ -1,8 +1,10 @@
 // The worker pool's scheduling by affinity group, with tasks that imitate glslang: the first task of
 // a group in a process pays a set-up (the built-in symbol tables), later ones do not.
 #include "cli/worker_pool.h"
+#include "passes/crash_phase.h"
 
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -68,6 +70,41 @@ TEST(WorkerPool, EveryTaskRunsOnceWithOneWorker) {
   PoolRun run = runGroups(groups, 0, 1, 1);
   EXPECT_EQ(run.completed, groups.size());
   for (const auto& [group, pids] : run.processesOf) EXPECT_EQ(pids.size(), 1u) << group;
+}
+
+}  // namespace
+}  // namespace stereoshift
+
+// A task that dies inside a marked phase (passes/crash_phase.h): its outcome names the signal and
+// the phase; the worker after it starts with no phase; a task that dies outside every phase names none.
+namespace stereoshift {
+namespace {
+
+TEST(WorkerPool, ADeadTaskNamesThePhaseItDiedIn) {
+  std::map<size_t, TaskOutcome> outcomes;
+  runIsolated(
+      3, 1, 0,
+      [](size_t i) -> std::string {
+        if (i == 0) {
+          ScopedCrashPhase phase("the front end (a test phase)");
+          ::raise(SIGSEGV);
+        }
+        if (i == 1) {
+          { ScopedCrashPhase done("a phase that ended"); }
+          ::raise(SIGABRT);
+        }
+        return "ok";
+      },
+      [&](size_t i, TaskOutcome&& o) { outcomes[i] = std::move(o); });
+  ASSERT_EQ(outcomes.size(), 3u);
+  EXPECT_FALSE(outcomes[0].completed);
+  EXPECT_EQ(outcomes[0].failure, "crashed (signal 11, SIGSEGV)");
+  EXPECT_EQ(outcomes[0].phase, "the front end (a test phase)");
+  EXPECT_FALSE(outcomes[1].completed);
+  EXPECT_EQ(outcomes[1].failure, "crashed (signal 6, SIGABRT)");
+  EXPECT_EQ(outcomes[1].phase, "");
+  EXPECT_TRUE(outcomes[2].completed);
+  EXPECT_EQ(outcomes[2].phase, "");
 }
 
 }  // namespace

@@ -1,4 +1,6 @@
 #include "transpiler/backend/back_end.h"
+
+#include "passes/crash_phase.h"
 #include "transpiler/source/identifiers.h"
 
 #include <spirv_cross/spirv_glsl.hpp>
@@ -83,6 +85,7 @@ std::string renameEntryPoint(std::string text, const std::string& entryPoint) {
 EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const BackEndOptions& options,
                          EyeSelect eyeSelect,
                       const EmitHints& hints, const std::string& file, Diagnostics& diags) {
+  ScopedCrashPhase phase(kSpirvCrossPhase);
   EmittedSource result;
   result.language = resolveTarget(info, options);
   try {

@@ -73,12 +73,33 @@ VersionLine findVersion(const std::string& text) {
     return v;
   }
   v.version = static_cast<int>(value);
+  bool esVersion = v.version == 300 || v.version == 310 || v.version == 320;
   if (digits == number.size() && words.size() > 2 && words[2].kind == source::TokenKind::Identifier) {
     std::string profile = source::spelledString(text, words[2]);
     if (profile == "es" || profile == "core" || profile == "compatibility") {
       v.es = profile == "es";
       v.end = words[2].end;
+      // The profile the language allows at this version (GLSL 4.60 and ESSL 3.20, "Version and
+      // profile"): none before 1.50 and in ESSL 1.00, only `es` at 300-320, never `es` elsewhere.
+      // The input's error, at the profile, in every stage: a driver refuses the whole shader.
+      if (v.version < 150 || v.version == 100)
+        v.problem = "#version " + std::to_string(v.version) + " " + profile +
+                    ": versions before 150 (and ESSL 1.00) do not allow a profile token";
+      else if (esVersion && !v.es)
+        v.problem = "#version " + std::to_string(v.version) + " " + profile +
+                    ": versions 300, 310 and 320 are ESSL and take only the 'es' profile";
+      else if (!esVersion && v.es)
+        v.problem = "#version " + std::to_string(v.version) + " es: only versions 300, 310 and 320 have the 'es' profile";
+      if (!v.problem.empty()) v.problemAt = words[2].begin;
+    } else {
+      v.problem = "#version " + std::to_string(v.version) + ": '" + profile.substr(0, 32) +
+                  "' is not a profile (es, core or compatibility)";
+      v.problemAt = words[2].begin;
     }
+  } else if (esVersion) {
+    v.es = true;  // what the writer meant; the line is still wrong
+    v.problem = "#version " + std::to_string(v.version) + ": versions 300, 310 and 320 are ESSL and need the 'es' profile";
+    v.problemAt = operand.begin;
   }
   if (v.version == 100) v.es = true;
   return v;

@@ -2,6 +2,7 @@
 // read, the limits its tree must keep, and the SPIR-V it makes.
 #include "transpiler/frontend/glslang_invocation.h"
 
+#include "passes/crash_phase.h"
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/include_resolver.h"
 #include "transpiler/frontend/source_limits.h"
@@ -244,6 +245,7 @@ int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage l
 Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
                            Client client, const std::string& entry, const FrontEndOptions& options) {
   Attempt attempt;
+  ScopedCrashPhase phase(language == SourceLanguage::Hlsl ? kGlslangHlslPhase : kGlslangGlslPhase);
   EShLanguage lang = toGlslang(stage);
   glslang::TShader shader(lang);
   const char* strings[] = {text.c_str()};

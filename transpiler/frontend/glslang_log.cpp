@@ -45,9 +45,10 @@ std::string trim(std::string s) {
 
 // One line of glslang's log, taken apart by hand: the format needs no backtracking, and std::regex
 // costs seconds of compile time per use (more under the sanitizers) and is slow to run. glslang
-// writes two forms:
+// writes three forms:
 //   ERROR: <file>:<line>: '<token>' : <message>     (located)
 //   ERROR: <message>                                (plain; also WARNING)
+//   <file>(<line>): error at column <n>, <message>  (HLSL's parser, where it gives up: a stray `}`)
 // The file is the shortest prefix followed by ":<digits>: '", the token runs to the first "' : " after
 // its opening quote, as glslang never puts that sequence in a file name. A line with a carriage return
 // is not glslang's (it writes \n only) and is skipped.
@@ -55,7 +56,32 @@ struct LogLine {
   bool error = false;
   bool located = false;
   std::string file, digits, token, message;
+  std::string columnDigits;  // the HLSL parser's form gives the column itself
 };
+
+bool allDigits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// `<file>(<line>): error at column <n>, <message>`: the last "(" before "): error at column " opens
+// the line number (a file name may hold parentheses, the number cannot).
+std::optional<LogLine> splitHlslParserLine(std::string_view rest) {
+  constexpr std::string_view kMarker = "): error at column ";
+  size_t marker = rest.find(kMarker);
+  if (marker == std::string_view::npos) return std::nullopt;
+  size_t open = rest.rfind('(', marker);
+  if (open == std::string_view::npos || !allDigits(rest.substr(open + 1, marker - open - 1))) return std::nullopt;
+  size_t columnStart = marker + kMarker.size();
+  size_t comma = rest.find(", ", columnStart);
+  if (comma == std::string_view::npos || !allDigits(rest.substr(columnStart, comma - columnStart))) return std::nullopt;
+  LogLine out;
+  out.error = out.located = true;
+  out.file = std::string(rest.substr(0, open));
+  out.digits = std::string(rest.substr(open + 1, marker - open - 1));
+  out.columnDigits = std::string(rest.substr(columnStart, comma - columnStart));
+  out.message = std::string(rest.substr(comma + 2));
+  return out;
+}
 
 std::optional<LogLine> splitLogLine(const std::string& line) {
   LogLine out;
@@ -67,7 +93,7 @@ std::optional<LogLine> splitLogLine(const std::string& line) {
   } else if (rest.starts_with("WARNING: ")) {
     rest.remove_prefix(9);
   } else {
-    return std::nullopt;
+    return splitHlslParserLine(rest);
   }
   for (size_t colon = rest.find(':'); colon != std::string_view::npos; colon = rest.find(':', colon + 1)) {
     size_t digitsEnd = colon + 1;
@@ -107,9 +133,26 @@ void parseGlslangLog(const std::string& log, const std::string& mainFile,
       if (message == "compilation terminated") continue;  // glslang's follow-up to the real error
       if (file == "0" || file.empty()) file = mainFile;
       int column = 1;
-      for (const auto& [name, text] : sources)
-        if (name == file) column = columnOf(lineOf(text, lineNo), token);
+      if (!parsed->columnDigits.empty()) {
+        if (std::from_chars(parsed->columnDigits.data(), parsed->columnDigits.data() + parsed->columnDigits.size(), column)
+                .ec != std::errc() || column < 1)
+          column = 1;
+      } else {
+        for (const auto& [name, text] : sources)
+          if (name == file) column = columnOf(lineOf(text, lineNo), token);
+      }
       std::string full = token.empty() ? message : "'" + token + "' : " + message;
+      // The HLSL parser names no token: name what is written where it stopped.
+      if (!parsed->columnDigits.empty())
+        for (const auto& [name, text] : sources)
+          if (name == file) {
+            std::string lineText = lineOf(text, lineNo);
+            size_t at = static_cast<size_t>(column - 1), end = at;
+            while (end < lineText.size() && isIdentifierChar(lineText[end])) ++end;
+            if (end == at && at < lineText.size() && !std::isspace(static_cast<unsigned char>(lineText[at]))) end = at + 1;
+            if (end > at && message.ends_with("."))
+              full = message.substr(0, message.size() - 1) + " at '" + lineText.substr(at, std::min<size_t>(end - at, 32)) + "'";
+          }
       Diagnostic d{parsed->error ? Severity::Error : Severity::Warning, file, lineNo, column, full};
       out.add(std::move(d));
     } else {

@@ -1,6 +1,7 @@
 // This turns ESSL 100 and desktop GLSL 110-150 into ESSL 310 / GLSL 330 for analysis: see legacy_glsl.h.
 #include "transpiler/frontend/legacy_glsl.h"
 
+#include "passes/crash_phase.h"
 #include "transpiler/source/lexer.h"
 
 #include <glslang/Public/ResourceLimits.h>
@@ -488,6 +489,7 @@ bool verifyLegacyCompiles(const std::string& text, Stage stage, int version, boo
   // prints its whole built-in text to stdout and fails).
   EProfile profile = es ? EEsProfile : (version >= 150 ? ECoreProfile : ENoProfile);
   glslang::TShader::ForbidIncluder noIncludes;
+  ScopedCrashPhase phase(kRecompilePhase);
   bool parsed = shader.parse(GetDefaultResources(), version, profile, false, false, EShMsgDefault, noIncludes);
   return linkParsedShader(shader, parsed, EShMsgDefault, displayName, text, diags);
 }

@@ -2,6 +2,7 @@
 // glslang, with its errors, under the conversion's environment (`--verify`, the splices' checks).
 #include "transpiler/frontend/front_end.h"
 
+#include "passes/crash_phase.h"
 #include "transpiler/frontend/glslang_invocation.h"
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/include_resolver.h"
@@ -40,6 +41,7 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
                                                                             : std::vector<std::string>{}),
                      text.size());
   glslang::TShader::Includer& includes = includer ? static_cast<glslang::TShader::Includer&>(*includer) : noIncludes;
+  ScopedCrashPhase phase(kRecompilePhase);
   bool parsed = shader.parse(GetDefaultResources(), 100, false, static_cast<EShMessages>(messages), includes);
   return linkParsedShader(shader, parsed, messages, displayName, text, diags);
 }
