@@ -29,8 +29,11 @@ struct LimitViolation {
   std::string message;
 };
 
-// The first place `text` goes past kMaxBracketNesting, if any. (The tree limits are checked on
-// glslang's tree in the front end, after parsing and before anything walks the tree.)
+// The first place `text` goes past a limit glslang cannot be trusted with, if any: kMaxBracketNesting
+// brackets, kMaxControlFlowNesting nested statements (if / loops / switch, read from the text as the
+// grammar nests them), or an expression whose operators at one bracket level run past
+// kMaxSyntaxTreeDepth. (The same tree limits are checked again on glslang's tree, after parsing and
+// before anything walks it, where macros count too.)
 std::optional<LimitViolation> findNestingViolation(const std::string& text);
 
 // "16 MiB", "3.2 MiB", "812 KiB": a byte count for messages.
