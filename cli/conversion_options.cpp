@@ -34,6 +34,7 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("--target", o.target, "Output language: glsl, essl, hlsl, msl, spirv, spirv-asm (default: the input's own)");
   app.add_option("--target-version", o.targetVersion, "GLSL/ESSL version or HLSL shader model (50, 51, 60) of the output");
   app.add_option("--eye-source", o.eyeSource, "Where eyeSign/separation/convergence live: auto, uniform-block, push-constant, spec-constant, loose-uniforms; "
+                 "3dmigoto (HLSL: 3Dmigoto's StereoParams texture at t125); "
                  "or single-pass stereo, eyeSign from the view index (multiview) or the instance index (instanced)");
   app.add_option("--multiview-params", o.singlePassParams,
                  "With --eye-source multiview|instanced: where separation/convergence live (auto, uniform-block, "
@@ -97,7 +98,7 @@ const std::map<std::string, std::vector<std::string>>& enumeratedOptions() {
   static const std::map<std::string, std::vector<std::string>> options = {
       {"--stage", {"vert", "tesc", "tese", "geom", "frag", "comp", "mesh", "task"}},
       {"--target", {"glsl", "essl", "hlsl", "msl", "spirv", "spirv-asm"}},
-      {"--eye-source", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms", "multiview", "instanced"}},
+      {"--eye-source", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms", "multiview", "instanced", "3dmigoto"}},
       {"--multiview-params", {"auto", "uniform-block", "push-constant", "spec-constant", "loose-uniforms"}},
       {"--eye-route", {"layer", "viewport"}},
       {"--shift-form", {"branch", "select"}},
@@ -204,6 +205,14 @@ std::optional<std::string> finishEyeOptions(CliOptions& o) {
   if (o.eyeRoute == "layer") o.t.eye.route = EyeRoute::Layer;
   else if (o.eyeRoute == "viewport") o.t.eye.route = EyeRoute::Viewport;
   else return unknownValue("--eye-route", o.eyeRoute);
+  // 3Dmigoto's StereoParams texture (t125): the passes analyse with a cbuffer of an internal name in
+  // its place (so that the dump's own `StereoParams` declaration is no clash), the HLSL splice
+  // renders the texture.
+  o.t.eyeFrom3DMigoto = o.eyeSource == "3dmigoto";
+  if (o.t.eyeFrom3DMigoto) {
+    paramsSource = "uniform-block";
+    if (o.t.eye.blockName == "StereoParams") o.t.eye.blockName = "stereoshift_StereoParams";
+  }
   auto src = sources.find(paramsSource);
   if (src == sources.end()) return unknownValue("--eye-source", o.eyeSource);
   for (const auto& [option, name] : {std::pair{"--block-name", &o.t.eye.blockName}, std::pair{"--instance-name", &o.t.eye.instanceName}})
@@ -304,6 +313,7 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
       {"forceReemit", t.forceReemit},
   };
   if (t.requireAnalysis) description["requireAnalysis"] = true;  // only when given: default keys unchanged
+  if (t.eyeFrom3DMigoto) description["eyeFrom3DMigoto"] = true;
   // Only when given, so the cache keys of builds without -x stay what they were.
   if (t.language) description["language"] = static_cast<int>(*t.language);
   if (t.targetEnv) description["targetEnv"] = targetEnvName(*t.targetEnv);

@@ -7,6 +7,7 @@
 #include "transpiler/backend/splice_routes.h"
 #include "transpiler/text_only_shift.h"
 #include "transpiler/frontend/hlsl_effects.h"
+#include "transpiler/frontend/hlsl_lift.h"
 #include "transpiler/frontend/legacy_glsl.h"
 #include "transpiler/output_version.h"
 #include "transpiler/source/stage_rules.h"
@@ -346,7 +347,7 @@ bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options,
     return false;
   }
   bool ok = check.legacy ? verifyLegacyCompiles(check.text, check.stage, check.version, check.es, display, verifyDiags)
-                         : verifyCompiles(check.blankEffects ? blankEffectBlocks(check.text) : check.text, check.language,
+                         : verifyCompiles(check.blankEffects ? hlslForGlslang(check.text) : check.text, check.language,
                                           check.stage, check.entryPoint, check.vulkanSemantics, display, verifyDiags,
                                           &options, check.includeFrom);
   if (ok) return true;
@@ -407,6 +408,16 @@ bool emitStage(StagePlan& plan) {
     }
     if (decision.kind == RouteDecision::Refuse) {
       plan.diags.error(file, decision.why);
+      return false;
+    }
+    // 3Dmigoto's StereoParams texture is rendered by the HLSL splice alone; a stage that needs
+    // another route to change it cannot take its eye parameters from there (a copy changes nothing).
+    if (plan.options.eyeFrom3DMigoto && route->name() != std::string_view("hlsl-source-splice") &&
+        route->name() != std::string_view("copy-through")) {
+      plan.diags.error(file, std::string("--eye-source 3dmigoto: the eye parameters are 3Dmigoto's StereoParams texture, "
+                                         "which only the HLSL source splice writes; this stage takes the ") +
+                                 route->name() + " route" +
+                                 (plan.record.emit.notes.empty() ? "" : " (" + plan.record.emit.notes.back() + ")"));
       return false;
     }
     if (route->needsOtherEntryPoints() && plan.info.stage == Stage::Vertex) {

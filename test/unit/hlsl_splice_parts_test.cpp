@@ -186,7 +186,7 @@ TEST(HlslSpliceEditBuffer, BlockAfterStartsOnANewLine) {
 // The text rendering follows the ShiftSpec: every form the SPIR-V route knows.
 TEST(HlslSpliceShiftText, RendersEveryForm) {
   ShiftHelper helper{"VSOut", "stereoshift_shift_VSOut", ".pos"};
-  stereoshift::ShiftSpec spec;
+  stereoshift::HlslSpliceOptions spec;
   std::string plain = shiftFunctionText(spec, helper, "\n");
   EXPECT_NE(plain.find("    if (eyeSign != 0.0f && abs(stereoshift_v.pos.w - 1.0f) > 9.99999975e-06f && "
                        "!isinf(stereoshift_v.pos.w))\n    {\n        precise float stereoshift_x = stereoshift_v.pos.x + "
@@ -228,7 +228,7 @@ TEST(HlslSpliceShiftText, RendersEveryForm) {
 // copy's statements get their own scope, so the compensated form's fixed temporaries never clash.
 TEST(HlslSpliceShiftText, ShiftsHaloCopiesInTheSameHelper) {
   ShiftHelper helper{"VSOut", "stereoshift_shift_VSOut", ".pos", {".copy"}};
-  stereoshift::ShiftSpec spec;
+  stereoshift::HlslSpliceOptions spec;
   std::string plain = shiftFunctionText(spec, helper, "\n");
   EXPECT_NE(plain.find("precise float stereoshift_x1 = stereoshift_v.copy.x + (eyeSign * separation) * "
                        "(stereoshift_v.copy.w - convergence);"),

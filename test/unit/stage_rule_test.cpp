@@ -164,5 +164,21 @@ TEST(TargetEnv, GlslcNames) {
   EXPECT_STREQ(targetEnvName(TargetEnv::Vulkan1_3), "vulkan1.3");
 }
 
+// 3Dmigoto's dumps: 16 hex digits, the stage's two letters, `_replace.txt`; each its own pipeline.
+TEST(StageRule, ThreeDMigotoDumpNames) {
+  EXPECT_EQ(stageOf3DMigotoDump("ShaderFixes/0123456789abcdef-vs_replace.txt"), Stage::Vertex);
+  EXPECT_EQ(stageOf3DMigotoDump("0123456789ABCDEF-ps_replace.txt"), Stage::Fragment);
+  EXPECT_EQ(stageOf3DMigotoDump("a/b/0123456789abcdef-ds_replace.txt"), Stage::TessEvaluation);
+  EXPECT_EQ(stageOf3DMigotoDump("0123456789abcdef-cs_REPLACE.TXT"), Stage::Compute);
+  for (const char* not_a_dump : {"0123456789abcdef-vs.txt", "0123456789abcde-vs_replace.txt",
+                                 "0123456789abcdeg-vs_replace.txt", "0123456789abcdef-xs_replace.txt",
+                                 "notes_vs_replace.txt", "0123456789abcdef-vs_replace.txt.bak"})
+    EXPECT_FALSE(stageOf3DMigotoDump(not_a_dump)) << not_a_dump;
+  StagedName named = readStagedName("ShaderFixes/0123456789abcdef-vs_replace.txt");
+  EXPECT_EQ(named.stage, Stage::Vertex);
+  EXPECT_EQ(named.key, "ShaderFixes/0123456789abcdef-vs_replace.txt");
+  EXPECT_NE(pipelineKey("F/0123456789abcdef-vs_replace.txt"), pipelineKey("F/0123456789abcdef-ps_replace.txt"));
+}
+
 }  // namespace
 }  // namespace stereoshift

@@ -15,6 +15,10 @@ struct BackEndOptions {
   // --require-analysis: a stage glslang cannot parse is an error, never shifted from its text alone
   // (text_only_shift.h).
   bool requireAnalysis = false;
+  // --eye-source 3dmigoto: the eye parameters are 3Dmigoto's `StereoParams` texture at t125
+  // (texel 0: x separation with the eye's sign, y convergence), rendered by the HLSL source splice
+  // only; the passes analyse with an internal cbuffer in its place.
+  bool eyeFrom3DMigoto = false;
 };
 
 }  // namespace stereoshift

@@ -29,6 +29,7 @@ std::optional<SpliceError> checkOptions(const HlslSpliceOptions& opt) {
     return SpliceError{npos, "invalid entry point name '" + opt.entryPoint + "'"};
   }
   std::vector<std::string> names = {opt.cbufferName, opt.eyeSignName, opt.separationName, opt.convergenceName};
+  if (opt.stereoParamsTexture) names = {opt.cbufferName};  // the others are the texel's components
   for (const auto& n : names) {
     if (!isValidIdentifier(n)) return SpliceError{npos, "invalid stereo parameter name '" + n + "'"};
   }
@@ -45,7 +46,17 @@ std::optional<SpliceError> splice(const HlslSpliceOptions& options, const TokenV
                                   int* sites) {
   TopLevel top;
   if (auto err = parseTopLevel(view, top)) return err;
-  SpliceUnit unit{options, view, top, edits};
+  HlslSpliceOptions effective = options;
+  if (options.stereoParamsTexture) {
+    // The dump's own declaration (its "3Dmigoto declarations") is the one 3Dmigoto binds; any other
+    // resource at t125 would be shadowed by the one declared here.
+    effective.declareStereoParams = !top.names.count("StereoParams");
+    for (size_t k = 0; effective.declareStereoParams && k + 2 < view.tokens.size(); ++k)
+      if (view.isWord(k, "register") && view.isPunct(k + 1, '(') && lower(view.text(k + 2)) == "t125")
+        return SpliceError{view.tokens[k + 2].begin,
+                           "register(t125) is taken by another resource: 3Dmigoto's StereoParams texture lives there", true};
+  }
+  SpliceUnit unit{effective, view, top, edits};
   if (options.vertex) {
     std::vector<HlslSplicedEntry> wanted = options.vertexEntries;
     if (wanted.empty()) wanted.push_back({options.entryPoint, {}});
@@ -94,9 +105,9 @@ Stage stageOfSignature(const TokenView& view, const TopLevel& top, const Functio
     if (view.isIdent(t) && !modifierWords().count(std::string(view.text(t)))) returnType = std::string(view.text(t));
   }
   std::string semantic = f.semTok != npos ? lower(view.text(f.semTok)) : "";
-  if (semantic == "sv_position" || top.positionPath(returnType)) return Stage::Vertex;
+  if (isPositionSemantic(semantic) || top.positionPath(returnType)) return Stage::Vertex;
   for (const auto& p : f.params) {
-    if (p.isOut && (lower(p.semantic) == "sv_position" || top.positionPath(p.typeName))) return Stage::Vertex;
+    if (p.isOut && (isPositionSemantic(p.semantic) || top.positionPath(p.typeName))) return Stage::Vertex;
   }
   if (semantic.starts_with("sv_target") || semantic.starts_with("sv_depth")) return Stage::Fragment;
   for (const auto& p : f.params) {
@@ -145,6 +156,14 @@ std::vector<HlslEntryPoint> findHlslEntryPoints(const std::string& source) {
     }
   }
   return found;
+}
+
+void useStereoParamsTexture(HlslSpliceOptions& options) {
+  options.stereoParamsTexture = true;
+  options.cbufferName = std::string(kPrefix) + "_stereo";
+  options.eyeSignName.clear();  // the separation carries the eye's sign
+  options.separationName = options.cbufferName + ".x";
+  options.convergenceName = options.cbufferName + ".y";
 }
 
 HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options) {

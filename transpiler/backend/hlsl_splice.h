@@ -64,6 +64,13 @@ struct HlslSpliceOptions : ShiftSpec {
   std::vector<HlslSplicedEntry> vertexEntries;
   std::string cbufferName = "StereoParams";
   uint32_t cbufferRegister = 0;  // register(b<N>); an error if the source already uses b<N> in space0
+  // --eye-source 3dmigoto: no cbuffer; 3Dmigoto's `Texture2D<float4> StereoParams : register(t125)`
+  // (declared unless the file declares it: dumps carry it in their "3Dmigoto declarations") is read
+  // once per shift helper, texel 0 into `stereoshift_stereo`, and the shift is
+  // `x + stereoshift_stereo.x * (w - stereoshift_stereo.y)` (x is the separation with the eye's
+  // sign, 0 in mono; y the convergence). The shift names are set by useStereoParamsTexture.
+  bool stereoParamsTexture = false;
+  bool declareStereoParams = true;  // set by the splice: false when the file declares StereoParams
   // The epsilon is printed with 9 significant digits (round-trips a float); `precise` computes the
   // shifted x into a `precise float` temporary.
 };
@@ -79,6 +86,9 @@ struct HlslSpliceResult {
 };
 
 HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options);
+
+// Sets `options` up for 3Dmigoto's StereoParams texture (see stereoParamsTexture).
+void useStereoParamsTexture(HlslSpliceOptions& options);
 
 // An entry point of an HLSL file, as its text shows it: named by a technique's
 // `CompileShader(<profile>, Name(...))` (the profile gives the stage), or a function whose signature

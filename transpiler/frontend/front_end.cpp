@@ -8,6 +8,7 @@
 #include "transpiler/frontend/glsl_lift.h"
 #include "transpiler/frontend/glslang_invocation.h"
 #include "transpiler/frontend/hlsl_effects.h"
+#include "transpiler/frontend/hlsl_lift.h"
 #include "transpiler/frontend/language_detect.h"
 #include "transpiler/frontend/legacy_glsl.h"
 #include "transpiler/frontend/source_limits.h"
@@ -78,8 +79,10 @@ void compileHlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
       return x.message.find("Entry point not found") != std::string::npos;
     });
   };
-  // Effect files: glslang parses the HLSL once technique and state blocks are blanked out.
-  std::string blanked = blankEffectBlocks(input.contents);
+  // Effect files: glslang parses the HLSL once technique and state blocks are blanked out; the
+  // idioms of decompiled shaders it refuses are lifted (hlsl_lift.h), for the analysis only.
+  std::string lifted;
+  std::string blanked = hlslForGlslang(input.contents, &lifted);
   Attempt a;
   bool found = false;
   for (const auto& candidate : candidates) {
@@ -103,6 +106,7 @@ void compileHlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   recordDecisions(result, stage, decided);
   result.info.entryPoint = entry;
   result.info.vulkan = true;
+  result.info.liftedBecause = lifted;
   // Conservative: a mention in a comment only makes the injected binding skip more numbers.
   result.info.vulkanBindings = input.contents.find("vk::binding") != std::string::npos;
   result.includedFiles = std::move(a.included);

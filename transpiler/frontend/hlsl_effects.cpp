@@ -143,7 +143,7 @@ std::vector<std::pair<Stage, std::string>> techniqueEntryPoints(const EffectText
 std::string entryPointBySignature(const EffectText& e, Stage stage) {
   if (stage != Stage::Vertex && stage != Stage::Fragment) return {};
   const std::string systemValue = stage == Stage::Vertex ? "sv_position" : "sv_target";
-  auto isSystemValue = [&](size_t k) { return lowered(e.at(k)).starts_with(systemValue); };
+  auto isSystemValue = [&](size_t k) { return lowered(e.at(k)).starts_with(systemValue); };  // SV_Target1, SV_POSITION0
   // Structs with a member of that semantic.
   std::set<std::string> carriers;
   for (size_t k = 0; k + 2 < e.size(); ++k) {

@@ -4,6 +4,7 @@
 #include "transpiler/frontend/language_detect.h"
 
 #include "transpiler/source/lexer.h"
+#include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cctype>
@@ -372,6 +373,12 @@ LanguageDecision decideLanguage(const std::string& path, const std::string& text
     d.language = *named;
     d.source = LanguageSource::Extension;
     d.reason = "file extension " + path.substr(path.find_last_of('.'));
+    return d;
+  }
+  if (stageOf3DMigotoDump(path)) {
+    d.language = SourceLanguage::Hlsl;
+    d.source = LanguageSource::Extension;
+    d.reason = "3Dmigoto dump name (*_replace.txt: decompiled HLSL)";
     return d;
   }
   d.source = LanguageSource::Content;

@@ -97,6 +97,24 @@ bool isIncludeOnlyName(const std::string& path) {
   return false;
 }
 
+std::optional<Stage> stageOf3DMigotoDump(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  std::string_view name = std::string_view(path).substr(slash == std::string::npos ? 0 : slash + 1);
+  constexpr size_t kHash = 16;
+  if (name.size() != kHash + std::string_view("-vs_replace.txt").size() || name[kHash] != '-' ||
+      lowerCase(std::string(name.substr(kHash + 3))) != "_replace.txt")
+    return std::nullopt;
+  for (size_t k = 0; k < kHash; ++k)
+    if (!std::isxdigit(static_cast<unsigned char>(name[k]))) return std::nullopt;
+  std::string kind = lowerCase(std::string(name.substr(kHash + 1, 2)));
+  static const std::map<std::string, Stage> kinds = {{"vs", Stage::Vertex},         {"ps", Stage::Fragment},
+                                                     {"gs", Stage::Geometry},       {"hs", Stage::TessControl},
+                                                     {"ds", Stage::TessEvaluation}, {"cs", Stage::Compute}};
+  auto it = kinds.find(kind);
+  if (it == kinds.end()) return std::nullopt;
+  return it->second;
+}
+
 StagedName readStagedName(const std::string& path, const std::map<std::string, Stage>& extraExtensions) {
   size_t slash = path.find_last_of('/');
   std::string directory = slash == std::string::npos ? "" : path.substr(0, slash + 1);
@@ -104,6 +122,12 @@ StagedName readStagedName(const std::string& path, const std::map<std::string, S
   StagedName named;
   named.key = path;
   if (isIncludeOnlyName(path)) return named;
+  // A 3Dmigoto dump is a pipeline of its own (each shader has its own hash).
+  if (auto dumped = stageOf3DMigotoDump(path)) {
+    named.stage = dumped;
+    named.reason = "3Dmigoto dump name " + rest;
+    return named;
+  }
   auto lastExtension = [&](const std::string& name) -> std::string {
     size_t dot = name.find_last_of('.');
     return dot == std::string::npos || dot == 0 ? "" : name.substr(dot + 1);

@@ -50,6 +50,12 @@ std::string stageHint(const std::string& path);
 // rule for single-shader runs, pipelines and `build` (each directory once).
 std::vector<std::string> includeSearchPath(const std::string& shaderPath, const std::vector<std::string>& userDirs);
 
+// 3Dmigoto's dump of a decompiled shader: `<16 hex digits>-<vs|ps|gs|hs|ds|cs>_replace.txt`
+// (ShaderFixes/ names 3Dmigoto loads back by hash): its stage, from the two letters; nullopt for any
+// other name. The text is HLSL with the entry point `main`. (Its assembly dumps, `<hash>-vs.txt`,
+// are not shaders stereoshift reads.)
+std::optional<Stage> stageOf3DMigotoDump(const std::string& path);
+
 // Names that hold code for other files only: never a pipeline stage.
 bool isIncludeOnlyName(const std::string& path);
 

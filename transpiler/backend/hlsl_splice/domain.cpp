@@ -41,7 +41,7 @@ class DomainRewriter : Rewriter {
         if (isIdent(t) && !modifierWords().count(std::string(text(t)))) retType = std::string(text(t));
       }
       std::string retSemantic = f->semTok != npos ? lower(text(f->semTok)) : "";
-      if (retSemantic == "sv_position" && isFloat4Like(retType)) {
+      if (isPositionSemantic(retSemantic) && isFloat4Like(retType)) {
         plan.returnShift = needShift(retType, "").function;
       } else if (auto path = positionPath(retType)) {
         plan.returnShift = needShift(retType, *path).function;
@@ -49,7 +49,7 @@ class DomainRewriter : Rewriter {
       for (const auto& p : f->params) {
         if (p.name.empty()) return errAt(p.begin, "parameter without a name");
         if (!p.isOut) continue;
-        if (lower(p.semantic) == "sv_position" && isFloat4Like(p.typeName)) {
+        if (isPositionSemantic(p.semantic) && isFloat4Like(p.typeName)) {
           plan.outShifts.push_back({p.name, needShift(p.typeName, "").function});
         } else if (auto path = positionPath(p.typeName)) {
           plan.outShifts.push_back({p.name, needShift(p.typeName, *path).function});

@@ -58,7 +58,7 @@ class Rewriter {
   std::optional<std::string> positionPath(const std::string& name) const { return unit_.top.positionPath(name); }
   const Function* enclosingFunction(size_t tok) const { return unit_.top.enclosingFunction(tok); }
   std::optional<SpliceError> checkConflicts(const std::vector<std::string>& ours) const {
-    return hlsl_splice::checkConflicts(unit_.view, unit_.top, ours, opt_.cbufferRegister);
+    return hlsl_splice::checkConflicts(unit_.view, unit_.top, ours, opt_.cbufferRegister, !opt_.stereoParamsTexture);
   }
 
   void addEdit(size_t offset, size_t remove, std::string insert) { unit_.edits.add(offset, remove, std::move(insert)); }

@@ -17,10 +17,16 @@ std::string epsilonLiteral(float epsilon) {
   return lit + "f";
 }
 
+// eyeSign * separation, or the separation alone where it carries the eye's sign (3Dmigoto's).
+std::string eyeOffset(const ShiftSpec& spec) {
+  return spec.eyeSignName.empty() ? spec.separationName : spec.eyeSignName + " * " + spec.separationName;
+}
+
 // When `p` (the position) is shifted: the condition of emitCutoffCondition, in its order.
 std::string conditionText(const ShiftSpec& spec, const std::string& p) {
-  // Even without a cutoff, a mono draw (eyeSign 0) runs none of the shift.
-  std::string stereo = spec.eyeSignName + " != 0.0f";
+  // Even without a cutoff, a mono draw (eyeSign 0) runs none of the shift; 3Dmigoto's mono is a
+  // separation of 0, which shifts by nothing.
+  std::string stereo = spec.eyeSignName.empty() ? spec.separationName + " != 0.0f" : spec.eyeSignName + " != 0.0f";
   switch (spec.cutoff) {
     case CutoffMode::Epsilon:
       // Same guard as the SPIR-V route: an infinite w is never shifted (0 * inf would be NaN).
@@ -36,8 +42,6 @@ std::string conditionText(const ShiftSpec& spec, const std::string& p) {
 // Statements that leave the shifted x of `p` in `result` (declared by them), one per line.
 std::vector<std::string> shiftedXStatements(const ShiftSpec& spec, const std::string& p, const std::string& result) {
   const std::string x = p + ".x", w = p + ".w";
-  const std::string& e = spec.eyeSignName;
-  const std::string& s = spec.separationName;
   const std::string& c = spec.convergenceName;
   if (spec.compensated) {
     // emitShiftedX's error-free transformations, operation for operation: w - C exactly as dh + dl
@@ -52,7 +56,7 @@ std::vector<std::string> shiftedXStatements(const ShiftSpec& spec, const std::st
     let(t("dh"), w + " - " + c);
     let(t("db"), t("dh") + " - " + w);
     let(t("dl"), "(" + w + " - (" + t("dh") + " - " + t("db") + ")) - (" + c + " + " + t("db") + ")");
-    let(t("a"), e + " * " + s);
+    let(t("a"), eyeOffset(spec));
     let(t("ph"), t("a") + " * " + t("dh"));
     for (const char* v : {"a", "dh"}) {
       std::string name = t(v);
@@ -70,8 +74,8 @@ std::vector<std::string> shiftedXStatements(const ShiftSpec& spec, const std::st
   }
   std::string shifted = spec.fused
                             // One rounding less, as the SPIR-V route's Fma is emitted for HLSL.
-                            ? "mad(" + e + " * " + s + ", " + w + " - " + c + ", " + x + ")"
-                            : x + " + (" + e + " * " + s + ") * (" + w + " - " + c + ")";
+                            ? "mad(" + eyeOffset(spec) + ", " + w + " - " + c + ", " + x + ")"
+                            : x + " + (" + eyeOffset(spec) + ") * (" + w + " - " + c + ")";
   return {(spec.precise ? "precise float " : "float ") + result + " = " + shifted + ";"};
 }
 
@@ -83,10 +87,12 @@ std::string cbufferText(const HlslSpliceOptions& opt, const std::string& nl) {
          opt.convergenceName + ";" + nl + "};" + nl;
 }
 
-std::string shiftFunctionText(const ShiftSpec& spec, const ShiftHelper& helper, const std::string& nl) {
+std::string shiftFunctionText(const HlslSpliceOptions& spec, const ShiftHelper& helper, const std::string& nl) {
   const std::string v = std::string(kPrefix) + "_v";
   const std::string ind = "    ";
   std::string body;
+  // 3Dmigoto's parameters: texel 0 of StereoParams, read once per call.
+  if (spec.stereoParamsTexture) body += ind + "float4 " + spec.cbufferName + " = StereoParams.Load(int3(0, 0, 0));" + nl;
   auto lines = [&](const std::vector<std::string>& code, const std::string& in) {
     for (const auto& line : code) body += in + line + nl;
   };
@@ -107,8 +113,8 @@ std::string shiftFunctionText(const ShiftSpec& spec, const ShiftHelper& helper, 
     } else {
       body += ind + "if (" + conditionText(spec, p) + ")" + nl + ind + "{" + nl;
       if (!spec.precise && !spec.compensated && !spec.fused) {
-        body += ind + ind + p + ".x = " + p + ".x + (" + spec.eyeSignName + " * " + spec.separationName + ") * (" + p +
-                ".w - " + spec.convergenceName + ");" + nl;
+        body += ind + ind + p + ".x = " + p + ".x + (" + eyeOffset(spec) + ") * (" + p + ".w - " + spec.convergenceName +
+                ");" + nl;
       } else {
         lines(shiftedXStatements(spec, p, tmp), ind + ind);
         body += ind + ind + p + ".x = " + tmp + ";" + nl;
@@ -123,7 +129,10 @@ std::string shiftFunctionText(const ShiftSpec& spec, const ShiftHelper& helper, 
 std::string preambleText(const HlslSpliceOptions& options, const std::vector<ShiftHelper>& helpers,
                          const std::string& nl) {
   std::string t = "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
-  t += cbufferText(options, nl) + nl;
+  if (!options.stereoParamsTexture)
+    t += cbufferText(options, nl) + nl;
+  else if (options.declareStereoParams)
+    t += "Texture2D<float4> StereoParams : register(t125);" + nl + nl;
   for (size_t k = 0; k < helpers.size(); ++k) t += (k ? nl : "") + shiftFunctionText(options, helpers[k], nl);
   t += "// ---- end stereoshift ----" + nl;
   return t;

@@ -28,7 +28,7 @@ struct ShiftHelper {
 std::string cbufferText(const HlslSpliceOptions& options, const std::string& nl);
 
 // `T function(T v) { ...shift v<access>.x... return v; }` for one helper.
-std::string shiftFunctionText(const ShiftSpec& spec, const ShiftHelper& helper, const std::string& nl);
+std::string shiftFunctionText(const HlslSpliceOptions& spec, const ShiftHelper& helper, const std::string& nl);
 
 // The whole injected block: a banner, the cbuffer and every helper, lines ending in `nl`.
 std::string preambleText(const HlslSpliceOptions& options, const std::vector<ShiftHelper>& helpers,

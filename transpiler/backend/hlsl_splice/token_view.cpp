@@ -7,6 +7,11 @@
 
 namespace stereoshift::hlsl_splice {
 
+bool isPositionSemantic(std::string_view semantic) {
+  std::string l = lower(semantic);
+  return l == "sv_position" || l == "sv_position0";
+}
+
 std::string lower(std::string_view s) {
   std::string r(s);
   for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

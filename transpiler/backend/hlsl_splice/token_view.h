@@ -49,6 +49,9 @@ struct SpliceError {
 
 std::string lower(std::string_view s);
 
+// SV_Position as a semantic, in any case, with the index 0 that decompilers write (`SV_POSITION0`).
+bool isPositionSemantic(std::string_view semantic);
+
 // Matching bracket for every (, [, { and their closers; npos elsewhere.
 std::optional<SpliceError> matchBrackets(const std::string& s, const std::vector<Token>& toks,
                                          std::vector<size_t>& match);

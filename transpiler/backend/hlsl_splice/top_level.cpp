@@ -388,7 +388,7 @@ std::optional<std::string> TopLevel::positionPath(const std::string& name, int d
   const StructDef* sd = findStruct(name);
   if (!sd || depth > 8) return std::nullopt;
   for (const auto& m : sd->members) {
-    if (lower(m.semantic) == "sv_position") return "." + m.name;
+    if (isPositionSemantic(m.semantic)) return "." + m.name;
   }
   for (const auto& m : sd->members) {
     if (m.semantic.empty() && m.typeName != name) {
@@ -406,8 +406,10 @@ const Function* TopLevel::enclosingFunction(size_t tok) const {
 }
 
 std::optional<SpliceError> checkConflicts(const TokenView& view, const TopLevel& top,
-                                          const std::vector<std::string>& ours, uint32_t cbufferRegister) {
+                                          const std::vector<std::string>& ours, uint32_t cbufferRegister,
+                                          bool checkRegister) {
   for (const auto& name : ours) {
+    if (name.empty()) continue;
     auto it = top.names.find(name);
     if (it != top.names.end()) {
       SpliceError err = view.errAt(it->second, "'" + name + "' is already declared at file scope (already stereo-injected?)");
@@ -421,7 +423,7 @@ std::optional<SpliceError> checkConflicts(const TokenView& view, const TopLevel&
     }
   }
   // register(b<N>) or register(b<N>, space0) already in use.
-  for (size_t k = 0; k + 2 < view.tokens.size(); ++k) {
+  for (size_t k = 0; checkRegister && k + 2 < view.tokens.size(); ++k) {
     if (!view.isWord(k, "register") || !view.isPunct(k + 1, '(') || !view.isIdent(k + 2)) continue;
     std::string reg = lower(view.text(k + 2));
     if (reg != "b" + std::to_string(cbufferRegister)) continue;

@@ -75,7 +75,9 @@ std::optional<SpliceError> parseTopLevel(const TokenView& view, TopLevel& top);
 // Whether one of `ours` (names the splice declares) collides with a file-scope name or a macro of
 // the source (this also catches a second injection into an already injected shader), or whether
 // register(b<cbufferRegister>) in space0 is taken.
+// `checkRegister`: whether register(b<cbufferRegister>) must be free (not with 3Dmigoto's texture).
 std::optional<SpliceError> checkConflicts(const TokenView& view, const TopLevel& top,
-                                          const std::vector<std::string>& ours, uint32_t cbufferRegister);
+                                          const std::vector<std::string>& ours, uint32_t cbufferRegister,
+                                          bool checkRegister = true);
 
 }  // namespace stereoshift::hlsl_splice

@@ -113,7 +113,7 @@ class VertexRewriter : Rewriter {
     for (const auto& c : wanted.copies) (c.starts_with(".") ? memberCopies : paramCopies).push_back(c);
     std::string retType = returnTypeName(f);
     std::string retSemantic = f.semTok != npos ? lower(text(f.semTok)) : "";
-    if (retSemantic == "sv_position" && isFloat4Like(retType)) {
+    if (isPositionSemantic(retSemantic) && isFloat4Like(retType)) {
       plan.returnShift = needShift(retType, "", {}).function;
     } else if (auto path = positionPath(retType)) {
       if (auto err = checkMemberCopies(f, retType, memberCopies)) {
@@ -130,7 +130,7 @@ class VertexRewriter : Rewriter {
       }
       if (!p.isOut) continue;
       bool isCopy = std::find(paramCopies.begin(), paramCopies.end(), p.name) != paramCopies.end();
-      if ((lower(p.semantic) == "sv_position" || isCopy) && isFloat4Like(p.typeName)) {
+      if ((isPositionSemantic(p.semantic) || isCopy) && isFloat4Like(p.typeName)) {
         plan.outShifts.push_back({p.name, needShift(p.typeName, "", {}).function});
         if (isCopy) paramCopies.erase(std::find(paramCopies.begin(), paramCopies.end(), p.name));
       } else if (auto path = positionPath(p.typeName)) {
