@@ -117,4 +117,56 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SplicedTextExecution, ::testing::ValuesIn(glslP
                            return n;
                          });
 
+// 3Dmigoto dumps spliced with --eye-source 3dmigoto: the spliced text (the dump's `#define cmp -`
+// and SV_POSITION0 kept) compiled again, run against the original with StereoParams texel 0 set
+// as 3Dmigoto sets it (x = eyeSign * separation, y = convergence): separation 0 is mono, bit for
+// bit; each eye within the bound of the exact shift.
+class MigotoDumpExecution : public VulkanSuite<> {};
+
+TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
+  ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
+  for (const char* dump : {"skinned-vs_replace.txt"}) {
+    for (bool declared : {true, false}) {
+      SourceFile input{"0f1e2d3c4b5a6978-vs_replace.txt", {}};
+      ASSERT_TRUE(readFile(std::string(MIGOTO_DUMP_DIR) + "/" + dump, &input.contents));
+      if (!declared) {  // without its 3Dmigoto declarations: the splice declares the texture
+        std::string kept;
+        size_t at = 0;
+        while (at < input.contents.size()) {
+          size_t end = input.contents.find('\n', at);
+          std::string line = input.contents.substr(at, end == std::string::npos ? std::string::npos : end + 1 - at);
+          if (line.find("StereoParams") == std::string::npos && line.find("IniParams") == std::string::npos) kept += line;
+          at = end == std::string::npos ? input.contents.size() : end + 1;
+        }
+        input.contents = kept;
+      }
+      TranspileOptions options;
+      options.eyeFrom3DMigoto = true;
+      options.eye.source = EyeSource::UniformBlock;
+      options.eye.blockName = "stereoshift_StereoParams";
+      TranspileResult converted = transpile(input, options);
+      ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
+      ASSERT_EQ(converted.report.value("route", ""), "hlsl-source-splice");
+      ASSERT_NE(converted.output.find("StereoParams.Load(int3(0, 0, 0))"), std::string::npos) << converted.output;
+      Diagnostics diags;
+      FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
+      ASSERT_TRUE(stereo.ok) << diags.format();
+      StageModules stage;
+      stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+      stage.original = converted.originalSpirv;
+      stage.transpiled = stereo.spirv;
+      VerifySettings settings;
+      VerifyResult r = verifyStereo(*context_, {stage}, settings);
+      ASSERT_TRUE(r.error.empty()) << r.error;
+      std::cout << "[verify] 3dmigoto " << dump << (declared ? "" : " (texture declared by the splice)") << ": vertices "
+                << r.vertices << ", mono identical " << r.monoIdentical << ", max stereo error " << r.maxStereoUlps
+                << " ULP, cutoff vertices " << r.cutoffVertices << "\n";
+      EXPECT_GT(r.vertices, 0u);
+      EXPECT_TRUE(r.monoIdentical);
+      EXPECT_TRUE(r.otherOutputsUnchanged) << (r.problems.empty() ? "" : r.problems.front());
+      EXPECT_LE(r.maxStereoUlps, settings.maxUlps);
+    }
+  }
+}
+
 }  // namespace

@@ -536,6 +536,22 @@ bool applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign,
           if (k == 0 && eyeSignFound) *eyeSignFound = true;
         }
   }
+  // 3Dmigoto's StereoParams texture (--eye-source 3dmigoto): texel (0, 0) holds x = the separation
+  // with the eye's sign, y = the convergence, z = the eye; 0 separation in mono.
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != uint32_t(spv::StorageClassUniformConstant) ||
+        m.name(inst.resultId) != "StereoParams")
+      continue;
+    uint32_t set = m.decorationValue(inst.resultId, spv::DecorationDescriptorSet).value_or(0);
+    uint32_t binding = m.decorationValue(inst.resultId, spv::DecorationBinding).value_or(0);
+    for (auto& tex : in->textures) {
+      if (tex.set != set || tex.binding != binding || tex.rgba.size() < 4) continue;
+      const float texel[4] = {eyeSign * s.separation, s.convergence, eyeSign, 0.0f};
+      std::copy(texel, texel + 4, tex.rgba.begin());
+      found = true;
+      if (eyeSignFound) *eyeSignFound = true;
+    }
+  }
   if (!found) *error = "the transpiled shader has no eye parameters the harness can set";
   return found;
 }
