@@ -22,14 +22,17 @@ std::pair<bool, std::string> reportFacts(const nlohmann::json& report) {
   return {report.value("ok", false), report.value("classification", "?")};
 }
 
-// A converted entry starts with "cached": false ("cached" sorts before every other key); an
-// up-to-date one says true.
-constexpr std::string_view kConvertedPrefix = "{\n      \"cached\": false,";
-constexpr std::string_view kCachedPrefix = "{\n      \"cached\": true,";
+// A converted entry holds "cached": false as a top-level key (indented 6 spaces in the entry's
+// text; nested keys are indented further, so the match is the top-level one); an up-to-date one
+// says true. Not necessarily first: "analysis" and "analysis_reason" sort before it.
+constexpr std::string_view kConvertedKey = "\n      \"cached\": false,";
+constexpr std::string_view kCachedKey = "\n      \"cached\": true,";
 
 bool markEntryCached(const std::string& convertedText, std::string* cachedText) {
-  if (!convertedText.starts_with(kConvertedPrefix)) return false;
-  *cachedText = std::string(kCachedPrefix) + convertedText.substr(kConvertedPrefix.size());
+  if (!convertedText.starts_with("{")) return false;
+  size_t at = convertedText.find(kConvertedKey);
+  if (at == std::string::npos) return false;
+  *cachedText = convertedText.substr(0, at) + std::string(kCachedKey) + convertedText.substr(at + kConvertedKey.size());
   return true;
 }
 

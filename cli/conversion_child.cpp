@@ -7,8 +7,11 @@
 #include "cli/process_failure.h"
 #include "cli/source_reading.h"
 #include "cli/worker_pool.h"
+#include "passes/crash_phase.h"
 
 #include <cstdio>
+#include <cstring>
+#include <sstream>
 #include <cstdlib>
 #include <iostream>
 
@@ -55,15 +58,50 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
     *run = convertInChild(o, paths, outputFor);
   } else {
     const std::string shown = paths.front() == "-" ? std::string(kStdinName) : paths.front();  // as diagnostics name it
-    TaskOutcome outcome = runIsolatedOnce(
-        [&] {
-          std::string wire = encodeConversionRun(convertInChild(o, paths, outputFor));
-          std::cout.flush();
-          std::cerr.flush();
-          std::fflush(nullptr);
-          return wire;
-        },
-        o.timeoutSeconds);
+    auto inChild = [&](const CliOptions& options) {
+      return runIsolatedOnce(
+          [&] {
+            std::string wire = encodeConversionRun(convertInChild(options, paths, outputFor));
+            std::cout.flush();
+            std::cerr.flush();
+            std::fflush(nullptr);
+            return wire;
+          },
+          options.timeoutSeconds);
+    };
+    TaskOutcome outcome = inChild(o);
+    // glslang crashed on the input: once more without it, for the text-only shift (text_only_shift.h)
+    // to take the stage where it can; where it cannot, the crash is what the user is told.
+    if (!outcome.completed && outcome.failure.rfind("crashed", 0) == 0 && !o.t.requireAnalysis &&
+        (outcome.phase == kGlslangGlslPhase || outcome.phase == kGlslangHlslPhase)) {
+      CliOptions again = o;
+      again.t.glslangCrashed = true;
+      // Its messages are kept back: they are the user's only when the second attempt succeeds.
+      TaskOutcome retried = runIsolatedOnce(
+          [&] {
+            std::ostringstream said;
+            std::streambuf* kept = std::cerr.rdbuf(said.rdbuf());
+            std::string wire = encodeConversionRun(convertInChild(again, paths, outputFor));
+            std::cerr.rdbuf(kept);
+            std::string text = said.str();
+            uint64_t size = text.size();
+            std::cout.flush();
+            std::fflush(nullptr);
+            return std::string(reinterpret_cast<const char*>(&size), sizeof size) + text + wire;
+          },
+          o.timeoutSeconds);
+      ConversionRun candidate;
+      uint64_t size = 0;
+      if (retried.completed && retried.payload.size() >= sizeof size) {
+        std::memcpy(&size, retried.payload.data(), sizeof size);
+        if (size <= retried.payload.size() - sizeof size &&
+            decodeConversionRun(retried.payload.substr(sizeof size + size), &candidate) && candidate.errors == 0) {
+          std::cerr << retried.payload.substr(sizeof size, size);
+          *run = std::move(candidate);
+          return true;
+        }
+      }
+    }
     if (!outcome.completed) {
       // runIsolated's words for a task it stopped at the limit start with "timed out".
       if (outcome.failure.rfind("timed out", 0) == 0) {

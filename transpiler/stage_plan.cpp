@@ -179,12 +179,19 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
   return true;
 }
 
+namespace {
+bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
+bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route);
+}  // namespace
+
 bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
-  if (!plan.frontEndRan || !plan.front.glslangRejected || plan.front.info.language != SourceLanguage::Glsl ||
-      !plan.stage || !plan.stage->stage || !plan.diags.hasErrors())
+  const SourceLanguage language = plan.front.info.language;
+  if (!plan.frontEndRan || !plan.front.glslangRejected || !plan.stage || !plan.stage->stage || !plan.diags.hasErrors())
     return false;
   Stage stage = *plan.stage->stage;
-  if (!mayShiftFromText(stage, options, options)) return false;
+  if (!mayShiftFromText(stage, language, options, options)) return false;
+  if (language == SourceLanguage::Hlsl) return shiftHlslStageFromText(plan, options, stage);
+  if (language != SourceLanguage::Glsl) return false;
   // Only where glslang's refusal may be its own gap: the source uses what glslang reads more
   // narrowly than drivers do (an #extension it enables, a line continuation, the compatibility
   // profile), and no error is about the shader's #include files (those are the input's).
@@ -193,8 +200,24 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
         (d.message.find("includ") != std::string::npos || d.message.find("requires SPIR-V") != std::string::npos ||
          (!d.file.empty() && d.file != plan.input->path)))
       return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
-  if (glslangGapIn(plan.input->contents).empty()) return false;  // the shader's own error, said as it is
+  // The shader's own error, said as it is (a crash is glslang's, whatever the text).
+  if (!options.glslangCrashed && glslangGapIn(plan.input->contents).empty()) return false;
   TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
+  return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only");
+}
+
+namespace {
+
+bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+  // Decompiled text only: the D3D compiler accepted what it was decompiled from, so glslang's
+  // refusal (or crash) is glslang's; hand-written HLSL glslang refuses keeps its errors.
+  if (!isDecompiledHlsl(*plan.input)) return false;
+  for (const auto& d : plan.diags.all())
+    if (d.severity == Severity::Error && !d.file.empty() && d.file != plan.input->path) return false;  // an #include's
+  return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), "hlsl-text-only");
+}
+
+bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route) {
   const std::string& file = plan.input->path;
   if (!shifted.ok) {
     plan.diags.note(file, "no shift from the text alone either: " + shifted.whyNot);
@@ -219,7 +242,7 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
   record.stage = stage;
   record.stageReason = plan.stage->reason;
   record.textOnly = StageRecord::TextOnly{reason, shifted.notDone, shifted.eyeParams};
-  record.emit.route = "glsl-text-only";
+  record.emit.route = route;
   record.emit.spliceSites = shifted.sites;
   record.output = StageRecord::Output::Emitted;
   record.totalMs = msSince(plan.started);
@@ -227,6 +250,8 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
   plan.changed = true;
   return true;
 }
+
+}  // namespace
 
 bool parseStage(StagePlan& plan) {
   const std::string& file = plan.input->path;

@@ -170,10 +170,12 @@ std::string glslangGapIn(const std::string& text) {
   return {};
 }
 
-bool mayShiftFromText(Stage stage, const PassOptions& passes, const BackEndOptions& backEnd) {
+bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd) {
   bool preRaster = stage == Stage::Vertex || stage == Stage::TessEvaluation || stage == Stage::Geometry;
-  bool sameLanguage = backEnd.target == TargetLanguage::Auto || backEnd.target == TargetLanguage::Glsl ||
-                      backEnd.target == TargetLanguage::Essl;
+  bool sameLanguage = backEnd.target == TargetLanguage::Auto ||
+                      (language == SourceLanguage::Glsl
+                           ? backEnd.target == TargetLanguage::Glsl || backEnd.target == TargetLanguage::Essl
+                           : language == SourceLanguage::Hlsl && backEnd.target == TargetLanguage::Hlsl);
   return preRaster && sameLanguage && !backEnd.targetVersion && !backEnd.forceReemit && !backEnd.requireAnalysis &&
          passes.shiftThisStage && passes.eye.select == EyeSelect::Parameter;
 }

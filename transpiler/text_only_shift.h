@@ -18,6 +18,7 @@
 #include "passes/pass_options.h"
 #include "passes/shader.h"
 #include "transpiler/backend/back_end_options.h"
+#include "transpiler/transpile_options.h"
 
 #include <string>
 #include <vector>
@@ -38,9 +39,18 @@ struct TextOnlyShift {
 // profile; "" when none. The text-only shift is for those, never for a shader that is simply wrong.
 std::string glslangGapIn(const std::string& text);
 
-// Whether the driver may try the text-only shift for a stage the front end could not parse.
-bool mayShiftFromText(Stage stage, const PassOptions& passes, const BackEndOptions& backEnd);
+// Whether the driver may try the text-only shift for a stage of `language` the front end could not
+// parse: a pre-rasterization stage, kept in its own language, two-pass stereo, no --require-analysis.
+bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd);
 
 TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options);
+
+// HLSL (hlsl_text_only_shift.cpp): for text a decompiler wrote from a compiled shader (a 3Dmigoto
+// dump by its name or its header), which the D3D compiler accepted, so that glslang's refusal or
+// crash is glslang's gap. The HLSL splice alone: the entry point by its signature, the SV_Position
+// output from the text, the eye parameters a cbuffer at the first free b register (or
+// --hlsl-register), or 3Dmigoto's StereoParams texture with --eye-source 3dmigoto.
+bool isDecompiledHlsl(const SourceFile& input);
+TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options);
 
 }  // namespace stereoshift

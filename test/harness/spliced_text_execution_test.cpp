@@ -126,7 +126,7 @@ class MigotoDumpExecution : public VulkanSuite<> {};
 TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
   ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
   for (const char* dump : {"skinned-vs_replace.txt"}) {
-    for (bool declared : {true, false}) {
+    for (auto [declared, textOnly] : {std::pair{true, false}, std::pair{false, false}, std::pair{true, true}}) {
       SourceFile input{"0f1e2d3c4b5a6978-vs_replace.txt", {}};
       ASSERT_TRUE(readFile(std::string(MIGOTO_DUMP_DIR) + "/" + dump, &input.contents));
       if (!declared) {  // without its 3Dmigoto declarations: the splice declares the texture
@@ -144,9 +144,18 @@ TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
       options.eyeFrom3DMigoto = true;
       options.eye.source = EyeSource::UniformBlock;
       options.eye.blockName = "stereoshift_StereoParams";
+      // The text-only route, as after a glslang crash: the front end is not run for the conversion.
+      options.glslangCrashed = textOnly;
       TranspileResult converted = transpile(input, options);
       ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
-      ASSERT_EQ(converted.report.value("route", ""), "hlsl-source-splice");
+      ASSERT_EQ(converted.report.value("route", ""), textOnly ? "hlsl-text-only" : "hlsl-source-splice");
+      options.glslangCrashed = false;
+      if (textOnly) {  // the original for the comparison, parsed here (this dump does not crash glslang)
+        Diagnostics originalDiags;
+        FrontEndResult original = compileToSpirv(input, options, originalDiags);
+        ASSERT_TRUE(original.ok) << originalDiags.format();
+        converted.originalSpirv = original.spirv;
+      }
       ASSERT_NE(converted.output.find("StereoParams.Load(int3(0, 0, 0))"), std::string::npos) << converted.output;
       Diagnostics diags;
       FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
@@ -158,7 +167,8 @@ TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
       VerifySettings settings;
       VerifyResult r = verifyStereo(*context_, {stage}, settings);
       ASSERT_TRUE(r.error.empty()) << r.error;
-      std::cout << "[verify] 3dmigoto " << dump << (declared ? "" : " (texture declared by the splice)") << ": vertices "
+      std::cout << "[verify] 3dmigoto " << dump << (declared ? "" : " (texture declared by the splice)")
+                << (textOnly ? " (text-only route)" : "") << ": vertices "
                 << r.vertices << ", mono identical " << r.monoIdentical << ", max stereo error " << r.maxStereoUlps
                 << " ULP, cutoff vertices " << r.cutoffVertices << "\n";
       EXPECT_GT(r.vertices, 0u);

@@ -99,7 +99,12 @@ void compileHlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
     return;
   }
   diags.append(a.diags);
-  if (!a.ok) return;
+  if (!a.ok) {
+    // glslang's own refusal, past the source limits and the entry-point search: for decompiled text
+    // it may be glslang's gap (text_only_shift.h).
+    result.glslangRejected = !a.diags.all().empty() && !entryMissing(a.diags);
+    return;
+  }
   result.ok = true;
   result.spirv = std::move(a.spirv);
   result.info = std::move(a.info);
@@ -215,6 +220,13 @@ FrontEndResult compileToSpirv(const SourceFile& input, const FrontEndOptions& op
   result.info.language = decided.language;
   result.info.languageSource = decided.source;
   result.info.languageReason = decided.reason;
+  if (options.glslangCrashed) {
+    diags.error(input.path, "glslang crashed on this input (" +
+                                std::string(decided.language == SourceLanguage::Hlsl ? "HLSL" : "GLSL") +
+                                " front end); it was not run again");
+    result.glslangRejected = true;
+    return result;
+  }
   if (decided.language == SourceLanguage::Hlsl)
     compileHlsl(input, options, *stage, decided, result, diags);
   else

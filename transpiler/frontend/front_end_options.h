@@ -21,6 +21,9 @@ struct FrontEndOptions {
   std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
   std::vector<std::string> defines;  // NAME or NAME=VALUE
   std::vector<std::string> includeDirs;
+  // glslang crashed on this input in an earlier attempt (the conversion child died in its parser):
+  // it is not run again; the stage is refused as glslang's, for the text-only shift to take.
+  bool glslangCrashed = false;
 };
 
 }  // namespace stereoshift

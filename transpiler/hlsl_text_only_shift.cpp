@@ -1,0 +1,104 @@
+// The text-only shift for HLSL (see text_only_shift.h): this turns a decompiled HLSL vertex,
+// geometry or domain shader that glslang cannot analyse (it refused the text, or crashed on it) into
+// its stereo version with the HLSL splice alone: the entry point told from its signature, the
+// SV_Position output found in the text, the eye parameters a cbuffer at the first free register or
+// 3Dmigoto's StereoParams texture.
+#include "transpiler/text_only_shift.h"
+
+#include "passes/shift_emitter.h"
+#include "transpiler/backend/hlsl_splice.h"
+#include "transpiler/frontend/hlsl_effects.h"
+#include "transpiler/source/lexer.h"
+#include "transpiler/source/stage_rules.h"
+
+#include <cctype>
+#include <set>
+#include <string_view>
+
+namespace stereoshift {
+
+namespace {
+
+// The first b register the text does not name (`register(b3)`, `register(b3, space0)`), for the
+// injected cbuffer.
+uint32_t firstFreeCbufferRegister(const std::string& text) {
+  source::LexedText lexed(text);
+  std::set<uint32_t> used;
+  for (size_t k = 0; k + 2 < lexed.size(); ++k) {
+    if (!lexed.isIdentifier(k) || lexed.text(k) != "register") continue;
+    size_t open = lexed.nextNonComment(k), reg = lexed.nextNonComment(open);
+    if (!lexed.isPunct(open, '(') || !lexed.isIdentifier(reg)) continue;
+    std::string_view r = lexed.text(reg);
+    if (r.size() < 2 || (r[0] != 'b' && r[0] != 'B')) continue;
+    uint32_t n = 0;
+    bool digits = true;
+    for (char c : r.substr(1)) {
+      if (!std::isdigit(static_cast<unsigned char>(c)) || n > 100000) digits = false;
+      n = n * 10 + static_cast<uint32_t>(c - '0');
+    }
+    if (digits) used.insert(n);
+  }
+  uint32_t free = 0;
+  while (used.count(free)) ++free;
+  return free;
+}
+
+// `name`, or name2, name3, ... where the text already uses it (a dump's 3Dmigoto declarations name
+// a `StereoParams` texture), as the eye-params pass renames its block.
+std::string unusedName(const std::string& text, const std::string& name) {
+  source::LexedText lexed(text);
+  std::set<std::string_view> used;
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed.isIdentifier(k)) used.insert(lexed.text(k));
+  if (!used.count(name)) return name;
+  for (int n = 2;; ++n)
+    if (std::string candidate = name + std::to_string(n); !used.count(candidate)) return candidate;
+}
+
+}  // namespace
+
+bool isDecompiledHlsl(const SourceFile& input) {
+  return stageOf3DMigotoDump(input.path).has_value() || input.contents.find("3Dmigoto declarations") != std::string::npos ||
+         input.contents.find("Created with 3Dmigoto") != std::string::npos;
+}
+
+TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options) {
+  TextOnlyShift result;
+  HlslSpliceOptions splice;
+  static_cast<ShiftSpec&>(splice) = makeShiftSpec(options, true);
+  splice.eyeSignName = options.eye.eyeSignName;
+  splice.separationName = options.eye.separationName;
+  splice.convergenceName = options.eye.convergenceName;
+  std::string entry = options.entryPoint.empty()
+                          ? chooseHlslEntry(input.contents, mentionedFunctions(input.contents), stage, "")
+                          : options.entryPoint;
+  splice.entryPoint = entry;
+  splice.vertex = stage == Stage::Vertex;
+  splice.geometry = stage == Stage::Geometry;
+  if (splice.vertex) splice.vertexEntries = {{entry, {}}};
+  if (options.eyeFrom3DMigoto) {
+    useStereoParamsTexture(splice);
+    result.eyeParams = "3Dmigoto StereoParams texture (t125)";
+  } else if (options.eye.source == EyeSource::Auto || options.eye.source == EyeSource::UniformBlock) {
+    splice.cbufferName = unusedName(input.contents, options.eye.blockName);
+    splice.cbufferRegister = options.eye.hlslRegister.value_or(firstFreeCbufferRegister(input.contents));
+    result.eyeParams = "cbuffer " + splice.cbufferName + " (b" + std::to_string(splice.cbufferRegister) + ")";
+  } else {
+    result.whyNot = "the HLSL text-only shift declares its eye parameters as a cbuffer or 3Dmigoto's StereoParams "
+                    "texture (--eye-source uniform-block or 3dmigoto)";
+    return result;
+  }
+  HlslSpliceResult spliced = spliceHlslStereo(input.contents, splice);
+  if (!spliced.ok) {
+    result.whyNot = spliced.error + (spliced.line ? " (line " + std::to_string(spliced.line) + ")" : "");
+    return result;
+  }
+  result.ok = true;
+  result.output = std::move(spliced.text);
+  result.sites = spliced.sites;
+  result.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the clip position",
+                    "per-eye view vectors", "deferred unprojection", "HUD placement", "re-compile of the output"};
+  return result;
+}
+
+}  // namespace stereoshift
