@@ -50,6 +50,9 @@ void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
   build.add_flag("--no-cache", o.noCache, "Convert every shader, even those the incremental cache says are up to date");
   build.add_option("--job-timeout", o.jobTimeoutSeconds, "Seconds one pipeline may take before it is stopped and reported (0: no limit)")
       ->capture_default_str();
+  build.add_option("--job-memory", o.jobMemoryMiB,
+                   "MiB of memory a worker may map before its pipeline is stopped and reported (0: no limit)")
+      ->capture_default_str();
 }
 
 int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
@@ -86,6 +89,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
 
   // 3. schedule
   copyThroughPasses(plan, results);
+  setWorkerMemoryLimit(build.jobMemoryMiB << 20);
   convertInWorkers(plan, toConvert, tool, {build.jobs, build.jobTimeoutSeconds}, results, next);
   const int removed = removeStaleOutputs(plan, previous, outDir);
   // The #include files the copied and spliced outputs still name: the output tree builds on its own

@@ -3,6 +3,7 @@
 
 #include "cli/cli_support.h"
 
+#include <cstdint>
 #include <string>
 
 namespace stereoshift {
@@ -14,6 +15,7 @@ struct BuildCommandOptions {
   int jobs = 0;                    // worker processes (0: one per core)
   bool noCache = false;            // convert everything, ignoring the incremental cache
   double jobTimeoutSeconds = 300;  // a pipeline that takes longer is killed and reported
+  uint64_t jobMemoryMiB = 4096;    // a worker that maps more is stopped and its pipeline reported (0: none)
 };
 
 // Registers the build-specific options on the `build` subcommand.

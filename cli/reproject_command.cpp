@@ -251,26 +251,32 @@ int generateAndWrite(const ReprojectCliOptions& c, const ReprojectOptions& base,
 
 }  // namespace
 
-int runReprojectCommand(const ReprojectCliOptions& c) {
+ParsedReproject parseReprojectOptions(const ReprojectCliOptions& c) {
   Problems problems;
-  ReprojectOptions base;
-  std::vector<TargetLanguage> languages = parseTargets(c, base, problems);
-  parseEyeOptions(c, base, problems);
-  parseDepthOptions(c, base, problems);
-  parseSearchOptions(c, base, problems);
-  for (TargetLanguage lang : languages) {
-    ReprojectOptions o = base;
+  ParsedReproject parsed;
+  parsed.targets = parseTargets(c, parsed.base, problems);
+  parseEyeOptions(c, parsed.base, problems);
+  parseDepthOptions(c, parsed.base, problems);
+  parseSearchOptions(c, parsed.base, problems);
+  for (TargetLanguage lang : parsed.targets) {
+    ReprojectOptions o = parsed.base;
     o.target = lang;
     auto found = checkReprojectOptions(o);
     for (auto& p : found) problems.add(p);
     if (!found.empty()) break;  // the same problems again for every other target
   }
-  if (!problems.list.empty()) {
-    for (const auto& p : problems.list) std::cerr << "stereoshift: error: " << p << "\n";
-    printErrorSummary(static_cast<int>(problems.list.size()));
+  parsed.problems = std::move(problems.list);
+  return parsed;
+}
+
+int runReprojectCommand(const ReprojectCliOptions& c) {
+  ParsedReproject parsed = parseReprojectOptions(c);
+  if (!parsed.problems.empty()) {
+    for (const auto& p : parsed.problems) std::cerr << "stereoshift: error: " << p << "\n";
+    printErrorSummary(static_cast<int>(parsed.problems.size()));
     return 1;
   }
-  return generateAndWrite(c, base, languages);
+  return generateAndWrite(c, parsed.base, parsed.targets);
 }
 
 }  // namespace stereoshift

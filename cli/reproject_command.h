@@ -33,6 +33,17 @@ struct ReprojectCliOptions {
 
 // Registers the `reproject` subcommand and its options on `app`.
 CLI::App* addReprojectCommand(CLI::App& app, ReprojectCliOptions& o);
+
+// The option strings read and checked: the options every --target shares, the targets, and every
+// problem ("--near 1e-40 is ..."); nothing is generated or written. A value the output could not
+// hold is a problem here, never a failure of the generation (the fuzz target fuzz_reproject_options
+// holds that promise).
+struct ParsedReproject {
+  ReprojectOptions base;
+  std::vector<TargetLanguage> targets;
+  std::vector<std::string> problems;
+};
+ParsedReproject parseReprojectOptions(const ReprojectCliOptions& o);
 // Generates and writes the shaders; returns the exit status (0, or 1 after printing the errors).
 int runReprojectCommand(const ReprojectCliOptions& o);
 

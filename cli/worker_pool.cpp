@@ -5,6 +5,7 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,9 +17,32 @@
 #include <cstring>
 #include <deque>
 #include <map>
+#include <new>
 #include <vector>
 
 namespace stereoshift {
+
+namespace {
+
+uint64_t workerMemoryLimit = 0;
+// A worker whose task ran out of memory exits with this status (see workerLoop).
+constexpr int kOutOfMemoryExit = 86;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kUnderAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kUnderAddressSanitizer = true;
+#else
+constexpr bool kUnderAddressSanitizer = false;
+#endif
+#else
+constexpr bool kUnderAddressSanitizer = false;
+#endif
+
+}  // namespace
+
+void setWorkerMemoryLimit(uint64_t bytes) { workerMemoryLimit = bytes; }
 
 std::string describeExitStatus(int status) {
   if (WIFSIGNALED(status)) {
@@ -26,6 +50,9 @@ std::string describeExitStatus(int status) {
     const char* name = sigabbrev_np(sig);
     return "crashed (signal " + std::to_string(sig) + (name ? std::string(", SIG") + name : std::string()) + ")";
   }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemoryExit)
+    return "ran out of memory (past the per-job limit of " + std::to_string(workerMemoryLimit >> 20) +
+           " MiB, --job-memory)";
   if (WIFEXITED(status)) return "exited unexpectedly with status " + std::to_string(WEXITSTATUS(status));
   return "stopped unexpectedly";
 }
@@ -38,7 +65,12 @@ using Clock = std::chrono::steady_clock;
 [[noreturn]] void workerLoop(int requests, int results, const std::function<std::string(size_t)>& task) {
   uint64_t index;
   while (readAll(requests, &index, sizeof index)) {
-    std::string payload = task(static_cast<size_t>(index));
+    std::string payload;
+    try {
+      payload = task(static_cast<size_t>(index));
+    } catch (const std::bad_alloc&) {
+      ::_exit(kOutOfMemoryExit);  // past the memory limit: the parent reports it, the pool starts another
+    }
     uint64_t size = payload.size();
     if (!writeAll(results, &size, sizeof size) || !writeAll(results, payload.data(), payload.size())) break;
   }
@@ -78,6 +110,11 @@ bool startWorker(Worker& w, const std::vector<Worker>& others, const std::functi
   }
   if (pid == 0) {
     publishCrashPhasesTo(phase);
+    if (workerMemoryLimit && !kUnderAddressSanitizer) {
+      struct rlimit limit {};
+      limit.rlim_cur = limit.rlim_max = workerMemoryLimit;
+      ::setrlimit(RLIMIT_AS, &limit);
+    }
     ::close(toChild[1]);
     ::close(fromChild[0]);
     for (const auto& other : others)

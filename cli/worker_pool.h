@@ -39,6 +39,12 @@ void runIsolated(size_t count, unsigned workers, double timeoutSeconds,
                  const std::function<void(size_t, TaskOutcome&&)>& onDone,
                  const std::vector<std::string>& affinity = {});
 
+// The address space a worker forked after this may map (RLIMIT_AS; 0: no limit, the default), so
+// that one input cannot take the machine down: a task whose allocation fails past it ends its worker,
+// and its outcome says it ran out of memory, with the limit. Not applied under AddressSanitizer,
+// whose shadow memory is mapped address space far beyond any such limit.
+void setWorkerMemoryLimit(uint64_t bytes);
+
 // Runs one task in a forked child and waits for it: the same isolation for a single conversion.
 TaskOutcome runIsolatedOnce(const std::function<std::string()>& task, double timeoutSeconds);
 

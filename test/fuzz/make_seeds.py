@@ -49,7 +49,8 @@ def main():
     args = parser.parse_args()
 
     dirs = {name: args.out / name for name in
-            ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_scene_manifest"]}
+            ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_scene_manifest",
+             "fuzz_reproject_options"]}
     for d in dirs.values():
         shutil.rmtree(d, ignore_errors=True)
         d.mkdir(parents=True)
@@ -91,6 +92,24 @@ def main():
         for text in printf_toml.findall(path.read_text(errors="replace")):
             manifest = text.replace("\\n", "\n").replace("\\t", "\t").replace('\\"', '"')
             write_seed(dirs["fuzz_scene_manifest"], manifest.encode())
+
+    # The reproject command lines of the lit tests, one word per line, without the paths (%t...) and
+    # the options that take them.
+    reproject_run = re.compile(r"%stereoshift reproject (.*)")
+    for path in sorted((args.source_root / "test" / "lit").rglob("*.test")):
+        for line in reproject_run.findall(path.read_text(errors="replace")):
+            words, skip = [], False
+            for word in line.split():
+                if word.startswith(("2>", "|", ">", "&&", ";")):
+                    break  # the shell's part of the RUN line
+                if skip or word.startswith("%"):
+                    skip = False
+                    continue
+                if word in ("-o", "--output", "--report"):
+                    skip = True
+                    continue
+                words.append(word)
+            write_seed(dirs["fuzz_reproject_options"], ("\n".join(words) + "\n").encode())
 
     for name, d in dirs.items():
         count = len(list(d.iterdir()))

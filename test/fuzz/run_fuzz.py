@@ -32,8 +32,10 @@ import time
 
 HERE = pathlib.Path(__file__).resolve().parent
 SOURCE_ROOT = HERE.parents[1]
-TARGETS = ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_scene_manifest"]
-DICTIONARIES = {"fuzz_scene_manifest": HERE / "scene.dict"}  # the others: shader.dict
+TARGETS = ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_scene_manifest",
+           "fuzz_reproject_options"]
+DICTIONARIES = {"fuzz_scene_manifest": HERE / "scene.dict",  # the others: shader.dict
+                "fuzz_reproject_options": HERE / "reproject.dict"}
 # One input that takes longer than this is a finding (a hang or a super-linear blow-up); generous, so a
 # loaded CI machine does not report a slow but finite input.
 INPUT_TIMEOUT_S = 60
@@ -42,7 +44,7 @@ RSS_LIMIT_MB = 4096
 # under ASan + UBSan (the transpile targets run the whole glslang front end per input; SPIR-V input
 # skips it), which keeps the whole suite within its time on two cores.
 RUN_BUDGET = {"fuzz_transpile_glsl": 7200, "fuzz_transpile_hlsl": 9000, "fuzz_transpile_spirv": 120000,
-              "fuzz_scene_manifest": 30000}
+              "fuzz_scene_manifest": 30000, "fuzz_reproject_options": 3000}
 # After a third-party crash the fuzzer restarts (reloading the corpus) only if this much time is left.
 MIN_RESTART_S = 3
 
