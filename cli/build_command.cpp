@@ -17,6 +17,7 @@
 #include "cli/build_plan.h"
 #include "cli/build_report.h"
 #include "cli/build_schedule.h"
+#include "cli/worker_pool.h"
 
 #include "cli/path_option.h"
 
