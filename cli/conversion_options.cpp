@@ -115,6 +115,25 @@ std::string validValues(const std::string& option) {
   return text + ")";
 }
 
+// Why `name` cannot name an injected declaration in GLSL and HLSL alike, or nothing when it can.
+std::optional<std::string> notAnInjectableName(const std::string& name) {
+  static const std::set<std::string> kReserved = {
+      "main", "attribute", "const", "uniform", "varying", "buffer", "shared", "layout", "centroid", "flat",
+      "smooth", "noperspective", "patch", "sample", "break", "continue", "do", "for", "while", "switch", "case",
+      "default", "if", "else", "in", "out", "inout", "float", "double", "int", "void", "bool", "true", "false",
+      "invariant", "precise", "discard", "return", "struct", "highp", "mediump", "lowp", "precision", "cbuffer",
+      "tbuffer", "register", "static", "matrix", "vector", "packoffset", "technique", "pass", "typedef",
+      "namespace", "class", "interface", "template", "this", "half", "uint", "dword", "string", "sampler",
+      "texture", "row_major", "column_major", "nointerpolation", "groupshared", "volatile", "extern", "inline"};
+  if (name.empty()) return std::string("is empty: it must be an identifier");
+  if (!isIdentifierStart(name[0]) || !std::all_of(name.begin(), name.end(), isIdentifierChar))
+    return std::string("is not an identifier (letters, digits and '_', not starting with a digit)");
+  if (name.starts_with("gl_") || name.find("__") != std::string::npos)
+    return std::string("is reserved (names starting with gl_ or holding __ belong to the language)");
+  if (kReserved.count(name)) return std::string("is a keyword or the entry point");
+  return std::nullopt;
+}
+
 namespace {
 
 std::string unknownValue(const std::string& option, const std::string& value) {
@@ -170,24 +189,6 @@ std::optional<std::string> finishTargetOption(CliOptions& o) {
 }
 
 // Where the eye parameters live, and the single-pass stereo modes.
-// Why `name` cannot name an injected declaration in GLSL and HLSL alike, or nothing when it can.
-std::optional<std::string> notAnInjectableName(const std::string& name) {
-  static const std::set<std::string> kReserved = {
-      "main", "attribute", "const", "uniform", "varying", "buffer", "shared", "layout", "centroid", "flat",
-      "smooth", "noperspective", "patch", "sample", "break", "continue", "do", "for", "while", "switch", "case",
-      "default", "if", "else", "in", "out", "inout", "float", "double", "int", "void", "bool", "true", "false",
-      "invariant", "precise", "discard", "return", "struct", "highp", "mediump", "lowp", "precision", "cbuffer",
-      "tbuffer", "register", "static", "matrix", "vector", "packoffset", "technique", "pass", "typedef",
-      "namespace", "class", "interface", "template", "this", "half", "uint", "dword", "string", "sampler",
-      "texture", "row_major", "column_major", "nointerpolation", "groupshared", "volatile", "extern", "inline"};
-  if (name.empty()) return std::string("is empty: it must be an identifier");
-  if (!isIdentifierStart(name[0]) || !std::all_of(name.begin(), name.end(), isIdentifierChar))
-    return std::string("is not an identifier (letters, digits and '_', not starting with a digit)");
-  if (name.starts_with("gl_") || name.find("__") != std::string::npos)
-    return std::string("is reserved (names starting with gl_ or holding __ belong to the language)");
-  if (kReserved.count(name)) return std::string("is a keyword or the entry point");
-  return std::nullopt;
-}
 
 std::optional<std::string> finishEyeOptions(CliOptions& o) {
   static const std::map<std::string, EyeSource> sources = {

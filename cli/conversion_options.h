@@ -52,6 +52,11 @@ std::string validValues(const std::string& option);
 
 std::vector<std::string> splitCommas(const std::string& s);
 
+// Why `name` cannot name an injected declaration (the eye block, its instance) in GLSL and HLSL
+// alike: empty, not an identifier, reserved, a keyword; nothing when it can. `reproject` checks its
+// names with it too.
+std::optional<std::string> notAnInjectableName(const std::string& name);
+
 // Every field of the options, for the incremental cache's key: two runs with the same description
 // produce the same outputs from the same inputs. A new TranspileOptions field must be added here.
 nlohmann::json describeOptions(const TranspileOptions& options);

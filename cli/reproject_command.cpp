@@ -4,6 +4,7 @@
 #include "cli/reproject_command.h"
 
 #include "cli/cli_support.h"
+#include "cli/conversion_options.h"
 
 #include "cli/path_option.h"
 
@@ -142,6 +143,10 @@ void parseEyeOptions(const ReprojectCliOptions& c, ReprojectOptions& base, Probl
     base.eye.source = *s;
   base.eye.blockName = c.blockName;
   base.eye.instanceName = c.instanceName;
+  // Written into the generated text: an identifier the languages allow, or an option error (found
+  // by fuzz_reproject_options: `--block-name '+2'` made shaders that did not compile).
+  for (const auto& [option, name] : {std::pair{"--block-name", &c.blockName}, std::pair{"--instance-name", &c.instanceName}})
+    if (auto why = notAnInjectableName(*name)) problems.add(std::string(option) + " '" + escapeControlBytes(*name) + "' " + *why);
   if (!c.set.empty()) base.eye.descriptorSet = parseNumber<uint32_t>(c.set, "--set", problems);
   if (!c.binding.empty()) base.eye.binding = parseNumber<uint32_t>(c.binding, "--binding", problems);
   if (!c.hlslRegister.empty()) base.eye.hlslRegister = parseNumber<uint32_t>(c.hlslRegister, "--hlsl-register", problems);

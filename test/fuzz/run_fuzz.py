@@ -44,7 +44,7 @@ RSS_LIMIT_MB = 4096
 # under ASan + UBSan (the transpile targets run the whole glslang front end per input; SPIR-V input
 # skips it), which keeps the whole suite within its time on two cores.
 RUN_BUDGET = {"fuzz_transpile_glsl": 7200, "fuzz_transpile_hlsl": 9000, "fuzz_transpile_spirv": 120000,
-              "fuzz_scene_manifest": 30000, "fuzz_reproject_options": 3000}
+              "fuzz_scene_manifest": 30000, "fuzz_reproject_options": 6000}
 # After a third-party crash the fuzzer restarts (reloading the corpus) only if this much time is left.
 MIN_RESTART_S = 3
 

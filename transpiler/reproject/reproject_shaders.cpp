@@ -155,6 +155,15 @@ std::vector<std::string> checkReprojectOptions(const ReprojectOptions& o) {
   // Bindings are written as layout numbers; glslang's layout fields hold bindings below 65535.
   for (const auto& [option, value] : {std::pair{"--colour-binding", o.colourBinding}, std::pair{"--depth-binding", o.depthBinding}})
     if (value > 65534) problems.push_back(std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to 65534)");
+  // In OpenGL ES a sampler's binding is a texture unit: below gl_MaxCombinedTextureImageUnits, which
+  // glslang (and the re-compile check) takes as 80 (found by fuzz_reproject_options: an ESSL pass
+  // with --depth-binding 2148 did not compile). The same for OpenGL GLSL (loose uniforms).
+  constexpr uint32_t kEsTextureUnits = 80;
+  if (o.target == TargetLanguage::Essl || (o.target == TargetLanguage::Glsl && openGlSource(o)))
+    for (const auto& [option, value] : {std::pair{"--colour-binding", o.colourBinding}, std::pair{"--depth-binding", o.depthBinding}})
+      if (value >= kEsTextureUnits && value <= 65534)
+        problems.push_back(std::string(option) + " " + std::to_string(value) + " is out of range for an OpenGL (ES) target (valid: 0 to " +
+                           std::to_string(kEsTextureUnits - 1) + ", a texture unit)");
   if (o.colourBinding == o.depthBinding) problems.push_back("the colour and depth textures need different bindings");
   EyeSource source = effectiveEyeSource(o);
   if (source == EyeSource::UniformBlock) {
