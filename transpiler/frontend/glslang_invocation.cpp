@@ -125,8 +125,7 @@ std::optional<Diagnostic> findTreeLimitViolation(TIntermNode* root, const std::s
     std::string message;
     TIntermNode* reported = node;
     if (control && controlNesting > kMaxControlFlowNesting) {
-      message = "control flow (if, ?:, loops, switch) nests deeper than " + std::to_string(kMaxControlFlowNesting) +
-                " levels here (the front end's limit: SPIR-V validation time grows with the cube of it)";
+      message = controlFlowNestingMessage();
     } else if (depth > kMaxSyntaxTreeDepth) {
       message = "this statement nests deeper than " + std::to_string(kMaxSyntaxTreeDepth) +
                 " levels of syntax tree (the front end's limit: glslang walks the tree by recursion)";

@@ -27,9 +27,7 @@ std::vector<Word> words(const std::string& text) {
   source::Lexer lexer(text);
   source::Token t;
   while (lexer.next(t)) {
-    if (t.inDirective() || t.kind == source::TokenKind::Directive || t.kind == source::TokenKind::Comment ||
-        t.kind == source::TokenKind::String)
-      continue;
+    if (!t.isCode() || t.kind == source::TokenKind::String) continue;
     out.push_back({t.begin, t.end, t.kind == source::TokenKind::Identifier});
   }
   return out;

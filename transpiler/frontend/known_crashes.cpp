@@ -17,9 +17,7 @@ std::optional<KnownCrashTrigger> knownGlslangCrashTrigger(const std::string& tex
   source::LexedText lexed(text);
   std::vector<size_t> code;  // tokens that are neither comments nor on a directive's line
   for (size_t k = 0; k < lexed.size(); ++k)
-    if (lexed[k].kind != source::TokenKind::Comment && lexed[k].kind != source::TokenKind::Directive &&
-        !lexed[k].inDirective())
-      code.push_back(k);
+    if (lexed[k].isCode()) code.push_back(k);
   std::set<std::string_view> structNames;
   int depth = 0;
   for (size_t i = 0; i < code.size(); ++i) {

@@ -21,23 +21,6 @@ LimitViolation violationAt(const source::Token& t, std::string message) {
   return v;
 }
 
-std::string controlFlowMessage() {
-  return "control flow (if, ?:, loops, switch) nests deeper than " + std::to_string(kMaxControlFlowNesting) +
-         " levels here (the front end's limit: SPIR-V validation time grows with the cube of it)";
-}
-
-// The code tokens of a text: no comments, nothing on a directive's line (macro bodies are read where
-// they are used, by glslang; the tree limits catch what they build).
-std::vector<source::Token> codeTokens(const std::string& text) {
-  std::vector<source::Token> code;
-  source::Lexer lexer(text);
-  source::Token t;
-  while (lexer.next(t))
-    if (t.kind != source::TokenKind::Comment && t.kind != source::TokenKind::Directive && !t.inDirective())
-      code.push_back(t);
-  return code;
-}
-
 bool isPunct(const std::string& text, const source::Token& t, char c) {
   return t.kind == source::TokenKind::Punctuation && text[t.begin] == c;
 }
@@ -92,7 +75,7 @@ std::optional<LimitViolation> findStatementNestingViolation(const std::string& t
     level.braced = bodyStart < code.size() && isPunct(text, code[bodyStart], '{');
     level.braceDepth = level.braced ? braceDepth + 1 : braceDepth;
     open.push_back(level);
-    if (static_cast<int>(open.size()) > kMaxControlFlowNesting) return violationAt(code[keyword], controlFlowMessage());
+    if (static_cast<int>(open.size()) > kMaxControlFlowNesting) return violationAt(code[keyword], controlFlowNestingMessage());
     return std::nullopt;
   };
   for (size_t k = 0; k < code.size();) {
@@ -187,27 +170,30 @@ std::optional<LimitViolation> findOperatorRunViolation(const std::string& text, 
 
 }  // namespace
 
+std::string controlFlowNestingMessage() {
+  return "control flow (if, ?:, loops, switch) nests deeper than " + std::to_string(kMaxControlFlowNesting) +
+         " levels here (the front end's limit: SPIR-V validation time grows with the cube of it)";
+}
+
 std::optional<LimitViolation> findNestingViolation(const std::string& text) {
+  // One pass of the lexer: the bracket limit on every punctuation token (directives' brackets are
+  // read as their tokens: macro bodies are code), the code tokens kept for the other two scans.
   source::Lexer lexer(text);
   source::Token t;
+  std::vector<source::Token> code;
   int depth = 0;
   while (lexer.next(t)) {
-    if (t.kind != source::TokenKind::Punctuation) continue;  // directives' brackets are read as their tokens
+    if (t.isCode()) code.push_back(t);
+    if (t.kind != source::TokenKind::Punctuation) continue;
     char c = text[t.begin];
     if (c == '(' || c == '[' || c == '{') {
-      if (++depth > kMaxBracketNesting) {
-        LimitViolation v;
-        v.line = static_cast<int>(t.line);
-        v.column = static_cast<int>(t.column);
-        v.message = "brackets nest deeper than " + std::to_string(kMaxBracketNesting) +
-                    " levels here (the front end's limit: glslang parses nested brackets by recursion)";
-        return v;
-      }
+      if (++depth > kMaxBracketNesting)
+        return violationAt(t, "brackets nest deeper than " + std::to_string(kMaxBracketNesting) +
+                                  " levels here (the front end's limit: glslang parses nested brackets by recursion)");
     } else if ((c == ')' || c == ']' || c == '}') && depth > 0) {
       --depth;
     }
   }
-  std::vector<source::Token> code = codeTokens(text);
   if (auto v = findStatementNestingViolation(text, code)) return v;
   return findOperatorRunViolation(text, code);
 }

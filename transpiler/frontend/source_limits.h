@@ -36,6 +36,9 @@ struct LimitViolation {
 // before anything walks it, where macros count too.)
 std::optional<LimitViolation> findNestingViolation(const std::string& text);
 
+// The words of the control-flow nesting error, the same from the text scan and the tree check.
+std::string controlFlowNestingMessage();
+
 // "16 MiB", "3.2 MiB", "812 KiB": a byte count for messages.
 std::string describeBytes(size_t bytes);
 

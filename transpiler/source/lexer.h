@@ -75,6 +75,8 @@ struct Token {
   bool is(TokenKind k) const { return kind == k; }
   // A token on a directive's line (its name, operands, macro body, comments), not the directive itself.
   bool inDirective() const { return directive != DirectiveKind::None && kind != TokenKind::Directive; }
+  // A token of the program text: neither a comment nor a directive or a word on its line.
+  bool isCode() const { return kind != TokenKind::Comment && kind != TokenKind::Directive && !inDirective(); }
 };
 
 // Pulls the tokens of `text` one at a time: a reader that wants only the start of a file (the first
