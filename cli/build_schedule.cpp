@@ -4,7 +4,6 @@
 
 #include "cli/cli_support.h"
 #include "cli/process_failure.h"
-#include "passes/crash_phase.h"
 #include "cli/result_codec.h"
 #include "cli/worker_pool.h"
 #include "transpiler/frontend/front_end.h"
@@ -134,31 +133,38 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
   size_t finished = 0;
   // Jobs whose worker died in glslang's parser: converted again without it (the text-only shift may
   // take the stage, text_only_shift.h) once every other job is done.
-  std::vector<size_t> crashedInGlslang;
+  std::vector<size_t> crashedJobs;
   std::vector<BuildJob> retryJobs;
   std::vector<TaskOutcome> retryFailures;
   bool retrying = false;
   auto record = [&](size_t slot, TaskOutcome&& outcome) {
-    size_t i = retrying ? crashedInGlslang[slot] : toConvert[slot];
+    size_t i = retrying ? crashedJobs[slot] : toConvert[slot];
     const BuildJob& job = plan.jobs[i];
     JobResult& result = results[i];
-    if (!retrying && !outcome.completed && outcome.failure.rfind("crashed", 0) == 0 && !job.options.requireAnalysis &&
-        (outcome.phase == kGlslangGlslPhase || outcome.phase == kGlslangHlslPhase)) {
-      crashedInGlslang.push_back(i);
+    if (!retrying && crashedInGlslang(outcome) && !job.options.requireAnalysis) {
+      crashedJobs.push_back(i);
       retryJobs.push_back(job);
       retryJobs.back().options.glslangCrashed = true;
       retryFailures.push_back(std::move(outcome));
       return;
     }
-    if (retrying && (!outcome.completed || !decodeJobResult(outcome.payload, &result) || result.errors > 0))
+    bool decoded = outcome.completed && decodeJobResult(outcome.payload, &result);
+    if (retrying && (!decoded || result.errors > 0)) {
       outcome = std::move(retryFailures[slot]);  // the crash is what the user is told
-    if (!outcome.completed || !decodeJobResult(outcome.payload, &result)) {
-      result = workerFailure(job, outcome.completed ? "sent back an unreadable result" : outcome.failure);
-      if (!outcome.completed && !outcome.phase.empty()) {
+      decoded = false;
+    }
+    if (!decoded) {
+      if (outcome.completed) {
+        result = workerFailure(job, "sent back an unreadable result");
+      } else if (outcome.phase.empty()) {
+        result = workerFailure(job, outcome.failure);
+      } else {
         // Which part of the tool it died in; a known trigger in any of the pipeline's stages.
-        result = workerFailure(job, "failed: " + describeProcessFailure(outcome, "").what);
-        for (const auto& stage : job.stages)
-          for (const auto& note : describeProcessFailure(outcome, stage.string()).notes) result.log += note + "\n";
+        std::vector<std::string> stages;
+        for (const auto& stage : job.stages) stages.push_back(stage.string());
+        ProcessFailureText failure = describeProcessFailure(outcome, stages);
+        result = workerFailure(job, "failed: " + failure.what);
+        for (const auto& note : failure.notes) result.log += note + "\n";
       }
     } else {
       nlohmann::json outputs = nlohmann::json::object();
@@ -200,10 +206,10 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
   runIsolated(
       toConvert.size(), workers, options.jobTimeoutSeconds,
       [&](size_t slot) { return encodeJobResult(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
-  if (!crashedInGlslang.empty()) {
+  if (!crashedJobs.empty()) {
     retrying = true;
     runIsolated(
-        crashedInGlslang.size(), workers, options.jobTimeoutSeconds,
+        crashedJobs.size(), workers, options.jobTimeoutSeconds,
         [&](size_t slot) { return encodeJobResult(convertJob(retryJobs[slot], tool)); }, record);
   }
   if (tty) std::cerr << "\n";

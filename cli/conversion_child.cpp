@@ -7,7 +7,6 @@
 #include "cli/process_failure.h"
 #include "cli/source_reading.h"
 #include "cli/worker_pool.h"
-#include "passes/crash_phase.h"
 
 #include <cstdio>
 #include <cstring>
@@ -58,48 +57,47 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
     *run = convertInChild(o, paths, outputFor);
   } else {
     const std::string shown = paths.front() == "-" ? std::string(kStdinName) : paths.front();  // as diagnostics name it
-    auto inChild = [&](const CliOptions& options) {
+    // One conversion in a forked child. Its result comes back framed with the messages it held
+    // back: a second attempt's messages are the user's only when it succeeds, a first attempt's go
+    // out as they are written.
+    auto attempt = [&](const CliOptions& options, bool holdMessages) {
       return runIsolatedOnce(
           [&] {
+            std::ostringstream held;
+            std::streambuf* direct = holdMessages ? std::cerr.rdbuf(held.rdbuf()) : nullptr;
             std::string wire = encodeConversionRun(convertInChild(options, paths, outputFor));
+            if (direct) std::cerr.rdbuf(direct);
             std::cout.flush();
             std::cerr.flush();
             std::fflush(nullptr);
-            return wire;
+            std::string messages = held.str();
+            uint64_t size = messages.size();
+            return std::string(reinterpret_cast<const char*>(&size), sizeof size) + messages + wire;
           },
           options.timeoutSeconds);
     };
-    TaskOutcome outcome = inChild(o);
+    // The messages and the run out of a completed attempt; false when the payload is not one.
+    auto unframe = [](const TaskOutcome& done, std::string* messages, ConversionRun* result) {
+      uint64_t size = 0;
+      if (done.payload.size() < sizeof size) return false;
+      std::memcpy(&size, done.payload.data(), sizeof size);
+      if (size > done.payload.size() - sizeof size) return false;
+      *messages = done.payload.substr(sizeof size, size);
+      return decodeConversionRun(done.payload.substr(sizeof size + size), result);
+    };
+    TaskOutcome outcome = attempt(o, false);
     // glslang crashed on the input: once more without it, for the text-only shift (text_only_shift.h)
     // to take the stage where it can; where it cannot, the crash is what the user is told.
-    if (!outcome.completed && outcome.failure.rfind("crashed", 0) == 0 && !o.t.requireAnalysis &&
-        (outcome.phase == kGlslangGlslPhase || outcome.phase == kGlslangHlslPhase)) {
+    if (crashedInGlslang(outcome) && !o.t.requireAnalysis) {
       CliOptions again = o;
       again.t.glslangCrashed = true;
-      // Its messages are kept back: they are the user's only when the second attempt succeeds.
-      TaskOutcome retried = runIsolatedOnce(
-          [&] {
-            std::ostringstream said;
-            std::streambuf* kept = std::cerr.rdbuf(said.rdbuf());
-            std::string wire = encodeConversionRun(convertInChild(again, paths, outputFor));
-            std::cerr.rdbuf(kept);
-            std::string text = said.str();
-            uint64_t size = text.size();
-            std::cout.flush();
-            std::fflush(nullptr);
-            return std::string(reinterpret_cast<const char*>(&size), sizeof size) + text + wire;
-          },
-          o.timeoutSeconds);
+      TaskOutcome retried = attempt(again, true);
+      std::string messages;
       ConversionRun candidate;
-      uint64_t size = 0;
-      if (retried.completed && retried.payload.size() >= sizeof size) {
-        std::memcpy(&size, retried.payload.data(), sizeof size);
-        if (size <= retried.payload.size() - sizeof size &&
-            decodeConversionRun(retried.payload.substr(sizeof size + size), &candidate) && candidate.errors == 0) {
-          std::cerr << retried.payload.substr(sizeof size, size);
-          *run = std::move(candidate);
-          return true;
-        }
+      if (retried.completed && unframe(retried, &messages, &candidate) && candidate.errors == 0) {
+        std::cerr << messages;
+        *run = std::move(candidate);
+        return true;
       }
     }
     if (!outcome.completed) {
@@ -110,14 +108,15 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
         std::cerr << shown << ": error: conversion exceeded the " << limit << " s time limit (--timeout)"
                   << (outcome.phase.empty() ? "" : " in " + outcome.phase) << "; no output was written\n";
       } else {
-        ProcessFailureText failure = describeProcessFailure(outcome, paths.front());
+        ProcessFailureText failure = describeProcessFailure(outcome, {paths.front()});
         std::cerr << shown << ": error: " << failure.what << " while converting this shader; no output was written\n";
         for (const auto& note : failure.notes) std::cerr << note << "\n";
       }
       printErrorSummary(1);
       return false;
     }
-    if (!decodeConversionRun(outcome.payload, run)) {
+    std::string messages;  // none: the first attempt's went out as written
+    if (!unframe(outcome, &messages, run)) {
       std::cerr << shown << ": error: stereoshift's conversion process answered garbage; no output was written\n";
       printErrorSummary(1);
       return false;

@@ -7,11 +7,15 @@
 
 namespace stereoshift {
 
-ProcessFailureText describeProcessFailure(const TaskOutcome& outcome, const std::string& file) {
+bool crashedInGlslang(const TaskOutcome& outcome) {
+  return !outcome.completed && outcome.failure.rfind("crashed", 0) == 0 &&
+         (outcome.phase == kGlslangGlslPhase || outcome.phase == kGlslangHlslPhase);
+}
+
+ProcessFailureText describeProcessFailure(const TaskOutcome& outcome, const std::vector<std::string>& files) {
   ProcessFailureText text;
-  const bool inFrontEnd = outcome.phase == kGlslangGlslPhase || outcome.phase == kGlslangHlslPhase;
   const bool crashed = outcome.failure.rfind("crashed", 0) == 0;
-  if (crashed && inFrontEnd) {
+  if (crashedInGlslang(outcome)) {
     // "crashed (signal 11, SIGSEGV)" -> "... crashed on this input (signal 11, SIGSEGV)"
     text.what = outcome.phase + " crashed on this input" + outcome.failure.substr(7);
   } else if (!outcome.phase.empty()) {
@@ -19,9 +23,10 @@ ProcessFailureText describeProcessFailure(const TaskOutcome& outcome, const std:
   } else {
     text.what = "stereoshift " + outcome.failure;
   }
-  if (crashed && outcome.phase == kGlslangHlslPhase && !file.empty() && file != "-") {
+  if (!crashed || outcome.phase != kGlslangHlslPhase) return text;
+  for (const auto& file : files) {
     std::string contents;
-    if (readFile(file, &contents))
+    if (file != "-" && readFile(file, &contents))
       if (auto trigger = knownGlslangCrashTrigger(contents, SourceLanguage::Hlsl))
         text.notes.push_back(file + ":" + std::to_string(trigger->line) + ":" + std::to_string(trigger->column) +
                              ": note: " + trigger->what);

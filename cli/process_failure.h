@@ -16,8 +16,12 @@ struct ProcessFailureText {
   std::vector<std::string> notes;  // "file:line:col: note: ..." lines, each without its newline
 };
 
-// `outcome` is a task that did not complete; `file` the shader it converted (read again for the
-// known-trigger check; "" or "-" for none).
-ProcessFailureText describeProcessFailure(const TaskOutcome& outcome, const std::string& file);
+// `outcome` is a task that did not complete; `files` the shaders it converted (read again for the
+// known-trigger check; "-" is none).
+ProcessFailureText describeProcessFailure(const TaskOutcome& outcome, const std::vector<std::string>& files);
+
+// Whether the task's process died inside glslang's parser: then the conversion is worth one more
+// attempt without glslang, for the text-only shift (transpiler/text_only_shift.h).
+bool crashedInGlslang(const TaskOutcome& outcome);
 
 }  // namespace stereoshift
