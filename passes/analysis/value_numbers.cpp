@@ -87,12 +87,8 @@ uint32_t ValueNumbers::fresh() { return next_++; }
 uint32_t ValueNumbers::numberOf(uint32_t id, Context context, int depth) {
   if (context != 0)
     if (auto bound = contexts_[context].find(id); bound != contexts_[context].end()) return bound->second;
-  uint64_t key = uint64_t{context} << 32 | id;
-  if (context == 0) {
-    if (auto it = numbers_.find(id); it != numbers_.end()) return it->second;
-  } else if (auto it = boundNumbers_.find(key); it != boundNumbers_.end()) {
-    return it->second;
-  }
+  const uint64_t key = uint64_t{context} << 32 | id;
+  if (auto it = numbers_.find(key); it != numbers_.end()) return it->second;
   uint32_t n;
   if (depth > kMaxDepth || visits_ >= budget_) {
     n = fresh();
@@ -102,8 +98,7 @@ uint32_t ValueNumbers::numberOf(uint32_t id, Context context, int depth) {
   }
   // Kept whichever way it was found: a value is one value within its context, and a number of its
   // own (too deep, over the budget) is a safe answer for every later question about it.
-  if (context == 0) numbers_[id] = n;
-  else boundNumbers_[key] = n;
+  numbers_[key] = n;
   return n;
 }
 

@@ -72,10 +72,9 @@ class ValueNumbers {
 
   const spirv::Module& m_;
   std::map<Key, uint32_t> interned_;
-  std::unordered_map<uint32_t, uint32_t> numbers_;       // top-level numbers (context 0)
-  // Numbers in the other contexts, by (context << 32 | id): inside a helper the same id means other
-  // values at other calls, so each call's numbers are kept apart.
-  std::unordered_map<uint64_t, uint32_t> boundNumbers_;
+  // Numbers by (context << 32 | id), the top level's under the id itself: inside a helper the same
+  // id means other values at other calls, so each call's numbers are kept apart.
+  std::unordered_map<uint64_t, uint32_t> numbers_;
   std::deque<Bindings> contexts_;                        // by Context; a deque keeps references valid
   std::map<std::pair<Context, uint32_t>, Context> callContexts_;  // (parent, call id) -> context
   uint64_t visits_ = 0;
