@@ -78,12 +78,7 @@ void dropUnreachableFunctions(spirv::Module& module) {
   }
   module.functions = std::move(kept);
   if (removedIds.empty()) return;
-  auto targetsRemoved = [&](const spirv::Instruction& inst) { return removedIds.count(inst.operand(0)) > 0; };
-  std::erase_if(module.debugNames, targetsRemoved);
-  std::erase_if(module.annotations, [&](const spirv::Instruction& inst) {
-    return (inst.opcode == spv::OpDecorate || inst.opcode == spv::OpDecorateId || inst.opcode == spv::OpDecorateString ||
-            inst.opcode == spv::OpMemberDecorate) && targetsRemoved(inst);
-  });
+  module.forgetIds(removedIds);
   module.invalidateDefinitions();
 }
 

@@ -266,6 +266,16 @@ void Module::removeDecorations(uint32_t id, spv::Decoration decoration) {
   });
 }
 
+void Module::forgetIds(const std::set<uint32_t>& ids) {
+  auto targets = [&](const Instruction& inst) { return ids.count(inst.operand(0)) > 0; };
+  std::erase_if(debugNames, targets);
+  std::erase_if(annotations, [&](const Instruction& inst) {
+    return (inst.opcode == spv::OpDecorate || inst.opcode == spv::OpDecorateId || inst.opcode == spv::OpDecorateString ||
+            inst.opcode == spv::OpMemberDecorate || inst.opcode == spv::OpMemberDecorateString) &&
+           targets(inst);
+  });
+}
+
 uint32_t Module::findType(spv::Op op, const std::vector<uint32_t>& operands) const {
   for (const auto& inst : typesValues)
     if (inst.opcode == op && inst.operands == operands) return inst.resultId;

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -115,6 +116,9 @@ class Module {
   void decorateMember(uint32_t structId, uint32_t member, spv::Decoration decoration,
                       std::vector<uint32_t> literals = {});
   void removeDecorations(uint32_t id, spv::Decoration decoration);
+  // Drops the OpName / OpMemberName and the decorations whose target is one of `ids` (ids that are
+  // going away: removed variables, the values of removed functions).
+  void forgetIds(const std::set<uint32_t>& ids);
 
   // --- find-or-create types and constants (never duplicates a type the module has) ---
   uint32_t typeBool();

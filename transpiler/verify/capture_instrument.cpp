@@ -289,8 +289,7 @@ void readLooseUniformsFromBlock(spirv::Module& m, const std::vector<uint32_t>& l
 void dropVariables(spirv::Module& m, const std::vector<uint32_t>& variables) {
   std::set<uint32_t> gone(variables.begin(), variables.end());
   std::erase_if(m.typesValues, [&](const Instruction& i) { return gone.count(i.resultId) > 0; });
-  std::erase_if(m.annotations, [&](const Instruction& i) { return gone.count(i.operand(0)) > 0; });
-  std::erase_if(m.debugNames, [&](const Instruction& i) { return i.opcode == spv::OpName && gone.count(i.operand(0)) > 0; });
+  m.forgetIds(gone);
   for (auto& entry : m.entryPoints)
     std::erase_if(entry.operands, [&](uint32_t id) { return gone.count(id) > 0; });
   m.invalidateDefinitions();
