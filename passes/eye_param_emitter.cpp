@@ -168,9 +168,8 @@ void declareBlock(PassContext& ctx, spv::StorageClass storage) {
   ctx.eye.blockType = m.newStruct({});
   std::set<std::string> taken;
   for (const auto& n : m.allNames()) taken.insert(n);
-  std::string blockName = o.blockName, instanceName = o.instanceName;
-  for (int i = 2; taken.count(blockName); ++i) blockName = o.blockName + std::to_string(i);
-  for (int i = 2; taken.count(instanceName); ++i) instanceName = o.instanceName + std::to_string(i);
+  auto isTaken = [&](const std::string& name) { return taken.count(name) > 0; };
+  std::string blockName = numberedName(o.blockName, isTaken), instanceName = numberedName(o.instanceName, isTaken);
   EyeParamFacts& facts = ctx.record.eyeParams;
   for (const auto& [wanted, chosen] : {std::pair{o.blockName, blockName}, std::pair{o.instanceName, instanceName}})
     if (wanted != chosen) {
@@ -326,6 +325,12 @@ uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, i
   uint32_t scaled = context.module.takeId();
   out.emplace_back(spv::OpFMul, context.module.typeFloat(32), scaled, std::vector<uint32_t>{sign, value});
   return scaled;
+}
+
+std::string numberedName(const std::string& wanted, const std::function<bool(const std::string&)>& taken) {
+  std::string name = wanted;
+  for (int i = 2; taken(name); ++i) name = wanted + std::to_string(i);
+  return name;
 }
 
 }  // namespace stereoshift

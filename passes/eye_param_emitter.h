@@ -7,6 +7,8 @@
 #include "passes/ir/module.h"
 
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace stereoshift {
@@ -22,5 +24,9 @@ bool ensureEyeParams(PassContext& context, int count);
 // ensureEyeParams) and returns the id of the loaded float. In the single-pass modes eyeSign is
 // derived per view or instance instead (eye_select.h).
 uint32_t emitLoadEyeParam(PassContext& context, std::vector<spirv::Instruction>& out, int which);
+
+// The name an injected declaration takes when `wanted` is taken: wanted, wanted2, wanted3, ... (the
+// eye block and its instance here, the text-only HLSL shift's cbuffer).
+std::string numberedName(const std::string& wanted, const std::function<bool(const std::string&)>& taken);
 
 }  // namespace stereoshift

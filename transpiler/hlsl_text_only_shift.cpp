@@ -5,6 +5,7 @@
 // 3Dmigoto's StereoParams texture.
 #include "transpiler/text_only_shift.h"
 
+#include "passes/eye_param_emitter.h"
 #include "passes/shift_emitter.h"
 #include "transpiler/backend/hlsl_splice.h"
 #include "transpiler/frontend/hlsl_effects.h"
@@ -43,16 +44,14 @@ uint32_t firstFreeCbufferRegister(const std::string& text) {
   return free;
 }
 
-// `name`, or name2, name3, ... where the text already uses it (a dump's 3Dmigoto declarations name
-// a `StereoParams` texture), as the eye-params pass renames its block.
+// `name`, renamed as the eye-params pass renames its block where the text already uses it (a dump's
+// 3Dmigoto declarations name a `StereoParams` texture).
 std::string unusedName(const std::string& text, const std::string& name) {
   source::LexedText lexed(text);
   std::set<std::string_view> used;
   for (size_t k = 0; k < lexed.size(); ++k)
     if (lexed.isIdentifier(k)) used.insert(lexed.text(k));
-  if (!used.count(name)) return name;
-  for (int n = 2;; ++n)
-    if (std::string candidate = name + std::to_string(n); !used.count(candidate)) return candidate;
+  return numberedName(name, [&](const std::string& n) { return used.count(n) > 0; });
 }
 
 }  // namespace
@@ -96,8 +95,7 @@ TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const Tran
   result.ok = true;
   result.output = std::move(spliced.text);
   result.sites = spliced.sites;
-  result.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the clip position",
-                    "per-eye view vectors", "deferred unprojection", "HUD placement", "re-compile of the output"};
+  result.notDone = textOnlyNotDone();
   return result;
 }
 

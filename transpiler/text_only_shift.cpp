@@ -170,6 +170,13 @@ std::string glslangGapIn(const std::string& text) {
   return {};
 }
 
+const std::vector<std::string>& textOnlyNotDone() {
+  static const std::vector<std::string> notDone = {
+      "2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the clip position", "per-eye view vectors",
+      "deferred unprojection", "HUD placement", "re-compile of the output"};
+  return notDone;
+}
+
 bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd) {
   bool preRaster = stage == Stage::Vertex || stage == Stage::TessEvaluation || stage == Stage::Geometry;
   bool sameLanguage = backEnd.target == TargetLanguage::Auto ||
@@ -223,8 +230,7 @@ TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOpti
   result.ok = true;
   result.output = std::move(spliced.text);
   result.sites = spliced.sites;
-  result.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the clip position",
-                    "per-eye view vectors", "deferred unprojection", "HUD placement", "re-compile of the output"};
+  result.notDone = textOnlyNotDone();
   return result;
 }
 

@@ -39,6 +39,9 @@ struct TextOnlyShift {
 // profile; "" when none. The text-only shift is for those, never for a shader that is simply wrong.
 std::string glslangGapIn(const std::string& text);
 
+// What a text-only shift does not do, that an analysis would have done (the report's `not_done`).
+const std::vector<std::string>& textOnlyNotDone();
+
 // Whether the driver may try the text-only shift for a stage of `language` the front end could not
 // parse: a pre-rasterization stage, kept in its own language, two-pass stereo, no --require-analysis.
 bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd);
