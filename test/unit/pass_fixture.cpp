@@ -12,21 +12,24 @@ TranspileOptions singlePassOptions() {
   return options;
 }
 
-SinglePassRun runSinglePass(const std::string& assembly, const std::string& pass, TranspileOptions options,
-                            uint32_t spirvVersion) {
-  SinglePassRun run;
+std::optional<spirv::Module> assembleModule(const std::string& assembly, uint32_t spirvVersion) {
   std::string error;
   std::vector<uint32_t> words = spirv::assemble(assembly, &error);
   if (words.size() < 5) {
     ADD_FAILURE() << "the test's SPIR-V does not assemble:\n" << error;
-    return run;
+    return std::nullopt;
   }
   words[1] = spirvVersion;  // the assembler writes its own environment's version
   auto parsed = spirv::Module::parse(words, &error);
-  if (!parsed) {
-    ADD_FAILURE() << "the test's SPIR-V does not parse: " << error;
-    return run;
-  }
+  if (!parsed) ADD_FAILURE() << "the test's SPIR-V does not parse: " << error;
+  return parsed;
+}
+
+SinglePassRun runSinglePass(const std::string& assembly, const std::string& pass, TranspileOptions options,
+                            uint32_t spirvVersion) {
+  SinglePassRun run;
+  auto parsed = assembleModule(assembly, spirvVersion);
+  if (!parsed) return run;
   spirv::Module module = std::move(*parsed);
   SourceInfo source;
   source.language = SourceLanguage::Spirv;

@@ -4,12 +4,14 @@
 // the diagnostics out for the test to check (typed, and as the report renders them).
 #pragma once
 
+#include "passes/ir/module.h"
 #include "passes/pass.h"
 #include "transpiler/transpile_options.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,10 @@ struct SinglePassRun {
 // The options a test starts from: the tool's defaults, plus --validate-each (every changed module
 // is validated, and every analysis a pass claims to preserve is checked).
 TranspileOptions singlePassOptions();
+
+// Assembles and parses `assembly` as a module of `spirvVersion` (the optimizer behind the analyses'
+// folded copy takes SPIR-V 1.0); a module that does not assemble or parse fails the calling test.
+std::optional<spirv::Module> assembleModule(const std::string& assembly, uint32_t spirvVersion = 0x00010000);
 
 // Assembles `assembly` (a SPIR-V 1.0 module unless it says otherwise through `spirvVersion`) and runs
 // `pass` on it with `options`. A module that does not assemble fails the calling test.

@@ -80,9 +80,7 @@ TEST(AnalysisManager, KeptByPassesThatPreserveThemDroppedByOthers) {
 
 struct ManagedModule {
   explicit ManagedModule(const std::string& assembly) {
-    std::vector<uint32_t> words = spirv::assemble(assembly, nullptr);
-    words[1] = 0x00010000;  // the optimizer behind the folded copy takes SPIR-V 1.0
-    module = *spirv::Module::parse(words, nullptr);
+    if (auto parsed = assembleModule(assembly)) module = std::move(*parsed);
     source.language = SourceLanguage::Spirv;
   }
   spirv::Module module;

@@ -4,6 +4,7 @@
 #include "passes/analysis/value_numbers.h"
 #include "passes/ir/disassemble.h"
 #include "passes/ir/module.h"
+#include "test/unit/pass_fixture.h"
 #include "transpiler/frontend/front_end.h"
 
 #include <gtest/gtest.h>
@@ -55,11 +56,7 @@ std::string chain(const std::string& prefix, int length) {
 }
 
 spirv::Module parse(const std::string& assembly) {
-  std::string error;
-  std::vector<uint32_t> words = spirv::assemble(assembly, &error);
-  EXPECT_TRUE(error.empty()) << error;
-  auto module = spirv::Module::parse(words, &error);
-  EXPECT_TRUE(module) << error;
+  auto module = test::assembleModule(assembly);
   return module ? std::move(*module) : spirv::Module{};
 }
 
