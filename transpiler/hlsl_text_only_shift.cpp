@@ -57,7 +57,7 @@ std::string unusedName(const std::string& text, const std::string& name) {
 }  // namespace
 
 bool isDecompiledHlsl(const SourceFile& input) {
-  return stageOf3DMigotoDump(input.path).has_value() || input.contents.find("3Dmigoto declarations") != std::string::npos ||
+  return stageOfDecompiledDump(input.path).has_value() || input.contents.find("3Dmigoto declarations") != std::string::npos ||
          input.contents.find("Created with 3Dmigoto") != std::string::npos;
 }
 

@@ -222,6 +222,21 @@ json renderStageReport(const StageRecord& record) {
     report["not_done"] = record.textOnly->notDone;
     report["eye_params"] = record.textOnly->eyeParams;
   }
+  if (record.assembly) {
+    const StageRecord::Assembly& a = *record.assembly;
+    report["language"] = "d3d-asm";
+    report["analysis"] = "d3d-assembly";
+    report["shader_model"] = a.shaderModel;
+    if (!a.positionRegister.empty()) {
+      report["position_register"] = a.positionRegister;
+      report["position_temp"] = a.positionTemp;
+      report["redirected_writes"] = a.redirectedWrites;
+      report["eye_params"] = a.declaredStereoParams ? "3Dmigoto StereoParams texture (t125, declared)"
+                                                    : "3Dmigoto StereoParams texture (t125, the dump's)";
+      report["not_done"] = a.notDone;
+    }
+    if (!a.unchangedBecause.empty()) report["unchanged_because"] = a.unchangedBecause;
+  }
   if (record.output == StageRecord::Output::Copied) report["output"] = "copied";
   if (record.output == StageRecord::Output::Emitted) report["output"] = "emitted";
   if (record.verified) report["verified"] = true;

@@ -51,6 +51,18 @@ struct StageRecord {
     std::string eyeParams;
   };
   std::optional<TextOnly> textOnly;
+  // D3D shader assembly, edited by the assembly route (d3dasm/asm_shift.h): no SPIR-V analysis ran;
+  // the position is the declared one.
+  struct Assembly {
+    std::string shaderModel;        // "vs_5_0"
+    std::string positionRegister;   // "o0"; empty when the stage has none
+    std::string positionTemp;       // the temporary its writes go to
+    int redirectedWrites = 0;
+    bool declaredStereoParams = false;
+    std::string unchangedBecause;   // copied as it is: why
+    std::vector<std::string> notDone;
+  };
+  std::optional<Assembly> assembly;
   std::string lifted;  // analysed on a lifted copy (frontend/glsl_lift.h): what was lifted
   enum class Output { None, Copied, Emitted } output = Output::None;
   bool verified = false;

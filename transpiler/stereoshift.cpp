@@ -5,6 +5,7 @@
 #include "transpiler/stereoshift.h"
 
 #include "passes/pass_manager.h"
+#include "transpiler/d3dasm/asm_route.h"
 #include "transpiler/stage_plan.h"
 
 #include <algorithm>
@@ -134,6 +135,7 @@ void handOnNextStageFacts(Plans& plans, const TranspileOptions& options, int las
 }  // namespace
 
 TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
+  if (isD3DAssemblyInput(input)) return convertAssemblyStage(input, options);
   StagePlan plan;
   plan.input = &input;
   return convertStage(plan, options);
@@ -147,6 +149,17 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < stages.size(); ++i) {
     auto plan = std::make_unique<StagePlan>();
     plan->input = &stages[i];
+    if (isD3DAssemblyInput(stages[i])) {
+      // Converted on its own (convertAssemblyStage); its stage is its shader model's.
+      plan->stage.emplace();
+      plan->stage->stage = assemblyStage(stages[i]);
+      if (int rank = shiftRank(plan->stage->stage); rank > lastRank) {
+        last = static_cast<int>(i);
+        lastRank = rank;
+      }
+      plans.push_back(std::move(plan));
+      continue;
+    }
     plan->stage = decideInputStage(stages[i], options);
     if (int rank = shiftRank(plan->stage->stage); rank > lastRank) {
       last = static_cast<int>(i);
@@ -164,6 +177,10 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < plans.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
+    if (isD3DAssemblyInput(stages[i])) {
+      results.push_back(convertAssemblyStage(stages[i], stageOptions));
+      continue;
+    }
     results.push_back(convertStage(*plans[i], stageOptions));
   }
   return results;

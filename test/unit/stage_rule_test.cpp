@@ -170,7 +170,12 @@ TEST(StageRule, ThreeDMigotoDumpNames) {
   EXPECT_EQ(stageOf3DMigotoDump("0123456789ABCDEF-ps_replace.txt"), Stage::Fragment);
   EXPECT_EQ(stageOf3DMigotoDump("a/b/0123456789abcdef-ds_replace.txt"), Stage::TessEvaluation);
   EXPECT_EQ(stageOf3DMigotoDump("0123456789abcdef-cs_REPLACE.TXT"), Stage::Compute);
-  for (const char* not_a_dump : {"0123456789abcdef-vs.txt", "0123456789abcde-vs_replace.txt",
+  // The assembly dumps 3Dmigoto writes beside the decompiled ones: `<hash>-vs.txt`.
+  EXPECT_EQ(stageOf3DMigotoDump("ShaderCache/0123456789abcdef-vs.txt"), Stage::Vertex);
+  EXPECT_EQ(stageOf3DMigotoDump("0123456789abcdef-gs.TXT"), Stage::Geometry);
+  EXPECT_EQ(stageOfDecompiledDump("0123456789abcdef-vs_replace.txt"), Stage::Vertex);
+  EXPECT_FALSE(stageOfDecompiledDump("0123456789abcdef-vs.txt"));
+  for (const char* not_a_dump : {"0123456789abcdef-vs.text", "0123456789abcde-vs_replace.txt", "0123456789abcde-vs.txt",
                                  "0123456789abcdeg-vs_replace.txt", "0123456789abcdef-xs_replace.txt",
                                  "notes_vs_replace.txt", "0123456789abcdef-vs_replace.txt.bak"})
     EXPECT_FALSE(stageOf3DMigotoDump(not_a_dump)) << not_a_dump;

@@ -375,7 +375,7 @@ LanguageDecision decideLanguage(const std::string& path, const std::string& text
     d.reason = "file extension " + path.substr(path.find_last_of('.'));
     return d;
   }
-  if (stageOf3DMigotoDump(path)) {
+  if (stageOfDecompiledDump(path)) {
     d.language = SourceLanguage::Hlsl;
     d.source = LanguageSource::Extension;
     d.reason = "3Dmigoto dump name (*_replace.txt: decompiled HLSL)";

@@ -97,12 +97,15 @@ bool isIncludeOnlyName(const std::string& path) {
   return false;
 }
 
-std::optional<Stage> stageOf3DMigotoDump(const std::string& path) {
+namespace {
+
+// `<16 hex digits>-<kind><suffix>` with kind vs, ps, gs, hs, ds or cs: the stage of the kind.
+std::optional<Stage> stageOfDumpName(const std::string& path, std::string_view suffix) {
   size_t slash = path.find_last_of('/');
   std::string_view name = std::string_view(path).substr(slash == std::string::npos ? 0 : slash + 1);
   constexpr size_t kHash = 16;
-  if (name.size() != kHash + std::string_view("-vs_replace.txt").size() || name[kHash] != '-' ||
-      lowerCase(std::string(name.substr(kHash + 3))) != "_replace.txt")
+  if (name.size() != kHash + 3 + suffix.size() || name[kHash] != '-' ||
+      lowerCase(std::string(name.substr(kHash + 3))) != suffix)
     return std::nullopt;
   for (size_t k = 0; k < kHash; ++k)
     if (!std::isxdigit(static_cast<unsigned char>(name[k]))) return std::nullopt;
@@ -113,6 +116,15 @@ std::optional<Stage> stageOf3DMigotoDump(const std::string& path) {
   auto it = kinds.find(kind);
   if (it == kinds.end()) return std::nullopt;
   return it->second;
+}
+
+}  // namespace
+
+std::optional<Stage> stageOfDecompiledDump(const std::string& path) { return stageOfDumpName(path, "_replace.txt"); }
+
+std::optional<Stage> stageOf3DMigotoDump(const std::string& path) {
+  if (auto decompiled = stageOfDecompiledDump(path)) return decompiled;
+  return stageOfDumpName(path, ".txt");
 }
 
 StagedName readStagedName(const std::string& path, const std::map<std::string, Stage>& extraExtensions) {

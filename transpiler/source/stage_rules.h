@@ -50,11 +50,13 @@ std::string stageHint(const std::string& path);
 // rule for single-shader runs, pipelines and `build` (each directory once).
 std::vector<std::string> includeSearchPath(const std::string& shaderPath, const std::vector<std::string>& userDirs);
 
-// 3Dmigoto's dump of a decompiled shader: `<16 hex digits>-<vs|ps|gs|hs|ds|cs>_replace.txt`
-// (ShaderFixes/ names 3Dmigoto loads back by hash): its stage, from the two letters; nullopt for any
-// other name. The text is HLSL with the entry point `main`. (Its assembly dumps, `<hash>-vs.txt`,
-// are not shaders stereoshift reads.)
+// 3Dmigoto's dumps (ShaderFixes/ names 3Dmigoto loads back by hash): a decompiled shader,
+// `<16 hex digits>-<vs|ps|gs|hs|ds|cs>_replace.txt` (HLSL with the entry point `main`), or its
+// assembly, `<16 hex digits>-<vs|...>.txt` (read by the assembly route, d3dasm/). The stage, from
+// the two letters; nullopt for any other name.
 std::optional<Stage> stageOf3DMigotoDump(const std::string& path);
+// The decompiled-HLSL name only.
+std::optional<Stage> stageOfDecompiledDump(const std::string& path);
 
 // Names that hold code for other files only: never a pipeline stage.
 bool isIncludeOnlyName(const std::string& path);

@@ -1,0 +1,71 @@
+// An interpreter of SM4/SM5 vertex-shader assembly, for checking what the assembly route wrote
+// where no GPU runs D3D bytecode: this turns the text of a vertex shader into a program that runs
+// on given input registers, constant buffers and textures and yields its output registers, so the
+// original and the converted shader can be run on the same inputs (asm_verify.h).
+//
+// What it runs: the ALU set of SM4/SM5 vertex shaders (float, integer and bit instructions,
+// comparisons, conversions, movc, the `_sat` modifier and the source modifiers `-` and `|x|`,
+// typed by the instruction as D3D types them), structured control flow (if/else/endif,
+// loop/endloop, break/continue and their conditional forms, ret/retc), constant buffers with
+// relative indexing, the immediate constant buffer, indexable temporaries, and resource reads
+// (ld, sample_l, ...) answered by a callback. What it refuses, with the line: subroutines
+// (label/call), switch, and any instruction it does not know; other stages' registers.
+// Registers hold 32-bit patterns; float results are rounded to float as the GPU rounds them;
+// denormals are kept (the GPU may flush them: both shaders run the same way here).
+#pragma once
+
+#include "transpiler/d3dasm/asm_text.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace stereoshift::d3dasm {
+
+using Vec4 = std::array<uint32_t, 4>;  // a register's four 32-bit components
+
+struct Machine {
+  std::map<uint32_t, Vec4> inputs;                  // v registers
+  std::map<uint32_t, std::vector<Vec4>> cbuffers;   // cb slot -> rows
+  // A resource read: slot (t<N>), the coordinate operand's value, the opcode ("ld", "sample_l").
+  std::function<Vec4(uint32_t slot, const Vec4& coordinate, const std::string& opcode)> resource;
+  uint64_t instructionLimit = 1u << 20;             // a loop that does not end stops here
+  // Results of a run.
+  std::map<uint32_t, Vec4> outputs;                 // o registers written
+};
+
+struct RunResult {
+  bool ok = false;
+  bool limitReached = false;
+  std::string error;
+  size_t line = 0;
+};
+
+struct InputDeclaration {
+  uint32_t index = 0;
+  uint32_t mask = 0;        // bits 0..3: x..w
+  std::string systemValue;  // "vertex_id", "instance_id", "" for plain inputs
+};
+
+class Program {
+ public:
+  // false (the line and why in *error) when the text holds what the interpreter does not run.
+  static std::unique_ptr<Program> decode(const AsmText& text, AsmError* error);
+  ~Program();
+  RunResult run(Machine& machine) const;
+
+  const std::vector<InputDeclaration>& inputs() const;
+  const std::map<uint32_t, uint32_t>& cbufferSizes() const;  // slot -> rows declared
+  const std::map<uint32_t, uint32_t>& outputMasks() const;   // o register -> mask declared
+  struct Impl;
+
+ private:
+  explicit Program(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace stereoshift::d3dasm

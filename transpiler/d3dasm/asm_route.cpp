@@ -1,0 +1,91 @@
+#include "transpiler/d3dasm/asm_route.h"
+
+#include "transpiler/d3dasm/asm_shift.h"
+
+#include <chrono>
+
+namespace stereoshift {
+
+bool isD3DAssemblyInput(const SourceFile& input) { return d3dasm::isD3DAssembly(input.contents); }
+
+std::optional<Stage> assemblyStage(const SourceFile& input) {
+  d3dasm::AsmText text;
+  d3dasm::AsmError error;
+  if (!d3dasm::parseAssembly(input.contents, &text, &error)) return std::nullopt;
+  return d3dasm::stageOfShaderModel(text.model);
+}
+
+namespace {
+
+// Why the options ask for something the assembly route cannot write, or "".
+std::string unsupportedOption(const TranspileOptions& options) {
+  if (options.target != TargetLanguage::Auto)
+    return "D3D shader assembly is written back as assembly: --target " + std::string(targetName(options.target)) +
+           " is not available for it";
+  if (options.eye.select != EyeSelect::Parameter)
+    return "single-pass stereo (--eye-source multiview / instanced) is not available for D3D shader assembly";
+  if (options.eye.source != EyeSource::Auto && !options.eyeFrom3DMigoto)
+    return "the assembly route reads the eye parameters from 3Dmigoto's StereoParams texture (t125): use "
+           "--eye-source 3dmigoto (or leave --eye-source out)";
+  return "";
+}
+
+}  // namespace
+
+TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  TranspileResult result;
+  StageRecord& record = result.record;
+  record.file = input.path;
+  auto fail = [&](int line, int column, const std::string& message) {
+    result.diagnostics.error(input.path, line, column, message);
+    result.report = renderStageReport(record);
+    return result;
+  };
+  d3dasm::AsmShiftOptions shiftOptions;
+  shiftOptions.cutoff = options.cutoff != CutoffMode::None;
+  shiftOptions.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, shiftOptions);
+  if (!shifted.ok)
+    return fail(static_cast<int>(shifted.error.line), static_cast<int>(shifted.error.column), shifted.error.message);
+  d3dasm::AsmText text;
+  d3dasm::AsmError ignored;
+  d3dasm::parseAssembly(input.contents, &text, &ignored);
+  std::optional<Stage> stage = d3dasm::stageOfShaderModel(text.model);
+  record.stage = stage;
+  record.stageReason = "shader model line " + text.model.text;
+  StageRecord::Assembly assembly;
+  assembly.shaderModel = shifted.model;
+  if (options.stage && stage && *options.stage != *stage)
+    return fail(static_cast<int>(text.lines[text.modelLine].number), 1,
+                "-S " + std::string(stageName(*options.stage)) + " contradicts the shader model line " + text.model.text);
+  if (std::string why = unsupportedOption(options); !why.empty()) return fail(0, 0, why);
+  record.emit.route = "d3d-asm-splice";
+  if (!shifted.shifted || !options.shiftThisStage) {
+    assembly.unchangedBecause = shifted.shifted ? "an earlier stage of the pipeline" : shifted.whyUnchanged;
+    record.assembly = assembly;
+    record.output = StageRecord::Output::Copied;
+    result.ok = true;
+    result.copiedThrough = true;
+    result.output = input.contents;
+  } else {
+    assembly.positionRegister = shifted.positionRegister;
+    assembly.positionTemp = shifted.positionTemp;
+    assembly.redirectedWrites = shifted.redirectedWrites;
+    assembly.declaredStereoParams = shifted.declaredStereoParams;
+    assembly.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the position",
+                        "per-eye fixes"};
+    record.assembly = assembly;
+    record.emit.spliceSites = shifted.sites;
+    record.output = StageRecord::Output::Emitted;
+    record.changed = true;
+    result.ok = true;
+    result.changed = true;
+    result.output = std::move(shifted.output);
+  }
+  record.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  result.report = renderStageReport(record);
+  return result;
+}
+
+}  // namespace stereoshift

@@ -1,0 +1,19 @@
+// The assembly route of the driver: this turns a D3D shader-assembly input (the disassembly
+// 3Dmigoto dumps as `<hash>-vs.txt`) into its converted text and report, without the front end,
+// the passes or SPIRV-Cross: assembly is neither read by glslang nor written by SPIRV-Cross, and the
+// position output is declared in it (`dcl_output_siv oN, position`), so the shift needs no
+// value-flow analysis to find it (asm_shift.h). The output is the dump's own format.
+#pragma once
+
+#include "transpiler/stereoshift.h"
+
+namespace stereoshift {
+
+// By content: its first line that is not a comment is a shader-model line (vs_5_0, ...).
+bool isD3DAssemblyInput(const SourceFile& input);
+// Its stage, from its shader-model line (nullopt: not assembly, or a model without a stage).
+std::optional<Stage> assemblyStage(const SourceFile& input);
+
+TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOptions& options);
+
+}  // namespace stereoshift

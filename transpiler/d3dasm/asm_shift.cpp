@@ -1,0 +1,289 @@
+#include "transpiler/d3dasm/asm_shift.h"
+
+#include <cfloat>
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+namespace stereoshift::d3dasm {
+
+namespace {
+
+constexpr const char* kWasPrefix = "// stereoshift was: ";
+constexpr const char* kBlockBegin = "// ---- stereoshift: ";
+constexpr const char* kBlockEnd = "// ---- end stereoshift ----";
+
+// A float literal the way the disassembler writes them (`1.000000`), or with all its digits where
+// six decimals would change its value (an epsilon of 1e-7).
+std::string floatLiteral(float value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%f", static_cast<double>(value));
+  if (std::strtof(buffer, nullptr) != value) std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(value));
+  return buffer;
+}
+
+// The register number of `operand` when it is `<prefix><digits>` followed by a mask (`o0.xyzw`).
+std::optional<uint32_t> registerNumber(std::string_view operand, std::string_view prefix, std::string* mask = nullptr) {
+  if (!operand.starts_with(prefix)) return std::nullopt;
+  std::string_view rest = operand.substr(prefix.size());
+  uint32_t n = 0;
+  auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), n);
+  if (ec != std::errc() || end == rest.data()) return std::nullopt;
+  std::string_view after(end, static_cast<size_t>(rest.data() + rest.size() - end));
+  if (!after.empty() && after.front() != '.') return std::nullopt;
+  if (mask) *mask = after.empty() ? "xyzw" : std::string(after.substr(1));
+  return n;
+}
+
+struct Edits {
+  std::map<size_t, std::vector<std::string>> before;  // lines inserted before line k
+  std::map<size_t, std::vector<std::string>> after;   // lines inserted after line k
+  std::map<size_t, std::string> replaced;             // line k's new text
+  std::map<size_t, std::string> why;                  // the marker of a replaced line
+};
+
+std::string render(const AsmText& text, const Edits& edits) {
+  std::vector<std::string> out;
+  auto block = [&](const std::string& indent, const std::string& what, const std::vector<std::string>& lines) {
+    out.push_back(indent + kBlockBegin + what + " ----");
+    for (const auto& l : lines) out.push_back(indent + l);
+    out.push_back(indent + kBlockEnd);
+  };
+  for (size_t k = 0; k < text.lines.size(); ++k) {
+    const AsmLine& line = text.lines[k];
+    if (auto it = edits.before.find(k); it != edits.before.end()) {
+      // The first entry names the block; the rest are its lines.
+      block(line.indent, it->second.front(), {it->second.begin() + 1, it->second.end()});
+    }
+    if (auto it = edits.replaced.find(k); it != edits.replaced.end()) {
+      out.push_back(line.indent + kBlockBegin + edits.why.at(k) + " ----");
+      out.push_back(line.indent + kWasPrefix + line.text.substr(line.indent.size()));
+      out.push_back(it->second);
+      out.push_back(line.indent + kBlockEnd);
+    } else {
+      out.push_back(line.text);
+    }
+    if (auto it = edits.after.find(k); it != edits.after.end())
+      block(line.indent, it->second.front(), {it->second.begin() + 1, it->second.end()});
+  }
+  std::string joined;
+  for (size_t k = 0; k < out.size(); ++k) {
+    joined += out[k];
+    if (k + 1 < out.size() || text.endsWithNewline) joined += text.newline;
+  }
+  return joined;
+}
+
+bool isEmit(const std::string& base) {
+  return base == "emit" || base == "emit_stream" || base == "emitThenCut" || base == "emitThenCut_stream";
+}
+bool isReturn(const std::string& base) { return base == "ret" || base == "retc_nz" || base == "retc_z"; }
+
+}  // namespace
+
+AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& options) {
+  AsmShiftResult result;
+  AsmText text;
+  if (!parseAssembly(source, &text, &result.error)) return result;
+  result.model = text.model.text;
+  auto unchanged = [&](std::string why) {
+    result.ok = true;
+    result.output = source;
+    result.whyUnchanged = std::move(why);
+    return result;
+  };
+  std::optional<Stage> stage = stageOfShaderModel(text.model);
+  if (stage != Stage::Vertex && stage != Stage::TessEvaluation && stage != Stage::Geometry)
+    return unchanged(text.model.text + ": only vertex, domain and geometry shaders write the clip position");
+  if (text.model.major < 4)
+    return unchanged(text.model.text + ": shader model " + std::to_string(text.model.major) + " assembly is not edited");
+
+  // The declarations the edit reads: the position output, the temporaries, t125, where to declare.
+  std::optional<uint32_t> position;
+  std::string positionMask;
+  std::optional<size_t> tempsLine, stereoParamsLine;
+  size_t positionLineNumber = 0, positionColumn = 0;  // where the position is declared
+  uint32_t temps = 0;
+  size_t lastResourceDeclaration = text.modelLine, lastDeclaration = text.modelLine;
+  for (size_t k = 0; k < text.lines.size(); ++k) {
+    const AsmLine& line = text.lines[k];
+    if (line.kind != LineKind::Declaration) continue;
+    lastDeclaration = line.lastLine;
+    const std::string base = line.baseOpcode();
+    if (base == "dcl_output_siv" && line.operands.size() == 2 && line.operands[1].text == "position") {
+      std::string mask;
+      auto n = registerNumber(line.operands[0].text, "o", &mask);
+      if (!n) {
+        result.error = {line.number, line.operands[0].column, "the position output '" + line.operands[0].text + "' is not an o register"};
+        return result;
+      }
+      if (position && *position != *n) {
+        result.error = {line.number, line.operands[0].column,
+                        "a second position output (o" + std::to_string(*position) + " and o" + std::to_string(*n) +
+                            "): the assembly route shifts one"};
+        return result;
+      }
+      position = n;
+      positionMask = mask;
+      positionLineNumber = line.number;
+      positionColumn = line.operands[0].column;
+    } else if (base == "dcl_temps" && line.operands.size() == 1) {
+      uint32_t n = 0;
+      const std::string& count = line.operands[0].text;
+      auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+      if (ec != std::errc() || end != count.data() + count.size()) {
+        result.error = {line.number, line.operands[0].column, "dcl_temps takes a count, not '" + count + "'"};
+        return result;
+      }
+      temps = n;
+      tempsLine = k;
+    } else if (base.starts_with("dcl_resource") || base == "dcl_sampler" || base == "dcl_constantbuffer" ||
+               base == "dcl_immediateConstantBuffer" || base == "dcl_globalFlags") {
+      lastResourceDeclaration = line.lastLine;
+      if (base.starts_with("dcl_resource") && !line.operands.empty()) {
+        const Operand& reg = line.operands.back();
+        if (reg.text == "t125" || reg.text.starts_with("t125.")) {
+          if (line.opcode != "dcl_resource_texture2d" || line.operands.size() != 2 ||
+              line.operands[0].text != "(float,float,float,float)") {
+            result.error = {line.number, reg.column,
+                            "t125 is declared as another resource ('" + line.text.substr(line.indent.size()) +
+                                "'): 3Dmigoto's StereoParams texture lives there"};
+            return result;
+          }
+          stereoParamsLine = k;
+        }
+      }
+    }
+  }
+  if (!position) return unchanged("no position output (dcl_output_siv oN, position): nothing to shift");
+  const std::string out = "o" + std::to_string(*position);
+  for (const AsmLine& line : text.lines) {
+    if (line.kind != LineKind::Declaration || line.baseOpcode() != "dcl_indexrange" || line.operands.size() != 2) continue;
+    auto first = registerNumber(line.operands[0].text, "o");
+    uint32_t count = 0;
+    const std::string& n = line.operands[1].text;
+    std::from_chars(n.data(), n.data() + n.size(), count);
+    if (first && *first <= *position && *position < *first + count) {
+      result.error = {line.number, line.operands[0].column, "the position output " + out + " is in an indexed output range: its writes cannot be redirected"};
+      return result;
+    }
+  }
+  const std::string rP = "r" + std::to_string(temps), rS = "r" + std::to_string(temps + 1);
+  result.positionRegister = out;
+  result.positionTemp = rP;
+  result.scratchTemp = rS;
+
+  Edits edits;
+  // The writes of the position, into rP. An output register is never a source in SM4+, so every
+  // mention in an instruction is a write (mov, mad, ..., and two-result instructions alike).
+  bool inSubroutine = false;
+  std::vector<size_t> sites;
+  for (size_t k = 0; k < text.lines.size(); ++k) {
+    const AsmLine& line = text.lines[k];
+    if (line.kind != LineKind::Instruction) continue;
+    const std::string base = line.baseOpcode();
+    if (base == "label") inSubroutine = true;
+    std::vector<size_t> offsets = registerTokenOffsets(line, out);
+    if (!offsets.empty()) {
+      std::string edited = line.text;
+      for (auto it = offsets.rbegin(); it != offsets.rend(); ++it) edited.replace(*it, out.size(), rP);
+      edits.replaced[k] = edited;
+      edits.why[k] = "the position is written to " + rP + " (outputs cannot be read back)";
+      ++result.redirectedWrites;
+    }
+    if (stage == Stage::Geometry ? isEmit(base) : (isReturn(base) && !inSubroutine)) sites.push_back(k);
+  }
+  if (result.redirectedWrites == 0) {
+    result.error = {positionLineNumber, positionColumn,
+                    "the position output " + out + " is declared but no instruction writes it"};
+    return result;
+  }
+  if (sites.empty()) {
+    result.error = {0, 0, stage == Stage::Geometry ? "no emit instruction: the geometry shader emits no vertex"
+                                                   : "no ret instruction in the main program"};
+    return result;
+  }
+
+  // The block before each return or emit.
+  const bool sm5 = text.model.major >= 5;
+  std::vector<std::string> shift = {
+      "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)",
+      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      "add " + rS + ".w, " + rP + ".w, -" + rS + ".y",
+      "mad " + rS + ".w, " + rS + ".x, " + rS + ".w, " + rP + ".x",
+      "ne " + rS + ".x, " + rS + ".x, l(0.000000)",
+  };
+  if (options.cutoff) {
+    if (options.cutoffEpsilon > 0) {
+      shift.push_back("add " + rS + ".y, " + rP + ".w, l(-1.000000)");
+      shift.push_back("lt " + rS + ".y, l(" + floatLiteral(options.cutoffEpsilon) + "), |" + rS + ".y|");
+    } else {
+      shift.push_back("ne " + rS + ".y, " + rP + ".w, l(1.000000)");
+    }
+    shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
+    shift.push_back("lt " + rS + ".y, |" + rP + ".w|, l(" + floatLiteral(FLT_MAX) + ")");
+    shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
+  }
+  shift.push_back("movc " + rS + ".x, " + rS + ".x, " + rS + ".w, " + rP + ".x");
+  shift.push_back("mov " + out + "." + positionMask + ", " + rP + "." + positionMask);
+  shift.push_back("mov " + out + ".x, " + rS + ".x");
+  for (size_t k : sites) edits.before[k] = shift;
+  result.sites = static_cast<int>(sites.size());
+
+  // Two more temporaries; t125 declared unless the dump has it.
+  if (tempsLine) {
+    edits.replaced[*tempsLine] = text.lines[*tempsLine].indent + "dcl_temps " + std::to_string(temps + 2);
+    edits.why[*tempsLine] = "two temporaries for the shift (" + rP + ", " + rS + ")";
+  } else {
+    edits.after[lastDeclaration].push_back("two temporaries for the shift (" + rP + ", " + rS + ")");
+    edits.after[lastDeclaration].push_back("dcl_temps 2");
+  }
+  if (!stereoParamsLine) {
+    std::vector<std::string>& declare = edits.after[lastResourceDeclaration];
+    if (!declare.empty()) {
+      // The same line ends the resources and the declarations: one block with both.
+      declare.front() = "3Dmigoto's StereoParams texture; " + declare.front();
+      declare.insert(declare.begin() + 1, "dcl_resource_texture2d (float,float,float,float) t125");
+    } else {
+      declare = {"3Dmigoto's StereoParams texture", "dcl_resource_texture2d (float,float,float,float) t125"};
+    }
+    result.declaredStereoParams = true;
+  }
+  result.output = render(text, edits);
+  result.ok = true;
+  result.shifted = true;
+  return result;
+}
+
+std::string undoAssemblyEdits(const std::string& text) {
+  std::string out;
+  bool inBlock = false;
+  size_t at = 0;
+  while (at < text.size()) {
+    size_t end = text.find('\n', at);
+    size_t next = end == std::string::npos ? text.size() : end + 1;
+    std::string line = text.substr(at, next - at);
+    at = next;
+    std::string_view code = line;
+    while (!code.empty() && (code.front() == ' ' || code.front() == '\t')) code.remove_prefix(1);
+    if (code.starts_with(kBlockBegin)) {
+      inBlock = true;
+      continue;
+    }
+    if (code.starts_with(kBlockEnd)) {
+      inBlock = false;
+      continue;
+    }
+    if (!inBlock) {
+      out += line;
+    } else if (code.starts_with(kWasPrefix)) {
+      size_t indent = line.size() - code.size();
+      out += line.substr(0, indent) + std::string(code.substr(std::string_view(kWasPrefix).size()));
+    }
+  }
+  return out;
+}
+
+}  // namespace stereoshift::d3dasm

@@ -1,0 +1,66 @@
+// The assembly shift: this turns the SM4/SM5 assembly of a vertex, domain or geometry shader (a
+// 3Dmigoto `<hash>-vs.txt` dump) into its stereo version, as marked edits of its own text.
+//
+// SM4+ output registers cannot be read back, so the position output (`dcl_output_siv oN.xyzw,
+// position`) is redirected: every instruction that writes oN writes a free temporary rP instead
+// (`dcl_temps` raised by two: rP and a scratch rS), and before every return of the main program
+// (vertex, domain) or every emit (geometry) a marked block reads 3Dmigoto's stereo parameters,
+// writes rP to oN and then oN.x shifted:
+//
+//   ld_indexable(texture2d)(float,float,float,float) rS.xyzw, l(0, 0, 0, 0), t125.xyzw
+//   add rS.w, rP.w, -rS.y            w - convergence
+//   mad rS.w, rS.x, rS.w, rP.x       x + separation * (w - convergence)
+//   ne  rS.x, rS.x, l(0.000000)      separation != 0 (mono keeps x bit for bit, -0 included)
+//   add rS.y, rP.w, l(-1.000000)     the cutoff: |w - 1| > epsilon and w finite
+//   lt  rS.y, l(epsilon), |rS.y|
+//   and rS.x, rS.x, rS.y
+//   lt  rS.y, |rP.w|, l(FLT_MAX)
+//   and rS.x, rS.x, rS.y
+//   movc rS.x, rS.x, rS.w, rP.x
+//   mov oN.xyzw, rP.xyzw
+//   mov oN.x, rS.x
+//
+// rP is never changed by the block, so a block before a conditional return (`retc_nz`) and the one
+// before the final `ret` give the same result. 3Dmigoto's StereoParams texture at t125 gives the
+// parameters (x: separation with the eye's sign, y: convergence); it is declared as
+// `dcl_resource_texture2d (float,float,float,float) t125` unless the dump declares it already.
+// SM4.x has no `ld_indexable`: the load is written `ld` there.
+//
+// Every edit is marked: inserted lines sit between `// ---- stereoshift: ... ----` and
+// `// ---- end stereoshift ----`, and a changed line is kept above its new form as
+// `// stereoshift was: <the line as written>`, so the original text can be recovered exactly.
+#pragma once
+
+#include "transpiler/d3dasm/asm_text.h"
+
+#include <string>
+#include <vector>
+
+namespace stereoshift::d3dasm {
+
+struct AsmShiftOptions {
+  bool cutoff = true;
+  float cutoffEpsilon = 1e-5f;  // 0: the driver's exact w != 1
+};
+
+struct AsmShiftResult {
+  bool ok = false;
+  AsmError error;               // !ok
+  bool shifted = false;         // false: the stage has no position output (copied as it is)
+  std::string whyUnchanged;     // !shifted: why
+  std::string output;
+  std::string model;            // "vs_5_0"
+  std::string positionRegister; // "o0"
+  std::string positionTemp, scratchTemp;  // "r6", "r7"
+  int redirectedWrites = 0;     // instructions that wrote the position
+  int sites = 0;                // blocks written (returns or emits)
+  bool declaredStereoParams = false;  // t125 declared by the edit (false: the dump's own reused)
+};
+
+AsmShiftResult shiftAssembly(const std::string& text, const AsmShiftOptions& options);
+
+// The original text of an output of shiftAssembly: the marked blocks dropped and each
+// `// stereoshift was:` line restored (the check that the edits are all marked).
+std::string undoAssemblyEdits(const std::string& text);
+
+}  // namespace stereoshift::d3dasm
