@@ -81,6 +81,112 @@ bool isEmit(const std::string& base) {
 }
 bool isReturn(const std::string& base) { return base == "ret" || base == "retc_nz" || base == "retc_z"; }
 
+// The declarations the edit reads: the position output, the temporaries, t125, where to declare.
+struct Declarations {
+  std::optional<uint32_t> position;
+  std::string positionMask;
+  size_t positionLineNumber = 0, positionColumn = 0;  // where the position is declared
+  std::optional<size_t> tempsLine, stereoParamsLine;
+  uint32_t temps = 0;
+  size_t lastResourceDeclaration = 0, lastDeclaration = 0;
+};
+
+bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
+  d->lastResourceDeclaration = d->lastDeclaration = text.modelLine;
+  for (size_t k = 0; k < text.lines.size(); ++k) {
+    const AsmLine& line = text.lines[k];
+    if (line.kind != LineKind::Declaration) continue;
+    d->lastDeclaration = line.lastLine;
+    const std::string base = line.baseOpcode();
+    if (base == "dcl_output_siv" && line.operands.size() == 2 && line.operands[1].text == "position") {
+      std::string mask;
+      auto n = registerNumber(line.operands[0].text, "o", &mask);
+      if (!n) {
+        *error = {line.number, line.operands[0].column, "the position output '" + line.operands[0].text + "' is not an o register"};
+        return false;
+      }
+      if (d->position && *d->position != *n) {
+        *error = {line.number, line.operands[0].column,
+                  "a second position output (o" + std::to_string(*d->position) + " and o" + std::to_string(*n) +
+                      "): the assembly route shifts one"};
+        return false;
+      }
+      d->position = n;
+      d->positionMask = mask;
+      d->positionLineNumber = line.number;
+      d->positionColumn = line.operands[0].column;
+    } else if (base == "dcl_temps" && line.operands.size() == 1) {
+      uint32_t n = 0;
+      const std::string& count = line.operands[0].text;
+      auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+      if (ec != std::errc() || end != count.data() + count.size()) {
+        *error = {line.number, line.operands[0].column, "dcl_temps takes a count, not '" + count + "'"};
+        return false;
+      }
+      d->temps = n;
+      d->tempsLine = k;
+    } else if (base.starts_with("dcl_resource") || base == "dcl_sampler" || base == "dcl_constantbuffer" ||
+               base == "dcl_immediateConstantBuffer" || base == "dcl_globalFlags") {
+      d->lastResourceDeclaration = line.lastLine;
+      if (base.starts_with("dcl_resource") && !line.operands.empty()) {
+        const Operand& reg = line.operands.back();
+        if (reg.text == "t125" || reg.text.starts_with("t125.")) {
+          if (line.opcode != "dcl_resource_texture2d" || line.operands.size() != 2 ||
+              line.operands[0].text != "(float,float,float,float)") {
+            *error = {line.number, reg.column,
+                      "t125 is declared as another resource ('" + line.text.substr(line.indent.size()) +
+                          "'): 3Dmigoto's StereoParams texture lives there"};
+            return false;
+          }
+          d->stereoParamsLine = k;
+        }
+      }
+    }
+  }
+  if (!d->position) return true;
+  for (const AsmLine& line : text.lines) {
+    if (line.kind != LineKind::Declaration || line.baseOpcode() != "dcl_indexrange" || line.operands.size() != 2) continue;
+    auto first = registerNumber(line.operands[0].text, "o");
+    uint32_t count = 0;
+    const std::string& n = line.operands[1].text;
+    std::from_chars(n.data(), n.data() + n.size(), count);
+    if (first && *first <= *d->position && *d->position < *first + count) {
+      *error = {line.number, line.operands[0].column, "the position output o" + std::to_string(*d->position) +
+                                                          " is in an indexed output range: its writes cannot be redirected"};
+      return false;
+    }
+  }
+  return true;
+}
+
+// The block before each return or emit: read StereoParams into rS, shift rP.x into rS.x where the
+// cutoff lets it, write the position out.
+std::vector<std::string> shiftBlock(const std::string& out, const std::string& mask, const std::string& rP,
+                                    const std::string& rS, bool sm5, const AsmShiftOptions& options) {
+  std::vector<std::string> shift = {
+      "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)",
+      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      "add " + rS + ".w, " + rP + ".w, -" + rS + ".y",
+      "mad " + rS + ".w, " + rS + ".x, " + rS + ".w, " + rP + ".x",
+      "ne " + rS + ".x, " + rS + ".x, l(0.000000)",
+  };
+  if (options.cutoff) {
+    if (options.cutoffEpsilon > 0) {
+      shift.push_back("add " + rS + ".y, " + rP + ".w, l(-1.000000)");
+      shift.push_back("lt " + rS + ".y, l(" + floatLiteral(options.cutoffEpsilon) + "), |" + rS + ".y|");
+    } else {
+      shift.push_back("ne " + rS + ".y, " + rP + ".w, l(1.000000)");
+    }
+    shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
+    shift.push_back("lt " + rS + ".y, |" + rP + ".w|, l(" + floatLiteral(FLT_MAX) + ")");
+    shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
+  }
+  shift.push_back("movc " + rS + ".x, " + rS + ".x, " + rS + ".w, " + rP + ".x");
+  shift.push_back("mov " + out + "." + mask + ", " + rP + "." + mask);
+  shift.push_back("mov " + out + ".x, " + rS + ".x");
+  return shift;
+}
+
 }  // namespace
 
 AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& options) {
@@ -100,77 +206,11 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
   if (text.model.major < 4)
     return unchanged(text.model.text + ": shader model " + std::to_string(text.model.major) + " assembly is not edited");
 
-  // The declarations the edit reads: the position output, the temporaries, t125, where to declare.
-  std::optional<uint32_t> position;
-  std::string positionMask;
-  std::optional<size_t> tempsLine, stereoParamsLine;
-  size_t positionLineNumber = 0, positionColumn = 0;  // where the position is declared
-  uint32_t temps = 0;
-  size_t lastResourceDeclaration = text.modelLine, lastDeclaration = text.modelLine;
-  for (size_t k = 0; k < text.lines.size(); ++k) {
-    const AsmLine& line = text.lines[k];
-    if (line.kind != LineKind::Declaration) continue;
-    lastDeclaration = line.lastLine;
-    const std::string base = line.baseOpcode();
-    if (base == "dcl_output_siv" && line.operands.size() == 2 && line.operands[1].text == "position") {
-      std::string mask;
-      auto n = registerNumber(line.operands[0].text, "o", &mask);
-      if (!n) {
-        result.error = {line.number, line.operands[0].column, "the position output '" + line.operands[0].text + "' is not an o register"};
-        return result;
-      }
-      if (position && *position != *n) {
-        result.error = {line.number, line.operands[0].column,
-                        "a second position output (o" + std::to_string(*position) + " and o" + std::to_string(*n) +
-                            "): the assembly route shifts one"};
-        return result;
-      }
-      position = n;
-      positionMask = mask;
-      positionLineNumber = line.number;
-      positionColumn = line.operands[0].column;
-    } else if (base == "dcl_temps" && line.operands.size() == 1) {
-      uint32_t n = 0;
-      const std::string& count = line.operands[0].text;
-      auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
-      if (ec != std::errc() || end != count.data() + count.size()) {
-        result.error = {line.number, line.operands[0].column, "dcl_temps takes a count, not '" + count + "'"};
-        return result;
-      }
-      temps = n;
-      tempsLine = k;
-    } else if (base.starts_with("dcl_resource") || base == "dcl_sampler" || base == "dcl_constantbuffer" ||
-               base == "dcl_immediateConstantBuffer" || base == "dcl_globalFlags") {
-      lastResourceDeclaration = line.lastLine;
-      if (base.starts_with("dcl_resource") && !line.operands.empty()) {
-        const Operand& reg = line.operands.back();
-        if (reg.text == "t125" || reg.text.starts_with("t125.")) {
-          if (line.opcode != "dcl_resource_texture2d" || line.operands.size() != 2 ||
-              line.operands[0].text != "(float,float,float,float)") {
-            result.error = {line.number, reg.column,
-                            "t125 is declared as another resource ('" + line.text.substr(line.indent.size()) +
-                                "'): 3Dmigoto's StereoParams texture lives there"};
-            return result;
-          }
-          stereoParamsLine = k;
-        }
-      }
-    }
-  }
-  if (!position) return unchanged("no position output (dcl_output_siv oN, position): nothing to shift");
-  const std::string out = "o" + std::to_string(*position);
-  for (const AsmLine& line : text.lines) {
-    if (line.kind != LineKind::Declaration || line.baseOpcode() != "dcl_indexrange" || line.operands.size() != 2) continue;
-    auto first = registerNumber(line.operands[0].text, "o");
-    uint32_t count = 0;
-    const std::string& n = line.operands[1].text;
-    std::from_chars(n.data(), n.data() + n.size(), count);
-    if (first && *first <= *position && *position < *first + count) {
-      result.error = {line.number, line.operands[0].column, "the position output " + out + " is in an indexed output range: its writes cannot be redirected"};
-      return result;
-    }
-  }
-  const std::string rP = "r" + std::to_string(temps), rS = "r" + std::to_string(temps + 1);
+  Declarations d;
+  if (!readDeclarations(text, &d, &result.error)) return result;
+  if (!d.position) return unchanged("no position output (dcl_output_siv oN, position): nothing to shift");
+  const std::string out = "o" + std::to_string(*d.position);
+  const std::string rP = "r" + std::to_string(d.temps), rS = "r" + std::to_string(d.temps + 1);
   result.positionRegister = out;
   result.positionTemp = rP;
   result.scratchTemp = rS;
@@ -196,7 +236,7 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
     if (stage == Stage::Geometry ? isEmit(base) : (isReturn(base) && !inSubroutine)) sites.push_back(k);
   }
   if (result.redirectedWrites == 0) {
-    result.error = {positionLineNumber, positionColumn,
+    result.error = {d.positionLineNumber, d.positionColumn,
                     "the position output " + out + " is declared but no instruction writes it"};
     return result;
   }
@@ -206,42 +246,20 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
     return result;
   }
 
-  // The block before each return or emit.
-  const bool sm5 = text.model.major >= 5;
-  std::vector<std::string> shift = {
-      "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)",
-      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
-      "add " + rS + ".w, " + rP + ".w, -" + rS + ".y",
-      "mad " + rS + ".w, " + rS + ".x, " + rS + ".w, " + rP + ".x",
-      "ne " + rS + ".x, " + rS + ".x, l(0.000000)",
-  };
-  if (options.cutoff) {
-    if (options.cutoffEpsilon > 0) {
-      shift.push_back("add " + rS + ".y, " + rP + ".w, l(-1.000000)");
-      shift.push_back("lt " + rS + ".y, l(" + floatLiteral(options.cutoffEpsilon) + "), |" + rS + ".y|");
-    } else {
-      shift.push_back("ne " + rS + ".y, " + rP + ".w, l(1.000000)");
-    }
-    shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
-    shift.push_back("lt " + rS + ".y, |" + rP + ".w|, l(" + floatLiteral(FLT_MAX) + ")");
-    shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
-  }
-  shift.push_back("movc " + rS + ".x, " + rS + ".x, " + rS + ".w, " + rP + ".x");
-  shift.push_back("mov " + out + "." + positionMask + ", " + rP + "." + positionMask);
-  shift.push_back("mov " + out + ".x, " + rS + ".x");
+  const std::vector<std::string> shift = shiftBlock(out, d.positionMask, rP, rS, text.model.major >= 5, options);
   for (size_t k : sites) edits.before[k] = shift;
   result.sites = static_cast<int>(sites.size());
 
   // Two more temporaries; t125 declared unless the dump has it.
-  if (tempsLine) {
-    edits.replaced[*tempsLine] = text.lines[*tempsLine].indent + "dcl_temps " + std::to_string(temps + 2);
-    edits.why[*tempsLine] = "two temporaries for the shift (" + rP + ", " + rS + ")";
+  if (d.tempsLine) {
+    edits.replaced[*d.tempsLine] = text.lines[*d.tempsLine].indent + "dcl_temps " + std::to_string(d.temps + 2);
+    edits.why[*d.tempsLine] = "two temporaries for the shift (" + rP + ", " + rS + ")";
   } else {
-    edits.after[lastDeclaration].push_back("two temporaries for the shift (" + rP + ", " + rS + ")");
-    edits.after[lastDeclaration].push_back("dcl_temps 2");
+    edits.after[d.lastDeclaration].push_back("two temporaries for the shift (" + rP + ", " + rS + ")");
+    edits.after[d.lastDeclaration].push_back("dcl_temps 2");
   }
-  if (!stereoParamsLine) {
-    std::vector<std::string>& declare = edits.after[lastResourceDeclaration];
+  if (!d.stereoParamsLine) {
+    std::vector<std::string>& declare = edits.after[d.lastResourceDeclaration];
     if (!declare.empty()) {
       // The same line ends the resources and the declarations: one block with both.
       declare.front() = "3Dmigoto's StereoParams texture; " + declare.front();

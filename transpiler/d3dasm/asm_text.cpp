@@ -1,12 +1,13 @@
 #include "transpiler/d3dasm/asm_text.h"
 
+#include "transpiler/source/identifiers.h"
+
 #include <cctype>
 
 namespace stereoshift::d3dasm {
 
 namespace {
 
-bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
 // Where the code of `line` ends: at a `//` comment outside brackets, else its end.
