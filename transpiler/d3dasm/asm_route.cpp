@@ -61,6 +61,8 @@ TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOpt
                 "-S " + std::string(stageName(*options.stage)) + " contradicts the shader model line " + text.model.text);
   if (std::string why = unsupportedOption(options); !why.empty()) return fail(0, 0, why);
   record.emit.route = "d3d-asm-splice";
+  if (shifted.alreadyStereo)
+    result.diagnostics.warning(input.path, shifted.whyUnchanged + " (copied unchanged)");
   if (!shifted.shifted || !options.shiftThisStage) {
     assembly.unchangedBecause = shifted.shifted ? "an earlier stage of the pipeline" : shifted.whyUnchanged;
     record.assembly = assembly;

@@ -210,6 +210,14 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
   if (!readDeclarations(text, &d, &result.error)) return result;
   if (!d.position) return unchanged("no position output (dcl_output_siv oN, position): nothing to shift");
   const std::string out = "o" + std::to_string(*d.position);
+  // A shader that reads StereoParams already is a stereo fix (3Dmigoto users edit the assembly by
+  // hand; stereoshift's own output reads it too): shifting it again would shift twice.
+  for (const AsmLine& line : text.lines) {
+    if (line.kind != LineKind::Instruction || registerTokenOffsets(line, "t125").empty()) continue;
+    result.alreadyStereo = true;
+    return unchanged("line " + std::to_string(line.number) +
+                     " reads 3Dmigoto's StereoParams (t125): a stereo fix already, left as it is");
+  }
   const std::string rP = "r" + std::to_string(d.temps), rS = "r" + std::to_string(d.temps + 1);
   result.positionRegister = out;
   result.positionTemp = rP;

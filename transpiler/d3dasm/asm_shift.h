@@ -48,6 +48,7 @@ struct AsmShiftResult {
   AsmError error;               // !ok
   bool shifted = false;         // false: the stage has no position output (copied as it is)
   std::string whyUnchanged;     // !shifted: why
+  bool alreadyStereo = false;   // !shifted because an instruction reads t125 (a stereo fix already)
   std::string output;
   std::string model;            // "vs_5_0"
   std::string positionRegister; // "o0"
