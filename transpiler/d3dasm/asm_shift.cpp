@@ -203,8 +203,13 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
   std::optional<Stage> stage = stageOfShaderModel(text.model);
   if (stage != Stage::Vertex && stage != Stage::TessEvaluation && stage != Stage::Geometry)
     return unchanged(text.model.text + ": only vertex, domain and geometry shaders write the clip position");
-  if (text.model.major < 4)
-    return unchanged(text.model.text + ": shader model " + std::to_string(text.model.major) + " assembly is not edited");
+  // A D3D9 vertex shader copied as it is would be a mono drop-in that looks converted: an error.
+  if (text.model.major < 4) {
+    result.error = {text.lines[text.modelLine].number, text.lines[text.modelLine].indent.size() + 1,
+                    text.model.text + ": shader model " + std::to_string(text.model.major) +
+                        " (D3D9) assembly is not edited; the assembly route reads SM4 and SM5"};
+    return result;
+  }
 
   Declarations d;
   if (!readDeclarations(text, &d, &result.error)) return result;
