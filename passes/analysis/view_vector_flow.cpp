@@ -62,12 +62,17 @@ struct ViewVectorRules final : ValueFlow::ForwardRules {
     auto f = static_cast<uint8_t>(ValueFlow::operandFlags(inst, flags, &tainted));
     if (!f) return 0;
     // uv +- f(v): a two-component coordinate moved along a direction (parallax, a POM loop's step;
-    // the optimizer folds `uv += a * b` into fma(a, b, uv)).
+    // the optimizer folds `uv += a * b` into fma(a, b, uv)). The coordinate moved is per pixel:
+    // another addend depends on a stage input. `f(v) * scale + bias` with constant or uniform terms
+    // only is a lookup *at* a function of v (an LTC or BRDF table at dot(N, V)), not a move.
     bool addition = inst.opcode == spv::OpFAdd || inst.opcode == spv::OpFSub || isGlslExtInst(q.module(), inst, {GLSLstd450Fma});
     if (addition && vectorSize(inst.typeId) == 2) {
       size_t first = inst.opcode == spv::OpExtInst ? 2 : 0;
-      for (size_t k = first; k < inst.operands.size(); ++k)
-        if (flagsOf(inst.operands[k]) & kDirection) f |= kOffset;
+      for (size_t k = first; k < inst.operands.size(); ++k) {
+        if (!(flagsOf(inst.operands[k]) & kDirection)) continue;
+        for (size_t other = first; other < inst.operands.size(); ++other)
+          if (other != k && q.dependsOnInput(inst.operands[other])) f |= kOffset;
+      }
     }
     if (inst.opcode == spv::OpFSub && tainted == 1 && vectorSize(inst.typeId) >= 3) {
       uint32_t other = flagsOf(inst.operand(0)) ? inst.operand(1) : inst.operand(0);

@@ -12,7 +12,7 @@ const std::string kReliefMapping = R"(
                OpCapability Shader
           %1 = OpExtInstImport "GLSL.std.450"
                OpMemoryModel Logical GLSL450
-               OpEntryPoint Fragment %main "main" %inWorldPos %outColor
+               OpEntryPoint Fragment %main "main" %inWorldPos %outColor %inUV
                OpExecutionMode %main OriginUpperLeft
                OpName %main "main"
                OpName %Camera "Camera"
@@ -21,6 +21,7 @@ const std::string kReliefMapping = R"(
                OpName %camPtr "camPtr"
                OpName %camXPtr "camXPtr"
                OpName %inWorldPos "inWorldPos"
+               OpName %inUV "inUV"
                OpName %outColor "outColor"
                OpName %heightMap "heightMap"
                OpMemberDecorate %Camera 0 Offset 0
@@ -30,6 +31,7 @@ const std::string kReliefMapping = R"(
                OpDecorate %heightMap DescriptorSet 0
                OpDecorate %heightMap Binding 1
                OpDecorate %inWorldPos Location 0
+               OpDecorate %inUV Location 1
                OpDecorate %outColor Location 0
        %void = OpTypeVoid
      %fnvoid = OpTypeFunction %void
@@ -48,6 +50,8 @@ const std::string kReliefMapping = R"(
 %_ptr_Uniform_float = OpTypePointer Uniform %float
 %_ptr_Input_v3float = OpTypePointer Input %v3float
  %inWorldPos = OpVariable %_ptr_Input_v3float Input
+%_ptr_Input_v2float = OpTypePointer Input %v2float
+       %inUV = OpVariable %_ptr_Input_v2float Input
 %_ptr_Output_v4float = OpTypePointer Output %v4float
    %outColor = OpVariable %_ptr_Output_v4float Output
       %image = OpTypeImage %float 2D 0 0 0 1 Unknown
@@ -62,7 +66,8 @@ const std::string kReliefMapping = R"(
        %view = OpFSub %v3float %cam %world
         %dir = OpExtInst %v3float %1 Normalize %view
       %slope = OpVectorShuffle %v2float %dir %dir 0 1
-         %uv = OpFSub %v2float %v2half %slope
+     %baseUV = OpLoad %v2float %inUV
+         %uv = OpFSub %v2float %baseUV %slope
         %tex = OpLoad %sampled %heightMap
       %texel = OpImageSampleImplicitLod %v4float %tex %uv
     %camXPtr = OpAccessChain %_ptr_Uniform_float %camera %int_0 %int_0
@@ -83,6 +88,19 @@ TEST(PerEyeViewPass, UsesThePerEyeCameraWhereTheViewVectorOffsetsTextureCoordina
       "OpLoad %v3float %camPtr", "OpAccessChain %_ptr_Uniform_float %stereo %int_4",
       "OpAccessChain %_ptr_Uniform_float %stereo %int_6", "OpCompositeConstruct %v3float",
       "OpFAdd %v3float", "OpFSub %v3float", "Normalize"}));
+}
+
+TEST(PerEyeViewPass, LeavesALookupAtAFunctionOfTheViewVectorMono) {
+  // An area-light (LTC) or BRDF table read at `f(V) * scale + bias`: the coordinate is computed from
+  // the view vector, no per-pixel coordinate is moved along it. Shading, mono (a false per-eye
+  // camera before the moved coordinate had to be per pixel).
+  std::string table = kReliefMapping;
+  table.replace(table.find("%uv = OpFSub %v2float %baseUV %slope"),
+                std::string("%uv = OpFSub %v2float %baseUV %slope").size(), "%uv = OpFAdd %v2float %slope %v2half");
+  SinglePassRun run = runSinglePass(table, "per-eye-view");
+  ASSERT_TRUE(run.ok) << run.diagnostics;
+  EXPECT_EQ(run.result, PassResult::Unchanged);
+  EXPECT_EQ(run.disassembly.find("eyeOffsetX"), std::string::npos);
 }
 
 TEST(PerEyeViewPass, LeavesAViewVectorThatOnlyFeedsShading) {
