@@ -80,6 +80,14 @@ bool checkTarget(PassContext& ctx) {
       return refuse("a geometry shader writes gl_ViewportIndex from GLSL 410 (this output is " + std::to_string(version) +
                     "); add --target-version 410, or use --eye-route layer (gl_Layer, GLSL 150)");
   }
+  // Vulkan ESSL neither: no ESSL extension declares gl_Layer / gl_ViewportIndex before the geometry
+  // stage (glslang refuses them), while the SPIR-V capability does exist.
+  if (writesLayerFromVertexStage && target == TargetLanguage::Essl && !openGlOutput(ctx, target))
+    return refuse(std::string("a Vulkan ESSL ") +
+                  (model == spv::ExecutionModelVertex ? "vertex" : "tessellation evaluation") +
+                  " shader cannot write gl_Layer or gl_ViewportIndex (no ESSL extension declares them before the "
+                  "geometry stage); use --target spirv (the SPIR-V writes Layer through ShaderViewportIndexLayerEXT), "
+                  "or --eye-source multiview (GL_EXT_multiview)");
   if (select == EyeSelect::ViewIndex && target == TargetLanguage::Hlsl && ctx.output.version &&
       *ctx.output.version < 61)
     return refuse("SV_ViewID needs shader model 6.1 (this is --target-version " +
