@@ -133,6 +133,12 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
   LegacyDialect dialect = decideLegacyDialect(input.contents, v);
   bool usesCompatibilityBuiltIns = false;
+  FrontEndOptions parseOptions = options;
+  if (dialect.legacy && dialect.es) {
+    // ESSL 100 lets a loop index pick a sampler of an array (its Appendix A's constant-index
+    // expressions); ESSL 310 only with GL_EXT_gpu_shader5 (the output keeps the original text).
+    parseOptions.analysisExtensions.push_back("GL_EXT_gpu_shader5");
+  }
   if (dialect.legacy) {
     LegacyTranslation translated = translateLegacyGlsl(input.contents, stage, dialect, input.path);
     if (!translated.ok) {
@@ -155,7 +161,7 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
 
   std::optional<Attempt> best;
   for (Client client : clients) {
-    Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, "main", options);
+    Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, "main", parseOptions);
     if (a.ok) {
       a.info.vulkan = client == Client::Vulkan;
       best = std::move(a);
@@ -168,7 +174,7 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   if (!best->ok) {
     LiftedGlsl copy = liftGlsl(text);
     if (copy.lifted) {
-      Attempt a = compileGlslangOnce(input, copy.text, stage, SourceLanguage::Glsl, Client::OpenGL, "main", options);
+      Attempt a = compileGlslangOnce(input, copy.text, stage, SourceLanguage::Glsl, Client::OpenGL, "main", parseOptions);
       if (a.ok) {
         a.info.vulkan = false;
         best = std::move(a);

@@ -21,6 +21,9 @@ struct FrontEndOptions {
   std::string entryPoint;            // HLSL entry point; default `main`, then VSMain/PSMain/...
   std::vector<std::string> defines;  // NAME or NAME=VALUE
   std::vector<std::string> includeDirs;
+  // Extensions the front end enables (in glslang's preamble) for its own parse of a translation:
+  // what the source's dialect allows without them (ESSL 100's loop-indexed sampler arrays).
+  std::vector<std::string> analysisExtensions;
   // glslang crashed on this input in an earlier attempt (the conversion child died in its parser):
   // it is not run again; the stage is refused as glslang's, for the text-only shift to take.
   bool glslangCrashed = false;

@@ -252,6 +252,7 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   const char* names[] = {input.path.c_str()};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   std::string preamble = buildPreamble(options.defines, language == SourceLanguage::Glsl);
+  for (const auto& extension : options.analysisExtensions) preamble += "#extension " + extension + " : enable\n";
   shader.setPreamble(preamble.c_str());
   int messages = configureEnvironment(shader, stage, language, client, entry, &options);
 
