@@ -7,6 +7,7 @@
 #include "transpiler/source/lexer.h"
 
 #include <algorithm>
+#include <cctype>
 #include <string_view>
 
 namespace fs = std::filesystem;
@@ -20,6 +21,36 @@ std::vector<std::string> directiveWords(const std::string& text, source::Lexer& 
   std::vector<std::string> words;
   for (const source::Token& t : lexer.directiveWords()) words.push_back(source::spelledString(text, t));
   return words;
+}
+
+// The file `header` names under `dir` as a Windows compiler finds it: `\` separates directories
+// (`#include "shaders\common.hlsli"`), and a part that does not exist as spelled is the one entry
+// of its directory that matches it without regard to case (`Common.hlsli` for `common.hlsli`).
+// Empty when there is no such file, or more than one entry matches.
+fs::path windowsSpelling(const fs::path& dir, std::string header) {
+  std::replace(header.begin(), header.end(), '\\', '/');
+  fs::path found = dir;
+  std::error_code ec;
+  for (const fs::path& part : fs::path(header)) {
+    if (part == "." || part == ".." || fs::exists(found / part, ec)) {
+      found /= part;
+      continue;
+    }
+    auto lower = [](std::string text) {
+      std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+      return text;
+    };
+    const std::string wanted = lower(part.string());
+    fs::path match;
+    for (const auto& entry : fs::directory_iterator(found, ec)) {
+      if (lower(entry.path().filename().string()) != wanted) continue;
+      if (!match.empty()) return {};  // `a.h` and `A.h`: ambiguous
+      match = entry.path();
+    }
+    if (match.empty()) return {};
+    found = match;
+  }
+  return found;
 }
 
 }  // namespace
@@ -107,7 +138,11 @@ void RestrictedIncluder::refuse(std::string message) {
 RestrictedIncluder::IncludeResult* RestrictedIncluder::tryOpen(const fs::path& dir, const char* header) {
   fs::path candidate = (dir.empty() ? fs::path(".") : dir) / header;
   std::error_code ec;
-  if (!fs::is_regular_file(candidate, ec)) return nullptr;
+  if (!fs::is_regular_file(candidate, ec)) {
+    // Shaders written on Windows: `\` paths and headers whose case differs from the file's.
+    candidate = windowsSpelling(dir.empty() ? fs::path(".") : dir, header);
+    if (candidate.empty() || !fs::is_regular_file(candidate, ec)) return nullptr;
+  }
   fs::path root = fs::weakly_canonical(dir.empty() ? fs::path(".") : dir, ec);
   fs::path resolved = fs::weakly_canonical(candidate, ec);
   auto rel = resolved.lexically_relative(root);
