@@ -28,7 +28,9 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                  "SPIR-V environment, as glslc: vulkan1.0 (default), vulkan1.1, vulkan1.2, vulkan1.3, opengl, opengl4.5");
   app.add_option("--target-spv", o.targetSpv,
                  "SPIR-V version to make, as glslc: spv1.0 ... spv1.6 (default: the environment's; SPIR-V input keeps its own)");
-  app.add_option("-e,--entry-point", o.t.entryPoint, "HLSL entry point (default: main, then VSMain/PSMain/GSMain/DSMain/HSMain/CSMain)");
+  app.add_option("-e,--entry-point,--source-entrypoint", o.t.entryPoint,
+                 "Entry point: HLSL (default: main, then VSMain/PSMain/GSMain/DSMain/HSMain/CSMain); GLSL: the function "
+                 "compiled as main (default: main)");
   app.add_option("-D", o.t.defines, "Define a preprocessor macro: -DNAME or -DNAME=VALUE")->allow_extra_args(false);
   app.add_option("-I", o.t.includeDirs, "Add an #include search directory")->allow_extra_args(false);
   app.add_option("--target", o.target, "Output language: glsl, essl, hlsl, msl, spirv, spirv-asm (default: the input's own)");

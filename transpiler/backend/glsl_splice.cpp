@@ -14,7 +14,7 @@ namespace stereoshift {
 
 namespace {
 
-constexpr const char* kMonoMain = "main_stereoshift_mono";
+constexpr const char* kMonoSuffix = "_stereoshift_mono";
 constexpr const char* kShiftHelper = "stereoshift_shiftPosition";
 constexpr const char* kShiftedX = "stereoshift_x";
 
@@ -202,10 +202,12 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
   GlslSpliceResult result;
   std::string nl = source.find("\r\n") != std::string::npos ? "\r\n" : "\n";
   std::vector<Word> w = words(source);
+  const std::string& entry = options.entryPoint;
+  const std::string monoMain = entry + kMonoSuffix;
   for (const auto& word : w)
-    for (const char* ours : {kMonoMain, kShiftHelper, kShiftedX})
+    for (const std::string& ours : {monoMain, std::string(kShiftHelper), std::string(kShiftedX)})
       if (word.text == ours) {
-        result.error = std::string("the shader already uses the name `") + ours + "` (is it converted already?)";
+        result.error = "the shader already uses the name `" + ours + "` (is it converted already?)";
         return result;
       }
   const std::string ind = "    ";
@@ -220,22 +222,22 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
   } else {
     size_t pos = 0;
     for (const auto& word : w) {
-      if (word.text != "main") continue;
+      if (word.text != entry) continue;
       text.append(source, pos, word.begin - pos);
-      text += kMonoMain + word.splices;  // a `main` written across a line splice keeps its lines
+      text += monoMain + word.splices;  // a `main` written across a line splice keeps its lines
       pos = word.end;
       ++result.sites;
     }
     text.append(source, pos, std::string::npos);
     if (result.sites == 0) {
-      result.error = "the shader defines no `main` in its own text";
+      result.error = "the shader defines no `" + entry + "` in its own text";
       return result;
     }
     result.sites = 1;
     if (!text.empty() && text.back() != '\n') t += nl;
     t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
     t += declarationText(options, nl);
-    t += "void main()" + nl + "{" + nl + ind + kMonoMain + "();" + nl + shiftStatements(options, ind, nl) + "}" + nl;
+    t += "void " + entry + "()" + nl + "{" + nl + ind + monoMain + "();" + nl + shiftStatements(options, ind, nl) + "}" + nl;
   }
   t += "// ---- end stereoshift ----" + nl;
   result.text = text + t;

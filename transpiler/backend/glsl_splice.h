@@ -41,6 +41,9 @@ struct GlslSpliceOptions : ShiftSpec {
   int version = 100;
   bool es = true;
   Stage stage = Stage::Vertex;  // Vertex, TessEvaluation or Geometry
+  // The entry function (-e for GLSL; `main` by default): renamed `<entry>_stereoshift_mono`, and a
+  // shifting `<entry>` appended, so the build that names it compiles the output unchanged.
+  std::string entryPoint = "main";
   // The eye parameters' declaration, one line each; empty: `uniform float <name>;` for the three
   // names of the spec (loose uniforms). With a block, the spec's names are its members as the shift
   // reads them (`stereo.eyeSign`).

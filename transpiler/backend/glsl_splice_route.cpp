@@ -168,6 +168,7 @@ class GlslSpliceRoute final : public BackEndRoute {
     splice.version = ctx.source.version;
     splice.es = ctx.source.es;
     splice.stage = ctx.source.stage;
+    if (!r.entryPointOption.empty()) splice.entryPoint = r.entryPointOption;
     std::string why;
     if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why)) {
       result.status = EmitResult::Declined;
@@ -191,6 +192,7 @@ class GlslSpliceRoute final : public BackEndRoute {
     check.stage = ctx.source.stage;
     check.vulkanSemantics = ctx.source.vulkan;
     check.includeFrom = r.input.path;
+    check.entryPoint = splice.entryPoint;
     // ESSL 100 / GLSL below 330: through the front end and its analysis translation, as the input
     // was read (glslang alone lacks some of those dialects' built-ins).
     // A lifted copy's source (glsl_lift.h) likewise: glslang accepts only the lifted form of it.

@@ -159,9 +159,11 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   if (mayBeVulkan && options.targetEnv != TargetEnv::OpenGL45) clients.push_back(Client::Vulkan);  // --target-env opengl: GL rules only
   clients.push_back(Client::OpenGL);
 
+  // -e NAME: the function glslang compiles as `main` (glslangValidator's --source-entrypoint).
+  const std::string glslEntry = options.entryPoint.empty() ? "main" : options.entryPoint;
   std::optional<Attempt> best;
   for (Client client : clients) {
-    Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, "main", parseOptions);
+    Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, glslEntry, parseOptions);
     if (a.ok) {
       a.info.vulkan = client == Client::Vulkan;
       best = std::move(a);
@@ -174,7 +176,7 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   if (!best->ok) {
     LiftedGlsl copy = liftGlsl(text);
     if (copy.lifted) {
-      Attempt a = compileGlslangOnce(input, copy.text, stage, SourceLanguage::Glsl, Client::OpenGL, "main", parseOptions);
+      Attempt a = compileGlslangOnce(input, copy.text, stage, SourceLanguage::Glsl, Client::OpenGL, glslEntry, parseOptions);
       if (a.ok) {
         a.info.vulkan = false;
         best = std::move(a);
@@ -187,6 +189,11 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
     diags.append(best->diags);
     if (decided.source == LanguageSource::Content && v.begin == std::string::npos)
       diags.note(input.path, "parsed as GLSL (" + decided.reason + "); if this is HLSL, say so with -x hlsl");
+    const auto& all = best->diags.all();
+    if (options.entryPoint.empty() && std::any_of(all.begin(), all.end(), [](const Diagnostic& d) {
+          return d.message.find("Missing entry point") != std::string::npos;
+        }))
+      diags.note(input.path, "no `main`: if another function is the entry point, name it with -e <function>");
     return;
   }
   diags.append(best->diags);  // warnings

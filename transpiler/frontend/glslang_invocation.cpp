@@ -199,6 +199,11 @@ int defaultSpirvMinor(TargetEnv env) {
 int configureEnvironment(glslang::TShader& shader, Stage stage, SourceLanguage language, Client client,
                          const std::string& entry, const FrontEndOptions* options) {
   EShLanguage lang = toGlslang(stage);
+  // GLSL with another entry function (-e / --source-entrypoint): glslang compiles it as `main`.
+  if (language == SourceLanguage::Glsl && !entry.empty() && entry != "main") {
+    shader.setEntryPoint("main");
+    shader.setSourceEntryPoint(entry.c_str());
+  }
   if (language == SourceLanguage::Glsl && client == Client::AstOnly) return EShMsgDefault;
   // An OpenGL environment has no Vulkan version: HLSL (always Vulkan rules) then keeps 1.0.
   std::optional<TargetEnv> env = options ? options->targetEnv : std::nullopt;
