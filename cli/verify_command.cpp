@@ -1,13 +1,97 @@
 #include "cli/verify_command.h"
 
+#include "transpiler/d3dasm/asm_route.h"
+#include "transpiler/d3dasm/asm_verify.h"
 #include "transpiler/verify/stereo_verify.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace stereoshift {
 
+namespace {
+
+// D3D shader assembly does not run on Vulkan: it is converted by the same route `stereoshift`
+// takes (convertAssemblyStage) and both texts are run on the assembly interpreter instead.
+int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, const VerifyCommandOptions& verify) {
+  const std::string& name = input.path;
+  TranspileResult converted = convertAssemblyStage(input, options);
+  if (!converted.ok) {
+    std::cerr << converted.diagnostics.format();
+    int errors = std::max(1, converted.diagnostics.errorCount());
+    std::cerr << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
+    return 1;
+  }
+  const std::string model = converted.record.assembly ? converted.record.assembly->shaderModel : "";
+  if (converted.copiedThrough) {
+    const std::string why = converted.record.assembly ? converted.record.assembly->unchangedBecause : "";
+    if (verify.json)
+      std::cout << nlohmann::json{{"file", name}, {"language", "d3d-asm"}, {"shader_model", model}, {"ok", true},
+                                  {"verified", false}, {"copied_because", why}}.dump(2)
+                << "\n";
+    else
+      std::cout << name << ": " << model << ": copied unchanged (" << why << "), nothing to verify\n";
+    return 0;
+  }
+  d3dasm::AsmVerifyOptions settings;
+  settings.cutoff = options.cutoff != CutoffMode::None;
+  settings.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  d3dasm::AsmVerifyResult r = d3dasm::verifyAssemblyConversion(input.contents, converted.output, settings);
+  if (!r.ran) {
+    if (verify.json)
+      std::cout << nlohmann::json{{"file", name}, {"language", "d3d-asm"}, {"ok", false}, {"ran", false},
+                                  {"error", r.error}}.dump(2)
+                << "\n";
+    std::cerr << name << ": error: the assembly interpreter cannot run " << r.error << "\n1 error generated.\n";
+    return 1;
+  }
+  if (verify.json) {
+    std::cout << nlohmann::json{{"file", name}, {"language", "d3d-asm"}, {"shader_model", model}, {"ok", r.ok},
+                                {"ran", true}, {"verified", true}, {"device", "assembly interpreter (CPU)"},
+                                {"position", r.positionRegister}, {"samples", r.samples}, {"runaway_samples", r.runaway},
+                                {"mono_runs", r.monoRuns}, {"mono_mismatches", r.monoMismatches},
+                                {"stereo_runs", r.stereoRuns}, {"other_output_mismatches", r.otherOutputMismatches},
+                                {"position_yzw_mismatches", r.positionYzwMismatches}, {"cutoff_runs", r.cutoffRuns},
+                                {"cutoff_mismatches", r.cutoffMismatches}, {"shifted_runs", r.shiftedRuns},
+                                {"shifted_failures", r.shiftedFailures}, {"samples_with_w_one", r.samplesWithWOne},
+                                {"max_stereo_error", r.worstError}, {"bound_at_max", r.worstBound},
+                                {"max_error_over_bound", r.worstRatio}, {"first_failure", r.firstFailure},
+                                {"checked", {"separation 0: every output bit for bit the original's",
+                                             "eye -1 and +1: x against x + s*(w - c) in double from the original's x "
+                                             "and w, every other output unchanged"}}}.dump(2)
+              << "\n";
+    return r.ok ? 0 : 1;
+  }
+  char error[160];
+  std::snprintf(error, sizeof error, "%.3g (bound there %.3g: %.2f of it)", r.worstError, r.worstBound, r.worstRatio);
+  std::cout << name << " (" << model << ") on the assembly interpreter: " << r.samples << " input sets, "
+            << r.stereoRuns << " stereo runs\n"
+            << "  eye parameters:                separation in (0, 0.1] per eye sign, convergence in [0.5, 5], "
+               "drawn per input set\n"
+            << "  mono identity (separation 0):  " << (r.monoMismatches ? "DIFFERS" : "bit-exact") << "\n"
+            << "  other outputs per eye:         " << (r.otherOutputMismatches ? "CHANGED" : "unchanged") << "\n"
+            << "  position y, z, w per eye:      " << (r.positionYzwMismatches ? "CHANGED" : "unchanged") << "\n"
+            << "  stereo x error:                " << error << ", " << r.shiftedFailures << " of " << r.shiftedRuns
+            << " runs over it\n"
+            << "  vertices kept by the cutoff:   " << r.cutoffRuns << (r.cutoffMismatches ? " (x CHANGED)" : " (x bit-exact)")
+            << "\n"
+            << "  input sets with w = 1:         " << r.samplesWithWOne << " of " << r.samples << "\n";
+  if (r.runaway) std::cout << "  runaway input sets:            " << r.runaway << " (the instruction limit; left out)\n";
+  if (!r.firstFailure.empty()) std::cout << "  problem: " << r.firstFailure << "\n";
+  std::cout << (r.ok ? "verified" : "FAILED") << "\n";
+  return r.ok ? 0 : 1;
+}
+
+}  // namespace
+
 int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOptions& options,
                      const VerifyCommandOptions& verify) {
+  for (const SourceFile& source : sources) {
+    if (!isD3DAssemblyInput(source)) continue;
+    if (sources.size() == 1) return runAssemblyVerify(source, options, verify);
+    std::cerr << source.path << ": error: D3D shader assembly is verified one file at a time\n1 error generated.\n";
+    return 1;
+  }
   Diagnostics diags;
   std::vector<harness::StageModules> stages;
   std::string classification;

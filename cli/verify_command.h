@@ -1,4 +1,5 @@
-// `stereoshift verify`: runs the original and the transpiled shader on the CPU Vulkan driver.
+// `stereoshift verify`: runs the original and the transpiled shader on the CPU Vulkan driver, or,
+// for D3D shader assembly, on the assembly interpreter (transpiler/d3dasm/asm_verify.h).
 #pragma once
 
 #include "transpiler/stereoshift.h"

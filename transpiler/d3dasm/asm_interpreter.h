@@ -11,7 +11,13 @@
 // (ld, sample_l, ...) answered by a callback. What it refuses, with the line: subroutines
 // (label/call), switch, and any instruction it does not know; other stages' registers.
 // Registers hold 32-bit patterns; float results are rounded to float as the GPU rounds them;
-// denormals are kept (the GPU may flush them: both shaders run the same way here).
+// denormals are kept (the GPU may flush them: both shaders run the same way here). `mad` and the
+// dot products are computed unfused (each product and sum rounded to float on its own), which is
+// one of the roundings D3D allows; a GPU that fuses them differs from both runs alike.
+// Temporaries start at zero, an input component the declaration leaves out reads as the input
+// assembler's default (0, 0, 0, 1), and a constant-buffer read out of its rows reads zero. A source
+// swizzle of two or three letters in increasing order (`r1.xz`) is a component mask, each letter
+// in its own place, as the bytecode's mask mode reads it.
 #pragma once
 
 #include "transpiler/d3dasm/asm_text.h"
@@ -21,6 +27,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,7 +60,8 @@ struct InputDeclaration {
 
 class Program {
  public:
-  // false (the line and why in *error) when the text holds what the interpreter does not run.
+  // Each instruction line decoded once (asm_interpreter_ops.h); null, with the line, the column
+  // and why in *error, when the text holds what the interpreter does not run.
   static std::unique_ptr<Program> decode(const AsmText& text, AsmError* error);
   ~Program();
   RunResult run(Machine& machine) const;
@@ -61,6 +69,7 @@ class Program {
   const std::vector<InputDeclaration>& inputs() const;
   const std::map<uint32_t, uint32_t>& cbufferSizes() const;  // slot -> rows declared
   const std::map<uint32_t, uint32_t>& outputMasks() const;   // o register -> mask declared
+  std::optional<uint32_t> positionOutput() const;            // dcl_output_siv oN, position
   struct Impl;
 
  private:
