@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace stereoshift {
 
@@ -83,18 +84,42 @@ LiftedGlsl liftGlsl(const std::string& text) {
   int wanted = v.version;
   std::string because;
   source::LexedText lexed(result.text);
+  struct ExtensionLine {
+    size_t begin, end;  // the directive line, without its line break
+    int core;
+  };
+  std::vector<ExtensionLine> extensionLines;
   for (size_t k = 0; k < lexed.size(); ++k) {
+    // A built-in block redeclared (`out gl_PerVertex { vec4 gl_Position; };`, `in gl_PerVertex {...}
+    // gl_in[];`): glslang takes it from GLSL 410 (GL_ARB_separate_shader_objects' core version) on.
+    if (lexed.isIdentifier(k) && lexed.text(k) == "gl_PerVertex" && lexed.isPunct(lexed.nextNonComment(k), '{') &&
+        wanted < 410) {
+      wanted = 410;
+      because = "a gl_PerVertex redeclaration";
+    }
     if (lexed[k].kind != source::TokenKind::Directive || lexed[k].directive != source::DirectiveKind::Extension) continue;
     size_t name = lexed.firstOperand(k);
     if (name >= lexed.size()) continue;
     std::string line = source::spelledString(result.text, lexed[k]);
     if (line.find("disable") != std::string::npos) continue;
     std::string extension(lexed.text(name));
-    if (auto core = coreVersionOf(extension); core && *core > wanted) {
+    auto core = coreVersionOf(extension);
+    if (!core) continue;
+    size_t lineEnd = result.text.find('\n', lexed[k].begin);
+    if (lineEnd == std::string::npos) lineEnd = result.text.size();
+    if (lineEnd > lexed[k].begin && result.text[lineEnd - 1] == '\r') --lineEnd;
+    extensionLines.push_back({lexed[k].begin, lineEnd, *core});
+    if (*core > wanted) {
       wanted = *core;
       because = extension;
     }
   }
+  // An extension that is core at the raised version needs no #extension line, and glslang does not
+  // know some of them by name (GL_ARB_arrays_of_arrays: "extension not supported", an error under
+  // `require`): blanked with spaces, so every byte keeps its offset.
+  if (wanted > v.version)
+    for (const auto& line : extensionLines)
+      if (line.core <= wanted) result.text.replace(line.begin, line.end - line.begin, line.end - line.begin, ' ');
   if (wanted > v.version) {
     // `#version 150 compatibility` -> `#version 400 compatibility`: the number only.
     std::string directive = result.text.substr(v.begin, v.end - v.begin);

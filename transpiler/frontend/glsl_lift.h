@@ -6,7 +6,11 @@
 //   - comments or blank lines before the #version line (ESSL wants it first) moved after it;
 //   - the #version raised to the lowest core version that has what the #extension lines enable
 //     (GL_ARB_gpu_shader5 -> 400, GL_ARB_arrays_of_arrays -> 430, ...): glslang knows some
-//     extensions' built-ins and syntax only at the version they became core in.
+//     extensions' built-ins and syntax only at the version they became core in; the #extension
+//     lines of what is core at the raised version blanked (glslang does not know some of them by
+//     name, GL_ARB_arrays_of_arrays, and `require` of an unknown one is an error);
+//   - a built-in block redeclaration (`out gl_PerVertex { ... };`) raises it to 410, the first
+//     version glslang takes one at.
 // The version raise is for desktop GLSL only; the profile word of the #version line is kept.
 #pragma once
 
