@@ -124,6 +124,13 @@ TEST_F(VerifyInputs, D3dRegisterClassesAreBoundApart) {
   for (const char* file : {"d3d_registers.vert.hlsl", "cbuffer_spaces_skinned.vert.hlsl"}) expectVerified(verify({file}), file);
 }
 
+// An OpenGL `uniform bool` toggle: glslang's SPIR-V for it does not validate (a Bool variable in
+// UniformConstant storage), so verify refused the shader. The harness stores it in the default
+// block as a uint and compares its loads with 0, in the original and the transpiled module alike.
+TEST_F(VerifyInputs, OpenGLUniformBoolIsStoredAsUint) {
+  expectVerified(verify({"flip_y_toggle.vert"}), "flip_y_toggle.vert");
+}
+
 // Pre-rasterization shaders in tutorial / SDK conventions: skinning with integer bone ids,
 // instancing with a mat4 attribute, a lone tessellated-terrain evaluation stage with a height map,
 // geometry billboards and a one-pass shadow cube map (gl_Layer).

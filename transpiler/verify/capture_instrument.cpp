@@ -111,12 +111,40 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
 
 namespace {
 
-// std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type.
+// A bool has no size in memory, so SPIR-V allows none in a uniform block (glslang's OpenGL module
+// keeps `uniform bool flipY;` as a UniformConstant bool variable, which does not validate either).
+// In the harness's default block it is stored as GL stores it, a 32-bit unsigned integer whose any
+// nonzero value is true: the unsigned type of the same shape as `type` (bool, bvecN); other types
+// as they are.
+uint32_t storedAsUint(spirv::Module& m, uint32_t type) {
+  const Instruction* d = m.definition(type);
+  if (d && d->opcode == spv::OpTypeBool) return m.typeInt(32, false);
+  if (d && d->opcode == spv::OpTypeVector) {
+    const Instruction* component = m.definition(d->operand(0));
+    const uint32_t n = d->operand(1);
+    if (component && component->opcode == spv::OpTypeBool) return m.typeVector(m.typeInt(32, false), n);
+  }
+  return type;
+}
+
+// The zero of an integer scalar or vector type (what a stored bool is compared against).
+uint32_t nullOf(spirv::Module& m, uint32_t type) {
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpConstantNull && inst.typeId == type) return inst.resultId;
+  const uint32_t id = m.takeId();
+  m.typesValues.emplace_back(spv::OpConstantNull, type, id);
+  m.invalidateDefinitions();
+  return id;
+}
+
+// std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type,
+// bools (and arrays of them) become the unsigned integers they are stored as (storedAsUint).
 void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, bool* matrix) {
+  *type = storedAsUint(m, *type);
   const Instruction* d = m.definition(*type);
   *matrix = false;
   switch (d ? d->opcode : spv::OpNop) {
-    case spv::OpTypeFloat: case spv::OpTypeInt: case spv::OpTypeBool:
+    case spv::OpTypeFloat: case spv::OpTypeInt:
       *size = 4; *align = 4; return;
     case spv::OpTypeVector: {
       uint32_t n = d->operand(1);
@@ -236,6 +264,30 @@ uint32_t defaultUniformBlock(spirv::Module& m, const std::vector<uint32_t>& loos
   return blockVar;
 }
 
+// A load of a bool (or bvecN) the default block stores as an unsigned integer (storedAsUint) loads
+// the integer and compares it with 0: the shader gets the bool it read before, true for any nonzero.
+void loadStoredBoolsAsBools(spirv::Module& m, const std::set<uint32_t>& uniformPointers) {
+  for (auto& fn : m.functions)
+    for (auto& block : fn.blocks) {
+      std::vector<Instruction> rewritten;
+      rewritten.reserve(block.instructions.size());
+      for (auto& inst : block.instructions) {
+        const bool fromBlock = inst.opcode == spv::OpLoad && uniformPointers.count(inst.operand(0));
+        const uint32_t stored = fromBlock ? storedAsUint(m, inst.typeId) : inst.typeId;
+        if (stored == inst.typeId) {
+          rewritten.push_back(std::move(inst));
+          continue;
+        }
+        const uint32_t loaded = m.takeId();
+        rewritten.emplace_back(spv::OpLoad, stored, loaded, std::vector<uint32_t>{inst.operand(0)});
+        rewritten.emplace_back(spv::OpINotEqual, inst.typeId, inst.resultId,
+                               std::vector<uint32_t>{loaded, nullOf(m, stored)});
+      }
+      block.instructions = std::move(rewritten);
+    }
+  m.invalidateDefinitions();
+}
+
 // Every use of a loose uniform becomes a chain into the block, made at the top of the function;
 // chains built on those pointers point into Uniform storage then.
 void readLooseUniformsFromBlock(spirv::Module& m, const std::vector<uint32_t>& loose,
@@ -278,11 +330,12 @@ void readLooseUniformsFromBlock(spirv::Module& m, const std::vector<uint32_t>& l
         for (auto& inst : block.instructions)
           if ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) &&
               uniformPointers.count(inst.operand(0)) && !uniformPointers.count(inst.resultId)) {
-            inst.typeId = m.typePointer(spv::StorageClassUniform, m.pointeeType(inst.typeId));
+            inst.typeId = m.typePointer(spv::StorageClassUniform, storedAsUint(m, m.pointeeType(inst.typeId)));
             uniformPointers.insert(inst.resultId);
             grew = true;
           }
   }
+  loadStoredBoolsAsBools(m, uniformPointers);
 }
 
 // Drops the loose variables and everything that names them.

@@ -66,6 +66,9 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     TranspileOptions o = options;
     o.target = TargetLanguage::Spirv;
     o.forceReemit = true;
+    // The harness repairs what glslang's module for OpenGL GLSL gets wrong (a loose `uniform bool`)
+    // in its own copies, original and transpiled alike (convertOpenGLForVulkan).
+    o.spirvForHarness = true;
     o.shiftThisStage = i + 1 == ordered.size();
     TranspileResult result = transpile(*ordered[i], o);
     diags.append(result.diagnostics);
