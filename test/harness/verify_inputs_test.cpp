@@ -124,6 +124,14 @@ TEST_F(VerifyInputs, D3dRegisterClassesAreBoundApart) {
   for (const char* file : {"d3d_registers.vert.hlsl", "cbuffer_spaces_skinned.vert.hlsl"}) expectVerified(verify({file}), file);
 }
 
+// OpenGL binding points: a texture unit, a uniform block and a storage block numbered 0 each are
+// three resources, which glslang leaves at one Vulkan binding; verify moves each class to its own
+// range (original and transpiled alike), as for D3D registers. Both were refused before ("shares
+// its binding"): one taken as OpenGL GLSL (a loose uniform), one glslang also accepts as Vulkan GLSL.
+TEST_F(VerifyInputs, OpenGLBindingClassesAreBoundApart) {
+  for (const char* file : {"particle_binding_points.vert", "terrain_binding_points.vert"}) expectVerified(verify({file}), file);
+}
+
 // An OpenGL `uniform bool` toggle: glslang's SPIR-V for it does not validate (a Bool variable in
 // UniformConstant storage), so verify refused the shader. The harness stores it in the default
 // block as a uint and compares its loads with 0, in the original and the transpiled module alike.

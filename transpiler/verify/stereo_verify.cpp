@@ -118,7 +118,7 @@ class StereoCheck {
       auto a = Module::parse(s.original, &error);
       auto b = Module::parse(s.transpiled, &error);
       if (!a || !b) return stop("unparsable SPIR-V: " + error);
-      if (s.d3dRegisters) {
+      if (s.bindings == BindingClasses::D3dRegisters) {
         separateRegisterClasses(*a);
         separateRegisterClasses(*b);
       }
@@ -126,6 +126,10 @@ class StereoCheck {
       const uint32_t blockBinding = 16 + static_cast<uint32_t>(originals_.size());
       if (!convertOpenGLForVulkan(*a, blockBinding, &error) && !error.empty()) return stop(error);
       convertOpenGLForVulkan(*b, blockBinding, &error);
+      if (s.bindings == BindingClasses::OpenGL) {  // after the default block joined the uniform blocks
+        separateOpenGLBindingClasses(*a);
+        separateOpenGLBindingClasses(*b);
+      }
       matchInvariance(*a, *b);
       feedDoubleInputsAsFloats(*a);
       feedDoubleInputsAsFloats(*b);

@@ -1,7 +1,8 @@
 // verify's compile step: the pre-rasterization stages of the given sources, in pipeline order,
 // each compiled to SPIR-V twice — the original as the front end makes it, and through
 // stereoshift's passes (only the last stage shifted) — with what the comparison must know about
-// each: which outputs may differ between the eyes, and whether its bindings are D3D registers.
+// each: which outputs may differ between the eyes, and whether its bindings are per-class
+// namespaces (D3D registers, OpenGL's binding points).
 #include "transpiler/verify/stereo_verify.h"
 
 #include "transpiler/verify/harness_rewrites.h"
@@ -27,10 +28,19 @@ std::vector<std::string> outputsExpectedToDiffer(const TranspileResult& result) 
   return outputs;
 }
 
-// Whether the stage's bindings are D3D registers (b, t, s, u in separate namespaces), which the
-// harness moves apart before binding: the front end's rule (HLSL not written for Vulkan with
-// [[vk::binding]]; SourceInfo::vulkanBindings).
-bool bindsByD3DRegisters(const TranspileResult& result) { return perClassRegisters(result.source); }
+// Whether the stage's bindings are per-class namespaces, which the harness moves apart before
+// binding: D3D registers (b, t, s, u) by the front end's rule (HLSL not written for Vulkan with
+// [[vk::binding]]; SourceInfo::vulkanBindings), OpenGL's (texture units, uniform blocks, storage
+// blocks, images, atomic counters) for GLSL not written for Vulkan — and for GLSL that glslang
+// accepts under both rule sets (taken as Vulkan GLSL) but that binds two of those classes at one
+// binding, which only OpenGL allows.
+BindingClasses bindingClassesOf(const TranspileResult& result, const spirv::Module& original) {
+  if (perClassRegisters(result.source)) return BindingClasses::D3dRegisters;
+  if (result.source.language == SourceLanguage::Glsl &&
+      (!result.source.vulkan || sharesBindingAcrossOpenGLClasses(original)))
+    return BindingClasses::OpenGL;
+  return BindingClasses::Shared;
+}
 
 }  // namespace
 
@@ -83,9 +93,9 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
       return false;
     }
     std::vector<std::string> halo = outputsExpectedToDiffer(result);
-    const bool d3dRegisters = bindsByD3DRegisters(result);
+    const BindingClasses bindings = bindingClassesOf(result, *original);
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
-                       original->entryPointName(), std::move(halo), d3dRegisters});
+                       original->entryPointName(), std::move(halo), bindings});
   }
   return true;
 }
