@@ -132,6 +132,13 @@ TEST_F(VerifyInputs, OpenGLBindingClassesAreBoundApart) {
   for (const char* file : {"particle_binding_points.vert", "terrain_binding_points.vert"}) expectVerified(verify({file}), file);
 }
 
+// Loose dmat4 / dvec3 uniforms: std140 gives them 8-byte scalars and 32-byte dvec4 columns. The
+// harness's default block laid them out as floats (16-byte columns), so the matrices overlapped and
+// the eye parameters appended in the transpiled copy overwrote the projection: eyeSign 0 differed.
+TEST_F(VerifyInputs, DoublePrecisionLooseUniforms) {
+  expectVerified(verify({"double_precision_camera.vert"}), "double_precision_camera.vert");
+}
+
 // An OpenGL `uniform bool` toggle: glslang's SPIR-V for it does not validate (a Bool variable in
 // UniformConstant storage), so verify refused the shader. The harness stores it in the default
 // block as a uint and compares its loads with 0, in the original and the transpiled module alike.

@@ -139,30 +139,40 @@ uint32_t nullOf(spirv::Module& m, uint32_t type) {
 
 // std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type,
 // bools (and arrays of them) become the unsigned integers they are stored as (storedAsUint).
-void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, bool* matrix) {
+// *matrixStride: the column stride of a matrix (or of an array's matrices), 0 for other types.
+// Scalars take their own width (a double 8 bytes, a dvec3 / dvec4 32-byte aligned); a matrix is
+// stored as an array of its columns, each at least vec4-aligned.
+void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, uint32_t* matrixStride) {
   *type = storedAsUint(m, *type);
   const Instruction* d = m.definition(*type);
-  *matrix = false;
+  *matrixStride = 0;
+  auto scalarBytes = [&](uint32_t scalar) {
+    const Instruction* s = m.definition(scalar);
+    return s && (s->opcode == spv::OpTypeFloat || s->opcode == spv::OpTypeInt) ? s->operand(0) / 8 : 4u;
+  };
   switch (d ? d->opcode : spv::OpNop) {
     case spv::OpTypeFloat: case spv::OpTypeInt:
-      *size = 4; *align = 4; return;
+      *size = *align = d->operand(0) / 8; return;
     case spv::OpTypeVector: {
-      uint32_t n = d->operand(1);
-      *size = 4 * n;
-      *align = n == 2 ? 8 : 16;
+      const uint32_t n = d->operand(1), bytes = scalarBytes(d->operand(0));
+      *size = bytes * n;
+      *align = bytes * (n == 2 ? 2 : 4);
       return;
     }
-    case spv::OpTypeMatrix:
-      *matrix = true;
-      *size = 16 * d->operand(1);
-      *align = 16;
+    case spv::OpTypeMatrix: {
+      const Instruction* column = m.definition(d->operand(0));
+      const uint32_t bytes = column ? scalarBytes(column->operand(0)) : 4;
+      const uint32_t rows = column ? column->operand(1) : 4;
+      *matrixStride = std::max(bytes * (rows == 2 ? 2 : 4), 16u);
+      *size = *matrixStride * d->operand(1);
+      *align = *matrixStride;
       return;
+    }
     case spv::OpTypeArray: {
       uint32_t element = d->operand(0), length = d->operand(1);
       uint32_t elementSize, elementAlign;
-      bool elementMatrix;
-      std140(m, &element, &elementSize, &elementAlign, &elementMatrix);
-      uint32_t stride = (std::max(elementSize, 16u) + 15) & ~15u;
+      std140(m, &element, &elementSize, &elementAlign, matrixStride);
+      uint32_t stride = (std::max({elementSize, elementAlign, 16u}) + 15) & ~15u;
       const Instruction* count = m.definition(length);
       uint32_t id = m.takeId();
       m.typesValues.emplace_back(spv::OpTypeArray, 0, id, std::vector<uint32_t>{element, length});
@@ -170,8 +180,7 @@ void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, b
       m.decorate(id, spv::DecorationArrayStride, {stride});
       *type = id;
       *size = stride * (count ? count->operand(0) : 1);
-      *align = 16;
-      *matrix = elementMatrix;
+      *align = std::max(elementAlign, 16u);
       return;
     }
     default:
@@ -236,16 +245,15 @@ bool separateCollidingLocations(spirv::Module& m) {
 // (the binding is the caller's). `memberTypes` receives each member's type.
 uint32_t defaultUniformBlock(spirv::Module& m, const std::vector<uint32_t>& loose, std::vector<uint32_t>* memberTypes) {
   std::vector<uint32_t> offsets;
-  std::vector<bool> matrices;
+  std::vector<uint32_t> matrixStrides;
   uint32_t offset = 0;
   for (uint32_t var : loose) {
-    uint32_t type = m.pointeeType(m.definition(var)->typeId), size, align;
-    bool matrix;
-    std140(m, &type, &size, &align, &matrix);
+    uint32_t type = m.pointeeType(m.definition(var)->typeId), size, align, matrixStride;
+    std140(m, &type, &size, &align, &matrixStride);
     offset = (offset + align - 1) / align * align;
     memberTypes->push_back(type);
     offsets.push_back(offset);
-    matrices.push_back(matrix);
+    matrixStrides.push_back(matrixStride);
     offset += size;
   }
   uint32_t block = m.newStruct(*memberTypes);
@@ -254,9 +262,9 @@ uint32_t defaultUniformBlock(spirv::Module& m, const std::vector<uint32_t>& loos
   for (uint32_t i = 0; i < loose.size(); ++i) {
     m.decorateMember(block, i, spv::DecorationOffset, {offsets[i]});
     m.setMemberName(block, i, m.name(loose[i]));
-    if (matrices[i]) {
+    if (matrixStrides[i]) {
       m.decorateMember(block, i, spv::DecorationColMajor);
-      m.decorateMember(block, i, spv::DecorationMatrixStride, {16});
+      m.decorateMember(block, i, spv::DecorationMatrixStride, {matrixStrides[i]});
     }
   }
   uint32_t blockVar = m.addGlobalVariable(m.typePointer(spv::StorageClassUniform, block), spv::StorageClassUniform);
