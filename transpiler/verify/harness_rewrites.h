@@ -17,7 +17,7 @@ VkShaderStageFlagBits toVk(spv::ExecutionModel model);
 
 // Whether two OpenGL binding classes (texture units, uniform blocks, storage blocks, images, atomic
 // counters) use one (set, binding): legal only in OpenGL, where each class numbers its own, so GLSL
-// that glslang also accepts with Vulkan rules is OpenGL GLSL after all (separateOpenGLBindingClasses).
+// that glslang also accepts with Vulkan rules is OpenGL GLSL after all (verify_stages.cpp).
 bool sharesBindingAcrossOpenGLClasses(const spirv::Module& m);
 
 // A push-constant block larger than the device allows becomes a uniform buffer at (set, 0).

@@ -8,10 +8,13 @@
 #include "transpiler/verify/harness_rewrites.h"
 #include "passes/ir/module.h"
 #include "passes/pass.h"
+#include "transpiler/source/lexer.h"
 #include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
+#include <string_view>
 
 namespace stereoshift::harness {
 
@@ -31,15 +34,56 @@ std::vector<std::string> outputsExpectedToDiffer(const TranspileResult& result) 
 // Whether the stage's bindings are per-class namespaces, which the harness moves apart before
 // binding: D3D registers (b, t, s, u) by the front end's rule (HLSL not written for Vulkan with
 // [[vk::binding]]; SourceInfo::vulkanBindings), OpenGL's (texture units, uniform blocks, storage
-// blocks, images, atomic counters) for GLSL not written for Vulkan — and for GLSL that glslang
-// accepts under both rule sets (taken as Vulkan GLSL) but that binds two of those classes at one
-// binding, which only OpenGL allows.
-BindingClasses bindingClassesOf(const TranspileResult& result, const spirv::Module& original) {
+// blocks, images, atomic counters) for GLSL not written for Vulkan.
+BindingClasses bindingClassesOf(const TranspileResult& result) {
   if (perClassRegisters(result.source)) return BindingClasses::D3dRegisters;
-  if (result.source.language == SourceLanguage::Glsl &&
-      (!result.source.vulkan || sharesBindingAcrossOpenGLClasses(original)))
-    return BindingClasses::OpenGL;
+  if (result.source.language == SourceLanguage::Glsl && !result.source.vulkan) return BindingClasses::OpenGL;
   return BindingClasses::Shared;
+}
+
+// Whether GLSL text says it was written for Vulkan: a `set`, `push_constant`, `constant_id` or
+// `input_attachment_index` layout qualifier, or gl_VertexIndex / gl_InstanceIndex (glslang's OpenGL
+// rules accept `set` too, so its compile does not tell).
+bool writtenForVulkan(std::string_view text) {
+  bool afterLayout = false;
+  int layoutDepth = 0;
+  for (const source::Token& t : source::lex(text)) {
+    if (t.kind == source::TokenKind::Comment || t.directive != source::DirectiveKind::None) continue;
+    const std::string_view word = source::tokenText(text, t);
+    if (t.kind == source::TokenKind::Identifier) {
+      if (word == "gl_VertexIndex" || word == "gl_InstanceIndex") return true;
+      if (layoutDepth > 0 && (word == "set" || word == "push_constant" || word == "constant_id" ||
+                              word == "input_attachment_index"))
+        return true;
+      afterLayout = word == "layout";
+      continue;
+    }
+    if (word == "(" && (afterLayout || layoutDepth > 0)) ++layoutDepth;
+    else if (word == ")" && layoutDepth > 0) --layoutDepth;
+    afterLayout = false;
+  }
+  return false;
+}
+
+// GLSL that glslang accepts with Vulkan rules is taken as Vulkan GLSL even where OpenGL rules accept
+// it too. Two OpenGL binding classes at one binding (a sampler and a uniform block both at 0) say it
+// is OpenGL GLSL, since Vulkan cannot bind that: *result becomes the conversion with OpenGL rules
+// where those accept it. GLSL written for Vulkan (writtenForVulkan) keeps its clash, which the
+// harness then reports. Unless --target-env chose the rules.
+void preferOpenGLRulesForOpenGLBindings(const SourceFile& file, const TranspileOptions& o, TranspileResult* result,
+                                        std::optional<spirv::Module>* original) {
+  if (o.targetEnv || result->source.language != SourceLanguage::Glsl || !result->source.vulkan ||
+      !sharesBindingAcrossOpenGLClasses(**original) || writtenForVulkan(file.contents))
+    return;
+  TranspileOptions gl = o;
+  gl.targetEnv = TargetEnv::OpenGL45;
+  TranspileResult asOpenGL = transpile(file, gl);
+  if (!asOpenGL.ok) return;
+  std::string error;
+  auto parsed = spirv::Module::parse(asOpenGL.originalSpirv, &error);
+  if (!parsed) return;
+  *result = std::move(asOpenGL);
+  *original = std::move(parsed);
 }
 
 }  // namespace
@@ -81,19 +125,24 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     o.spirvForHarness = true;
     o.shiftThisStage = i + 1 == ordered.size();
     TranspileResult result = transpile(*ordered[i], o);
-    diags.append(result.diagnostics);
-    if (!result.ok) return false;
-    *classification = result.record.classification ? toString(*result.record.classification) : "";
-    std::vector<uint32_t> words(result.output.size() / 4);
-    std::memcpy(words.data(), result.output.data(), words.size() * 4);
+    if (!result.ok) {
+      diags.append(result.diagnostics);
+      return false;
+    }
     std::string error;
     auto original = spirv::Module::parse(result.originalSpirv, &error);
     if (!original) {
+      diags.append(result.diagnostics);
       diags.error(ordered[i]->path, error);
       return false;
     }
+    preferOpenGLRulesForOpenGLBindings(*ordered[i], o, &result, &original);
+    diags.append(result.diagnostics);
+    *classification = result.record.classification ? toString(*result.record.classification) : "";
+    std::vector<uint32_t> words(result.output.size() / 4);
+    std::memcpy(words.data(), result.output.data(), words.size() * 4);
     std::vector<std::string> halo = outputsExpectedToDiffer(result);
-    const BindingClasses bindings = bindingClassesOf(result, *original);
+    const BindingClasses bindings = bindingClassesOf(result);
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
                        original->entryPointName(), std::move(halo), bindings});
   }
