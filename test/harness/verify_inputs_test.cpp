@@ -136,7 +136,10 @@ TEST_F(VerifyInputs, OpenGLBindingClassesAreBoundApart) {
 // harness's default block laid them out as floats (16-byte columns), so the matrices overlapped and
 // the eye parameters appended in the transpiled copy overwrote the projection: eyeSign 0 differed.
 TEST_F(VerifyInputs, DoublePrecisionLooseUniforms) {
-  expectVerified(verify({"double_precision_camera.vert"}), "double_precision_camera.vert");
+  VerifyResult r = verify({"double_precision_camera.vert"});
+  expectVerified(r, "double_precision_camera.vert");
+  // The fp32 bound, with the reason it applies to a shader computing in fp64 (docs/stereo-math.md).
+  EXPECT_NE(r.boundBasis.find("computes in fp64"), std::string::npos) << r.boundBasis;
 }
 
 // An OpenGL `uniform bool` toggle: glslang's SPIR-V for it does not validate (a Bool variable in

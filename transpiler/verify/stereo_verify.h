@@ -64,6 +64,9 @@ struct VerifyResult {
   uint32_t vertices = 0;
   bool monoIdentical = false;   // eyeSign = 0: every output bit for bit equal to the original
   double maxStereoUlps = 0;     // largest |x' - x_ref| in ULPs of max(|x|, |S(w - C)|)
+  // Which bound maxStereoUlps was held to and why (the precision the shift is computed in, and the
+  // precision the shader computes its position in; docs/stereo-math.md, section 6).
+  std::string boundBasis;
   uint32_t cutoffVertices = 0;  // vertices left unshifted by the cutoff
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
   uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
