@@ -160,7 +160,8 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
     std::cout << name << " on " << context->deviceName() << ": " << r.vertices << " vertices\n"
               << "  mono identity (eyeSign 0):   " << (r.monoIdentical ? "bit-exact" : "DIFFERS") << "\n"
               << "  other outputs per eye:       " << (r.otherOutputsUnchanged ? "unchanged" : "CHANGED") << "\n"
-              << "  stereo x error:              " << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ")\n"
+              << "  stereo x error:              " << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ": " << r.boundBasis
+              << ")\n"
               << "  vertices kept by the cutoff: " << r.cutoffVertices << "\n";
   } else {
     // Single-pass: the eye comes from the view or the instance, so there is no eyeSign = 0 run.
@@ -186,7 +187,7 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
                 << " (location " << options.eye.eyeVaryingLocation << ")\n";
     std::cout << line(multiview ? "other outputs per view:" : "other outputs per instance:")
               << (r.otherOutputsUnchanged ? "unchanged" : "CHANGED") << "\n"
-              << line("stereo x error:") << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ")"
+              << line("stereo x error:") << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ": " << r.boundBasis << ")"
               << (settings.shifted ? "" : ", against x unshifted (" + classification + ": no shift)") << "\n"
               << line("vertices kept by the cutoff:") << r.cutoffVertices << "\n";
   }

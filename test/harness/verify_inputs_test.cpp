@@ -124,6 +124,31 @@ TEST_F(VerifyInputs, D3dRegisterClassesAreBoundApart) {
   for (const char* file : {"d3d_registers.vert.hlsl", "cbuffer_spaces_skinned.vert.hlsl"}) expectVerified(verify({file}), file);
 }
 
+// OpenGL binding points: a texture unit, a uniform block and a storage block numbered 0 each are
+// three resources, which glslang leaves at one Vulkan binding; verify moves each class to its own
+// range (original and transpiled alike), as for D3D registers. Both were refused before ("shares
+// its binding"): one taken as OpenGL GLSL (a loose uniform), one glslang also accepts as Vulkan GLSL.
+TEST_F(VerifyInputs, OpenGLBindingClassesAreBoundApart) {
+  for (const char* file : {"particle_binding_points.vert", "terrain_binding_points.vert"}) expectVerified(verify({file}), file);
+}
+
+// Loose dmat4 / dvec3 uniforms: std140 gives them 8-byte scalars and 32-byte dvec4 columns. The
+// harness's default block laid them out as floats (16-byte columns), so the matrices overlapped and
+// the eye parameters appended in the transpiled copy overwrote the projection: eyeSign 0 differed.
+TEST_F(VerifyInputs, DoublePrecisionLooseUniforms) {
+  VerifyResult r = verify({"double_precision_camera.vert"});
+  expectVerified(r, "double_precision_camera.vert");
+  // The fp32 bound, with the reason it applies to a shader computing in fp64 (docs/stereo-math.md).
+  EXPECT_NE(r.boundBasis.find("computes in fp64"), std::string::npos) << r.boundBasis;
+}
+
+// An OpenGL `uniform bool` toggle: glslang's SPIR-V for it does not validate (a Bool variable in
+// UniformConstant storage), so verify refused the shader. The harness stores it in the default
+// block as a uint and compares its loads with 0, in the original and the transpiled module alike.
+TEST_F(VerifyInputs, OpenGLUniformBoolIsStoredAsUint) {
+  expectVerified(verify({"flip_y_toggle.vert"}), "flip_y_toggle.vert");
+}
+
 // Pre-rasterization shaders in tutorial / SDK conventions: skinning with integer bone ids,
 // instancing with a mat4 attribute, a lone tessellated-terrain evaluation stage with a height map,
 // geometry billboards and a one-pass shadow cube map (gl_Layer).

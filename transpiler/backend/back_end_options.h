@@ -19,6 +19,10 @@ struct BackEndOptions {
   // (texel 0: x separation with the eye's sign, y convergence), rendered by the HLSL source splice
   // only; the passes analyse with an internal cbuffer in its place.
   bool eyeFrom3DMigoto = false;
+  // verify only: the SPIR-V goes to verify's harness, which repairs what glslang's module gets
+  // wrong for OpenGL GLSL (a loose `uniform bool`, see convertOpenGLForVulkan) before it runs it, so the
+  // SPIR-V routes write a module that does not validate for that reason instead of refusing it.
+  bool spirvForHarness = false;
 };
 
 }  // namespace stereoshift

@@ -111,30 +111,68 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
 
 namespace {
 
-// std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type.
-void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, bool* matrix) {
+// A bool has no size in memory, so SPIR-V allows none in a uniform block (glslang's OpenGL module
+// keeps `uniform bool flipY;` as a UniformConstant bool variable, which does not validate either).
+// In the harness's default block it is stored as GL stores it, a 32-bit unsigned integer whose any
+// nonzero value is true: the unsigned type of the same shape as `type` (bool, bvecN); other types
+// as they are.
+uint32_t storedAsUint(spirv::Module& m, uint32_t type) {
+  const Instruction* d = m.definition(type);
+  if (d && d->opcode == spv::OpTypeBool) return m.typeInt(32, false);
+  if (d && d->opcode == spv::OpTypeVector) {
+    const Instruction* component = m.definition(d->operand(0));
+    const uint32_t n = d->operand(1);
+    if (component && component->opcode == spv::OpTypeBool) return m.typeVector(m.typeInt(32, false), n);
+  }
+  return type;
+}
+
+// The zero of an integer scalar or vector type (what a stored bool is compared against).
+uint32_t nullOf(spirv::Module& m, uint32_t type) {
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpConstantNull && inst.typeId == type) return inst.resultId;
+  const uint32_t id = m.takeId();
+  m.typesValues.emplace_back(spv::OpConstantNull, type, id);
+  m.invalidateDefinitions();
+  return id;
+}
+
+// std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type,
+// bools (and arrays of them) become the unsigned integers they are stored as (storedAsUint).
+// *matrixStride: the column stride of a matrix (or of an array's matrices), 0 for other types.
+// Scalars take their own width (a double 8 bytes, a dvec3 / dvec4 32-byte aligned); a matrix is
+// stored as an array of its columns, each at least vec4-aligned.
+void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, uint32_t* matrixStride) {
+  *type = storedAsUint(m, *type);
   const Instruction* d = m.definition(*type);
-  *matrix = false;
+  *matrixStride = 0;
+  auto scalarBytes = [&](uint32_t scalar) {
+    const Instruction* s = m.definition(scalar);
+    return s && (s->opcode == spv::OpTypeFloat || s->opcode == spv::OpTypeInt) ? s->operand(0) / 8 : 4u;
+  };
   switch (d ? d->opcode : spv::OpNop) {
-    case spv::OpTypeFloat: case spv::OpTypeInt: case spv::OpTypeBool:
-      *size = 4; *align = 4; return;
+    case spv::OpTypeFloat: case spv::OpTypeInt:
+      *size = *align = d->operand(0) / 8; return;
     case spv::OpTypeVector: {
-      uint32_t n = d->operand(1);
-      *size = 4 * n;
-      *align = n == 2 ? 8 : 16;
+      const uint32_t n = d->operand(1), bytes = scalarBytes(d->operand(0));
+      *size = bytes * n;
+      *align = bytes * (n == 2 ? 2 : 4);
       return;
     }
-    case spv::OpTypeMatrix:
-      *matrix = true;
-      *size = 16 * d->operand(1);
-      *align = 16;
+    case spv::OpTypeMatrix: {
+      const Instruction* column = m.definition(d->operand(0));
+      const uint32_t bytes = column ? scalarBytes(column->operand(0)) : 4;
+      const uint32_t rows = column ? column->operand(1) : 4;
+      *matrixStride = std::max(bytes * (rows == 2 ? 2 : 4), 16u);
+      *size = *matrixStride * d->operand(1);
+      *align = *matrixStride;
       return;
+    }
     case spv::OpTypeArray: {
       uint32_t element = d->operand(0), length = d->operand(1);
       uint32_t elementSize, elementAlign;
-      bool elementMatrix;
-      std140(m, &element, &elementSize, &elementAlign, &elementMatrix);
-      uint32_t stride = (std::max(elementSize, 16u) + 15) & ~15u;
+      std140(m, &element, &elementSize, &elementAlign, matrixStride);
+      uint32_t stride = (std::max({elementSize, elementAlign, 16u}) + 15) & ~15u;
       const Instruction* count = m.definition(length);
       uint32_t id = m.takeId();
       m.typesValues.emplace_back(spv::OpTypeArray, 0, id, std::vector<uint32_t>{element, length});
@@ -142,8 +180,7 @@ void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, b
       m.decorate(id, spv::DecorationArrayStride, {stride});
       *type = id;
       *size = stride * (count ? count->operand(0) : 1);
-      *align = 16;
-      *matrix = elementMatrix;
+      *align = std::max(elementAlign, 16u);
       return;
     }
     default:
@@ -208,16 +245,15 @@ bool separateCollidingLocations(spirv::Module& m) {
 // (the binding is the caller's). `memberTypes` receives each member's type.
 uint32_t defaultUniformBlock(spirv::Module& m, const std::vector<uint32_t>& loose, std::vector<uint32_t>* memberTypes) {
   std::vector<uint32_t> offsets;
-  std::vector<bool> matrices;
+  std::vector<uint32_t> matrixStrides;
   uint32_t offset = 0;
   for (uint32_t var : loose) {
-    uint32_t type = m.pointeeType(m.definition(var)->typeId), size, align;
-    bool matrix;
-    std140(m, &type, &size, &align, &matrix);
+    uint32_t type = m.pointeeType(m.definition(var)->typeId), size, align, matrixStride;
+    std140(m, &type, &size, &align, &matrixStride);
     offset = (offset + align - 1) / align * align;
     memberTypes->push_back(type);
     offsets.push_back(offset);
-    matrices.push_back(matrix);
+    matrixStrides.push_back(matrixStride);
     offset += size;
   }
   uint32_t block = m.newStruct(*memberTypes);
@@ -226,14 +262,38 @@ uint32_t defaultUniformBlock(spirv::Module& m, const std::vector<uint32_t>& loos
   for (uint32_t i = 0; i < loose.size(); ++i) {
     m.decorateMember(block, i, spv::DecorationOffset, {offsets[i]});
     m.setMemberName(block, i, m.name(loose[i]));
-    if (matrices[i]) {
+    if (matrixStrides[i]) {
       m.decorateMember(block, i, spv::DecorationColMajor);
-      m.decorateMember(block, i, spv::DecorationMatrixStride, {16});
+      m.decorateMember(block, i, spv::DecorationMatrixStride, {matrixStrides[i]});
     }
   }
   uint32_t blockVar = m.addGlobalVariable(m.typePointer(spv::StorageClassUniform, block), spv::StorageClassUniform);
   m.decorate(blockVar, spv::DecorationDescriptorSet, {0});
   return blockVar;
+}
+
+// A load of a bool (or bvecN) the default block stores as an unsigned integer (storedAsUint) loads
+// the integer and compares it with 0: the shader gets the bool it read before, true for any nonzero.
+void loadStoredBoolsAsBools(spirv::Module& m, const std::set<uint32_t>& uniformPointers) {
+  for (auto& fn : m.functions)
+    for (auto& block : fn.blocks) {
+      std::vector<Instruction> rewritten;
+      rewritten.reserve(block.instructions.size());
+      for (auto& inst : block.instructions) {
+        const bool fromBlock = inst.opcode == spv::OpLoad && uniformPointers.count(inst.operand(0));
+        const uint32_t stored = fromBlock ? storedAsUint(m, inst.typeId) : inst.typeId;
+        if (stored == inst.typeId) {
+          rewritten.push_back(std::move(inst));
+          continue;
+        }
+        const uint32_t loaded = m.takeId();
+        rewritten.emplace_back(spv::OpLoad, stored, loaded, std::vector<uint32_t>{inst.operand(0)});
+        rewritten.emplace_back(spv::OpINotEqual, inst.typeId, inst.resultId,
+                               std::vector<uint32_t>{loaded, nullOf(m, stored)});
+      }
+      block.instructions = std::move(rewritten);
+    }
+  m.invalidateDefinitions();
 }
 
 // Every use of a loose uniform becomes a chain into the block, made at the top of the function;
@@ -278,11 +338,12 @@ void readLooseUniformsFromBlock(spirv::Module& m, const std::vector<uint32_t>& l
         for (auto& inst : block.instructions)
           if ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) &&
               uniformPointers.count(inst.operand(0)) && !uniformPointers.count(inst.resultId)) {
-            inst.typeId = m.typePointer(spv::StorageClassUniform, m.pointeeType(inst.typeId));
+            inst.typeId = m.typePointer(spv::StorageClassUniform, storedAsUint(m, m.pointeeType(inst.typeId)));
             uniformPointers.insert(inst.resultId);
             grew = true;
           }
   }
+  loadStoredBoolsAsBools(m, uniformPointers);
 }
 
 // Drops the loose variables and everything that names them.

@@ -34,7 +34,8 @@ bool instrumentForCapture(spirv::Module& module, CaptureLayout* layout, std::vec
 // OpenGL SPIR-V (ARB_gl_spirv) cannot run on Vulkan as is: its loose uniforms become members of one
 // std140 uniform block (set 0, binding `blockBinding` — one per stage of a pipeline, since each stage
 // has its own default block —, members in declaration order, so an original and its transpiled
-// copy share the layout of their common prefix), gl_VertexID /
+// copy share the layout of their common prefix; a `uniform bool` stored as a uint whose loads
+// compare it with 0, since SPIR-V has no bool in memory), gl_VertexID /
 // gl_InstanceID become VertexIndex / InstanceIndex, and uniform Locations are dropped. Returns true
 // when the module needed (and got) the conversion.
 bool convertOpenGLForVulkan(spirv::Module& module, uint32_t blockBinding, std::string* error);

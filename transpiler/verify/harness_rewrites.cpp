@@ -26,6 +26,20 @@ void dropFromInterface(Module& m, uint32_t variable) {
   }
 }
 
+// The resource a variable holds: the type under its pointer and any descriptor arrays.
+const Instruction* resourceType(const Module& m, const Instruction& variable) {
+  const Instruction* def = m.definition(m.pointeeType(variable.typeId));
+  while (def && (def->opcode == spv::OpTypeArray || def->opcode == spv::OpTypeRuntimeArray)) def = m.definition(def->operand(0));
+  return def;
+}
+
+// Adds shiftOf[variable] to the Binding of each variable there.
+void shiftBindings(Module& m, const std::map<uint32_t, uint32_t>& shiftOf) {
+  for (auto& inst : m.annotations)
+    if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationBinding))
+      if (auto it = shiftOf.find(inst.operand(0)); it != shiftOf.end()) inst.operands[2] += it->second;
+}
+
 }  // namespace
 
 VkShaderStageFlagBits toVk(spv::ExecutionModel model) {
@@ -258,9 +272,7 @@ void separateRegisterClasses(Module& m) {
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable) continue;
     auto storage = static_cast<spv::StorageClass>(inst.operand(0));
-    uint32_t type = m.pointeeType(inst.typeId);
-    const Instruction* def = m.definition(type);
-    while (def && (def->opcode == spv::OpTypeArray || def->opcode == spv::OpTypeRuntimeArray)) def = m.definition(def->operand(0));
+    const Instruction* def = resourceType(m, inst);
     if (!def) continue;
     if (storage == spv::StorageClassUniform || storage == spv::StorageClassStorageBuffer) {
       bool buffer = storage == spv::StorageClassStorageBuffer || m.hasDecoration(def->resultId, spv::DecorationBufferBlock);
@@ -275,9 +287,52 @@ void separateRegisterClasses(Module& m) {
       else if (def->opcode == spv::OpTypeSampledImage) shiftOf[inst.resultId] = kTextureShift;
     }
   }
-  for (auto& inst : m.annotations)
-    if (inst.opcode == spv::OpDecorate && inst.operand(1) == uint32_t(spv::DecorationBinding))
-      if (auto it = shiftOf.find(inst.operand(0)); it != shiftOf.end()) inst.operands[2] += it->second;
+  shiftBindings(m, shiftOf);
+}
+
+// OpenGL's binding namespaces, as the shift of each range (uniform blocks 0: unmoved). The default
+// uniform block (16 + the stage's index) and the eye block the conversion added after the highest
+// binding are uniform blocks and stay where they were put.
+enum OpenGLBindingClass : uint32_t {
+  kUniformBlock = 0, kTextureUnit = 256, kImage = 512, kStorageBlock = 768, kAtomicCounter = 1024, kNotBound = ~0u
+};
+
+OpenGLBindingClass openGLBindingClass(const Module& m, const Instruction& variable) {
+  auto storage = static_cast<spv::StorageClass>(variable.operand(0));
+  const Instruction* def = resourceType(m, variable);
+  if (!def) return kNotBound;
+  if (storage == spv::StorageClassStorageBuffer ||
+      (storage == spv::StorageClassUniform && m.hasDecoration(def->resultId, spv::DecorationBufferBlock)))
+    return kStorageBlock;
+  if (storage == spv::StorageClassUniform) return kUniformBlock;
+  if (storage == spv::StorageClassAtomicCounter) return kAtomicCounter;
+  if (storage != spv::StorageClassUniformConstant) return kNotBound;
+  if (def->opcode == spv::OpTypeImage) return def->operand(5) == 2 ? kImage : kTextureUnit;
+  if (def->opcode == spv::OpTypeSampledImage || def->opcode == spv::OpTypeSampler) return kTextureUnit;
+  return kNotBound;
+}
+
+// See stereo_verify.h.
+void separateOpenGLBindingClasses(Module& m) {
+  std::map<uint32_t, uint32_t> shiftOf;
+  for (const auto& inst : m.typesValues)
+    if (inst.opcode == spv::OpVariable)
+      if (OpenGLBindingClass c = openGLBindingClass(m, inst); c != kNotBound && c != kUniformBlock) shiftOf[inst.resultId] = c;
+  shiftBindings(m, shiftOf);
+}
+
+// See harness_rewrites.h.
+bool sharesBindingAcrossOpenGLClasses(const Module& m) {
+  std::map<std::pair<uint32_t, uint32_t>, OpenGLBindingClass> classAt;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable) continue;
+    const OpenGLBindingClass c = openGLBindingClass(m, inst);
+    auto binding = m.decorationValue(inst.resultId, spv::DecorationBinding);
+    if (c == kNotBound || !binding) continue;
+    const std::pair<uint32_t, uint32_t> at{m.decorationValue(inst.resultId, spv::DecorationDescriptorSet).value_or(0), *binding};
+    if (auto [it, added] = classAt.emplace(at, c); !added && it->second != c) return true;
+  }
+  return false;
 }
 
 }  // namespace stereoshift::harness

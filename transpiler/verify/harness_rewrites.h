@@ -2,8 +2,9 @@
 // device, original and transpiled alike, so that both run and are compared on equal terms:
 // push constants over the device limit as a uniform buffer, double vertex inputs fed as floats,
 // the same Invariant outputs in both, the view index bound per view (multiview), the eye route
-// made a captured output (instanced), D3D register classes given separate binding ranges; and the
-// device features a module needs. None of it is part of a conversion's output.
+// made a captured output (instanced), D3D register classes and OpenGL binding classes given
+// separate binding ranges; and the device features a module needs. None of it is part of a
+// conversion's output.
 #pragma once
 
 #include "transpiler/verify/stereo_verify.h"
@@ -13,6 +14,11 @@
 namespace stereoshift::harness {
 
 VkShaderStageFlagBits toVk(spv::ExecutionModel model);
+
+// Whether two OpenGL binding classes (texture units, uniform blocks, storage blocks, images, atomic
+// counters) use one (set, binding): legal only in OpenGL, where each class numbers its own, so GLSL
+// that glslang also accepts with Vulkan rules is OpenGL GLSL after all (verify_stages.cpp).
+bool sharesBindingAcrossOpenGLClasses(const spirv::Module& m);
 
 // A push-constant block larger than the device allows becomes a uniform buffer at (set, 0).
 void pushConstantsToUniformBuffer(spirv::Module& m, uint32_t set);

@@ -34,6 +34,7 @@ nlohmann::json VerifyResult::json() const {
           {"mode", mode == EyeSelect::ViewIndex ? "multiview" : mode == EyeSelect::InstanceIndex ? "instanced" : "two-pass"},
           {"vertices", vertices},
           {"max_stereo_error_ulps", maxStereoUlps},
+          {"bound_basis", boundBasis},
           {"cutoff_vertices", cutoffVertices},
           {"other_outputs_unchanged", otherOutputsUnchanged},
           {"halo_components_changed", haloComponentsChanged},
@@ -118,7 +119,7 @@ class StereoCheck {
       auto a = Module::parse(s.original, &error);
       auto b = Module::parse(s.transpiled, &error);
       if (!a || !b) return stop("unparsable SPIR-V: " + error);
-      if (s.d3dRegisters) {
+      if (s.bindings == BindingClasses::D3dRegisters) {
         separateRegisterClasses(*a);
         separateRegisterClasses(*b);
       }
@@ -126,6 +127,10 @@ class StereoCheck {
       const uint32_t blockBinding = 16 + static_cast<uint32_t>(originals_.size());
       if (!convertOpenGLForVulkan(*a, blockBinding, &error) && !error.empty()) return stop(error);
       convertOpenGLForVulkan(*b, blockBinding, &error);
+      if (s.bindings == BindingClasses::OpenGL) {  // after the default block joined the uniform blocks
+        separateOpenGLBindingClasses(*a);
+        separateOpenGLBindingClasses(*b);
+      }
       matchInvariance(*a, *b);
       feedDoubleInputsAsFloats(*a);
       feedDoubleInputsAsFloats(*b);
@@ -546,7 +551,20 @@ class StereoCheck {
   }
 
   // The bounds, and the verdict.
+  // The bound follows from the precision of the injected shift: three fp32 roundings (2.5 ULP) or
+  // the compensated form (1 ULP). The shift always runs on the fp32 x and w the shader wrote, so a
+  // shader that computes its position in double (converted at the end) is held to the same bound:
+  // its fp64 arithmetic happens before the shift, the same in both runs (the eyeSign 0 run checks
+  // that bit for bit), and the reference is built from the fp32 x and w it produced.
+  std::string boundBasis() const {
+    std::string basis = settings_.maxUlps <= 1.0 ? "compensated fp32 shift" : "fp32 shift, three roundings";
+    if (transpiled_.back().hasCapability(spv::CapabilityFloat64))
+      basis += "; the shader computes in fp64 and writes an fp32 position, the shift is fp32";
+    return basis;
+  }
+
   void judge() {
+    result_.boundBasis = boundBasis();
     if (result_.maxStereoUlps > settings_.maxUlps)
       result_.problems.push_back("stereo error " + std::to_string(result_.maxStereoUlps) + " ULP exceeds the bound of " +
                                  std::to_string(settings_.maxUlps));

@@ -14,16 +14,21 @@
 
 namespace stereoshift::harness {
 
+// How a stage's bindings number its resources. Vulkan (and HLSL with [[vk::binding]]): one binding
+// space for every kind. D3D registers: b, t, s and u are separate namespaces that glslang maps onto
+// one Vulkan binding space (cbuffer b0 and Texture2D t0 both become binding 0). OpenGL GLSL / ESSL:
+// texture units, uniform-block, storage-block, image and atomic-counter bindings are separate
+// namespaces too (`layout(binding = 0)` on a sampler2D and on a uniform block is legal). The harness
+// moves each class of the last two to its own range before binding.
+enum class BindingClasses { Shared, D3dRegisters, OpenGL };
+
 struct StageModules {
   VkShaderStageFlagBits stage = VK_SHADER_STAGE_VERTEX_BIT;
   std::vector<uint32_t> original;    // SPIR-V of the mono shader
   std::vector<uint32_t> transpiled;  // SPIR-V after stereoshift's passes
   std::string entry = "main";
   std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
-  // HLSL with D3D registers (no [[vk::binding]]): b, t, s and u are separate namespaces that glslang
-  // maps onto one Vulkan binding space (cbuffer b0 and Texture2D t0 both become binding 0); the
-  // harness moves each class to its own range before binding.
-  bool d3dRegisters = false;
+  BindingClasses bindings = BindingClasses::Shared;
 };
 
 struct VerifySettings {
@@ -59,6 +64,9 @@ struct VerifyResult {
   uint32_t vertices = 0;
   bool monoIdentical = false;   // eyeSign = 0: every output bit for bit equal to the original
   double maxStereoUlps = 0;     // largest |x' - x_ref| in ULPs of max(|x|, |S(w - C)|)
+  // Which bound maxStereoUlps was held to and why (the precision the shift is computed in, and the
+  // precision the shader computes its position in; docs/stereo-math.md, section 6).
+  std::string boundBasis;
   uint32_t cutoffVertices = 0;  // vertices left unshifted by the cutoff
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
   uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
@@ -82,6 +90,13 @@ struct VerifyResult {
 // [[vk::binding]]. Apply it to an original and its transpiled copy alike: the injected cbuffer
 // (a b register) stays where the conversion put it.
 void separateRegisterClasses(spirv::Module& module);
+
+// OpenGL's binding namespaces, each moved to its own range of Vulkan bindings, for OpenGL GLSL /
+// ESSL (not Vulkan GLSL): uniform blocks stay where they are (the harness's default uniform block
+// and the injected eye block among them), texture units (samplers, textures) move by 256, images
+// by 512, storage blocks by 768, atomic counters by 1024. Apply it to an original and its
+// transpiled copy alike, after convertOpenGLForVulkan.
+void separateOpenGLBindingClasses(spirv::Module& module);
 
 // Compiles the pre-rasterization stages of `sources` (fragment / compute are dropped) both as the
 // original SPIR-V and through stereoshift's passes (only the last stage shifted), in pipeline order.

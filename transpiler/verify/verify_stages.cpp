@@ -1,16 +1,20 @@
 // verify's compile step: the pre-rasterization stages of the given sources, in pipeline order,
 // each compiled to SPIR-V twice — the original as the front end makes it, and through
 // stereoshift's passes (only the last stage shifted) — with what the comparison must know about
-// each: which outputs may differ between the eyes, and whether its bindings are D3D registers.
+// each: which outputs may differ between the eyes, and whether its bindings are per-class
+// namespaces (D3D registers, OpenGL's binding points).
 #include "transpiler/verify/stereo_verify.h"
 
 #include "transpiler/verify/harness_rewrites.h"
 #include "passes/ir/module.h"
 #include "passes/pass.h"
+#include "transpiler/source/lexer.h"
 #include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
+#include <string_view>
 
 namespace stereoshift::harness {
 
@@ -27,10 +31,60 @@ std::vector<std::string> outputsExpectedToDiffer(const TranspileResult& result) 
   return outputs;
 }
 
-// Whether the stage's bindings are D3D registers (b, t, s, u in separate namespaces), which the
-// harness moves apart before binding: the front end's rule (HLSL not written for Vulkan with
-// [[vk::binding]]; SourceInfo::vulkanBindings).
-bool bindsByD3DRegisters(const TranspileResult& result) { return perClassRegisters(result.source); }
+// Whether the stage's bindings are per-class namespaces, which the harness moves apart before
+// binding: D3D registers (b, t, s, u) by the front end's rule (HLSL not written for Vulkan with
+// [[vk::binding]]; SourceInfo::vulkanBindings), OpenGL's (texture units, uniform blocks, storage
+// blocks, images, atomic counters) for GLSL not written for Vulkan.
+BindingClasses bindingClassesOf(const TranspileResult& result) {
+  if (perClassRegisters(result.source)) return BindingClasses::D3dRegisters;
+  if (result.source.language == SourceLanguage::Glsl && !result.source.vulkan) return BindingClasses::OpenGL;
+  return BindingClasses::Shared;
+}
+
+// Whether GLSL text says it was written for Vulkan: a `set`, `push_constant`, `constant_id` or
+// `input_attachment_index` layout qualifier, or gl_VertexIndex / gl_InstanceIndex (glslang's OpenGL
+// rules accept `set` too, so its compile does not tell).
+bool writtenForVulkan(std::string_view text) {
+  bool afterLayout = false;
+  int layoutDepth = 0;
+  for (const source::Token& t : source::lex(text)) {
+    if (t.kind == source::TokenKind::Comment || t.directive != source::DirectiveKind::None) continue;
+    const std::string_view word = source::tokenText(text, t);
+    if (t.kind == source::TokenKind::Identifier) {
+      if (word == "gl_VertexIndex" || word == "gl_InstanceIndex") return true;
+      if (layoutDepth > 0 && (word == "set" || word == "push_constant" || word == "constant_id" ||
+                              word == "input_attachment_index"))
+        return true;
+      afterLayout = word == "layout";
+      continue;
+    }
+    if (word == "(" && (afterLayout || layoutDepth > 0)) ++layoutDepth;
+    else if (word == ")" && layoutDepth > 0) --layoutDepth;
+    afterLayout = false;
+  }
+  return false;
+}
+
+// GLSL that glslang accepts with Vulkan rules is taken as Vulkan GLSL even where OpenGL rules accept
+// it too. Two OpenGL binding classes at one binding (a sampler and a uniform block both at 0) say it
+// is OpenGL GLSL, since Vulkan cannot bind that: *result becomes the conversion with OpenGL rules
+// where those accept it. GLSL written for Vulkan (writtenForVulkan) keeps its clash, which the
+// harness then reports. Unless --target-env chose the rules.
+void preferOpenGLRulesForOpenGLBindings(const SourceFile& file, const TranspileOptions& o, TranspileResult* result,
+                                        std::optional<spirv::Module>* original) {
+  if (o.targetEnv || result->source.language != SourceLanguage::Glsl || !result->source.vulkan ||
+      !sharesBindingAcrossOpenGLClasses(**original) || writtenForVulkan(file.contents))
+    return;
+  TranspileOptions gl = o;
+  gl.targetEnv = TargetEnv::OpenGL45;
+  TranspileResult asOpenGL = transpile(file, gl);
+  if (!asOpenGL.ok) return;
+  std::string error;
+  auto parsed = spirv::Module::parse(asOpenGL.originalSpirv, &error);
+  if (!parsed) return;
+  *result = std::move(asOpenGL);
+  *original = std::move(parsed);
+}
 
 }  // namespace
 
@@ -66,23 +120,31 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     TranspileOptions o = options;
     o.target = TargetLanguage::Spirv;
     o.forceReemit = true;
+    // The harness repairs what glslang's module for OpenGL GLSL gets wrong (a loose `uniform bool`)
+    // in its own copies, original and transpiled alike (convertOpenGLForVulkan).
+    o.spirvForHarness = true;
     o.shiftThisStage = i + 1 == ordered.size();
     TranspileResult result = transpile(*ordered[i], o);
-    diags.append(result.diagnostics);
-    if (!result.ok) return false;
-    *classification = result.record.classification ? toString(*result.record.classification) : "";
-    std::vector<uint32_t> words(result.output.size() / 4);
-    std::memcpy(words.data(), result.output.data(), words.size() * 4);
+    if (!result.ok) {
+      diags.append(result.diagnostics);
+      return false;
+    }
     std::string error;
     auto original = spirv::Module::parse(result.originalSpirv, &error);
     if (!original) {
+      diags.append(result.diagnostics);
       diags.error(ordered[i]->path, error);
       return false;
     }
+    preferOpenGLRulesForOpenGLBindings(*ordered[i], o, &result, &original);
+    diags.append(result.diagnostics);
+    *classification = result.record.classification ? toString(*result.record.classification) : "";
+    std::vector<uint32_t> words(result.output.size() / 4);
+    std::memcpy(words.data(), result.output.data(), words.size() * 4);
     std::vector<std::string> halo = outputsExpectedToDiffer(result);
-    const bool d3dRegisters = bindsByD3DRegisters(result);
+    const BindingClasses bindings = bindingClassesOf(result);
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
-                       original->entryPointName(), std::move(halo), d3dRegisters});
+                       original->entryPointName(), std::move(halo), bindings});
   }
   return true;
 }
