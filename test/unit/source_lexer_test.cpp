@@ -178,6 +178,16 @@ TEST(SourceLexer, IncludeHeaderNameIsOneString) {
                                       "@id:include", "@str:\"local.h\"", "id:x", "p:<", "id:y", "p:>", "id:z"}));
 }
 
+TEST(SourceLexer, IncludeWithoutAHeaderLeavesLaterAnglesAlone) {
+  // `#include` alone on its line (a half-edited file, a fuzzer's mutation): the `<` of a later loop
+  // is an operator. It used to be read as a header name ending at the directive's old line end,
+  // before its own start, and the lexer went back and read the same text for ever.
+  EXPECT_EQ(shapes("#include\nfor (i = 0; i < 4; ++i) x;"),
+            (std::vector<std::string>{"#include:#include", "@id:include", "id:for", "p:(", "id:i", "p:=", "num:0",
+                                      "p:;", "id:i", "p:<", "num:4", "p:;", "p:+", "p:+", "id:i", "p:)", "id:x",
+                                      "p:;"}));
+}
+
 TEST(SourceLexer, IfNestingDepth) {
   std::string text =
       "a\n#if A\nb\n#ifdef B\nc\n#elif C\nd\n#else\ne\n#endif\nf\n#endif\ng\n";

@@ -324,6 +324,7 @@ bool Lexer::lex(Token& token) {
   }
   if (inDirective && i >= directiveEnd_) {  // the directive's line is read: back to the text around it
     directive_ = DirectiveKind::None;
+    expectHeaderName_ = false;  // `#include` with no header on its line: a later `<` is an operator
     pos_ = std::max(i, directiveEnd_);
     return lex(token);
   }
@@ -353,7 +354,7 @@ bool Lexer::lex(Token& token) {
   } else if (c == '"' || c == '\'') {
     token.kind = TokenKind::String;
     token.end = quotedEnd(i, c, &closed, &spliced);
-  } else if (c == '<' && expectHeaderName_) {
+  } else if (c == '<' && expectHeaderName_ && inDirective) {
     size_t j = i + 1;
     while (j < directiveEnd_ && text_[j] != '>') ++j;
     closed = j < directiveEnd_;
