@@ -1,5 +1,6 @@
 #include "cli/verify_command.h"
 
+#include "cli/diagnostic_output.h"
 #include "transpiler/d3dasm/asm_route.h"
 #include "transpiler/d3dasm/asm_verify.h"
 #include "transpiler/verify/stereo_verify.h"
@@ -17,9 +18,7 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
   const std::string& name = input.path;
   TranspileResult converted = convertAssemblyStage(input, options);
   if (!converted.ok) {
-    std::cerr << converted.diagnostics.format();
-    int errors = std::max(1, converted.diagnostics.errorCount());
-    std::cerr << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
+    printErrorSummary(std::max(1, printDiagnostics(converted.diagnostics, std::cerr)));
     return 1;
   }
   const std::string model = converted.record.assembly ? converted.record.assembly->shaderModel : "";
@@ -34,8 +33,9 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
     return 0;
   }
   d3dasm::AsmVerifyOptions settings;
-  settings.cutoff = options.cutoff != CutoffMode::None;
-  settings.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  const d3dasm::AsmShiftOptions shift = assemblyShiftOptions(options);
+  settings.cutoff = shift.cutoff;
+  settings.cutoffEpsilon = shift.cutoffEpsilon;
   d3dasm::AsmVerifyResult r = d3dasm::verifyAssemblyConversion(input.contents, converted.output, settings);
   if (!r.ran) {
     if (verify.json)

@@ -149,23 +149,19 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < stages.size(); ++i) {
     auto plan = std::make_unique<StagePlan>();
     plan->input = &stages[i];
-    if (isD3DAssemblyInput(stages[i])) {
-      // Converted on its own (convertAssemblyStage); its stage is its shader model's.
+    const bool assembly = isD3DAssemblyInput(stages[i]);
+    if (assembly) {
+      // Converted on its own (convertAssemblyStage, no front end); its stage is its shader model's.
       plan->stage.emplace();
       plan->stage->stage = assemblyStage(stages[i]);
-      if (int rank = shiftRank(plan->stage->stage); rank > lastRank) {
-        last = static_cast<int>(i);
-        lastRank = rank;
-      }
-      plans.push_back(std::move(plan));
-      continue;
+    } else {
+      plan->stage = decideInputStage(stages[i], options);
     }
-    plan->stage = decideInputStage(stages[i], options);
     if (int rank = shiftRank(plan->stage->stage); rank > lastRank) {
       last = static_cast<int>(i);
       lastRank = rank;
     }
-    if (goesThroughFrontEnd(stages[i])) {
+    if (!assembly && goesThroughFrontEnd(stages[i])) {
       runFrontEnd(*plan, options);
       parseEarly(*plan);
     }

@@ -1,7 +1,5 @@
 #include "transpiler/d3dasm/asm_route.h"
 
-#include "transpiler/d3dasm/asm_shift.h"
-
 #include <chrono>
 
 namespace stereoshift {
@@ -13,6 +11,13 @@ std::optional<Stage> assemblyStage(const SourceFile& input) {
   d3dasm::AsmError error;
   if (!d3dasm::parseAssembly(input.contents, &text, &error)) return std::nullopt;
   return d3dasm::stageOfShaderModel(text.model);
+}
+
+d3dasm::AsmShiftOptions assemblyShiftOptions(const TranspileOptions& options) {
+  d3dasm::AsmShiftOptions shift;
+  shift.cutoff = options.cutoff != CutoffMode::None;
+  shift.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  return shift;
 }
 
 namespace {
@@ -42,23 +47,17 @@ TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOpt
     result.report = renderStageReport(record);
     return result;
   };
-  d3dasm::AsmShiftOptions shiftOptions;
-  shiftOptions.cutoff = options.cutoff != CutoffMode::None;
-  shiftOptions.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
-  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, shiftOptions);
+  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, assemblyShiftOptions(options));
   if (!shifted.ok)
     return fail(static_cast<int>(shifted.error.line), static_cast<int>(shifted.error.column), shifted.error.message);
-  d3dasm::AsmText text;
-  d3dasm::AsmError ignored;
-  d3dasm::parseAssembly(input.contents, &text, &ignored);
-  std::optional<Stage> stage = d3dasm::stageOfShaderModel(text.model);
+  const std::optional<Stage> stage = shifted.stage;
   record.stage = stage;
-  record.stageReason = "shader model line " + text.model.text;
+  record.stageReason = "shader model line " + shifted.model;
   StageRecord::Assembly assembly;
   assembly.shaderModel = shifted.model;
   if (options.stage && stage && *options.stage != *stage)
-    return fail(static_cast<int>(text.lines[text.modelLine].number), 1,
-                "-S " + std::string(stageName(*options.stage)) + " contradicts the shader model line " + text.model.text);
+    return fail(static_cast<int>(shifted.modelLine), 1,
+                "-S " + std::string(stageName(*options.stage)) + " contradicts the shader model line " + shifted.model);
   if (std::string why = unsupportedOption(options); !why.empty()) return fail(0, 0, why);
   record.emit.route = "d3d-asm-splice";
   if (shifted.alreadyStereo)

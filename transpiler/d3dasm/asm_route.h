@@ -5,6 +5,7 @@
 // value-flow analysis to find it (asm_shift.h). The output is the dump's own format.
 #pragma once
 
+#include "transpiler/d3dasm/asm_shift.h"
 #include "transpiler/stereoshift.h"
 
 namespace stereoshift {
@@ -13,6 +14,9 @@ namespace stereoshift {
 bool isD3DAssemblyInput(const SourceFile& input);
 // Its stage, from its shader-model line (nullopt: not assembly, or a model without a stage).
 std::optional<Stage> assemblyStage(const SourceFile& input);
+
+// The cutoff the options ask for, as the assembly shift writes it (and its check runs it).
+d3dasm::AsmShiftOptions assemblyShiftOptions(const TranspileOptions& options);
 
 TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOptions& options);
 

@@ -194,13 +194,15 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
   AsmText text;
   if (!parseAssembly(source, &text, &result.error)) return result;
   result.model = text.model.text;
+  result.stage = stageOfShaderModel(text.model);
+  result.modelLine = text.lines[text.modelLine].number;
   auto unchanged = [&](std::string why) {
     result.ok = true;
     result.output = source;
     result.whyUnchanged = std::move(why);
     return result;
   };
-  std::optional<Stage> stage = stageOfShaderModel(text.model);
+  const std::optional<Stage> stage = result.stage;
   if (stage != Stage::Vertex && stage != Stage::TessEvaluation && stage != Stage::Geometry)
     return unchanged(text.model.text + ": only vertex, domain and geometry shaders write the clip position");
   // A D3D9 vertex shader copied as it is would be a mono drop-in that looks converted: an error.

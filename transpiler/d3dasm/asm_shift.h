@@ -33,6 +33,7 @@
 
 #include "transpiler/d3dasm/asm_text.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,8 @@ struct AsmShiftResult {
   bool alreadyStereo = false;   // !shifted because an instruction reads t125 (a stereo fix already)
   std::string output;
   std::string model;            // "vs_5_0"
+  std::optional<Stage> stage;   // the model's stage
+  size_t modelLine = 0;         // the line number of the shader-model line
   std::string positionRegister; // "o0"
   std::string positionTemp, scratchTemp;  // "r6", "r7"
   int redirectedWrites = 0;     // instructions that wrote the position
