@@ -214,6 +214,7 @@ std::optional<std::string> finishEyeOptions(CliOptions& o) {
   o.t.eyeFrom3DMigoto = o.eyeSource == "3dmigoto";
   if (o.t.eyeFrom3DMigoto) {
     paramsSource = "uniform-block";
+    o.t.sourceTextFixes = true;
     if (o.t.eye.blockName == "StereoParams") o.t.eye.blockName = "stereoshift_StereoParams";
   }
   auto src = sources.find(paramsSource);

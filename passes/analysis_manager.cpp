@@ -82,7 +82,10 @@ void dropUnreachableFunctions(spirv::Module& module) {
   module.invalidateDefinitions();
 }
 
-std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module) {
+// `accessChains`: constant-index access chains into function variables (a vector's components,
+// as decompiled HLSL writes its registers: `r0.xy = ...`) turned into loads, inserts and stores
+// first, so those variables become SSA values too (the register copy of registerSsaCopy()).
+std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module, bool accessChains = false) {
   ScopedCrashPhase phase(kFoldedCopyPhase);
   // What the analyses need to see through, and no more (SPIRV-Tools' whole performance recipe
   // cost a fifth of a tree conversion; this one about a ninth): every call inlined, private and
@@ -101,10 +104,13 @@ std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module) {
   auto reduced = spirv::Module::parse(inlined, &error);
   if (!reduced) return std::nullopt;
   dropUnreachableFunctions(*reduced);
-  if (!runOptimizer({"--private-to-local", "--scalar-replacement=100", "--eliminate-local-single-block",
-                     "--eliminate-local-single-store", "--eliminate-local-multi-store", "--ccp",
-                     "--simplify-instructions", "--redundancy-elimination"},
-                    reduced->encode(), &folded))
+  std::vector<std::string> flags = {"--private-to-local", "--scalar-replacement=100"};
+  if (accessChains) flags.push_back("--convert-local-access-chains");
+  for (const char* flag : {"--eliminate-local-single-block", "--eliminate-local-single-store",
+                           "--eliminate-local-multi-store", "--ccp", "--simplify-instructions",
+                           "--redundancy-elimination"})
+    flags.push_back(flag);
+  if (!runOptimizer(flags, reduced->encode(), &folded))
     return std::nullopt;
   return spirv::Module::parse(folded, &error);
 }
@@ -117,6 +123,14 @@ const spirv::Module* AnalysisManager::foldedCopy() {
     folded_ = makeFoldedCopy(module_);
   }
   return folded_ ? &*folded_ : nullptr;
+}
+
+const spirv::Module* AnalysisManager::registerSsaCopy() {
+  if (!registerTried_) {
+    registerTried_ = true;
+    registers_ = makeFoldedCopy(module_, true);
+  }
+  return registers_ ? &*registers_ : nullptr;
 }
 
 analysis::ViewVectorFlow* AnalysisManager::foldedViewVectorFlow() {
@@ -157,6 +171,8 @@ void AnalysisManager::invalidate(AnalysisSet kept) {
     foldedFlow_.reset();  // built on the copy
     folded_.reset();
     foldTried_ = false;
+    registers_.reset();
+    registerTried_ = false;
   }
   if (!(kept & kValueFlowAnalysis)) valueFlow_.reset();
   if (!(kept & kValueNumberAnalysis)) valueNumbers_.reset();
@@ -166,7 +182,7 @@ void AnalysisManager::invalidate(AnalysisSet kept) {
 AnalysisSet AnalysisManager::cached() const {
   AnalysisSet set = kNoAnalyses;
   if (clipPositions_) set |= kClipPositionAnalysis;
-  if (foldTried_) set |= kFoldedCopyAnalysis;
+  if (foldTried_ || registerTried_) set |= kFoldedCopyAnalysis;
   if (valueFlow_) set |= kValueFlowAnalysis;
   if (valueNumbers_) set |= kValueNumberAnalysis;
   if (!stageInputs_.empty()) set |= kStageInputAnalysis;

@@ -53,6 +53,11 @@ class AnalysisManager {
   // questions, never emitted; global ids (variables) are the module's own. Null when the optimizer
   // cannot process the module.
   const spirv::Module* foldedCopy();
+  // The folded copy with the components of function variables in SSA form as well (constant-index
+  // access chains converted first): each write of a decompiled shader's register components
+  // (`r1.x = ...`) its own value, whatever the register held before. The same copy otherwise;
+  // part of the folded-copy analysis.
+  const spirv::Module* registerSsaCopy();
   // Value flow of the module (analysis/value_flow.h).
   const analysis::ValueFlow& valueFlow();
   // Value numbers of the module (analysis/value_numbers.h).
@@ -83,6 +88,8 @@ class AnalysisManager {
   std::optional<ClipPositionAnalysis> clipPositions_;
   std::optional<spirv::Module> folded_;
   bool foldTried_ = false;
+  std::optional<spirv::Module> registers_;
+  bool registerTried_ = false;
   std::unique_ptr<analysis::ViewVectorFlow> foldedFlow_;
   std::unique_ptr<analysis::ValueFlow> valueFlow_;
   std::unique_ptr<analysis::ValueNumbers> valueNumbers_;

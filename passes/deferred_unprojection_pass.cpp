@@ -43,6 +43,7 @@
 // application sets it to P00) and the report says so, except for an interpolated ray: without a
 // projection in the shader it cannot be told from a colour or normal scaled by a texel, and is
 // reported, not fixed.
+#include "passes/deferred_unprojection/row_products.h"
 #include "passes/deferred_unprojection/unprojection.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/ir/walker.h"
@@ -266,6 +267,50 @@ void decideProducts(const std::vector<Product>& products, const std::set<uint32_
   }
 }
 
+// The cbuffer-row form (row_products.h) of an HLSL pixel shader: with PassOptions::sourceTextFixes
+// each one found becomes a text fix for the HLSL splice (the module is not changed: the register
+// copy it is found on is not the module); otherwise, or where the text cannot carry it, it is
+// reported with the reason. True when a text fix was recorded.
+bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
+  if (ctx.source.language != SourceLanguage::Hlsl || !hasCbufferRows(ctx.module)) return false;
+  const spirv::Module* registers = ctx.analyses.registerSsaCopy();
+  if (!registers) return false;
+  // A dump that reads 3Dmigoto's StereoParams was fixed by hand (or by an earlier run): a position
+  // rebuild in it may be per eye already, and fixing it again would subtract the parallax twice.
+  bool readsStereoParams = false;
+  for (const auto& fn : ctx.module.functions)
+    for (const auto& block : fn.blocks)
+      for (const auto& inst : block.instructions)
+        readsStereoParams |= inst.opcode == spv::OpLoad && ctx.module.name(ctx.module.rootVariable(inst.operand(0))) == "StereoParams";
+  bool recorded = false;
+  for (const RowProduct& p : findRowProducts(*registers, true, ctx.file)) {
+    ViewDependentUse entry;
+    entry.construct = "matrix in cbuffer rows * vector";
+    entry.form = "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
+    entry.matrix = p.rows;
+    entry.depth = joined(p.z.textures);
+    std::set<std::string> ndc = p.x.inputs;
+    ndc.insert(p.y.inputs.begin(), p.y.inputs.end());
+    entry.ndc = joined(ndc);
+    if (p.fix.afterLine) entry.line = static_cast<int>(p.fix.afterLine);
+    if (!ctx.options.sourceTextFixes || !p.reason.empty() || readsStereoParams) {
+      entry.reason = readsStereoParams ? std::string("not fixed: the shader already reads 3Dmigoto's StereoParams (fixed by hand?)")
+                     : !ctx.options.sourceTextFixes
+                         ? std::string("not fixed: this form is fixed in the shader's own HLSL text, with --eye-source "
+                                       "3dmigoto (the dump's StereoParams)")
+                         : "not fixed: " + p.reason;
+      facts.leftAlone.push_back(entry);
+      continue;
+    }
+    entry.fix = "q - (" + p.fix.column[0] + ", " + p.fix.column[1] + ", " + p.fix.column[2] + ", " + p.fix.column[3] +
+                ") * s.x*(1 - s.y*q.w) after line " + std::to_string(p.fix.afterLine) + ", before the divide";
+    facts.fixed.push_back(entry);
+    facts.textFixes.push_back(p.fix);
+    recorded = true;
+  }
+  return recorded;
+}
+
 class DeferredUnprojectionPass final : public Pass {
  public:
   const char* name() const override { return "deferred-unprojection"; }
@@ -311,7 +356,9 @@ class DeferredUnprojectionPass final : public Pass {
     reportReflections(ctx, found.leftAlone);
     facts.fixed = found.fixed;
     facts.leftAlone = found.leftAlone;
-    if (found.fixed.empty()) return PassResult::Unchanged;
+    // Text fixes change the stage's output, not the module.
+    bool textFixes = decideRowProducts(ctx, facts);
+    if (found.fixed.empty()) return textFixes ? PassResult::Changed : PassResult::Unchanged;
 
     if (!ensureEyeParams(ctx, found.needsInjectedScale ? kProjScaleX + 1 : kConvergence + 1)) return PassResult::Failed;
     if (found.needsInjectedScale)

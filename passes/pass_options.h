@@ -73,6 +73,10 @@ struct PassOptions {
   bool perEyeSpecular = false;        // also where it only feeds lighting (specular looks fine mono)
   std::string cameraUniform;          // --camera-uniform: this uniform (or block member) is the camera position
   bool deferredUnprojection = true;   // stereo-correct `InvM * vec4(ndc, depth, 1)` in deferred passes
+  // Fixes only the source text can carry (decompiled HLSL's cbuffer-row unprojections, placed by
+  // line) are recorded for the HLSL splice (RunRecord::deferred.textFixes) instead of reported as
+  // left alone: set with --eye-source 3dmigoto, whose output is the dump's own text.
+  bool sourceTextFixes = false;
   bool hudAtDepth = false;            // place proven-2D shaders at the eye depth `hudDepth`
   std::vector<std::string> onlyPasses;  // --pass: run only these (by name()); empty: all
   bool validateEach = false;

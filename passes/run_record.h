@@ -5,6 +5,7 @@
 // back: it is an output, not an interface between the parts of the tool.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -41,7 +42,7 @@ struct PassStatus {
 struct ViewDependentUse {
   std::optional<std::string> construct, uniform, nameHint, use, reason, why, form, matrix, depth, depthRange, ndc,
       fix, projectionScale, reaches, eyeCentre;
-  std::optional<int> count, loadsReplaced;
+  std::optional<int> count, loadsReplaced, line;
 };
 
 // clip-position-detection.
@@ -104,8 +105,22 @@ struct PerEyeViewFacts {
 };
 
 // deferred-unprojection.
+// A fix only the source text carries: an unprojection through a matrix in four cbuffer rows, as
+// decompiled HLSL computes it (dp4 rows, mad chains over registers), placed by source line. q is
+// made per eye by q -= column * s.x * (1 - s.y * q.w) (deferred_unprojection_pass.cpp) right after
+// the statement that completes it.
+struct RowProductTextFix {
+  uint32_t afterLine = 0;  // the last line that writes a component of q (1-based, the main file)
+  // Each component of q: the line of the statement that computes it and the lane of the
+  // statement's value it is (`r1.xyzw = ...`: lanes 0-3 of one line; `r1.x = dot(...)`: lane 0).
+  std::array<uint32_t, 4> lines{}, lanes{};
+  // InvM's column of NDC x, element by element, as the source names it: "cb1[20].x", "-cb1[20].x".
+  std::array<std::string, 4> column;
+};
+
 struct DeferredFacts {
   std::vector<ViewDependentUse> fixed, leftAlone;
+  std::vector<RowProductTextFix> textFixes;  // with PassOptions::sourceTextFixes
   std::string leftAloneWhy;      // the whole shader left alone, and why
   std::string applicationFills;  // an injected parameter the application sets
 };

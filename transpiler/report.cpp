@@ -53,6 +53,7 @@ json renderUse(const ViewDependentUse& use) {
   text("eye_centre", use.eyeCentre);
   if (use.count) entry["count"] = *use.count;
   if (use.loadsReplaced) entry["loads_replaced"] = *use.loadsReplaced;
+  if (use.line) entry["line"] = *use.line;
   return entry;
 }
 

@@ -116,7 +116,10 @@ bool declaresResources(const std::vector<uint32_t>& words) {
 void runFrontEnd(StagePlan& plan, const TranspileOptions& options) {
   auto started = std::chrono::steady_clock::now();
   if (!plan.stage) plan.stage = decideInputStage(*plan.input, options);
-  plan.front = compileToSpirv(*plan.input, options, plan.diags, &*plan.stage);
+  // 3Dmigoto's pixel shaders get their corrections in their own text, placed by source line.
+  FrontEndOptions frontOptions = options;
+  frontOptions.sourceLines = options.eyeFrom3DMigoto;
+  plan.front = compileToSpirv(*plan.input, frontOptions, plan.diags, &*plan.stage);
   // An explicit --eye-source loose-uniforms asks for OpenGL's default-block uniforms: it says a
   // shader the source alone leaves open (desktop >= 400 / ES >= 310 with no resources of its own,
   // which glslang reads as Vulkan GLSL first) is OpenGL GLSL, as --target-env opengl does. A shader
@@ -124,7 +127,7 @@ void runFrontEnd(StagePlan& plan, const TranspileOptions& options) {
   // uniforms cannot be had there.
   bool openGlAsked = options.eye.source == EyeSource::LooseUniforms && !options.targetEnv;
   if (openGlAsked && plan.front.ok && plan.front.info.vulkan && !declaresResources(plan.front.spirv)) {
-    FrontEndOptions openGl = options;
+    FrontEndOptions openGl = frontOptions;
     openGl.targetEnv = TargetEnv::OpenGL45;
     Diagnostics openGlDiags;
     FrontEndResult reparsed = compileToSpirv(*plan.input, openGl, openGlDiags, &*plan.stage);
@@ -438,7 +441,7 @@ bool emitStage(StagePlan& plan) {
     // 3Dmigoto's StereoParams texture is rendered by the HLSL splice alone; a stage that needs
     // another route to change it cannot take its eye parameters from there (a copy changes nothing).
     if (plan.options.eyeFrom3DMigoto && route->name() != std::string_view("hlsl-source-splice") &&
-        route->name() != std::string_view("copy-through")) {
+        route->name() != std::string_view("hlsl-pixel-splice") && route->name() != std::string_view("copy-through")) {
       plan.diags.error(file, std::string("--eye-source 3dmigoto: the eye parameters are 3Dmigoto's StereoParams texture, "
                                          "which only the HLSL source splice writes; this stage takes the ") +
                                  route->name() + " route" +

@@ -46,6 +46,29 @@ std::string describe(const spirv::Module& m, uint32_t root, const AccessPath& pa
   return name.empty() ? "%" + std::to_string(root) : name;
 }
 
+namespace {
+
+// The lanes of an input that (root, path) reads: the one lane a path ending in a vector's
+// component names, else every lane of the vector (or scalar) it ends at.
+uint32_t inputLanesOf(const spirv::Module& m, uint32_t root, const AccessPath& path) {
+  const Instruction* var = m.definition(root);
+  if (!var) return 0xFu;
+  uint32_t type = m.pointeeType(var->typeId);
+  for (uint32_t step : path) {
+    const Instruction* t = m.definition(type);
+    if (!t || step == kAnyIndex) return 0xFu;
+    if (t->opcode == spv::OpTypeVector) return step < 32 ? 1u << step : 0xFu;
+    if (t->opcode == spv::OpTypeStruct && step < t->operands.size()) type = t->operand(step);
+    else if (t->opcode == spv::OpTypeArray) type = t->operand(0);
+    else return 0xFu;
+  }
+  const Instruction* t = m.definition(type);
+  if (t && t->opcode == spv::OpTypeVector) return (1u << t->operand(1)) - 1;
+  return 1u;
+}
+
+}  // namespace
+
 Sources SourceRules::unknown() const {
   Sources s;
   s.other = true;
@@ -94,11 +117,13 @@ Sources SourceRules::moduleVariable(const Instruction& variable, const AccessPat
         size_t component = m.hasDecoration(root, spv::DecorationBuiltIn) ? 0 : 1;
         if (path.size() > component && (path[component] == 2 || path[component] == 3)) return unknown();
         s.fragCoord = true;
+        s.inputLanes = inputLanesOf(m, root, path);
         s.inputs.insert(hlsl_ ? "SV_Position" : "gl_FragCoord");
       } else if (m.hasDecoration(root, spv::DecorationBuiltIn)) {
         s.other = true;  // gl_FrontFacing, gl_SampleID, ...: not a screen position
       } else {
         s.varying = true;
+        s.inputLanes = inputLanesOf(m, root, path);
         s.inputs.insert(describe(m, root, path));
       }
       return s;

@@ -28,6 +28,9 @@ struct Sources {
   bool arithmetic = false;            // computed, not only moved
   bool constantOtherThanOne = false;  // some constant leaf is not the float 1.0
   bool eyeParameter = false;          // stereoshift's own eye parameters: injected code
+  // Which lanes of gl_FragCoord / of a vector input the value is computed from (bit k: lane k; a
+  // whole vector read sets every lane it has): tells a pixel's x from its y.
+  uint32_t inputLanes = 0;
   std::set<std::string> inputs, textures, uniforms;
   std::set<uint32_t> products;  // matrix x vector products the value went through
 
@@ -41,6 +44,7 @@ struct Sources {
     arithmetic |= o.arithmetic;
     constantOtherThanOne |= o.constantOtherThanOne;
     eyeParameter |= o.eyeParameter;
+    inputLanes |= o.inputLanes;
     inputs.insert(o.inputs.begin(), o.inputs.end());
     textures.insert(o.textures.begin(), o.textures.end());
     uniforms.insert(o.uniforms.begin(), o.uniforms.end());

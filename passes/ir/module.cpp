@@ -98,6 +98,9 @@ std::optional<Module> Module::parse(const std::vector<uint32_t>& words, std::str
           currentBlock = nullptr;
           break;
         default:
+          // A line for the function's own definition (before its first block) says nothing the
+          // analyses use: dropped.
+          if (!currentBlock && (op == spv::OpLine || op == spv::OpNoLine)) break;
           if (!currentBlock) return fail("malformed SPIR-V: instruction outside a block");
           currentBlock->instructions.push_back(std::move(inst));
       }

@@ -32,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <numbers>
+#include <string>
 
 using namespace stereoshift;
 using namespace stereoshift::harness;
@@ -170,6 +171,89 @@ float4 main(PSInput input) : SV_Target
 #endif
 }
 )";
+
+// The same lighting pass as a 3Dmigoto dump of a decompiled pixel shader (`<hash>-ps_replace.txt`),
+// written here in the decompiler's conventions: one cbuffer array `cb0[7]` (cb0[0..3] the inverse
+// view-projection, cb0[4] the viewport, cb0[5..6] the light), registers r0..r3 reused, the world
+// position rebuilt by a `mad` chain over the matrix's columns, the depth by Load at SV_POSITION0,
+// 3Dmigoto's declarations block. The G-buffer sits in space1 (set 1, as the scene feeds it);
+// StereoParams at t125 is set 0 binding 125. POSITION_COMPONENT writes the float's bits as RGBA8.
+const std::string kDumpPrologue = R"(// ---- Created with 3Dmigoto v1.3.16 (a test dump written for stereoshift)
+cbuffer cb0 : register(b0)
+{
+  float4 cb0[7];
+}
+
+Texture2D<float4> t0 : register(t0, space1);
+Texture2D<float4> t1 : register(t1, space1);
+Texture2D<float4> t2 : register(t2, space1);
+
+
+// 3Dmigoto declarations
+#define cmp -
+Texture2D<float4> StereoParams : register(t125);
+
+
+void main(
+  float4 v0 : SV_POSITION0,
+  out float4 o0 : SV_Target0)
+{
+  float4 r0,r1,r2,r3;
+  uint4 bitmask, uiDest;
+  float4 fDest;
+
+  r0.xy = (int2)v0.xy;
+  r0.zw = float2(0,0);
+  r1.x = t2.Load(r0.xyz).x;
+  r2.xy = v0.xy * cb0[4].zw;
+  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);
+)";
+const std::string kDumpEpilogue = R"(#ifdef POSITION_COMPONENT
+  uiDest.x = asuint(r2[POSITION_COMPONENT]);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+#else
+  r0.w = cmp(r1.x >= 1.000000);
+  if (r0.w != 0) {
+    o0.xyzw = float4(0,0,0,1);
+    return;
+  }
+  r3.xyz = cb0[5].xyz + -r2.xyz;
+  r0.w = dot(r3.xyz, r3.xyz);
+  r0.w = sqrt(r0.w);
+  r3.xyz = r3.xyz / r0.www;
+  r1.yzw = t1.Load(r0.xyz).xyz;
+  r1.yzw = r1.yzw * float3(2,2,2) + float3(-1,-1,-1);
+  r3.w = dot(r1.yzw, r1.yzw);
+  r3.w = rsqrt(r3.w);
+  r1.yzw = r1.yzw * r3.www;
+  r3.w = saturate(dot(r1.yzw, r3.xyz));
+  o0.xyz = t0.Load(r0.xyz).xyz * r3.www;
+  o0.w = 1;
+  return;
+#endif
+}
+)";
+
+// Column storage, as the decompiler writes `mul(InvViewProj, float4(ndc, depth, 1))` with a
+// column_major matrix: `mad` over cb0[0..3], the matrix uploaded as it is (column-major).
+const std::string kDumpMadLighting = kDumpPrologue + R"(  r3.xyzw = cb0[1].xyzw * r2.yyyy;
+  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;
+  r3.xyzw = r1.xxxx * cb0[2].xyzw + r3.xyzw;
+  r3.xyzw = cb0[3].xyzw + r3.xyzw;
+  r2.xyz = r3.xyz / r3.www;
+)" + kDumpEpilogue;
+
+// Row storage (a row_major matrix): one dp4 per component over cb0[0..3], q.w in another register
+// than q.xyz; the matrix uploaded transposed.
+const std::string kDumpDp4Lighting = kDumpPrologue + R"(  r2.z = r1.x;
+  r2.w = 1;
+  r3.x = dot(r2.xyzw, cb0[0].xyzw);
+  r3.y = dot(r2.xyzw, cb0[1].xyzw);
+  r3.z = dot(r2.xyzw, cb0[2].xyzw);
+  r0.w = dot(r2.xyzw, cb0[3].xyzw);
+  r2.xyz = r3.xyz / r0.www;
+)" + kDumpEpilogue;
 
 // The view-ray form: the pixel's far-plane point through the inverse projection is the ray, scaled
 // so that its z is the linear view depth the G-buffer stores (a positive depth; view space -z).
@@ -338,6 +422,24 @@ Transpiled compileTranspiled(const char* name, const char* text, TranspileOption
   return t;
 }
 
+// A 3Dmigoto dump converted as `stereoshift <hash>-ps_replace.txt --eye-source 3dmigoto` does it:
+// the output is the dump's text with the correction spliced in (route hlsl-pixel-splice), compiled
+// here like the original.
+std::vector<uint32_t> compileDumpFixed(const char* name, const char* text, TranspileOptions options) {
+  TranspileOptions convert = options;
+  convert.target = TargetLanguage::Hlsl;
+  convert.eyeFrom3DMigoto = true;
+  convert.sourceTextFixes = true;
+  convert.eye.source = EyeSource::UniformBlock;
+  convert.eye.blockName = "stereoshift_StereoParams";
+  TranspileResult r = transpile(SourceFile{name, text}, convert);
+  EXPECT_TRUE(r.ok) << r.diagnostics.format();
+  EXPECT_EQ(r.report.value("route", std::string()), "hlsl-pixel-splice") << r.report.dump(2);
+  EXPECT_NE(r.output.find("StereoParams.Load"), std::string::npos) << r.output;
+  EXPECT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"].size(), 1u) << r.report.dump(2);
+  return compileOriginal(name, r.output.c_str(), options);
+}
+
 struct GBuffer {
   SampledTexture albedo, normal, depth;
   std::vector<float> depthValues;
@@ -406,6 +508,13 @@ std::array<double, 3> positionBound(const Mat4& a, const std::array<double, 4>& 
   return bound;
 }
 
+// How renderLighting() feeds a 3Dmigoto dump: the matrix uploaded as rows when `rows`, and with
+// `stereoParams` the eye parameters as 3Dmigoto gives them (texel 0 of StereoParams at t125:
+// eyeSign * separation, convergence, eyeSign).
+struct DumpFeed {
+  bool rows = false, stereoParams = false;
+};
+
 class DeferredRender : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -460,9 +569,13 @@ class DeferredRender : public ::testing::Test {
 
   // The lighting pass with `inverseViewProj`; with `eyeParams` the shader is the transpiled one.
   RenderResult renderLighting(const GBuffer& g, const std::vector<uint32_t>& frag, const Mat4& inverseViewProj,
-                              const Transpiled* eyeParams, double eye) {
+                              const Transpiled* eyeParams, double eye, DumpFeed dump = {}) {
     std::vector<uint8_t> frame;
-    auto inv = toFloat(inverseViewProj);
+    Mat4 uploaded = inverseViewProj;
+    if (dump.rows)
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) uploaded[c * 4 + r] = inverseViewProj[r * 4 + c];
+    auto inv = toFloat(uploaded);
     const float viewport[4] = {float(kSize), float(kSize), 1.0f / kSize, 1.0f / kSize};
     const float light[8] = {0.8f, 1.5f, -5.0f, 22.0f, 1.0f, 0.95f, 0.85f, 0.0f};
     append(frame, inv.data(), 16);
@@ -482,6 +595,9 @@ class DeferredRender : public ::testing::Test {
       draw.pipeline.uniformBuffers.push_back({eyeParams->eyeSet, eyeParams->eyeBinding, bytes});
     }
     draw.pipeline.textures = {g.albedo, g.normal, g.depth};
+    if (dump.stereoParams)
+      draw.pipeline.textures.push_back(
+          SampledTexture{0, 125, 1, 1, {float(eye * kSeparation), kConvergence, float(eye), 0.0f}});
     draw.depthTest = false;
     draw.depthWrite = false;
     request.draws = {draw};
@@ -490,7 +606,8 @@ class DeferredRender : public ::testing::Test {
     return r;
   }
 
-  void checkRebuiltPositions(const char* name, const char* text, const char* tag);
+  // `dump`: the shader is a 3Dmigoto dump, converted as text with --eye-source 3dmigoto.
+  void checkRebuiltPositions(const char* name, const char* text, const char* tag, const DumpFeed* dump = nullptr);
   void checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix);
 
   std::unique_ptr<VulkanContext> context_;
@@ -500,7 +617,7 @@ class DeferredRender : public ::testing::Test {
 };
 
 // Check 1 for the lighting shader `text` (GLSL or HLSL, by the extension of `name`).
-void DeferredRender::checkRebuiltPositions(const char* name, const char* text, const char* tag) {
+void DeferredRender::checkRebuiltPositions(const char* name, const char* text, const char* tag, const DumpFeed* dump) {
   const Mat4 viewMatrix = view();
   const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
   for (double eye : {-1.0, 1.0}) {
@@ -513,10 +630,18 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
       TranspileOptions options;
       options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
       auto original = compileOriginal(name, text, options);
-      Transpiled transpiled = compileTranspiled(name, text, options);
-      truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye);
-      fixedPosition[component] = renderLighting(g, transpiled.spirv, monoInverse, &transpiled, eye);
-      baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye);
+      if (dump) {
+        DumpFeed mono{dump->rows, false}, stereo{dump->rows, true};
+        std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options);
+        truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye, mono);
+        fixedPosition[component] = renderLighting(g, fixedDump, monoInverse, nullptr, eye, stereo);
+        baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye, mono);
+      } else {
+        Transpiled transpiled = compileTranspiled(name, text, options);
+        truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye);
+        fixedPosition[component] = renderLighting(g, transpiled.spirv, monoInverse, &transpiled, eye);
+        baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye);
+      }
       ASSERT_TRUE(truth[component].ok() && fixedPosition[component].ok() && baseline[component].ok());
     }
     auto bitsAt = [](const RenderResult& r, size_t pixel) {
@@ -632,6 +757,22 @@ TEST_F(DeferredRender, HlslLightingShaderFixedByExecution) {
   EXPECT_FALSE(pass.contains("left_alone")) << pass.dump(2);
   checkRebuiltPositions("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl");
   checkLitImage("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl", "deferred_hlsl");
+}
+
+// The dump-style lighting shaders (kDumpMadLighting, kDumpDp4Lighting), converted as text with
+// --eye-source 3dmigoto (the correction after the statement completing q, 3Dmigoto's StereoParams
+// at t125 read for the eye), with the same scene, matrices and bounds as the GLSL and HLSL shaders:
+// positions of truth (the original dump with the true per-eye inverse) and fix (the converted dump
+// with the mono inverse and StereoParams) within positionBound() of the exact position, the mono
+// baseline beyond it at > 90 % of the pixels.
+TEST_F(DeferredRender, DumpStyleMadChainFixedInItsTextByExecution) {
+  DumpFeed columns{false, false};
+  checkRebuiltPositions("0a1b2c3d4e5f6071-ps_replace.txt", kDumpMadLighting.c_str(), "dump mad", &columns);
+}
+
+TEST_F(DeferredRender, DumpStyleDp4RowsFixedInItsTextByExecution) {
+  DumpFeed rows{true, false};
+  checkRebuiltPositions("1a2b3c4d5e6f7081-ps_replace.txt", kDumpDp4Lighting.c_str(), "dump dp4", &rows);
 }
 
 // The view-ray form: per eye, the G-buffer depth drawn with that eye's stereo projection, made

@@ -51,8 +51,9 @@ TEST(BackEndRoutes, AskedInThisOrderWithTheReemitLast) {
   std::vector<std::string> names;
   for (const auto& r : routes()) names.push_back(r->name());
   EXPECT_EQ(names, (std::vector<std::string>{"copy-through", "spirv", "spirv-asm", "hlsl-source-splice",
-                                              "legacy-glsl-source-splice", "glsl-source-splice",
-                                              "spirv-cross"}));
+                                              "hlsl-pixel-splice", "legacy-glsl-source-splice",
+                                              "glsl-source-splice", "spirv-cross"}));
+  EXPECT_FALSE(route("hlsl-pixel-splice").needsValidModule());
   EXPECT_FALSE(route("copy-through").needsValidModule());
   EXPECT_TRUE(route("spirv").needsValidModule());
   EXPECT_TRUE(route("hlsl-source-splice").needsOtherEntryPoints());
@@ -122,6 +123,28 @@ TEST(BackEndRoutes, HlslSpliceCannotCarryWhatOnlyTheIrHolds) {
   RouteDecision p = perEye.ask("hlsl-source-splice", TargetLanguage::Hlsl);
   EXPECT_EQ(p.kind, RouteDecision::Refuse);
   EXPECT_NE(p.why.find("it cannot carry what the per-eye-view pass changed"), std::string::npos) << p.why;
+}
+
+// The pixel-shader correction splice takes an HLSL pixel shader kept as HLSL whose deferred pass
+// left text fixes, and only while nothing else changed what only the IR carries.
+TEST(BackEndRoutes, HlslPixelSpliceTakesTextFixesOfPixelShadersKeptAsHlsl) {
+  Stage_ s(SourceLanguage::Hlsl, Stage::Fragment);
+  s.changedBy("deferred-unprojection");
+  EXPECT_EQ(s.ask("hlsl-pixel-splice", TargetLanguage::Hlsl).kind, RouteDecision::Decline);  // no text fix
+  s.context->record.deferred.textFixes.push_back({});
+  s.context->record.deferred.fixed.push_back({});
+  EXPECT_EQ(s.ask("hlsl-pixel-splice", TargetLanguage::Hlsl).kind, RouteDecision::Accept);
+  EXPECT_EQ(s.ask("hlsl-pixel-splice", TargetLanguage::Glsl).kind, RouteDecision::Decline);
+  // A fix the pass made in the module besides the text fixes: only the IR carries it.
+  s.context->record.deferred.fixed.push_back({});
+  EXPECT_EQ(s.ask("hlsl-pixel-splice", TargetLanguage::Hlsl).kind, RouteDecision::Decline);
+  s.context->record.deferred.fixed.pop_back();
+  s.changedBy("per-eye-view");
+  EXPECT_EQ(s.ask("hlsl-pixel-splice", TargetLanguage::Hlsl).kind, RouteDecision::Decline);
+  Stage_ vertex(SourceLanguage::Hlsl, Stage::Vertex);
+  vertex.context->record.deferred.textFixes.push_back({});
+  vertex.context->record.deferred.fixed.push_back({});
+  EXPECT_EQ(vertex.ask("hlsl-pixel-splice", TargetLanguage::Hlsl).kind, RouteDecision::Decline);
 }
 
 TEST(BackEndRoutes, LegacyGlslSpliceKeepsOldVertexShadersInTheirDialect) {

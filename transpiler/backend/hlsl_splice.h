@@ -35,6 +35,7 @@
 // argument lists; it is not a full HLSL parser.
 #pragma once
 
+#include "passes/run_record.h"
 #include "passes/shader.h"
 #include "passes/shift_emitter.h"
 
@@ -86,6 +87,13 @@ struct HlslSpliceResult {
 };
 
 HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options);
+
+// Pixel shaders (3Dmigoto's StereoParams): the deferred pass's text fixes spliced in after the line
+// that completes each rebuilt position (hlsl_splice/pixel.cpp), StereoParams declared before
+// `entryPoint` unless the file declares it. An error (with its line) where the text does not
+// show for certain where a component of the position lives.
+HlslSpliceResult splicePixelCorrections(const std::string& source, const std::vector<RowProductTextFix>& fixes,
+                                        const std::string& entryPoint);
 
 // Sets `options` up for 3Dmigoto's StereoParams texture (see stereoParamsTexture).
 void useStereoParamsTexture(HlslSpliceOptions& options);

@@ -115,7 +115,7 @@ bool sameLanguageOutput(const SourceInfo& info, TargetLanguage target, const Bac
 std::vector<std::string> changesBeyond(const RunRecord& record, std::initializer_list<std::string_view> rendered);
 
 // The routes in the order the driver asks them: copy-through, SPIR-V binary, SPIR-V assembly, the
-// HLSL source splice, the legacy GLSL source splice, the GLSL source splice, SPIRV-Cross's re-emit
+// HLSL source splice, the HLSL pixel-shader correction splice, the legacy GLSL source splice, the GLSL source splice, SPIRV-Cross's re-emit
 // (which takes the rest).
 const std::vector<std::unique_ptr<BackEndRoute>>& routes();
 

@@ -18,6 +18,9 @@
 namespace stereoshift {
 
 std::unique_ptr<BackEndRoute> createHlslSpliceRoute();
+// HLSL pixel shaders kept as HLSL whose corrections only the text carries (the deferred pass's
+// text fixes, with 3Dmigoto's StereoParams): hlsl_pixel_splice_route.cpp.
+std::unique_ptr<BackEndRoute> createHlslPixelSpliceRoute();
 std::unique_ptr<BackEndRoute> createLegacyGlslRoute();
 std::unique_ptr<BackEndRoute> createGlslSpliceRoute();
 

@@ -27,6 +27,9 @@ struct FrontEndOptions {
   // glslang crashed on this input in an earlier attempt (the conversion child died in its parser):
   // it is not run again; the stage is refused as glslang's, for the text-only shift to take.
   bool glslangCrashed = false;
+  // HLSL pixel shaders: the module carries glslang's OpLine per statement (its debug line info),
+  // for fixes only the source text can carry, placed by line (the 3Dmigoto correction splice).
+  bool sourceLines = false;
 };
 
 }  // namespace stereoshift

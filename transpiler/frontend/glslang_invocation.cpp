@@ -294,7 +294,7 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
     return attempt;
   }
   glslang::SpvOptions spvOptions;
-  spvOptions.generateDebugInfo = false;
+  spvOptions.generateDebugInfo = options.sourceLines && language == SourceLanguage::Hlsl && stage == Stage::Fragment;
   spvOptions.disableOptimizer = true;
   spvOptions.validate = false;
   spv::SpvBuildLogger logger;

@@ -1,0 +1,429 @@
+// See row_products.h: unprojections through cbuffer rows, as decompiled HLSL writes them.
+#include "passes/deferred_unprojection/row_products.h"
+
+#include "passes/ir/walker.h"
+
+#include <glslang/SPIRV/GLSL.std.450.h>
+
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+
+namespace stereoshift::deferred {
+
+using analysis::kAnyIndex;
+using spirv::Instruction;
+
+namespace {
+
+// scale * (a uniform element, or 1 when `root` is 0).
+struct Coefficient {
+  uint32_t root = 0;
+  AccessPath path;
+  float scale = 1.0f;
+  bool uniform() const { return root != 0; }
+};
+
+// One lane of a value: an SSA id and the vector lane (0 for a scalar).
+struct Lane {
+  uint32_t id = 0;
+  uint32_t lane = 0;
+  auto operator<=>(const Lane&) const = default;
+};
+
+// A scalar as a sum of coefficient * term (a term-less part is a constant or uniform addend).
+struct Part {
+  std::optional<Lane> term;
+  Coefficient coefficient;
+};
+using Linear = std::vector<Part>;
+
+class Decomposer {
+ public:
+  explicit Decomposer(const ValueFlow& index) : index_(index), m_(index.module()) {}
+
+  // Follows moves (extracts, inserts, shuffles, constructs, copies) to the lane of the value that
+  // computes it.
+  Lane canonical(Lane at) const {
+    for (int step = 0; step < 64; ++step) {
+      const Instruction* def = index_.definition(at.id);
+      if (!def) return at;
+      switch (def->opcode) {
+        case spv::OpCopyObject: at.id = def->operand(0); continue;
+        case spv::OpCompositeExtract:
+          if (def->operands.size() != 2 || !isVector(def->operand(0))) return at;
+          at = {def->operand(0), def->operand(1)};
+          continue;
+        case spv::OpCompositeInsert:
+          if (def->operands.size() != 3 || !isVector(def->resultId)) return at;
+          at = def->operand(2) == at.lane ? Lane{def->operand(0), 0} : Lane{def->operand(1), at.lane};
+          continue;
+        case spv::OpVectorShuffle: {
+          uint32_t pick = def->operand(2 + at.lane), first = lanes(def->operand(0));
+          if (pick == 0xFFFFFFFFu || 2 + at.lane >= def->operands.size()) return at;
+          at = pick < first ? Lane{def->operand(0), pick} : Lane{def->operand(1), pick - first};
+          continue;
+        }
+        case spv::OpCompositeConstruct: {
+          if (!isVector(def->resultId)) return at;
+          uint32_t first = 0;
+          bool found = false;
+          for (uint32_t part : def->operands) {
+            uint32_t count = isVector(part) ? lanes(part) : 1;
+            if (at.lane < first + count) {
+              at = {part, isVector(part) ? at.lane - first : 0};
+              found = true;
+              break;
+            }
+            first += count;
+          }
+          if (!found) return at;
+          continue;
+        }
+        default: return at;
+      }
+    }
+    return at;
+  }
+
+  // The linear form of one lane, memoised; nullopt never (an opaque value is a term of its own).
+  const Linear& form(Lane at) {
+    at = canonical(at);
+    if (auto it = memo_.find(at); it != memo_.end()) return it->second;
+    Linear value = compute(at);
+    return memo_.emplace(at, std::move(value)).first->second;
+  }
+
+  bool isVector(uint32_t id) const { return lanes(id) > 1; }
+  uint32_t lanes(uint32_t id) const {
+    const Instruction* def = index_.definition(id);
+    const Instruction* type = def ? m_.definition(def->typeId) : nullptr;
+    return type && type->opcode == spv::OpTypeVector ? type->operand(1) : 1;
+  }
+
+ private:
+  const ValueFlow& index_;
+  const spirv::Module& m_;
+  std::map<Lane, Linear> memo_;
+  int depth_ = 0;
+
+  static std::optional<Coefficient> pure(const Linear& f) {
+    if (f.size() != 1 || f[0].term) return std::nullopt;
+    return f[0].coefficient;
+  }
+  static Linear scaled(Linear f, float by) {
+    for (auto& p : f) p.coefficient.scale *= by;
+    return f;
+  }
+  static Linear sum(Linear a, const Linear& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  }
+  Linear opaque(Lane at) const { return {Part{canonical(at), {}}}; }
+  Lane laneOf(uint32_t id, uint32_t lane) const { return {id, isVector(id) ? lane : 0}; }
+
+  // a * b: a constant scales the other side; a uniform element is the coefficient of the other
+  // side taken whole (an opaque term); anything else is opaque as a whole (`self`).
+  Linear product(Lane a, Lane b, Lane self) {
+    const Linear fa = form(a), fb = form(b);
+    if (fa.empty() || fb.empty()) return {};  // a zero
+    auto ca = pure(fa), cb = pure(fb);
+    if (ca && cb) {
+      if (ca->uniform() && cb->uniform()) return opaque(self);
+      Coefficient c = ca->uniform() ? *ca : *cb;
+      c.scale = ca->scale * cb->scale;
+      return {Part{std::nullopt, c}};
+    }
+    if (cb) return cb->uniform() ? Linear{Part{canonical(a), *cb}} : scaled(fa, cb->scale);
+    if (ca) return ca->uniform() ? Linear{Part{canonical(b), *ca}} : scaled(fb, ca->scale);
+    return opaque(self);
+  }
+
+  Linear uniformLoad(const Instruction& load, Lane at) const {
+    auto target = index_.resolvePointer(load.operand(0));
+    auto storage = target ? m_.storageClassOf(target->root) : std::nullopt;
+    bool uniform = storage && (*storage == spv::StorageClassUniform || *storage == spv::StorageClassPushConstant);
+    if (!uniform || std::count(target->path.begin(), target->path.end(), kAnyIndex)) return opaque(at);
+    Coefficient c{target->root, target->path, 1.0f};
+    if (isVector(load.resultId)) c.path.push_back(at.lane);
+    return {Part{std::nullopt, c}};
+  }
+
+  Linear compute(Lane at) {
+    const Instruction* def = index_.definition(at.id);
+    if (!def || ++depth_ > 256) {
+      --depth_;
+      return opaque(at);
+    }
+    Linear out = computeFor(*def, at);
+    --depth_;
+    return out;
+  }
+
+  Linear computeFor(const Instruction& def, Lane at) {
+    auto op = [&](size_t k) { return laneOf(def.operand(k), at.lane); };
+    switch (def.opcode) {
+      case spv::OpConstant: {
+        auto value = m_.floatConstant(def.resultId);
+        if (!value) return opaque(at);
+        if (*value == 0.0f) return {};
+        return {Part{std::nullopt, Coefficient{0, {}, *value}}};
+      }
+      case spv::OpConstantComposite:
+        return at.lane < def.operands.size() ? form({def.operands[at.lane], 0}) : opaque(at);
+      case spv::OpConstantNull: return {};
+      case spv::OpLoad: return uniformLoad(def, at);
+      case spv::OpFAdd: return sum(form(op(0)), form(op(1)));
+      case spv::OpFSub: return sum(form(op(0)), scaled(form(op(1)), -1.0f));
+      case spv::OpFNegate: return scaled(form(op(0)), -1.0f);
+      case spv::OpFMul: return product(op(0), op(1), at);
+      case spv::OpVectorTimesScalar: return product({def.operand(0), at.lane}, {def.operand(1), 0}, at);
+      case spv::OpDot: {
+        Linear out;
+        for (uint32_t k = 0; k < lanes(def.operand(0)); ++k)
+          out = sum(std::move(out), product({def.operand(0), k}, {def.operand(1), k}, at));
+        return out;
+      }
+      case spv::OpExtInst:
+        if (def.operand(1) == GLSLstd450Fma && def.operands.size() == 5)
+          return sum(product(laneOf(def.operand(2), at.lane), laneOf(def.operand(3), at.lane), at),
+                     form(laneOf(def.operand(4), at.lane)));
+        return opaque(at);
+      default: return opaque(at);
+    }
+  }
+};
+
+// The OpLine line of an instruction, when it is in the main file (glslang names each OpLine's file
+// as the front end named the text it parsed: the input's path, an #include's resolved name).
+class LineMap {
+ public:
+  LineMap(const spirv::Module& m, const std::string& mainFile) {
+    for (const auto& inst : m.debugSource)
+      if (inst.opcode == spv::OpString && inst.stringOperand(0) == mainFile) mainFile_ = inst.resultId;
+    for (const auto& fn : m.functions)
+      for (const auto& block : fn.blocks) {
+        uint32_t line = 0;
+        for (const auto& inst : block.instructions) {
+          if (inst.opcode == spv::OpLine) line = inst.operand(0) == mainFile_ ? inst.operand(1) : 0;
+          else if (inst.opcode == spv::OpNoLine) line = 0;
+          else if (inst.resultId) lines_[inst.resultId] = line;
+        }
+      }
+  }
+  bool present() const { return mainFile_ != 0; }
+  uint32_t lineOf(uint32_t id) const {
+    auto it = lines_.find(id);
+    return it == lines_.end() ? 0 : it->second;
+  }
+
+ private:
+  uint32_t mainFile_ = 0;
+  std::map<uint32_t, uint32_t> lines_;
+};
+
+// A uniform element as the source names it: "cb1[20].x" (an HLSL cbuffer's members are global
+// names), with the coefficient's sign or scale.
+std::string elementText(const spirv::Module& m, const Coefficient& c) {
+  if (c.path.empty()) return "";
+  std::string text = describe(m, c.root, {c.path[0]});
+  const Instruction* var = m.definition(c.root);
+  uint32_t type = var ? m.pointeeType(var->typeId) : 0;
+  for (size_t k = 0; k < c.path.size(); ++k) {
+    const Instruction* t = m.definition(type);
+    if (!t) return "";
+    if (t->opcode == spv::OpTypeStruct) {
+      if (k != 0) return "";  // a member of a nested struct: not a decompiler's cbuffer
+      type = t->operand(c.path[k]);
+    } else if (t->opcode == spv::OpTypeArray || t->opcode == spv::OpTypeMatrix) {
+      text += "[" + std::to_string(c.path[k]) + "]";
+      type = t->operand(0);
+    } else if (t->opcode == spv::OpTypeVector && c.path[k] < 4) {
+      text += std::string(".") + "xyzw"[c.path[k]];
+      type = t->operand(0);
+    } else {
+      return "";
+    }
+  }
+  if (c.scale == 1.0f) return text;
+  if (c.scale == -1.0f) return "-" + text;
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(c.scale));
+  return "(" + std::string(buf) + " * " + text + ")";
+}
+
+bool isFloat4(const spirv::Module& m, uint32_t type) {
+  const Instruction* vector = m.definition(type);
+  if (!vector || vector->opcode != spv::OpTypeVector || vector->operand(1) != 4) return false;
+  const Instruction* component = m.definition(vector->operand(0));
+  return component && component->opcode == spv::OpTypeFloat && component->operand(0) == 32;
+}
+
+// One component of a candidate q: linear in three terms with a uniform element as each
+// coefficient, plus one uniform element; which component it is (`index`, 0-3) and of which matrix
+// (`matrix`) the elements say. Column storage (`mad` chains: `r1.xyzw = r0.xxxx * cb1[20].xyzw +
+// ...`): every element of component i is lane i of a column vector. Row storage (dp4: `r1.x =
+// dot(r0.xyzw, cb1[20].xyzw)`): every element of component i is in row vector k+i of one array.
+struct Member {
+  Lane at;
+  std::map<Lane, Coefficient> byTerm;
+  Coefficient translation;
+  uint32_t index = 0;
+  std::string matrix;  // the key of the matrix the elements belong to
+};
+
+std::string pathKey(uint32_t root, const AccessPath& path, size_t length) {
+  std::string key = std::to_string(root);
+  for (size_t k = 0; k < length && k < path.size(); ++k) key += "/" + std::to_string(path[k]);
+  return key;
+}
+
+std::optional<Member> memberOf(Decomposer& d, Lane at) {
+  Member member{at, {}, {}, 0, ""};
+  bool hasTranslation = false;
+  std::vector<const Coefficient*> elements;
+  for (const Part& part : d.form(at)) {
+    if (!part.coefficient.uniform() || part.coefficient.path.size() < 2) return std::nullopt;
+    if (!part.term) {
+      if (hasTranslation) return std::nullopt;
+      hasTranslation = true;
+      member.translation = part.coefficient;
+    } else if (!member.byTerm.emplace(*part.term, part.coefficient).second) {
+      return std::nullopt;
+    }
+  }
+  if (!hasTranslation || member.byTerm.size() != 3) return std::nullopt;  // w = 1: a point
+  elements.push_back(&member.translation);
+  for (const auto& [term, c] : member.byTerm) elements.push_back(&c);
+  auto same = [&](auto&& key) {
+    return std::all_of(elements.begin(), elements.end(), [&](const Coefficient* c) { return key(*c) == key(*elements[0]); });
+  };
+  auto lane = [](const Coefficient& c) { return c.path.back(); };
+  auto vector = [](const Coefficient& c) { return pathKey(c.root, c.path, c.path.size() - 1); };
+  if (same(lane) && !same(vector)) {  // column storage
+    member.index = lane(*elements[0]);
+    std::set<std::string> columns;
+    for (const Coefficient* c : elements) columns.insert(vector(*c));
+    if (columns.size() != 4) return std::nullopt;
+    for (const auto& column : columns) member.matrix += "c:" + column + ";";
+  } else if (same(vector) && !same(lane)) {  // row storage: the row's array index
+    const AccessPath& path = elements[0]->path;
+    member.index = path[path.size() - 2];
+    member.matrix = "r:" + pathKey(elements[0]->root, path, path.size() - 2);
+  } else {
+    return std::nullopt;
+  }
+  return member;
+}
+
+std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>& q) {
+  std::set<std::string> vectors;
+  auto add = [&](Coefficient c) {
+    c.path.pop_back();  // the element's vector
+    c.scale = 1.0f;
+    vectors.insert(elementText(m, c));
+  };
+  for (const Member* member : q) {
+    add(member->translation);
+    for (const auto& [term, c] : member->byTerm) add(c);
+  }
+  return joined(vectors);
+}
+
+// The candidates, grouped into matrices and ordered into q's four components: column storage by
+// lane, row storage by four consecutive rows. Each component once per product; a matrix met again
+// with a component already taken starts another product of it.
+std::vector<std::array<const Member*, 4>> groupProducts(const std::vector<Member>& members) {
+  std::vector<std::array<const Member*, 4>> products;
+  std::map<std::string, std::vector<std::map<uint32_t, const Member*>>> open;
+  for (const Member& m : members) {
+    std::string key = m.matrix;
+    for (const auto& [term, c] : m.byTerm) key += "|" + std::to_string(term.id) + "." + std::to_string(term.lane);
+    auto& groups = open[key];
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return !g.count(m.index); });
+    if (it == groups.end()) it = groups.emplace(groups.end());
+    (*it)[m.index] = &m;
+  }
+  for (const auto& [key, groups] : open)
+    for (const auto& g : groups) {
+      if (g.size() != 4) continue;
+      uint32_t first = g.begin()->first;
+      if (g.rbegin()->first != first + 3) continue;  // lanes 0-3, or rows k..k+3
+      std::array<const Member*, 4> q{};
+      for (const auto& [index, member] : g) q[index - first] = member;
+      products.push_back(q);
+    }
+  return products;
+}
+
+}  // namespace
+
+bool hasCbufferRows(const spirv::Module& m) {
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassUniform) continue;
+    const Instruction* block = m.definition(m.pointeeType(inst.typeId));
+    if (!block || block->opcode != spv::OpTypeStruct) continue;
+    for (uint32_t member : block->operands) {
+      const Instruction* array = m.definition(member);
+      if (array && array->opcode == spv::OpTypeArray && isFloat4(m, array->operand(0))) return true;
+    }
+  }
+  return false;
+}
+
+std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile) {
+  ValueFlow index(registers);
+  SourceAnalysis flow(index, hlsl, {});
+  Decomposer d(index);
+  LineMap lines(registers, mainFile);
+  // Every lane of every float value that is one component of a product, once (by the value that
+  // computes it), in module order.
+  std::vector<Member> members;
+  std::set<Lane> seen;
+  spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (!inst.resultId || !inst.typeId) return;
+    const Instruction* type = registers.definition(inst.typeId);
+    bool scalar = type && type->opcode == spv::OpTypeFloat && type->operand(0) == 32;
+    if (!scalar && !isFloat4(registers, inst.typeId)) return;
+    for (uint32_t lane = 0; lane < (scalar ? 1u : 4u); ++lane) {
+      Lane at = d.canonical({inst.resultId, lane});
+      if (!seen.insert(at).second) continue;
+      if (auto member = memberOf(d, at)) members.push_back(std::move(*member));
+    }
+  });
+  auto screen = [](const Sources& s, uint32_t lane) {
+    return (s.fragCoord || s.varying) && !s.texel && !s.other && (s.inputLanes & 3u) == lane;
+  };
+  std::vector<RowProduct> found;
+  for (const auto& q : groupProducts(members)) {
+    RowProduct p;
+    // Which term is which: the pixel's x (lane 0 of the input), its y (lane 1), the depth.
+    std::optional<Lane> x;
+    bool haveY = false, haveZ = false, other = false;
+    for (const auto& [term, c] : q[0]->byTerm) {
+      Sources s = flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
+      if (screen(s, 1u) && !x) x = term, p.x = s;
+      else if (screen(s, 2u) && !haveY) haveY = true, p.y = s;
+      else if (s.texel && !s.fragCoord && !s.varying && !s.other && !haveZ) haveZ = true, p.z = s;
+      else other = true;
+    }
+    if (other || !x || !haveY || !haveZ) continue;
+    p.rows = rowsText(registers, q);
+    for (uint32_t i = 0; i < 4; ++i) {
+      p.fix.column[i] = elementText(registers, q[i]->byTerm.at(*x));
+      p.fix.lines[i] = lines.lineOf(q[i]->at.id);
+      p.fix.lanes[i] = q[i]->at.lane;
+      p.fix.afterLine = std::max(p.fix.afterLine, p.fix.lines[i]);
+      if (p.fix.column[i].empty()) p.reason = "a matrix element is not a cbuffer element the source can name";
+      else if (!p.fix.lines[i] && p.reason.empty())
+        p.reason = lines.present() ? "a component is computed outside the main file (an #include or a macro)"
+                                   : "the module has no source lines";
+    }
+    found.push_back(std::move(p));
+  }
+  return found;
+}
+
+}  // namespace stereoshift::deferred

@@ -1,0 +1,43 @@
+// deferred-unprojection's cbuffer-row form: turns a decompiled HLSL pixel shader's position rebuild,
+// `InvM * float4(ndc, depth, 1)` spelled over the four float4 rows of a cbuffer array
+// (3Dmigoto's decompiler: `r1.xyzw = r0.yyyy * cb1[21].xyzw; r1.xyzw = r0.xxxx * cb1[20].xyzw +
+// r1.xyzw; ... + cb1[23].xyzw` or `r1.x = dot(r0.xyzw, cb1[20].xyzw); r1.y = ...`), into a found
+// unprojection with the source lines that compute each component of q and InvM's column of NDC x
+// as the source names it, for the fix the text carries (RowProductTextFix).
+//
+// It runs on the register copy (AnalysisManager::registerSsaCopy(): the decompiler reuses each
+// register r0..rN for many values, and only SSA form tells them apart) with glslang's OpLine per
+// statement. A float4 q is one when each component is linear in the same three per-pixel values
+// with a single uniform element as each coefficient and one uniform element as its constant:
+//     q[i] = M[i][0]*a + M[i][1]*b + M[i][2]*c + M[i][3]
+// and, as for the matrix form (deferred_unprojection_pass.cpp), a is the pixel's x (from
+// SV_Position's or a vector input's lane 0, no texel), b its y (lane 1), c a depth read from a
+// texture. Coefficients are found through sums, differences, negations, `mad`/fma, dp2-dp4 and
+// products with a uniform element or a constant; a product of two per-pixel values, or of two
+// uniform elements, is an opaque value (a term), never looked into.
+#pragma once
+
+#include "passes/deferred_unprojection/sources.h"
+#include "passes/run_record.h"
+
+#include <string>
+#include <vector>
+
+namespace stereoshift::deferred {
+
+struct RowProduct {
+  RowProductTextFix fix;  // the lines of q's components and the column of NDC x
+  Sources x, y, z;        // what the pixel's x, y and the depth are computed from
+  std::string rows;       // the uniform vectors holding the matrix, as the source names them
+  std::string reason;     // empty when every component has a line of the main file
+};
+
+// Whether the module has uniform data an unprojection could be held in as rows: a uniform block
+// member that is an array of float4 (a decompiled cbuffer). Cheap; spares other shaders the copy.
+bool hasCbufferRows(const spirv::Module& m);
+
+// Every cbuffer-row unprojection of `registers` (the register copy, with OpLine), once each; lines
+// count in `mainFile`, the name the front end gave the input's text.
+std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile);
+
+}  // namespace stereoshift::deferred

@@ -1,0 +1,64 @@
+// This turns the per-eye corrections the passes found in an HLSL pixel shader that comes back as
+// HLSL into text: the deferred pass's text fixes (an unprojection through cbuffer rows, placed by
+// source line: RunRecord::deferred.textFixes) spliced into the original file
+// (hlsl_splice/pixel.cpp) with 3Dmigoto's StereoParams. What only the IR carries (a fix the pass
+// made in the module) is not this route's: it declines, and the re-emit takes the stage.
+#include "transpiler/backend/splice_routes.h"
+
+#include "transpiler/backend/hlsl_splice.h"
+
+namespace stereoshift {
+
+namespace {
+
+class HlslPixelSpliceRoute final : public BackEndRoute {
+ public:
+  const char* name() const override { return "hlsl-pixel-splice"; }
+  // The module is only the analysis: the output is the input's text.
+  bool needsValidModule() const override { return false; }
+
+  RouteDecision accepts(const EmitRequest& r) const override {
+    const SourceInfo& info = r.context.source;
+    const DeferredFacts& deferred = r.context.record.deferred;
+    if (info.language != SourceLanguage::Hlsl || r.target != TargetLanguage::Hlsl || info.stage != Stage::Fragment ||
+        deferred.textFixes.empty())
+      return RouteDecision::decline("not an HLSL pixel shader with corrections for its text");
+    if (!changesBeyond(r.context.record, {"deferred-unprojection"}).empty() ||
+        deferred.fixed.size() != deferred.textFixes.size())
+      return RouteDecision::decline("a pass changed what only the IR carries besides the text corrections", true);
+    return RouteDecision::accept();
+  }
+
+  EmitResult emit(const EmitRequest& r, EmitFacts& facts, Diagnostics& diags) const override {
+    EmitResult result;
+    const SourceInfo& info = r.context.source;
+    HlslSpliceResult spliced = splicePixelCorrections(r.input.contents, r.context.record.deferred.textFixes, info.entryPoint);
+    if (!spliced.ok) {
+      diags.error(r.input.path, spliced.line, spliced.column, spliced.error);
+      result.status = EmitResult::Failed;
+      return result;
+    }
+    result.output = std::move(spliced.text);
+    facts.route = name();
+    facts.spliceSites = spliced.sites;
+    CompileCheck check;
+    check.text = result.output;
+    check.language = SourceLanguage::Hlsl;
+    check.stage = Stage::Fragment;
+    check.entryPoint = info.entryPoint;
+    check.vulkanSemantics = true;
+    check.blankEffects = true;
+    check.includeFrom = r.input.path;
+    check.failure = "the stereo HLSL of pixel shader '" + info.entryPoint + "' does not compile";
+    result.checks.push_back(std::move(check));
+    result.reportsVerified = r.options.verify;
+    result.status = EmitResult::Emitted;
+    return result;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<BackEndRoute> createHlslPixelSpliceRoute() { return std::make_unique<HlslPixelSpliceRoute>(); }
+
+}  // namespace stereoshift

@@ -1,0 +1,186 @@
+// The HLSL splice's per-eye corrections of a pixel shader: turns the deferred pass's text fixes
+// (RowProductTextFix: an unprojection through a matrix in cbuffer rows, each component of q located
+// by the line of the statement that computes it) into a marked block of statements right after the
+// line that completes q,
+//     float4 stereoshift_stereo = StereoParams.Load(int3(0, 0, 0));
+//     float stereoshift_d = stereoshift_stereo.x * (1 - stereoshift_stereo.y * <q.w>);
+//     <q.x> -= <InvM[0][0]> * stereoshift_d;  ...  <q.w> -= <InvM[3][0]> * stereoshift_d;
+// (deferred_unprojection_pass.cpp has the maths: 3Dmigoto's x is the separation with the eye's
+// sign, y the convergence), and 3Dmigoto's `Texture2D<float4> StereoParams : register(t125)` before
+// the entry point unless the file declares it.
+//
+// Where each component of q lives is read from the text: the statement on its line assigns
+// `reg.mask = ...;` and the component is mask[lane]. The block is written only where that is
+// certain: one statement on each of those lines, and no line between a component's statement and
+// the block writes that register component again, reads it, or is anything but a plain assignment
+// (a branch, a loop, a call of a helper that might). Everything else of the file stays as written.
+#include "transpiler/backend/hlsl_splice.h"
+
+#include "transpiler/backend/hlsl_splice/edit_buffer.h"
+#include "transpiler/backend/hlsl_splice/shift_text.h"
+#include "transpiler/backend/hlsl_splice/top_level.h"
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <regex>
+#include <set>
+
+namespace stereoshift {
+
+using namespace hlsl_splice;
+
+namespace {
+
+struct Lines {
+  std::vector<size_t> begin;  // offset of each line's first byte (line k+1 at begin[k])
+  const std::string& text;
+  explicit Lines(const std::string& source) : text(source) {
+    begin.push_back(0);
+    for (size_t i = 0; i < source.size(); ++i)
+      if (source[i] == '\n') begin.push_back(i + 1);
+  }
+  size_t count() const { return begin.size(); }
+  // Line `n` (1-based) without its line break.
+  std::string line(uint32_t n) const {
+    if (n == 0 || n > begin.size()) return "";
+    size_t from = begin[n - 1], to = n < begin.size() ? begin[n] : text.size();
+    std::string l = text.substr(from, to - from);
+    while (!l.empty() && (l.back() == '\n' || l.back() == '\r')) l.pop_back();
+    return l;
+  }
+  size_t endOf(uint32_t n) const { return n < begin.size() ? begin[n] : text.size(); }
+};
+
+// `reg.mask = rhs;` alone on its line (a trailing // comment allowed).
+struct Assignment {
+  std::string reg, mask, rhs;
+};
+
+std::optional<Assignment> assignmentOn(const std::string& line) {
+  static const std::regex form(R"(^\s*([A-Za-z_]\w*)\.([xyzw]{1,4})\s*=\s*([^;]*);\s*(//.*)?$)");
+  std::smatch m;
+  if (!std::regex_match(line, m, form)) return std::nullopt;
+  return Assignment{m[1], m[2], m[3]};
+}
+
+// Whether `rhs` reads component `c` of `reg` (`reg.xyzw`, `reg.x`, or `reg` whole).
+bool reads(const std::string& rhs, const std::string& reg, char c) {
+  std::regex use("\\b" + reg + R"(\b(\.([xyzw]+))?)");
+  for (auto it = std::sregex_iterator(rhs.begin(), rhs.end(), use); it != std::sregex_iterator(); ++it)
+    if (!(*it)[2].matched || (*it)[2].str().find(c) != std::string::npos) return true;
+  return false;
+}
+
+struct Located {
+  std::array<std::string, 4> component;  // "r1.x"
+  std::string error;
+  uint32_t errorLine = 0;
+};
+
+Located locate(const Lines& lines, const RowProductTextFix& fix) {
+  Located out;
+  auto fail = [&](uint32_t line, std::string why) {
+    out.error = std::move(why);
+    out.errorLine = line;
+    return out;
+  };
+  for (size_t i = 0; i < 4; ++i) {
+    auto a = assignmentOn(lines.line(fix.lines[i]));
+    if (!a || fix.lanes[i] >= a->mask.size())
+      return fail(fix.lines[i], "the statement computing component " + std::to_string(i) +
+                                    " of the rebuilt position is not one `reg.mask = ...;` on its line");
+    char c = a->mask[fix.lanes[i]];
+    out.component[i] = a->reg + "." + c;
+    for (uint32_t l = fix.lines[i] + 1; l <= fix.afterLine; ++l) {
+      std::string text = lines.line(l);
+      std::string code = text.substr(0, text.find("//"));
+      if (code.find_first_not_of(" \t") == std::string::npos) continue;
+      auto later = assignmentOn(text);
+      if (!later) return fail(l, "a line between the rebuilt position's statements is not a plain assignment");
+      bool partOfQ = false;
+      for (size_t j = 0; j < 4; ++j) partOfQ |= fix.lines[j] == l;
+      if (later->reg == a->reg && later->mask.find(c) != std::string::npos)
+        return fail(l, "register " + out.component[i] + " is written again before the rebuilt position is complete");
+      if (!partOfQ && reads(later->rhs, a->reg, c))
+        return fail(l, out.component[i] + " is read before the rebuilt position is complete");
+    }
+  }
+  return out;
+}
+
+std::string indentOf(const std::string& line) { return line.substr(0, line.find_first_not_of(" \t")); }
+
+std::string correctionBlock(const RowProductTextFix& fix, const Located& at, const std::string& indent,
+                            const std::string& nl) {
+  const std::string s = std::string(kPrefix) + "_stereo", d = std::string(kPrefix) + "_d", in = indent + "  ";
+  uint32_t first = *std::min_element(fix.lines.begin(), fix.lines.end());
+  std::string lines = first == fix.afterLine ? "line " + std::to_string(first)
+                                              : "lines " + std::to_string(first) + "-" + std::to_string(fix.afterLine);
+  std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
+                  ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----" + nl;
+  t += indent + "{" + nl;
+  t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
+  t += in + "float " + d + " = " + s + ".x * (1 - " + s + ".y * " + at.component[3] + ");" + nl;
+  for (size_t i = 0; i < 4; ++i) t += in + at.component[i] + " -= " + fix.column[i] + " * " + d + ";" + nl;
+  t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
+  return t;
+}
+
+}  // namespace
+
+HlslSpliceResult splicePixelCorrections(const std::string& source, const std::vector<RowProductTextFix>& fixes,
+                                        const std::string& entryPoint) {
+  HlslSpliceResult result;
+  TokenView view(source);
+  TopLevel top;
+  std::optional<SpliceError> err = view.scan();
+  if (!err) err = parseTopLevel(view, top);
+  const Function* entry = nullptr;
+  for (const auto& f : top.functions)
+    if (!err && view.text(f.nameTok) == entryPoint) entry = &f;
+  if (!err && !entry) err = SpliceError{npos, "entry point '" + entryPoint + "' not found"};
+  if (err) {
+    result.error = err->message;
+    if (err->offset != npos) view.locate(err->offset, result.line, result.column);
+    return result;
+  }
+  EditBuffer edits(source);
+  Lines lines(source);
+  for (const auto& fix : fixes) {
+    Located at = locate(lines, fix);
+    if (!at.error.empty()) {
+      result.error = "cannot place this eye's position rebuild: " + at.error;
+      result.line = static_cast<int>(at.errorLine);
+      std::string text = lines.line(at.errorLine);
+      result.column = static_cast<int>(std::min(text.find_first_not_of(" \t"), text.size())) + 1;
+      return result;
+    }
+    std::string indent = indentOf(lines.line(fix.afterLine));
+    std::string block = correctionBlock(fix, at, indent, edits.newline());
+    size_t end = lines.endOf(fix.afterLine);
+    // A last line without a line break gets one before the block.
+    if (end == source.size() && (source.empty() || source.back() != '\n')) block = edits.newline() + block;
+    edits.add(end, 0, block);
+    ++result.sites;
+  }
+  // The dump's own declaration (its "3Dmigoto declarations") is the one 3Dmigoto binds.
+  if (!top.names.count("StereoParams")) {
+    for (size_t k = 0; k + 2 < view.tokens.size(); ++k)
+      if (view.isWord(k, "register") && view.isPunct(k + 1, '(') && lower(view.text(k + 2)) == "t125") {
+        result.error = "register(t125) is taken by another resource: 3Dmigoto's StereoParams texture lives there";
+        view.locate(view.tokens[k + 2].begin, result.line, result.column);
+        result.clash = true;
+        return result;
+      }
+    const std::string& nl = edits.newline();
+    insertBlockBefore(edits, view, view.tokens[entry->declBegin].begin, 0,
+                      "// ---- stereoshift: 3Dmigoto's stereo parameters (injected) ----" + nl +
+                          "Texture2D<float4> StereoParams : register(t125);" + nl + "// ---- end stereoshift ----" + nl);
+  }
+  result.text = edits.apply();
+  result.ok = true;
+  return result;
+}
+
+}  // namespace stereoshift
