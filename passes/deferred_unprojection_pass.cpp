@@ -308,6 +308,32 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     facts.textFixes.push_back(p.fix);
     recorded = true;
   }
+  for (const ComponentRay& r : findComponentRays(*registers, true, ctx.file)) {
+    ViewDependentUse entry;
+    entry.construct = "view-space x = ndc.x * depth * k, per component";
+    entry.form = "view-space position rebuilt from depth one component at a time (decompiled view ray)";
+    entry.depth = joined(r.depth.textures);
+    entry.ndc = joined(r.x.inputs);
+    // k is 1/P00, or spelled `(1 / P00)` where the shader divides by P00.
+    const std::string& k = r.fix.scale;
+    entry.projectionScale = k.empty()                ? std::string("?")
+                            : k.rfind("(1 / ", 0) == 0 ? k.substr(5, k.size() - 6)
+                                                       : "1 / " + k;
+    if (r.fix.line) entry.line = static_cast<int>(r.fix.line);
+    std::string why = readsStereoParams ? "the shader already reads 3Dmigoto's StereoParams (fixed by hand?)"
+                      : !ctx.options.sourceTextFixes
+                          ? "this form is fixed in the shader's own HLSL text, with --eye-source 3dmigoto (the dump's StereoParams)"
+                          : r.reason;
+    if (!why.empty()) {
+      entry.reason = "not fixed: " + why;
+      facts.leftAlone.push_back(entry);
+      continue;
+    }
+    entry.fix = "x - s.x*(|depth| - s.y)*|k| after line " + std::to_string(r.fix.line);
+    facts.fixed.push_back(entry);
+    facts.rayTextFixes.push_back(r.fix);
+    recorded = true;
+  }
   return recorded;
 }
 

@@ -118,9 +118,20 @@ struct RowProductTextFix {
   std::array<std::string, 4> column;
 };
 
+// A fix only the source text carries: a view-space x rebuilt from depth one component at a time,
+// `x = ndc.x * depth * k` with k = 1/P00 a cbuffer element (or `/ P00`), as decompiled HLSL writes
+// the view-ray form. Made per eye by x -= s.x * (|depth| - s.y) * |k| right after the statement
+// that computes x (deferred_unprojection_pass.cpp, view rays).
+struct ViewRayTextFix {
+  uint32_t line = 0, lane = 0;            // the statement computing x, and x's lane in its value
+  uint32_t depthLine = 0, depthLane = 0;  // the statement computing the depth factor
+  std::string scale;                      // k as the source names it: "cb0[0].x", "(1 / cb2[6].x)"
+};
+
 struct DeferredFacts {
   std::vector<ViewDependentUse> fixed, leftAlone;
   std::vector<RowProductTextFix> textFixes;  // with PassOptions::sourceTextFixes
+  std::vector<ViewRayTextFix> rayTextFixes;  // likewise
   std::string leftAloneWhy;      // the whole shader left alone, and why
   std::string applicationFills;  // an injected parameter the application sets
 };

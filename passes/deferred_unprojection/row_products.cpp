@@ -96,6 +96,21 @@ class Decomposer {
     return memo_.emplace(at, std::move(value)).first->second;
   }
 
+  // The uniform element (with a constant scale) a lane is, if it is one.
+  std::optional<Coefficient> uniformElement(Lane at) {
+    const Linear& f = form(at);
+    if (f.size() != 1 || f[0].term || !f[0].coefficient.uniform()) return std::nullopt;
+    return f[0].coefficient;
+  }
+  // The constant a lane is, if it is one (0 for a zero).
+  std::optional<float> constant(Lane at) {
+    const Linear& f = form(at);
+    if (f.empty()) return 0.0f;
+    if (f.size() != 1 || f[0].term || f[0].coefficient.uniform()) return std::nullopt;
+    return f[0].coefficient.scale;
+  }
+  const Instruction* definition(uint32_t id) const { return index_.definition(id); }
+
   bool isVector(uint32_t id) const { return lanes(id) > 1; }
   uint32_t lanes(uint32_t id) const {
     const Instruction* def = index_.definition(id);
@@ -422,6 +437,142 @@ std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hls
                                    : "the module has no source lines";
     }
     found.push_back(std::move(p));
+  }
+  return found;
+}
+
+namespace {
+
+// A product's factors, through multiplications, divisions, negations and moves: each a lane and
+// whether it divides. `through`: the products and quotients looked through.
+struct Factors {
+  std::vector<std::pair<Lane, bool>> factors;
+  std::set<uint32_t> through;
+};
+
+// A value computed from texels, uniforms and constants only (a depth made linear, `1 / (a*t + b)`)
+// is one factor, not looked into.
+bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
+
+void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth) {
+  at = d.canonical(at);
+  const Instruction* def = d.definition(at.id);
+  auto lane = [&](uint32_t id) { return Lane{id, d.isVector(id) ? at.lane : 0}; };
+  bool whole = texelOnly(flow.value(at.id, d.isVector(at.id) ? AccessPath{at.lane} : AccessPath{}));
+  if (def && depth < 16 && !whole) {
+    switch (def->opcode) {
+      case spv::OpFMul: case spv::OpFDiv:
+        out.through.insert(def->resultId);
+        collectFactors(d, flow, lane(def->operand(0)), divides, out, depth + 1);
+        collectFactors(d, flow, lane(def->operand(1)), def->opcode == spv::OpFDiv ? !divides : divides, out, depth + 1);
+        return;
+      case spv::OpVectorTimesScalar:
+        out.through.insert(def->resultId);
+        collectFactors(d, flow, {def->operand(0), at.lane}, divides, out, depth + 1);
+        collectFactors(d, flow, {def->operand(1), 0}, divides, out, depth + 1);
+        return;
+      case spv::OpFNegate:
+        out.through.insert(def->resultId);
+        collectFactors(d, flow, lane(def->operand(0)), divides, out, depth + 1);
+        return;
+      default: break;
+    }
+  }
+  out.factors.push_back({at, divides});
+}
+
+// One candidate: the pixel's coordinate (axis 0 or 1), the depth factor, the cbuffer element.
+struct RayCandidate {
+  Lane at, depth;
+  uint32_t axis = 0;
+  Coefficient scale;
+  bool divides = false;
+  Sources screen, depthSources;
+  std::set<uint32_t> through;
+};
+
+std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, Lane at) {
+  Factors f;
+  collectFactors(d, flow, at, false, f, 0);
+  if (f.through.empty()) return std::nullopt;
+  RayCandidate c{at, {}, 0, {}, false, {}, {}, f.through};
+  int screens = 0, depths = 0, scales = 0;
+  for (const auto& [factor, divides] : f.factors) {
+    if (d.constant(factor)) continue;
+    if (auto element = d.uniformElement(factor)) {
+      if (++scales > 1 || element->path.size() < 2) return std::nullopt;
+      c.scale = *element;
+      c.divides = divides;
+      continue;
+    }
+    Sources s = flow.value(factor.id, d.isVector(factor.id) ? AccessPath{factor.lane} : AccessPath{});
+    bool pixel = (s.fragCoord || s.varying) && !s.texel && !s.other;
+    if (pixel && !divides && ((s.inputLanes & 3u) == 1u || (s.inputLanes & 3u) == 2u)) {
+      if (++screens > 1) return std::nullopt;
+      c.axis = (s.inputLanes & 3u) == 1u ? 0 : 1;
+      c.screen = s;
+    } else if (texelOnly(s) && !divides) {
+      if (++depths > 1) return std::nullopt;
+      c.depth = factor;
+      c.depthSources = s;
+    } else {
+      return std::nullopt;
+    }
+  }
+  if (screens != 1 || depths != 1 || scales != 1) return std::nullopt;
+  return c;
+}
+
+std::string scaleText(const spirv::Module& m, const RayCandidate& c) {
+  std::string element = elementText(m, c.scale);
+  if (element.empty()) return "";
+  return c.divides ? "(1 / " + element + ")" : element;
+}
+
+}  // namespace
+
+std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile) {
+  ValueFlow index(registers);
+  SourceAnalysis flow(index, hlsl, {});
+  Decomposer d(index);
+  LineMap lines(registers, mainFile);
+  std::vector<RayCandidate> candidates;
+  std::set<Lane> seen;
+  spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpFMul && inst.opcode != spv::OpFDiv && inst.opcode != spv::OpVectorTimesScalar) return;
+    const Instruction* type = registers.definition(inst.typeId);
+    uint32_t count = type && type->opcode == spv::OpTypeVector ? type->operand(1) : 1;
+    for (uint32_t lane = 0; lane < count; ++lane) {
+      Lane at = d.canonical({inst.resultId, lane});
+      if (!seen.insert(at).second) continue;
+      if (auto c = rayCandidate(d, flow, at)) candidates.push_back(std::move(*c));
+    }
+  });
+  // The innermost product only: one computed from another candidate is per eye through it.
+  std::erase_if(candidates, [&](const RayCandidate& c) {
+    return std::any_of(candidates.begin(), candidates.end(),
+                       [&](const RayCandidate& inner) { return &inner != &c && c.through.count(inner.at.id) && inner.axis == c.axis; });
+  });
+  std::vector<ComponentRay> found;
+  for (const auto& c : candidates) {
+    if (c.axis != 0) continue;
+    // A position rebuild has its y from the same depth.
+    bool hasY = std::any_of(candidates.begin(), candidates.end(),
+                            [&](const RayCandidate& y) { return y.axis == 1 && y.depth == c.depth; });
+    if (!hasY) continue;
+    ComponentRay r;
+    r.x = c.screen;
+    r.depth = c.depthSources;
+    r.fix.line = lines.lineOf(c.at.id);
+    r.fix.lane = c.at.lane;
+    r.fix.depthLine = lines.lineOf(c.depth.id);
+    r.fix.depthLane = c.depth.lane;
+    r.fix.scale = scaleText(registers, c);
+    if (r.fix.scale.empty()) r.reason = "the projection scale is not a cbuffer element the source can name";
+    else if (!r.fix.line || !r.fix.depthLine)
+      r.reason = lines.present() ? "x or the depth is computed outside the main file (an #include or a macro)"
+                                 : "the module has no source lines";
+    found.push_back(std::move(r));
   }
   return found;
 }

@@ -32,6 +32,22 @@ struct RowProduct {
   std::string reason;     // empty when every component has a line of the main file
 };
 
+// The view-ray form spelled per component (decompiled HLSL): a scalar x that is a product of the
+// pixel's NDC x (lane 0 of SV_Position or a vector input, no texel), one depth factor (computed
+// from a texel, no per-pixel input), one cbuffer element (k = 1/P00, or P00 divided by) and
+// constants; a position rebuild has its y the same way (the pixel's y, the same depth factor), and
+// an x without such a y is not taken (a texture coordinate scaled by a texel and a strength is
+// not a position). The innermost such product is the fix point: later scalings of it are per eye
+// through it.
+struct ComponentRay {
+  ViewRayTextFix fix;
+  Sources x, depth;
+  std::string reason;  // empty when x and the depth have lines of the main file
+};
+
+// Every such x of `registers`, once each; lines count in `mainFile`.
+std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile);
+
 // Whether the module has uniform data an unprojection could be held in as rows: a uniform block
 // member that is an array of float4 (a decompiled cbuffer). Cheap; spares other shaders the copy.
 bool hasCbufferRows(const spirv::Module& m);

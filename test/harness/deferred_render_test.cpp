@@ -255,6 +255,19 @@ const std::string kDumpDp4Lighting = kDumpPrologue + R"(  r2.z = r1.x;
   r2.xyz = r3.xyz / r0.www;
 )" + kDumpEpilogue;
 
+// The view-ray form as a decompiled dump: the linear depth (the G-buffer's positive view depth, set 1
+// binding 2) times the NDC, times the inverse projection's scales read from the camera rows
+// (cb0[0].x = 1/P00, cb0[1].y = 1/P11), one component per statement; z = -depth.
+const std::string kDumpViewRay = kDumpPrologue + R"(  r2.xy = r2.xy * r1.xx;
+  r3.x = r2.x * cb0[0].x;
+  r3.y = r2.y * cb0[1].y;
+  r3.z = -r1.x;
+  uiDest.x = asuint(r3[POSITION_COMPONENT]);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+}
+)";
+
 // The view-ray form: the pixel's far-plane point through the inverse projection is the ray, scaled
 // so that its z is the linear view depth the G-buffer stores (a positive depth; view space -z).
 // The uniform block shares FrameUBO's first two members, so renderLighting() feeds it.
@@ -425,7 +438,8 @@ Transpiled compileTranspiled(const char* name, const char* text, TranspileOption
 // A 3Dmigoto dump converted as `stereoshift <hash>-ps_replace.txt --eye-source 3dmigoto` does it:
 // the output is the dump's text with the correction spliced in (route hlsl-pixel-splice), compiled
 // here like the original.
-std::vector<uint32_t> compileDumpFixed(const char* name, const char* text, TranspileOptions options) {
+std::vector<uint32_t> compileDumpFixed(const char* name, const char* text, TranspileOptions options,
+                                       nlohmann::json* pass = nullptr) {
   TranspileOptions convert = options;
   convert.target = TargetLanguage::Hlsl;
   convert.eyeFrom3DMigoto = true;
@@ -437,6 +451,7 @@ std::vector<uint32_t> compileDumpFixed(const char* name, const char* text, Trans
   EXPECT_EQ(r.report.value("route", std::string()), "hlsl-pixel-splice") << r.report.dump(2);
   EXPECT_NE(r.output.find("StereoParams.Load"), std::string::npos) << r.output;
   EXPECT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"].size(), 1u) << r.report.dump(2);
+  if (pass) *pass = r.report["passes"]["deferred-unprojection"];
   return compileOriginal(name, r.output.c_str(), options);
 }
 
@@ -608,6 +623,8 @@ class DeferredRender : public ::testing::Test {
 
   // `dump`: the shader is a 3Dmigoto dump, converted as text with --eye-source 3dmigoto.
   void checkRebuiltPositions(const char* name, const char* text, const char* tag, const DumpFeed* dump = nullptr);
+  // The view-ray check: the rebuilt view-space point of fix and mono baseline against the exact one.
+  void checkViewRay(const char* name, const char* text, const char* tag, const DumpFeed* dump = nullptr);
   void checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix);
 
   std::unique_ptr<VulkanContext> context_;
@@ -784,7 +801,7 @@ TEST_F(DeferredRender, DumpStyleDp4RowsFixedInItsTextByExecution) {
 // 1.15e-7 (right), about one fp32 ulp; mono baseline 0.037 and 0.035. Asserted: the fix within
 // kViewRayBound = 5e-7 (four ulps) everywhere; the baseline, off by e*S*(d - C)/p00 in x, beyond
 // 1000 times that bound at nine pixels out of ten (it is right only near the convergence depth).
-TEST_F(DeferredRender, ViewRayPositionWithinBoundOfTheTruePosition) {
+void DeferredRender::checkViewRay(const char* name, const char* text, const char* tag, const DumpFeed* dump) {
   constexpr double kViewRayBound = 5e-7;
   const Mat4 monoInverseProjection = inverse(projection(0));
   const Mat4 mono = projection(0);
@@ -802,15 +819,23 @@ TEST_F(DeferredRender, ViewRayPositionWithinBoundOfTheTruePosition) {
     for (int component = 0; component < 3; ++component) {
       TranspileOptions options;
       options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
-      auto original = compileOriginal("view_ray.frag", kViewRayFrag, options);
-      Transpiled transpiled = compileTranspiled("view_ray.frag", kViewRayFrag, options);
-      report = transpiled.report["passes"]["deferred-unprojection"];
-      fixedPosition[component] = renderLighting(linear, transpiled.spirv, monoInverseProjection, &transpiled, eye);
-      baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye);
+      auto original = compileOriginal(name, text, options);
+      if (dump) {
+        DumpFeed mono{dump->rows, false}, stereo{dump->rows, true};
+        std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options, &report);
+        fixedPosition[component] = renderLighting(linear, fixedDump, monoInverseProjection, nullptr, eye, stereo);
+        baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye, mono);
+      } else {
+        Transpiled transpiled = compileTranspiled(name, text, options);
+        report = transpiled.report["passes"]["deferred-unprojection"];
+        fixedPosition[component] = renderLighting(linear, transpiled.spirv, monoInverseProjection, &transpiled, eye);
+        baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye);
+      }
       ASSERT_TRUE(fixedPosition[component].ok() && baseline[component].ok());
     }
     ASSERT_TRUE(report.contains("fixed")) << report.dump(2);
-    EXPECT_EQ(report["fixed"][0].value("projection_scale", ""), "1 / frame.invProjection[0][0]") << report.dump(2);
+    EXPECT_EQ(report["fixed"][0].value("projection_scale", ""), dump ? "1 / cb0[0].x" : "1 / frame.invProjection[0][0]")
+        << report.dump(2);
     auto bitsAt = [](const RenderResult& r, size_t pixel) {
       uint32_t bits = 0;
       for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
@@ -841,13 +866,25 @@ TEST_F(DeferredRender, ViewRayPositionWithinBoundOfTheTruePosition) {
         worstBaseline = std::max(worstBaseline, baselineError / length);
         baselineWrong += baselineError / length > 1000 * kViewRayBound;
       }
-    std::cout << std::setprecision(3) << "[view ray] eye " << eye << ": view-space position over " << pixels
+    std::cout << std::setprecision(3) << "[" << tag << "] eye " << eye << ": view-space position over " << pixels
               << " pixels, max |p - p_exact| / |p_exact|: fix " << worstFix << ", mono baseline " << worstBaseline
               << "; baseline beyond 1000x the fix bound at " << baselineWrong << " pixels\n";
     EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
     EXPECT_LT(worstFix, kViewRayBound) << "eye " << eye;
     EXPECT_GT(baselineWrong, pixels * 9 / 10) << "eye " << eye << ": the mono baseline should be wrong";
   }
+}
+
+TEST_F(DeferredRender, ViewRayPositionWithinBoundOfTheTruePosition) {
+  checkViewRay("view_ray.frag", kViewRayFrag, "view ray");
+}
+
+// The view-ray form as a decompiled dump writes it, one component at a time (kDumpViewRay): the
+// converted text's view-space x corrected by s.x*(|depth| - s.y)*|k| after its statement, the same
+// bound as the SPIR-V fix of the GLSL shader.
+TEST_F(DeferredRender, DumpStyleViewRayComponentsFixedInItsTextByExecution) {
+  DumpFeed columns{false, false};
+  checkViewRay("2a3b4c5d6e7f8091-ps_replace.txt", kDumpViewRay.c_str(), "dump view ray", &columns);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // This turns the per-eye corrections the passes found in an HLSL pixel shader that comes back as
 // HLSL into text: the deferred pass's text fixes (an unprojection through cbuffer rows, placed by
-// source line: RunRecord::deferred.textFixes) spliced into the original file
+// source line, and the view-space x rebuilt per component: RunRecord::deferred.textFixes,
+// rayTextFixes) spliced into the original file
 // (hlsl_splice/pixel.cpp) with 3Dmigoto's StereoParams. What only the IR carries (a fix the pass
 // made in the module) is not this route's: it declines, and the re-emit takes the stage.
 #include "transpiler/backend/splice_routes.h"
@@ -21,10 +22,10 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
     const SourceInfo& info = r.context.source;
     const DeferredFacts& deferred = r.context.record.deferred;
     if (info.language != SourceLanguage::Hlsl || r.target != TargetLanguage::Hlsl || info.stage != Stage::Fragment ||
-        deferred.textFixes.empty())
+        (deferred.textFixes.empty() && deferred.rayTextFixes.empty()))
       return RouteDecision::decline("not an HLSL pixel shader with corrections for its text");
     if (!changesBeyond(r.context.record, {"deferred-unprojection"}).empty() ||
-        deferred.fixed.size() != deferred.textFixes.size())
+        deferred.fixed.size() != deferred.textFixes.size() + deferred.rayTextFixes.size())
       return RouteDecision::decline("a pass changed what only the IR carries besides the text corrections", true);
     return RouteDecision::accept();
   }
@@ -32,7 +33,7 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
   EmitResult emit(const EmitRequest& r, EmitFacts& facts, Diagnostics& diags) const override {
     EmitResult result;
     const SourceInfo& info = r.context.source;
-    HlslSpliceResult spliced = splicePixelCorrections(r.input.contents, r.context.record.deferred.textFixes, info.entryPoint);
+    HlslSpliceResult spliced = splicePixelCorrections(r.input.contents, r.context.record.deferred, info.entryPoint);
     if (!spliced.ok) {
       diags.error(r.input.path, spliced.line, spliced.column, spliced.error);
       result.status = EmitResult::Failed;

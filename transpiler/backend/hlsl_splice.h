@@ -89,10 +89,10 @@ struct HlslSpliceResult {
 HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOptions& options);
 
 // Pixel shaders (3Dmigoto's StereoParams): the deferred pass's text fixes spliced in after the line
-// that completes each rebuilt position (hlsl_splice/pixel.cpp), StereoParams declared before
+// that completes each rebuilt position or computes each view-space x (hlsl_splice/pixel.cpp), StereoParams declared before
 // `entryPoint` unless the file declares it. An error (with its line) where the text does not
 // show for certain where a component of the position lives.
-HlslSpliceResult splicePixelCorrections(const std::string& source, const std::vector<RowProductTextFix>& fixes,
+HlslSpliceResult splicePixelCorrections(const std::string& source, const DeferredFacts& facts,
                                         const std::string& entryPoint);
 
 // Sets `options` up for 3Dmigoto's StereoParams texture (see stereoParamsTexture).

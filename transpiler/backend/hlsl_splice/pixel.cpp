@@ -127,9 +127,57 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   return t;
 }
 
+// Where a view-ray fix's x and depth live: the statements on their lines, and no line from the
+// depth's statement to x's rewriting the depth's register component or being anything but an
+// assignment.
+Located locateRay(const Lines& lines, const ViewRayTextFix& fix) {
+  Located out;
+  auto fail = [&](uint32_t line, std::string why) {
+    out.error = std::move(why);
+    out.errorLine = line;
+    return out;
+  };
+  auto x = assignmentOn(lines.line(fix.line)), depth = assignmentOn(lines.line(fix.depthLine));
+  if (!x || fix.lane >= x->mask.size())
+    return fail(fix.line, "the statement computing the view-space x is not one `reg.mask = ...;` on its line");
+  if (!depth || fix.depthLane >= depth->mask.size() || fix.depthLine > fix.line)
+    return fail(fix.depthLine, "the statement computing the depth is not one `reg.mask = ...;` on its line");
+  out.component[0] = x->reg + "." + x->mask[fix.lane];
+  char c = depth->mask[fix.depthLane];
+  out.component[1] = depth->reg + "." + c;
+  for (uint32_t l = fix.depthLine + 1; l <= fix.line; ++l) {
+    std::string text = lines.line(l);
+    if (text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos) continue;
+    auto later = assignmentOn(text);
+    if (!later) return fail(l, "a line between the depth and the view-space x is not a plain assignment");
+    if (later->reg == depth->reg && later->mask.find(c) != std::string::npos)
+      return fail(l, "register " + out.component[1] + " (the depth) is written again before the view-space x is corrected");
+  }
+  return out;
+}
+
+std::string rayBlock(const ViewRayTextFix& fix, const Located& at, const std::string& indent, const std::string& nl) {
+  const std::string s = std::string(kPrefix) + "_stereo";
+  std::string t = indent + "// ---- stereoshift: this eye's view-space x (line " + std::to_string(fix.line) +
+                  ": x = ndc.x * depth * " + fix.scale + ") ----" + nl;
+  t += indent + "{" + nl;
+  t += indent + "  float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
+  t += indent + "  " + at.component[0] + " -= " + s + ".x * (abs(" + at.component[1] + ") - " + s + ".y) * abs(" +
+       fix.scale + ");" + nl;
+  t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
+  return t;
+}
+
+// Inserts `block` after line `line`, with a line break first when the file's last line has none.
+void insertAfterLine(EditBuffer& edits, const Lines& lines, const std::string& source, uint32_t line, std::string block) {
+  size_t end = lines.endOf(line);
+  if (end == source.size() && (source.empty() || source.back() != '\n')) block = edits.newline() + block;
+  edits.add(end, 0, std::move(block));
+}
+
 }  // namespace
 
-HlslSpliceResult splicePixelCorrections(const std::string& source, const std::vector<RowProductTextFix>& fixes,
+HlslSpliceResult splicePixelCorrections(const std::string& source, const DeferredFacts& facts,
                                         const std::string& entryPoint) {
   HlslSpliceResult result;
   TokenView view(source);
@@ -147,21 +195,25 @@ HlslSpliceResult splicePixelCorrections(const std::string& source, const std::ve
   }
   EditBuffer edits(source);
   Lines lines(source);
-  for (const auto& fix : fixes) {
+  auto failAt = [&](const Located& at, const std::string& what) {
+    result.error = "cannot place this eye's " + what + ": " + at.error;
+    result.line = static_cast<int>(at.errorLine);
+    std::string text = lines.line(at.errorLine);
+    result.column = static_cast<int>(std::min(text.find_first_not_of(" \t"), text.size())) + 1;
+    return result;
+  };
+  for (const auto& fix : facts.textFixes) {
     Located at = locate(lines, fix);
-    if (!at.error.empty()) {
-      result.error = "cannot place this eye's position rebuild: " + at.error;
-      result.line = static_cast<int>(at.errorLine);
-      std::string text = lines.line(at.errorLine);
-      result.column = static_cast<int>(std::min(text.find_first_not_of(" \t"), text.size())) + 1;
-      return result;
-    }
+    if (!at.error.empty()) return failAt(at, "position rebuild");
     std::string indent = indentOf(lines.line(fix.afterLine));
-    std::string block = correctionBlock(fix, at, indent, edits.newline());
-    size_t end = lines.endOf(fix.afterLine);
-    // A last line without a line break gets one before the block.
-    if (end == source.size() && (source.empty() || source.back() != '\n')) block = edits.newline() + block;
-    edits.add(end, 0, block);
+    insertAfterLine(edits, lines, source, fix.afterLine, correctionBlock(fix, at, indent, edits.newline()));
+    ++result.sites;
+  }
+  for (const auto& fix : facts.rayTextFixes) {
+    Located at = locateRay(lines, fix);
+    if (!at.error.empty()) return failAt(at, "view-space position");
+    std::string indent = indentOf(lines.line(fix.line));
+    insertAfterLine(edits, lines, source, fix.line, rayBlock(fix, at, indent, edits.newline()));
     ++result.sites;
   }
   // The dump's own declaration (its "3Dmigoto declarations") is the one 3Dmigoto binds.
