@@ -62,6 +62,9 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                "Compute the shift with error-free transformations (about 30 instructions, <= 1 ULP); needs `precise`");
   app.add_flag("--no-invariant", o.noInvariant, "Do not mark the position invariant / the shift NoContraction");
   app.add_flag("--no-halo", o.noHalo, "Do not shift outputs derived from the clip position");
+  app.add_flag("--corrections-only", o.correctionsOnly,
+               "Leave every clip position to the driver's own shift (3D Vision, geo-11) and write only the per-eye "
+               "corrections (deferred unprojection in pixel shaders)");
   app.add_flag("--no-per-eye-view", o.noPerEyeView,
                "Keep the mono camera position in view vectors that offset texture coordinates (relief mapping)");
   app.add_flag("--per-eye-specular", o.t.perEyeSpecular,
@@ -235,6 +238,7 @@ std::optional<std::string> finishShiftOptions(CliOptions& o) {
   else if (o.t.cutoffEpsilon == 0.0f) o.t.cutoff = CutoffMode::Exact;
   o.t.invariantPosition = !o.noInvariant;
   o.t.haloFix = !o.noHalo;
+  o.t.correctionsOnly = o.correctionsOnly;
   o.t.perEyeView = !o.noPerEyeView;
   o.t.deferredUnprojection = !o.noDeferredUnprojection;
   // Layout numbers are written into the emitted text, which glslang re-compiles before anything is
@@ -318,6 +322,7 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
   };
   if (t.requireAnalysis) description["requireAnalysis"] = true;  // only when given: default keys unchanged
   if (t.eyeFrom3DMigoto) description["eyeFrom3DMigoto"] = true;
+  if (t.correctionsOnly) description["correctionsOnly"] = true;
   // Only when given, so the cache keys of builds without -x stay what they were.
   if (t.language) description["language"] = static_cast<int>(*t.language);
   if (t.targetEnv) description["targetEnv"] = targetEnvName(*t.targetEnv);

@@ -28,7 +28,7 @@ struct CliOptions {
   std::string pipeline;
   std::string reportPath;
   std::string depfile;  // single shader / pipeline: Makefile-style dependencies of the outputs
-  bool noCutoff = false, noInvariant = false, noHalo = false;
+  bool noCutoff = false, noInvariant = false, noHalo = false, correctionsOnly = false;
   bool diff = false;  // --diff: print each output's edits as a unified diff against its input
   bool noPerEyeView = false, noDeferredUnprojection = false;
   std::optional<uint32_t> set, binding, hlslRegister, glBinding;

@@ -54,7 +54,11 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::ConstantW1;
     } else {
       ctx.classification = Classification::Perspective;
-      ctx.shiftPosition = true;
+      ctx.shiftPosition = !ctx.options.correctionsOnly;
+      if (ctx.options.correctionsOnly) {
+        facts.leftToDriver = true;
+        ctx.diags.note(ctx.file, "--corrections-only: the clip position is left to the driver's own shift");
+      }
     }
     facts.classification = ctx.classification;
     return PassResult::Unchanged;

@@ -68,6 +68,9 @@ struct PassOptions {
   bool compensatedShift = false;  // error-free transformations: x' within ~0.5 ULP of the exact shift
   bool haloFix = true;
   bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
+  // --corrections-only: the driver shifts every clip position itself (3D Vision Automatic, geo-11);
+  // no stage gets the shift, only the per-eye corrections (deferred-unprojection's fixes).
+  bool correctionsOnly = false;
   // Per-eye pixel maths (docs/stereo-math.md sections 2-4)
   bool perEyeView = true;             // per-eye camera position where a view vector offsets texture coordinates
   bool perEyeSpecular = false;        // also where it only feeds lighting (specular looks fine mono)

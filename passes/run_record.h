@@ -50,6 +50,7 @@ struct DetectionFacts {
   std::optional<Classification> classification;  // set when the pass ran
   std::vector<std::string> positions;  // the clip-position outputs, e.g. "gl_PerVertex.gl_Position"
   std::string alreadyStereo;           // why it is stereo already, when it is
+  bool leftToDriver = false;           // perspective, not shifted: --corrections-only
 };
 
 // hud-at-depth.

@@ -70,6 +70,7 @@ void renderDetection(const RunRecord& record, json& passes) {
   out["positions"] = facts.positions;
   out["classification"] = toString(*facts.classification);
   if (!facts.alreadyStereo.empty()) out["already_stereo"] = facts.alreadyStereo;
+  if (facts.leftToDriver) out["position_left_to_driver"] = "--corrections-only: the driver shifts it";
 }
 
 void renderHudAtDepth(const RunRecord& record, json& passes) {

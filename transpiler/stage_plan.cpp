@@ -184,6 +184,7 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
 
 namespace {
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
+bool copyLeftToDriver(StagePlan& plan, Stage stage);
 bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route);
 }  // namespace
 
@@ -193,6 +194,7 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
     return false;
   Stage stage = *plan.stage->stage;
   if (!mayShiftFromText(stage, language, options, options)) return false;
+  if (options.correctionsOnly) return copyLeftToDriver(plan, stage);
   if (language == SourceLanguage::Hlsl) return shiftHlslStageFromText(plan, options, stage);
   if (language != SourceLanguage::Glsl) return false;
   // Only where glslang's refusal may be its own gap: the source uses what glslang reads more
@@ -218,6 +220,28 @@ bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   for (const auto& d : plan.diags.all())
     if (d.severity == Severity::Error && !d.file.empty() && d.file != plan.input->path) return false;  // an #include's
   return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), "hlsl-text-only");
+}
+
+// --corrections-only, a pre-rasterization stage glslang cannot analyse: the driver shifts its
+// position, and no correction can be found without an analysis: the input as it is, said so.
+bool copyLeftToDriver(StagePlan& plan, Stage stage) {
+  const std::string& file = plan.input->path;
+  Diagnostics kept;
+  for (Diagnostic d : plan.diags.all()) {
+    if (d.severity == Severity::Error) d.severity = Severity::Warning;
+    kept.add(std::move(d));
+  }
+  kept.warning(file, "glslang cannot analyse this shader; with --corrections-only its position is left to the driver "
+                     "and no correction is looked for: copied unchanged");
+  plan.diags = std::move(kept);
+  StageRecord& record = plan.record;
+  record.stage = stage;
+  record.stageReason = plan.stage->reason;
+  record.output = StageRecord::Output::Copied;
+  record.totalMs = msSince(plan.started);
+  plan.output = plan.input->contents;
+  plan.changed = false;
+  return true;
 }
 
 bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route) {

@@ -62,8 +62,10 @@ TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOpt
   record.emit.route = "d3d-asm-splice";
   if (shifted.alreadyStereo)
     result.diagnostics.warning(input.path, shifted.whyUnchanged + " (copied unchanged)");
-  if (!shifted.shifted || !options.shiftThisStage) {
-    assembly.unchangedBecause = shifted.shifted ? "an earlier stage of the pipeline" : shifted.whyUnchanged;
+  if (!shifted.shifted || !options.shiftThisStage || options.correctionsOnly) {
+    assembly.unchangedBecause = !shifted.shifted          ? shifted.whyUnchanged
+                                : options.correctionsOnly ? "--corrections-only: the position is left to the driver's shift"
+                                                          : "an earlier stage of the pipeline";
     record.assembly = assembly;
     record.output = StageRecord::Output::Copied;
     result.ok = true;
