@@ -302,8 +302,10 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
       facts.leftAlone.push_back(entry);
       continue;
     }
-    entry.fix = "q - (" + p.fix.column[0] + ", " + p.fix.column[1] + ", " + p.fix.column[2] + ", " + p.fix.column[3] +
-                ") * s.x*(1 - s.y*q.w) after line " + std::to_string(p.fix.afterLine) + ", before the divide";
+    std::string column;
+    for (size_t i = 0; i < 4; ++i) column += (i ? ", " : "") + (p.fix.present[i] ? p.fix.column[i] : std::string("-"));
+    entry.fix = "q - (" + column + ") * s.x*(1 - s.y*q.w) after line " + std::to_string(p.fix.afterLine) +
+                ", before the divide";
     facts.fixed.push_back(entry);
     facts.textFixes.push_back(p.fix);
     recorded = true;

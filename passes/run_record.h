@@ -117,6 +117,8 @@ struct RowProductTextFix {
   std::array<uint32_t, 4> lines{}, lanes{};
   // InvM's column of NDC x, element by element, as the source names it: "cb1[20].x", "-cb1[20].x".
   std::array<std::string, 4> column;
+  // Which components the shader computes (w always; a compiler drops the lanes nothing reads).
+  std::array<bool, 4> present{true, true, true, true};
 };
 
 // A fix only the source text carries: a view-space x rebuilt from depth one component at a time,

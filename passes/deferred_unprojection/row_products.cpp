@@ -341,6 +341,7 @@ std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>&
     vectors.insert(elementText(m, c));
   };
   for (const Member* member : q) {
+    if (!member) continue;
     add(member->translation);
     for (const auto& [term, c] : member->byTerm) add(c);
   }
@@ -363,11 +364,19 @@ std::vector<std::array<const Member*, 4>> groupProducts(const std::vector<Member
   }
   for (const auto& [key, groups] : open)
     for (const auto& g : groups) {
-      if (g.size() != 4) continue;
-      uint32_t first = g.begin()->first;
-      if (g.rbegin()->first != first + 3) continue;  // lanes 0-3, or rows k..k+3
+      // Column storage names each component by its lane, so a product the compiler narrowed to
+      // the lanes the shader uses (`r1.xyw = ...`) is still one, with its w; rows need all four
+      // to say which is w.
+      bool columns = key.starts_with("c:");
       std::array<const Member*, 4> q{};
-      for (const auto& [index, member] : g) q[index - first] = member;
+      if (columns) {
+        if (!g.count(3) || g.size() < 2) continue;
+        for (const auto& [index, member] : g) q[index] = member;
+      } else {
+        uint32_t first = g.begin()->first;
+        if (g.size() != 4 || g.rbegin()->first != first + 3) continue;  // rows k..k+3
+        for (const auto& [index, member] : g) q[index - first] = member;
+      }
       products.push_back(q);
     }
   return products;
@@ -417,7 +426,7 @@ std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hls
     // Which term is which: the pixel's x (lane 0 of the input), its y (lane 1), the depth.
     std::optional<Lane> x;
     bool haveY = false, haveZ = false, other = false;
-    for (const auto& [term, c] : q[0]->byTerm) {
+    for (const auto& [term, c] : q[3]->byTerm) {
       Sources s = flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
       if (screen(s, 1u) && !x) x = term, p.x = s;
       else if (screen(s, 2u) && !haveY) haveY = true, p.y = s;
@@ -427,6 +436,8 @@ std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hls
     if (other || !x || !haveY || !haveZ) continue;
     p.rows = rowsText(registers, q);
     for (uint32_t i = 0; i < 4; ++i) {
+      p.fix.present[i] = q[i] != nullptr;
+      if (!q[i]) continue;  // a lane the shader does not compute
       p.fix.column[i] = elementText(registers, q[i]->byTerm.at(*x));
       p.fix.lines[i] = lines.lineOf(q[i]->at.id);
       p.fix.lanes[i] = q[i]->at.lane;

@@ -85,7 +85,13 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
     out.errorLine = line;
     return out;
   };
+  if (!fix.present[3]) {
+    out.error = "the rebuilt position has no w";
+    out.errorLine = fix.afterLine;
+    return out;
+  }
   for (size_t i = 0; i < 4; ++i) {
+    if (!fix.present[i]) continue;
     auto a = assignmentOn(lines.line(fix.lines[i]));
     if (!a || fix.lanes[i] >= a->mask.size())
       return fail(fix.lines[i], "the statement computing component " + std::to_string(i) +
@@ -99,7 +105,7 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
       auto later = assignmentOn(text);
       if (!later) return fail(l, "a line between the rebuilt position's statements is not a plain assignment");
       bool partOfQ = false;
-      for (size_t j = 0; j < 4; ++j) partOfQ |= fix.lines[j] == l;
+      for (size_t j = 0; j < 4; ++j) partOfQ |= fix.present[j] && fix.lines[j] == l;
       if (later->reg == a->reg && later->mask.find(c) != std::string::npos)
         return fail(l, "register " + out.component[i] + " is written again before the rebuilt position is complete");
       if (!partOfQ && reads(later->rhs, a->reg, c))
@@ -114,7 +120,9 @@ std::string indentOf(const std::string& line) { return line.substr(0, line.find_
 std::string correctionBlock(const RowProductTextFix& fix, const Located& at, const std::string& indent,
                             const std::string& nl) {
   const std::string s = std::string(kPrefix) + "_stereo", d = std::string(kPrefix) + "_d", in = indent + "  ";
-  uint32_t first = *std::min_element(fix.lines.begin(), fix.lines.end());
+  uint32_t first = fix.afterLine;
+  for (size_t i = 0; i < 4; ++i)
+    if (fix.present[i]) first = std::min(first, fix.lines[i]);
   std::string lines = first == fix.afterLine ? "line " + std::to_string(first)
                                               : "lines " + std::to_string(first) + "-" + std::to_string(fix.afterLine);
   std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
@@ -122,7 +130,8 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   t += indent + "{" + nl;
   t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
   t += in + "float " + d + " = " + s + ".x * (1 - " + s + ".y * " + at.component[3] + ");" + nl;
-  for (size_t i = 0; i < 4; ++i) t += in + at.component[i] + " -= " + fix.column[i] + " * " + d + ";" + nl;
+  for (size_t i = 0; i < 4; ++i)
+    if (fix.present[i]) t += in + at.component[i] + " -= " + fix.column[i] + " * " + d + ";" + nl;
   t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
   return t;
 }
