@@ -54,7 +54,7 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::ConstantW1;
     } else {
       ctx.classification = Classification::Perspective;
-      ctx.shiftPosition = !ctx.options.correctionsOnly;
+      ctx.shiftPosition = true;  // with --corrections-only for the halo copies: stereo-shift leaves it
       if (ctx.options.correctionsOnly) {
         facts.leftToDriver = true;
         ctx.diags.note(ctx.file, "--corrections-only: the clip position is left to the driver's own shift");

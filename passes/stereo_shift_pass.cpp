@@ -21,7 +21,8 @@ class StereoShiftPass final : public Pass {
   const char* name() const override { return "stereo-shift"; }
 
   PassResult run(PassContext& ctx) override {
-    if (!ctx.shiftPosition) return PassResult::Unchanged;
+    // --corrections-only: the driver shifts the position itself (its halo copies are halo's).
+    if (!ctx.shiftPosition || ctx.options.correctionsOnly) return PassResult::Unchanged;
     auto& m = ctx.module;
     ShiftFacts& facts = ctx.record.shift;
     const std::vector<ClipPosition>& positions = ctx.analyses.clipPositions().outputs();

@@ -330,6 +330,26 @@ void chooseStageOptions(StagePlan& plan, const TranspileOptions& options) {
       if (other.name != plan.info.entryPoint) plan.otherEntries.push_back({other.name, other.stage, other.foundBy});
 }
 
+// --corrections-only on a pre-rasterization stage: its position is the driver's; what is left to
+// write is the halo copies of it, which the HLSL vertex splice shifts alone (the position returned
+// as it is). Anything else of the stage (the eye parameters declared for the copies, outputs only
+// derived from the position, other dialects and stages, whose splices shift the position with its
+// copies) is dropped: the stage is written as it was, and a derived output is said in a warning.
+void keepOnlyCorrections(StagePlan& plan, PassContext& ctx) {
+  if (ctx.classification != Classification::Perspective || !plan.changed) return;
+  const HaloFacts& halo = ctx.record.halo;
+  bool copies = ctx.record.changed("halo") && halo.derivedOutputs.empty();
+  bool hlslVertex = plan.info.language == SourceLanguage::Hlsl && plan.info.stage == Stage::Vertex &&
+                    resolveTarget(plan.info, plan.options) == TargetLanguage::Hlsl;
+  if (copies && hlslVertex) return;
+  if (ctx.record.changed("halo"))
+    plan.diags.warning(plan.input->path, "--corrections-only: the outputs derived from the clip position (" +
+                                             (halo.derivedOutputs.empty() ? halo.shiftedOutputs->front()
+                                                                          : halo.derivedOutputs.front()) +
+                                             ") are not shifted: only an HLSL vertex shader's exact copies of it are");
+  plan.changed = false;
+}
+
 bool runStagePasses(StagePlan& plan) {
   auto started = std::chrono::steady_clock::now();
   plan.context = std::make_unique<PassContext>(*plan.module, plan.options, plan.info, plan.diags, plan.input->path,
@@ -340,6 +360,7 @@ bool runStagePasses(StagePlan& plan) {
   ctx.output = {plan.options.target, plan.options.targetVersion};
   plan.record.passesRan = true;
   bool ok = runPassPipeline(ctx, &plan.changed, &plan.passLog);
+  if (ok && plan.options.correctionsOnly) keepOnlyCorrections(plan, ctx);
   plan.record.passes = ctx.record;
   if (!ok) return false;
   plan.record.classification = ctx.classification;

@@ -72,6 +72,9 @@ struct HlslSpliceOptions : ShiftSpec {
   // sign, 0 in mono; y the convergence). The shift names are set by useStereoParamsTexture.
   bool stereoParamsTexture = false;
   bool declareStereoParams = true;  // set by the splice: false when the file declares StereoParams
+  // --corrections-only (vertex shaders): the driver shifts the clip position itself; only the halo
+  // copies of it (`vertexEntries[].copies`) are shifted, the position is returned as it is.
+  bool correctionsOnly = false;
   // The epsilon is printed with 9 significant digits (round-trips a float); `precise` computes the
   // shifted x into a `precise float` temporary.
 };

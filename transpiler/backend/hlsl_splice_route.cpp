@@ -189,6 +189,7 @@ class HlslSpliceRoute final : public BackEndRoute {
     splice.cbufferName = module.name(module.pointeeType(module.definition(ctx.eye.variable)->typeId));
     splice.cbufferRegister = module.decorationValue(ctx.eye.variable, spv::DecorationBinding).value_or(0);
     if (r.options.eyeFrom3DMigoto) useStereoParamsTexture(splice);
+    splice.correctionsOnly = ctx.options.correctionsOnly;
     HlslSpliceResult spliced = spliceHlslStereo(r.input.contents, splice);
     if (!spliced.ok) {
       diags.error(r.input.path, spliced.line, spliced.column, "cannot splice the stereo shift: " + spliced.error);

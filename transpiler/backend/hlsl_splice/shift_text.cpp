@@ -96,7 +96,8 @@ std::string shiftFunctionText(const HlslSpliceOptions& spec, const ShiftHelper& 
   auto lines = [&](const std::vector<std::string>& code, const std::string& in) {
     for (const auto& line : code) body += in + line + nl;
   };
-  std::vector<std::string> accesses = {helper.access};
+  std::vector<std::string> accesses;
+  if (helper.positionToo) accesses.push_back(helper.access);
   accesses.insert(accesses.end(), helper.copies.begin(), helper.copies.end());
   for (size_t k = 0; k < accesses.size(); ++k) {
     const std::string p = v + accesses[k];

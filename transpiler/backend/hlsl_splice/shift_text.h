@@ -22,6 +22,8 @@ struct ShiftHelper {
   // Further float4 members that hold an exact copy of the clip position (halo copies: the passes
   // found them equal to it), shifted the same way from their own x and w.
   std::vector<std::string> copies;
+  // Whether `access` itself is shifted (false with --corrections-only: the copies only).
+  bool positionToo = true;
 };
 
 // The cbuffer of the eye parameters.

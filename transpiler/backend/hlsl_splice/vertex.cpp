@@ -67,17 +67,20 @@ class VertexRewriter : Rewriter {
   };
 
   // The helper that shifts `access` (and `copies`) of a value of `type`, declared once.
-  const ShiftHelper& needShift(const std::string& type, const std::string& access, std::vector<std::string> copies) {
+  const ShiftHelper& needShift(const std::string& type, const std::string& access, std::vector<std::string> copies,
+                               bool positionToo = true) {
     std::sort(copies.begin(), copies.end());
-    std::string base = std::string(kPrefix) + "_shift_" + (access.empty() ? std::string("position") : type);
+    std::string base = std::string(kPrefix) + "_shift_" +
+                       (access.empty() ? std::string(positionToo ? "position" : "copy") : type);
     std::string fn = base;
     for (int n = 2;; ++n) {
       auto same = std::find_if(helpers_.begin(), helpers_.end(), [&](const ShiftHelper& h) { return h.function == fn; });
       if (same == helpers_.end()) break;
-      if (same->type == type && same->access == access && same->copies == copies) return *same;
+      if (same->type == type && same->access == access && same->copies == copies && same->positionToo == positionToo)
+        return *same;
       fn = base + "_" + std::to_string(n);  // the same struct with another set of halo copies
     }
-    helpers_.push_back({access.empty() ? std::string("float4") : type, fn, access, copies});
+    helpers_.push_back({access.empty() ? std::string("float4") : type, fn, access, copies, positionToo});
     return helpers_.back();
   }
 
@@ -113,14 +116,16 @@ class VertexRewriter : Rewriter {
     for (const auto& c : wanted.copies) (c.starts_with(".") ? memberCopies : paramCopies).push_back(c);
     std::string retType = returnTypeName(f);
     std::string retSemantic = f.semTok != npos ? lower(text(f.semTok)) : "";
+    // --corrections-only: the driver shifts the position; only its copies are shifted here.
+    const bool position = !opt_.correctionsOnly;
     if (isPositionSemantic(retSemantic) && isFloat4Like(retType)) {
-      plan.returnShift = needShift(retType, "", {}).function;
+      if (position) plan.returnShift = needShift(retType, "", {}).function;
     } else if (auto path = positionPath(retType)) {
       if (auto err = checkMemberCopies(f, retType, memberCopies)) {
         plan.error = err;
         return plan;
       }
-      plan.returnShift = needShift(retType, *path, memberCopies).function;
+      if (position || !memberCopies.empty()) plan.returnShift = needShift(retType, *path, memberCopies, position).function;
       memberCopies.clear();
     }
     for (const auto& p : f.params) {
@@ -131,10 +136,10 @@ class VertexRewriter : Rewriter {
       if (!p.isOut) continue;
       bool isCopy = std::find(paramCopies.begin(), paramCopies.end(), p.name) != paramCopies.end();
       if ((isPositionSemantic(p.semantic) || isCopy) && isFloat4Like(p.typeName)) {
-        plan.outShifts.push_back({p.name, needShift(p.typeName, "", {}).function});
+        if (position || isCopy) plan.outShifts.push_back({p.name, needShift(p.typeName, "", {}, position || isCopy).function});
         if (isCopy) paramCopies.erase(std::find(paramCopies.begin(), paramCopies.end(), p.name));
       } else if (auto path = positionPath(p.typeName)) {
-        plan.outShifts.push_back({p.name, needShift(p.typeName, *path, {}).function});
+        if (position) plan.outShifts.push_back({p.name, needShift(p.typeName, *path, {}).function});
       }
     }
     std::vector<std::string> unplaced = memberCopies;
