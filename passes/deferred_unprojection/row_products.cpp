@@ -123,6 +123,13 @@ class Decomposer {
   const spirv::Module& m_;
   std::map<Lane, Linear> memo_;
   int depth_ = 0;
+  size_t computed_ = 0;
+
+ public:
+  // Lanes decomposed and parts built for them: the work, for the complexity tests.
+  size_t computed() const { return computed_; }
+
+ private:
 
   static std::optional<Coefficient> pure(const Linear& f) {
     if (f.size() != 1 || f[0].term) return std::nullopt;
@@ -166,6 +173,10 @@ class Decomposer {
     return {Part{std::nullopt, c}};
   }
 
+  // A component of a matrix product has four parts; a longer sum is opaque (and a sum of a value
+  // with itself, `a1 = a0 + a0` chained, cannot double its parts at every step).
+  static constexpr size_t kMaxParts = 8;
+
   Linear compute(Lane at) {
     const Instruction* def = index_.definition(at.id);
     if (!def || ++depth_ > 256) {
@@ -174,6 +185,8 @@ class Decomposer {
     }
     Linear out = computeFor(*def, at);
     --depth_;
+    computed_ += 1 + out.size();  // the lane and the parts built for it
+    if (out.size() > kMaxParts) return opaque(at);
     return out;
   }
 
@@ -397,7 +410,8 @@ bool hasCbufferRows(const spirv::Module& m) {
   return false;
 }
 
-std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile) {
+std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
+                                        size_t* work) {
   ValueFlow index(registers);
   SourceAnalysis flow(index, hlsl, {});
   Decomposer d(index);
@@ -449,6 +463,7 @@ std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hls
     }
     found.push_back(std::move(p));
   }
+  if (work) *work = d.computed();
   return found;
 }
 
@@ -459,13 +474,22 @@ namespace {
 struct Factors {
   std::vector<std::pair<Lane, bool>> factors;
   std::set<uint32_t> through;
+  // Lanes looked at: a view ray has a handful of factors, and a tree of shared products
+  // (`a1 = a0 * a0` chained) must not be walked once per path.
+  int visits = 0;
+  bool tooLarge = false;
 };
+constexpr int kMaxFactorVisits = 32;
 
 // A value computed from texels, uniforms and constants only (a depth made linear, `1 / (a*t + b)`)
 // is one factor, not looked into.
 bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 
 void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth) {
+  if (++out.visits > kMaxFactorVisits || out.tooLarge) {
+    out.tooLarge = true;
+    return;
+  }
   at = d.canonical(at);
   const Instruction* def = d.definition(at.id);
   auto lane = [&](uint32_t id) { return Lane{id, d.isVector(id) ? at.lane : 0}; };
@@ -502,10 +526,11 @@ struct RayCandidate {
   std::set<uint32_t> through;
 };
 
-std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, Lane at) {
+std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, Lane at, size_t& visits) {
   Factors f;
   collectFactors(d, flow, at, false, f, 0);
-  if (f.through.empty()) return std::nullopt;
+  visits += static_cast<size_t>(f.visits);
+  if (f.through.empty() || f.tooLarge) return std::nullopt;
   RayCandidate c{at, {}, 0, {}, false, {}, {}, f.through};
   int screens = 0, depths = 0, scales = 0;
   for (const auto& [factor, divides] : f.factors) {
@@ -542,13 +567,15 @@ std::string scaleText(const spirv::Module& m, const RayCandidate& c) {
 
 }  // namespace
 
-std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile) {
+std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
+                                            size_t* work) {
   ValueFlow index(registers);
   SourceAnalysis flow(index, hlsl, {});
   Decomposer d(index);
   LineMap lines(registers, mainFile);
   std::vector<RayCandidate> candidates;
   std::set<Lane> seen;
+  size_t visits = 0;
   spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
     if (inst.opcode != spv::OpFMul && inst.opcode != spv::OpFDiv && inst.opcode != spv::OpVectorTimesScalar) return;
     const Instruction* type = registers.definition(inst.typeId);
@@ -556,7 +583,7 @@ std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool
     for (uint32_t lane = 0; lane < count; ++lane) {
       Lane at = d.canonical({inst.resultId, lane});
       if (!seen.insert(at).second) continue;
-      if (auto c = rayCandidate(d, flow, at)) candidates.push_back(std::move(*c));
+      if (auto c = rayCandidate(d, flow, at, visits)) candidates.push_back(std::move(*c));
     }
   });
   // The innermost product only: one computed from another candidate is per eye through it.
@@ -585,6 +612,7 @@ std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool
                                  : "the module has no source lines";
     found.push_back(std::move(r));
   }
+  if (work) *work = visits + d.computed();
   return found;
 }
 

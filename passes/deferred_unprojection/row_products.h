@@ -46,7 +46,10 @@ struct ComponentRay {
 };
 
 // Every such x of `registers`, once each; lines count in `mainFile`.
-std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile);
+// `work` (if given) gets the lanes decomposed and factors visited: linear in the shader's size,
+// whatever its shape (the complexity tests count it).
+std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
+                                            size_t* work = nullptr);
 
 // Whether the module has uniform data an unprojection could be held in as rows: a uniform block
 // member that is an array of float4 (a decompiled cbuffer). Cheap; spares other shaders the copy.
@@ -54,6 +57,7 @@ bool hasCbufferRows(const spirv::Module& m);
 
 // Every cbuffer-row unprojection of `registers` (the register copy, with OpLine), once each; lines
 // count in `mainFile`, the name the front end gave the input's text.
-std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile);
+std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
+                                        size_t* work = nullptr);
 
 }  // namespace stereoshift::deferred
