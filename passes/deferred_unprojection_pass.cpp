@@ -283,7 +283,8 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
       for (const auto& inst : block.instructions)
         readsStereoParams |= inst.opcode == spv::OpLoad && ctx.module.name(ctx.module.rootVariable(inst.operand(0))) == "StereoParams";
   bool recorded = false;
-  for (const RowProduct& p : findRowProducts(*registers, true, ctx.file)) {
+  DecompiledForms forms = findDecompiledForms(*registers, true, ctx.file);
+  for (const RowProduct& p : forms.products) {
     ViewDependentUse entry;
     entry.construct = "matrix in cbuffer rows * vector";
     entry.form = "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
@@ -310,7 +311,7 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     facts.textFixes.push_back(p.fix);
     recorded = true;
   }
-  for (const ComponentRay& r : findComponentRays(*registers, true, ctx.file)) {
+  for (const ComponentRay& r : forms.rays) {
     ViewDependentUse entry;
     entry.construct = "view-space x = ndc.x * depth * k, per component";
     entry.form = "view-space position rebuilt from depth one component at a time (decompiled view ray)";

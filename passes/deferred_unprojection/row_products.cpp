@@ -410,12 +410,25 @@ bool hasCbufferRows(const spirv::Module& m) {
   return false;
 }
 
-std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
-                                        size_t* work) {
-  ValueFlow index(registers);
-  SourceAnalysis flow(index, hlsl, {});
-  Decomposer d(index);
-  LineMap lines(registers, mainFile);
+namespace {
+
+// The register copy's analyses both forms read, built once.
+struct RegisterAnalyses {
+  const spirv::Module& registers;
+  ValueFlow index;
+  SourceAnalysis flow;
+  Decomposer d;
+  LineMap lines;
+  size_t factorVisits = 0;
+  RegisterAnalyses(const spirv::Module& m, bool hlsl, const std::string& mainFile)
+      : registers(m), index(m), flow(index, hlsl, {}), d(index), lines(m, mainFile) {}
+};
+
+std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
+  const spirv::Module& registers = a.registers;
+  SourceAnalysis& flow = a.flow;
+  Decomposer& d = a.d;
+  const LineMap& lines = a.lines;
   // Every lane of every float value that is one component of a product, once (by the value that
   // computes it), in module order.
   std::vector<Member> members;
@@ -463,11 +476,8 @@ std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hls
     }
     found.push_back(std::move(p));
   }
-  if (work) *work = d.computed();
   return found;
 }
-
-namespace {
 
 // A product's factors, through multiplications, divisions, negations and moves: each a lane and
 // whether it divides. `through`: the products and quotients looked through.
@@ -565,17 +575,14 @@ std::string scaleText(const spirv::Module& m, const RayCandidate& c) {
   return c.divides ? "(1 / " + element + ")" : element;
 }
 
-}  // namespace
-
-std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
-                                            size_t* work) {
-  ValueFlow index(registers);
-  SourceAnalysis flow(index, hlsl, {});
-  Decomposer d(index);
-  LineMap lines(registers, mainFile);
+std::vector<ComponentRay> findComponentRays(RegisterAnalyses& a) {
+  const spirv::Module& registers = a.registers;
+  SourceAnalysis& flow = a.flow;
+  Decomposer& d = a.d;
+  const LineMap& lines = a.lines;
   std::vector<RayCandidate> candidates;
   std::set<Lane> seen;
-  size_t visits = 0;
+  size_t& visits = a.factorVisits;
   spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
     if (inst.opcode != spv::OpFMul && inst.opcode != spv::OpFDiv && inst.opcode != spv::OpVectorTimesScalar) return;
     const Instruction* type = registers.definition(inst.typeId);
@@ -612,8 +619,18 @@ std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool
                                  : "the module has no source lines";
     found.push_back(std::move(r));
   }
-  if (work) *work = visits + d.computed();
   return found;
+}
+
+}  // namespace
+
+DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, const std::string& mainFile) {
+  RegisterAnalyses analyses(registers, hlsl, mainFile);
+  DecompiledForms forms;
+  forms.products = findRowProducts(analyses);
+  forms.rays = findComponentRays(analyses);
+  forms.work = analyses.d.computed() + analyses.factorVisits;
+  return forms;
 }
 
 }  // namespace stereoshift::deferred

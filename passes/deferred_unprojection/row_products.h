@@ -45,19 +45,22 @@ struct ComponentRay {
   std::string reason;  // empty when x and the depth have lines of the main file
 };
 
-// Every such x of `registers`, once each; lines count in `mainFile`.
-// `work` (if given) gets the lanes decomposed and factors visited: linear in the shader's size,
-// whatever its shape (the complexity tests count it).
-std::vector<ComponentRay> findComponentRays(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
-                                            size_t* work = nullptr);
+// Both forms of one shader.
+struct DecompiledForms {
+  std::vector<RowProduct> products;
+  std::vector<ComponentRay> rays;
+  // Lanes decomposed, parts built and factors visited: linear in the shader's size, whatever its
+  // shape (the complexity tests count it).
+  size_t work = 0;
+};
 
 // Whether the module has uniform data an unprojection could be held in as rows: a uniform block
 // member that is an array of float4 (a decompiled cbuffer). Cheap; spares other shaders the copy.
 bool hasCbufferRows(const spirv::Module& m);
 
-// Every cbuffer-row unprojection of `registers` (the register copy, with OpLine), once each; lines
-// count in `mainFile`, the name the front end gave the input's text.
-std::vector<RowProduct> findRowProducts(const spirv::Module& registers, bool hlsl, const std::string& mainFile,
-                                        size_t* work = nullptr);
+// Every cbuffer-row unprojection and per-component view ray of `registers` (the register copy,
+// with OpLine), once each, on one index of it; lines count in `mainFile`, the name the front end
+// gave the input's text.
+DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, const std::string& mainFile);
 
 }  // namespace stereoshift::deferred

@@ -67,7 +67,8 @@ TEST(RowProducts, FindsTheMadChainWithTheLineOfEachComponent) {
   Compiled c = compile(dump(kMadChain));
   ASSERT_TRUE(c.registers);
   EXPECT_TRUE(deferred::hasCbufferRows(*c.module));
-  auto found = deferred::findRowProducts(*c.registers, true, kName);
+  auto forms = deferred::findDecompiledForms(*c.registers, true, kName);
+  const auto& found = forms.products;
   ASSERT_EQ(found.size(), 1u);
   const auto& fix = found[0].fix;
   EXPECT_TRUE(found[0].reason.empty()) << found[0].reason;
@@ -78,7 +79,7 @@ TEST(RowProducts, FindsTheMadChainWithTheLineOfEachComponent) {
     EXPECT_EQ(fix.column[i], std::string("cb1[20].") + "xyzw"[i]);
   }
   EXPECT_EQ(found[0].rows, "cb1[20], cb1[21], cb1[22], cb1[23]");
-  EXPECT_TRUE(deferred::findComponentRays(*c.registers, true, kName).empty());
+  EXPECT_TRUE(forms.rays.empty());
 }
 
 // The unchanged case: the same chain over an interpolated texture coordinate and no depth is a
@@ -88,7 +89,7 @@ TEST(RowProducts, ATransformOfInterpolatedValuesIsNoRebuild) {
   body.replace(body.find("t0.Sample(s0_s, r0.xy).x"), std::string("t0.Sample(s0_s, r0.xy).x").size(), "v1.y");
   Compiled c = compile(dump(body));
   ASSERT_TRUE(c.registers);
-  EXPECT_TRUE(deferred::findRowProducts(*c.registers, true, kName).empty());
+  EXPECT_TRUE(deferred::findDecompiledForms(*c.registers, true, kName).products.empty());
 }
 
 TEST(RowProducts, FindsThePerComponentViewRayWithItsDepthLine) {
@@ -102,7 +103,7 @@ TEST(RowProducts, FindsThePerComponentViewRayWithItsDepthLine) {
       "  o0.xyzw = r1.xyxy;\n";                             // 28
   Compiled c = compile(dump(body));
   ASSERT_TRUE(c.registers);
-  auto rays = deferred::findComponentRays(*c.registers, true, kName);
+  auto rays = deferred::findDecompiledForms(*c.registers, true, kName).rays;
   ASSERT_EQ(rays.size(), 1u);
   EXPECT_EQ(rays[0].fix.line, kFirstBodyLine + 4);
   EXPECT_EQ(rays[0].fix.depthLine, kFirstBodyLine + 1);
@@ -112,7 +113,7 @@ TEST(RowProducts, FindsThePerComponentViewRayWithItsDepthLine) {
   noY.replace(noY.find("r1.y = r0.y / cb1[6].y;"), std::string("r1.y = r0.y / cb1[6].y;").size(), "r1.y = v1.y;");
   Compiled d = compile(dump(noY));
   ASSERT_TRUE(d.registers);
-  EXPECT_TRUE(deferred::findComponentRays(*d.registers, true, kName).empty());
+  EXPECT_TRUE(deferred::findDecompiledForms(*d.registers, true, kName).rays.empty());
 }
 
 // Work of both finders for a shader with `steps` statements of shared sub-expression chains.
@@ -123,10 +124,9 @@ size_t workFor(int steps) {
   body += "  o0.xy = r2.xy;\n";
   Compiled c = compile(dump(body));
   if (!c.registers) return 0;
-  size_t rows = 0, rays = 0;
-  EXPECT_EQ(deferred::findRowProducts(*c.registers, true, kName, &rows).size(), 1u);
-  deferred::findComponentRays(*c.registers, true, kName, &rays);
-  return rows + rays;
+  auto forms = deferred::findDecompiledForms(*c.registers, true, kName);
+  EXPECT_EQ(forms.products.size(), 1u);
+  return forms.work;
 }
 
 TEST(RowProducts, WorkIsLinearInChainsOfSharedSubExpressions) {

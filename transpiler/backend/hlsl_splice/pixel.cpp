@@ -78,18 +78,17 @@ struct Located {
   uint32_t errorLine = 0;
 };
 
+// `out` with the reason it cannot be placed, at `line`.
+Located failedAt(Located out, uint32_t line, std::string why) {
+  out.error = std::move(why);
+  out.errorLine = line;
+  return out;
+}
+
 Located locate(const Lines& lines, const RowProductTextFix& fix) {
   Located out;
-  auto fail = [&](uint32_t line, std::string why) {
-    out.error = std::move(why);
-    out.errorLine = line;
-    return out;
-  };
-  if (!fix.present[3]) {
-    out.error = "the rebuilt position has no w";
-    out.errorLine = fix.afterLine;
-    return out;
-  }
+  auto fail = [&](uint32_t line, std::string why) { return failedAt(out, line, std::move(why)); };
+  if (!fix.present[3]) return fail(fix.afterLine, "the rebuilt position has no w");
   for (size_t i = 0; i < 4; ++i) {
     if (!fix.present[i]) continue;
     auto a = assignmentOn(lines.line(fix.lines[i]));
@@ -141,11 +140,7 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
 // assignment.
 Located locateRay(const Lines& lines, const ViewRayTextFix& fix) {
   Located out;
-  auto fail = [&](uint32_t line, std::string why) {
-    out.error = std::move(why);
-    out.errorLine = line;
-    return out;
-  };
+  auto fail = [&](uint32_t line, std::string why) { return failedAt(out, line, std::move(why)); };
   auto x = assignmentOn(lines.line(fix.line)), depth = assignmentOn(lines.line(fix.depthLine));
   if (!x || fix.lane >= x->mask.size())
     return fail(fix.line, "the statement computing the view-space x is not one `reg.mask = ...;` on its line");
