@@ -10,11 +10,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 
 namespace fs = std::filesystem;
 
@@ -117,6 +119,25 @@ std::optional<E> parseChoice(const std::string& text, const char* option, const 
 
 namespace {
 
+// The versions each text target writes the reprojection shaders at (found by fuzz_reproject_options:
+// `--target-version 2` was accepted and no GLSL came out): GLSL from 130 (texelFetch, gl_VertexID),
+// ESSL from 300, HLSL shader model 4.0 and up (SPIRV-Cross writes neither at SM 3). MSL and SPIR-V
+// have no version of this kind and ignore it. Checked for every target asked for (the default set
+// includes GLSL, ESSL and HLSL alike).
+void checkTargetVersion(int version, const std::vector<TargetLanguage>& languages, Problems& problems) {
+  static const std::set<int> glsl = {130, 140, 150, 330, 400, 410, 420, 430, 440, 450, 460};
+  static const std::set<int> essl = {300, 310, 320};
+  static const std::set<int> hlsl = {40, 41, 50, 51, 60, 61, 62, 63, 64, 65, 66, 67};
+  auto check = [&](TargetLanguage target, const char* name, const std::set<int>& versions, const char* valid) {
+    if (std::find(languages.begin(), languages.end(), target) != languages.end() && !versions.count(version))
+      problems.add("--target-version " + std::to_string(version) + " is no " + name + " version the reprojection "
+                   "shaders can be written at (" + valid + "); with several targets, name the one it is for with --target");
+  };
+  check(TargetLanguage::Glsl, "GLSL", glsl, "130-460");
+  check(TargetLanguage::Essl, "ESSL", essl, "300, 310, 320");
+  check(TargetLanguage::Hlsl, "HLSL shader-model", hlsl, "40, 41, 50, 51, 60-67");
+}
+
 // --target (repeatable; the default set without one) and --target-version.
 std::vector<TargetLanguage> parseTargets(const ReprojectCliOptions& c, ReprojectOptions& base, Problems& problems) {
   static const std::map<std::string, TargetLanguage> targets = {
@@ -128,6 +149,7 @@ std::vector<TargetLanguage> parseTargets(const ReprojectCliOptions& c, Reproject
   if (c.targets.empty())
     languages = {TargetLanguage::Glsl, TargetLanguage::Essl, TargetLanguage::Hlsl, TargetLanguage::Msl, TargetLanguage::Spirv};
   if (!c.targetVersion.empty()) base.targetVersion = parseNumber<int>(c.targetVersion, "--target-version", problems);
+  if (base.targetVersion) checkTargetVersion(*base.targetVersion, languages, problems);
   return languages;
 }
 
