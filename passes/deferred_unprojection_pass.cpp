@@ -277,11 +277,18 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
   if (!registers) return false;
   // A dump that reads 3Dmigoto's StereoParams was fixed by hand (or by an earlier run): a position
   // rebuild in it may be per eye already, and fixing it again would subtract the parallax twice.
+  const ValueFlow& index = ctx.analyses.valueFlow();
   bool readsStereoParams = false;
-  for (const auto& fn : ctx.module.functions)
-    for (const auto& block : fn.blocks)
-      for (const auto& inst : block.instructions)
-        readsStereoParams |= inst.opcode == spv::OpLoad && ctx.module.name(ctx.module.rootVariable(inst.operand(0))) == "StereoParams";
+  for (const auto& inst : ctx.module.typesValues)
+    readsStereoParams |= inst.opcode == spv::OpVariable && ctx.module.name(inst.resultId) == "StereoParams" &&
+                         !index.loadsFrom(inst.resultId).empty();
+  // Why a form found is not fixed (its own reason, when the text cannot carry it), or "".
+  auto notFixed = [&](const std::string& own) -> std::string {
+    if (readsStereoParams) return "the shader already reads 3Dmigoto's StereoParams (fixed by hand?)";
+    if (!ctx.options.sourceTextFixes)
+      return "this form is fixed in the shader's own HLSL text, with --eye-source 3dmigoto (the dump's StereoParams)";
+    return own;
+  };
   bool recorded = false;
   DecompiledForms forms = findDecompiledForms(*registers, true, ctx.file);
   for (const RowProduct& p : forms.products) {
@@ -294,12 +301,8 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     ndc.insert(p.y.inputs.begin(), p.y.inputs.end());
     entry.ndc = joined(ndc);
     if (p.fix.afterLine) entry.line = static_cast<int>(p.fix.afterLine);
-    if (!ctx.options.sourceTextFixes || !p.reason.empty() || readsStereoParams) {
-      entry.reason = readsStereoParams ? std::string("not fixed: the shader already reads 3Dmigoto's StereoParams (fixed by hand?)")
-                     : !ctx.options.sourceTextFixes
-                         ? std::string("not fixed: this form is fixed in the shader's own HLSL text, with --eye-source "
-                                       "3dmigoto (the dump's StereoParams)")
-                         : "not fixed: " + p.reason;
+    if (std::string why = notFixed(p.reason); !why.empty()) {
+      entry.reason = "not fixed: " + why;
       facts.leftAlone.push_back(entry);
       continue;
     }
@@ -323,11 +326,7 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
                             : k.rfind("(1 / ", 0) == 0 ? k.substr(5, k.size() - 6)
                                                        : "1 / " + k;
     if (r.fix.line) entry.line = static_cast<int>(r.fix.line);
-    std::string why = readsStereoParams ? "the shader already reads 3Dmigoto's StereoParams (fixed by hand?)"
-                      : !ctx.options.sourceTextFixes
-                          ? "this form is fixed in the shader's own HLSL text, with --eye-source 3dmigoto (the dump's StereoParams)"
-                          : r.reason;
-    if (!why.empty()) {
+    if (std::string why = notFixed(r.reason); !why.empty()) {
       entry.reason = "not fixed: " + why;
       facts.leftAlone.push_back(entry);
       continue;

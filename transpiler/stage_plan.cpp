@@ -222,18 +222,29 @@ bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), "hlsl-text-only");
 }
 
+// glslang's errors said as warnings: they say what it could not analyse, and the shader goes to its
+// driver as written. Returns the first of them.
+std::string demoteGlslangErrors(StagePlan& plan) {
+  Diagnostics kept;
+  std::string first;
+  for (Diagnostic d : plan.diags.all()) {
+    if (d.severity == Severity::Error) {
+      if (first.empty()) first = d.format();
+      d.severity = Severity::Warning;
+    }
+    kept.add(std::move(d));
+  }
+  plan.diags = std::move(kept);
+  return first;
+}
+
 // --corrections-only, a pre-rasterization stage glslang cannot analyse: the driver shifts its
 // position, and no correction can be found without an analysis: the input as it is, said so.
 bool copyLeftToDriver(StagePlan& plan, Stage stage) {
   const std::string& file = plan.input->path;
-  Diagnostics kept;
-  for (Diagnostic d : plan.diags.all()) {
-    if (d.severity == Severity::Error) d.severity = Severity::Warning;
-    kept.add(std::move(d));
-  }
-  kept.warning(file, "glslang cannot analyse this shader; with --corrections-only its position is left to the driver "
+  demoteGlslangErrors(plan);
+  plan.diags.warning(file, "glslang cannot analyse this shader; with --corrections-only its position is left to the driver "
                      "and no correction is looked for: copied unchanged");
-  plan.diags = std::move(kept);
   StageRecord& record = plan.record;
   record.stage = stage;
   record.stageReason = plan.stage->reason;
@@ -250,21 +261,11 @@ bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, cons
     plan.diags.note(file, "no shift from the text alone either: " + shifted.whyNot);
     return false;
   }
-  // glslang's errors say what it could not analyse; the shader itself goes to its driver as written.
-  Diagnostics kept;
-  std::string reason;
-  for (Diagnostic d : plan.diags.all()) {
-    if (d.severity == Severity::Error) {
-      if (reason.empty()) reason = d.format();
-      d.severity = Severity::Warning;
-    }
-    kept.add(std::move(d));
-  }
+  std::string reason = demoteGlslangErrors(plan);
   std::string notDone;
   for (const auto& what : shifted.notDone) notDone += (notDone.empty() ? "" : ", ") + what;
-  kept.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "
-                     "done: " + notDone + "); --require-analysis makes this an error");
-  plan.diags = std::move(kept);
+  plan.diags.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "
+                           "done: " + notDone + "); --require-analysis makes this an error");
   StageRecord& record = plan.record;
   record.stage = stage;
   record.stageReason = plan.stage->reason;
