@@ -81,13 +81,42 @@ std::string includeRootsDigest(const BuildJob& job, const fs::path& outDir) {
   return h.digest();
 }
 
+// Whether the output at `path` still holds the bytes of `hash`. Its stamp answers without reading
+// it when it is the one recorded and that one was taken after the file last changed: the status-
+// change time has the clock's granularity, so a change in the same tick as the cache was written
+// would leave the stamp as it was; such a stamp is not trusted (as git treats "racily clean" files).
+bool outputIntact(const std::string& path, const nlohmann::json& hash, const nlohmann::json* recorded,
+                  std::int64_t savedAtNs) {
+  if (recorded && recorded->is_array() && recorded->size() == 4 && (*recorded)[3].is_number_integer() &&
+      (*recorded)[3].get<std::int64_t>() < savedAtNs && *recorded == fileStamp(path))
+    return true;
+  std::string bytes;
+  return hash.is_string() && readFile(path, &bytes) && hashBytes(bytes) == hash.get_ref<const std::string&>();
+}
+
 // Whether the cached entry still describes the outputs on disk, byte for byte.
-bool outputsIntact(const nlohmann::json& entry) {
-  if (!entry.contains("outputs") || !entry["outputs"].is_object()) return false;
-  for (const auto& [path, hash] : entry["outputs"].items()) {
-    std::string bytes;
-    if (!readFile(path, &bytes) || hashBytes(bytes) != hash.get<std::string>()) return false;
+bool outputsIntact(const nlohmann::json& entry, std::int64_t savedAtNs) {
+  auto outputs = entry.find("outputs");
+  if (outputs == entry.end() || !outputs->is_object()) return false;
+  auto stamps = entry.find("output_stamps");
+  const bool stamped = stamps != entry.end() && stamps->is_object();
+  for (const auto& [path, hash] : outputs->items()) {
+    const nlohmann::json* recorded = nullptr;
+    if (stamped)
+      if (auto at = stamps->find(path); at != stamps->end()) recorded = &*at;
+    if (!outputIntact(path, hash, recorded, savedAtNs)) return false;
   }
+  return true;
+}
+
+// The include list of a cached entry (see JobResult::outputIncludes); false when it has none.
+bool cachedOutputIncludes(const nlohmann::json& entry, JobResult* result) {
+  auto includes = entry.find("output_includes");
+  if (includes == entry.end() || !includes->is_array()) return false;
+  for (const auto& file : *includes)
+    if (!file.is_string()) return false;
+  result->outputIncludes = includes->get<std::vector<std::string>>();
+  result->outputIncludesKnown = true;
   return true;
 }
 
@@ -120,6 +149,18 @@ bool cachedReports(const nlohmann::json& entry, JobResult* result) {
 
 std::string hashBytes(const std::string& bytes) { return hex64(XXH3_64bits(bytes.data(), bytes.size())); }
 
+std::string hashFile(const std::string& path) {
+  std::string bytes;
+  return readFile(path, &bytes) ? hashBytes(bytes) : std::string();
+}
+
+nlohmann::json fileStamp(const fs::path& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return nullptr;
+  auto ns = [](const struct timespec& t) { return std::int64_t(t.tv_sec) * 1000000000 + t.tv_nsec; };
+  return {std::int64_t(info.st_size), std::uint64_t(info.st_ino), ns(info.st_mtim), ns(info.st_ctim)};
+}
+
 std::string toolIdentity() {
   std::string id = std::string("stereoshift ") + version();
   struct stat info {};
@@ -130,19 +171,18 @@ std::string toolIdentity() {
 }
 
 std::string jobKey(const std::string& tool, const BuildJob& job, const std::vector<std::string>& dependencies,
-                   const std::vector<SourceFile>* converted) {
+                   const FileDigest& digestOf) {
   KeyHasher h;
   h.add(tool);
   h.add(job.fingerprint);
-  auto addFile = [&](const std::string& path, const std::string* known) {
-    std::string bytes;
+  auto addFile = [&](const std::string& path) {
+    const std::string digest = digestOf(path);
     h.add(path);
-    h.add(known ? "=" + *known : readFile(path, &bytes) ? "=" + bytes : std::string("<missing>"));
+    h.add(digest.empty() ? std::string("<missing>") : "=" + digest);
   };
-  for (size_t i = 0; i < job.stages.size(); ++i)
-    addFile(job.stages[i].string(), converted && i < converted->size() ? &(*converted)[i].contents : nullptr);
+  for (const auto& stage : job.stages) addFile(stage.string());
   for (const auto& o : job.outputs) h.add(o.string());
-  for (const auto& d : dependencies) addFile(d, nullptr);
+  for (const auto& d : dependencies) addFile(d);
   return h.digest();
 }
 
@@ -153,6 +193,8 @@ Cache loadCache(const fs::path& file) {
   nlohmann::json j = nlohmann::json::from_msgpack(bytes, true, false);  // a damaged cache is no cache
   if (j.is_discarded() || !j.is_object() || j.value("format", 0) != kCacheFormat) return cache;
   if (j.contains("jobs") && j["jobs"].is_object()) cache.jobs = std::move(j["jobs"]);
+  const nlohmann::json saved = fileStamp(file);
+  if (saved.is_array()) cache.savedAtNs = saved[3].get<std::int64_t>();
   return cache;
 }
 
@@ -167,6 +209,13 @@ void saveCache(const fs::path& file, const std::string& tool, Cache&& next) {
 std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, bool trusted, Cache& previous,
                                   Cache& next, std::vector<JobResult>& results) {
   std::vector<size_t> toConvert;
+  // Each input and included file hashed once: many jobs share a header, and the plan read most.
+  std::map<std::string, std::string> digests = plan.fileDigests;
+  const FileDigest digestOf = [&](const std::string& path) {
+    auto [at, added] = digests.emplace(path, std::string());
+    if (added) at->second = hashFile(path);
+    return at->second;
+  };
   for (size_t i = 0; i < plan.jobs.size(); ++i) {
     const BuildJob& job = plan.jobs[i];
     if (!convertsShaders(job.mode)) continue;  // copied through, never cached
@@ -179,10 +228,12 @@ std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, boo
     // A failure also depends on what is missing: the files its include roots do not hold yet.
     const auto failed = entry->find("errors");
     const bool isFailure = failed != entry->end() && failed->is_number_integer() && failed->get<int>() > 0;
-    if (entry->value("key", "") == jobKey(tool, job, dependencies) && outputsIntact(*entry) &&
+    if (entry->value("key", "") == jobKey(tool, job, dependencies, digestOf) &&
+        outputsIntact(*entry, previous.savedAtNs) &&
         (!isFailure || entry->value("include_roots", "") == includeRootsDigest(job, plan.outputDir)) &&
         cachedReports(*entry, &results[i])) {
       results[i].dependencies = std::move(dependencies);
+      cachedOutputIncludes(*entry, &results[i]);
       if (isFailure) {
         results[i].errors = failed->get<int>();
         results[i].log = entry->value("log", "");
@@ -196,7 +247,7 @@ std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, boo
 }
 
 void recordFinished(Cache& next, const Plan& plan, const BuildJob& job, const JobResult& result,
-                    nlohmann::json outputs) {
+                    nlohmann::json outputs, nlohmann::json stamps) {
   nlohmann::json texts = nlohmann::json::array(), facts = nlohmann::json::array();
   for (const auto& r : result.reports) {
     texts.push_back(reportEntryText(r));
@@ -206,10 +257,12 @@ void recordFinished(Cache& next, const Plan& plan, const BuildJob& job, const Jo
   next.jobs[job.id] = {{"key", result.key},
                        {"dependencies", result.dependencies},
                        {"outputs", std::move(outputs)},
+                       {"output_stamps", std::move(stamps)},
                        {"report_texts", std::move(texts)},
                        {"report_facts", std::move(facts)}};
+  auto& entry = next.jobs[job.id];
+  if (result.outputIncludesKnown) entry["output_includes"] = result.outputIncludes;
   if (result.errors) {
-    auto& entry = next.jobs[job.id];
     entry["errors"] = result.errors;
     entry["log"] = result.log;
     entry["include_roots"] = includeRootsDigest(job, plan.outputDir);

@@ -11,7 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,21 +24,36 @@ namespace stereoshift {
 constexpr const char* kCacheFile = ".stereoshift-cache.msgpack";
 
 struct Cache {
-  nlohmann::json jobs = nlohmann::json::object();  // id -> {key, dependencies, outputs{path: hash}, reports}
+  // id -> {key, dependencies, outputs{path: hash}, output_stamps{path: stamp}, output_includes, reports}
+  nlohmann::json jobs = nlohmann::json::object();
+  // When the cache file was written (its status-change time, ns): an output whose stamp says it last
+  // changed before that, and still has that stamp, holds the bytes hashed then without being read.
+  std::int64_t savedAtNs = 0;
 };
 
 // The hash of bytes as the cache keeps it (hex).
 std::string hashBytes(const std::string& bytes);
+// The hash of a file's bytes, "" when it cannot be read.
+std::string hashFile(const std::string& path);
+
+// The hash of a file's bytes by path, for job keys: "" when the file cannot be read.
+using FileDigest = std::function<std::string(const std::string& path)>;
+
+// What the file system says about an output: size, inode, modification and status-change times
+// (ns), as a JSON array; null when it cannot be read. The status-change time moves with every
+// write and cannot be set back, so an unchanged stamp means unchanged bytes, except within the
+// clock's granularity of the moment the stamp was taken (see outputIntact in build_cache.cpp).
+nlohmann::json fileStamp(const std::filesystem::path& path);
 
 // What a cached result depends on besides its inputs: this very build of the tool.
 std::string toolIdentity();
 
-// The key of a job: this tool, its options, and the path and bytes of every input and dependency.
-// A file that cannot be read hashes as missing (its reappearance changes the key). `converted`:
-// the stages' bytes as the worker converted them (so an edit during the run is not cached as
-// converted); otherwise they are read here.
+// The key of a job: this tool, its options, and the path and the hash of the bytes of every input
+// and dependency (`digestOf`). A file that cannot be read hashes as missing (its reappearance
+// changes the key). The worker passes the hashes of the bytes it converted (so an edit during the
+// run is not cached as converted); the up-to-date check those of the bytes the plan read.
 std::string jobKey(const std::string& tool, const BuildJob& job, const std::vector<std::string>& dependencies,
-                   const std::vector<SourceFile>* converted = nullptr);
+                   const FileDigest& digestOf);
 
 // The cache in `file`; empty when it is missing, damaged or of another format. Entries written by
 // another build of the tool are kept (their keys never match: the key holds the tool), for what
@@ -52,9 +69,9 @@ std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, boo
                                   Cache& next, std::vector<JobResult>& results);
 
 // Records a job that ran to the end, converted or failed with diagnostics; `outputs` maps each
-// output written to its hash.
+// output written to its hash, `stamps` to its fileStamp.
 void recordFinished(Cache& next, const Plan& plan, const BuildJob& job, const JobResult& result,
-                    nlohmann::json outputs);
+                    nlohmann::json outputs, nlohmann::json stamps);
 
 // Deletes the outputs `previous` lists that are no output of the plan (their pipeline, or their
 // stage, is gone), when they still hold the bytes this tool wrote; returns how many were deleted.

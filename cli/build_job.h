@@ -35,6 +35,10 @@ struct JobResult {
   std::vector<std::string> outputs;  // per stage; only for stages whose report says ok
   std::vector<std::string> dependencies;
   std::string key;  // the cache key of what was converted
+  // The files the outputs on disk #include (includedFiles, canonical), when known without reading
+  // them: from the texts just written, or from the cache for an up-to-date job.
+  bool outputIncludesKnown = false;
+  std::vector<std::string> outputIncludes;
   // Whether the same tool, options and input bytes would fail the same way (diagnostics): such a
   // failure is cached like a success. Not when an input could not be read.
   bool replayable = true;

@@ -1,6 +1,8 @@
 // The plan of `stereoshift build`: the tree walk (or the manifest's passes over it) made into jobs.
 #include "cli/build_plan.h"
 
+#include "cli/build_cache.h"
+
 #include "cli/scene_manifest.h"
 #include "passes/diagnostics.h"
 #include "transpiler/frontend/front_end.h"
@@ -21,6 +23,25 @@ namespace fs = std::filesystem;
 namespace stereoshift {
 
 namespace {
+
+// Canonical paths of many files, each directory resolved once, then a file's own name unless the
+// file itself is a symbolic link: weakly_canonical per file reads every link of every component
+// again, half of a no-op rebuild's system calls on a large tree. (Native strings as keys:
+// std::filesystem::path compares component by component.)
+class PathResolver {
+ public:
+  std::string resolve(const fs::path& file) {
+    std::error_code ec;
+    if (fs::is_symlink(file, ec)) return fs::weakly_canonical(file, ec).native();
+    const fs::path parent = file.parent_path();
+    auto [at, fresh] = directories_.try_emplace(parent.native());
+    if (fresh) at->second = fs::weakly_canonical(parent.empty() ? fs::path(".") : parent, ec);
+    return (at->second / file.filename()).native();
+  }
+
+ private:
+  std::map<std::string, fs::path> directories_;
+};
 
 // `dir/name.vert` -> `dir/name.<variant>.vert` (variant before every extension).
 fs::path variantPath(const fs::path& path, const std::string& variant) {
@@ -144,7 +165,8 @@ class TreeWalk {
 
 std::vector<fs::path> includedFiles(const fs::path& path, const std::string& text, const std::vector<std::string>& userDirs) {
   std::vector<fs::path> found;
-  std::vector<std::string> roots = includeSearchPath(path.string(), userDirs);
+  std::vector<std::string> roots;  // looked up at the first #include: most files have none
+  bool rootsKnown = false;
   // Every `#include "file"` / `#include <file>` the lexer reads (under any #if: a dependency of one
   // configuration is one of the build), none in a comment.
   source::Lexer lexer(text);
@@ -156,6 +178,8 @@ std::vector<fs::path> includedFiles(const fs::path& path, const std::string& tex
     std::string quoted = source::spelledString(text, words[1]);
     if (quoted[0] != '"' && quoted[0] != '<') continue;
     std::string header = quoted.substr(1, quoted.size() - 2);
+    if (!rootsKnown) roots = includeSearchPath(path.string(), userDirs);
+    rootsKnown = true;
     std::error_code ec;
     for (const auto& root : roots)
       if (fs::is_regular_file(fs::path(root) / header, ec)) {
@@ -200,18 +224,19 @@ std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root,
     bool notShaderText = false;
   };
   std::vector<Candidate> candidates;
-  std::set<fs::path> included;
+  std::set<std::string> included;  // canonical, native
   for (const auto& f : files) {
     std::string text;
-    readFile(f.string(), &text);  // an unreadable stage is reported when its pipeline converts
+    // An unreadable stage is reported when its pipeline converts.
+    if (readFile(f.string(), &text)) plan.fileDigests.emplace(f.string(), hashBytes(text));
     Candidate c{f, decideStage(f.string(), text, base.t.stage, extensions), sharedExtensionWithoutShaderText(f, text)};
-    for (auto& header : includedFiles(f, text, base.t.includeDirs)) included.insert(std::move(header));
+    for (auto& header : includedFiles(f, text, base.t.includeDirs)) included.insert(header.native());
     candidates.push_back(std::move(c));
   }
   std::map<std::string, std::vector<fs::path>> pipelines;
+  PathResolver resolver;
   for (const auto& c : candidates) {
-    std::error_code ec;
-    if (included.count(fs::weakly_canonical(c.path, ec))) continue;  // an include file of another shader
+    if (!included.empty() && included.count(resolver.resolve(c.path))) continue;  // an include file of another shader
     if (!c.stage.problem.empty()) {
       plan.skippedEntries.push_back(c.path.string() + ":" + std::to_string(c.stage.problemLine) + ":" +
                                     std::to_string(c.stage.problemColumn) + ": error: " + c.stage.problem +
@@ -381,23 +406,13 @@ std::string checkOutputPlacement(const Plan& plan, const fs::path& outDir) {
              " the source tree '" + plan.root.string() + "'; outputs would be written among the sources (choose a "
              "directory outside the tree, or one inside it)";
   }
-  // Resolved paths: each directory once, then a file's own name unless the file itself is a
-  // symbolic link. (Native strings as keys: std::filesystem::path compares component by component.)
-  std::error_code ec;
-  std::map<std::string, fs::path> resolvedDirectories;
-  auto resolved = [&](const fs::path& file) {
-    if (fs::is_symlink(file, ec)) return fs::weakly_canonical(file, ec).native();
-    fs::path parent = file.parent_path();
-    auto [at, fresh] = resolvedDirectories.try_emplace(parent.native());
-    if (fresh) at->second = fs::weakly_canonical(parent.empty() ? fs::path(".") : parent, ec);
-    return (at->second / file.filename()).native();
-  };
+  PathResolver resolver;
   std::set<std::string> inputs;
   for (const auto& job : plan.jobs)
-    for (const auto& s : job.stages) inputs.insert(resolved(s));
+    for (const auto& s : job.stages) inputs.insert(resolver.resolve(s));
   for (const auto& job : plan.jobs)
     for (const auto& out : job.outputs)
-      if (!insideDirectory(out, outDir) || inputs.count(resolved(out)))
+      if (!insideDirectory(out, outDir) || inputs.count(resolver.resolve(out)))
         return out.string() + ": error: output would be outside the output directory or overwrite an input";
   return "";
 }

@@ -7,6 +7,7 @@
 #include "cli/cli_support.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct Plan {
   // The manifest and every directory of the tree: a build system that compares timestamps sees a
   // directory change when a shader is added or removed in it, so the step reruns.
   std::vector<std::filesystem::path> extraDependencies;
+  // The hash of the bytes of every file the plan read (path as walked -> hashBytes): the up-to-date
+  // check keys jobs with them instead of reading each input again.
+  std::map<std::string, std::string> fileDigests;
 };
 
 // Every pipeline under the directory `root`, converted with `base`.

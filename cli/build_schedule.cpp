@@ -61,7 +61,11 @@ JobResult convertJob(const BuildJob& job, const std::string& tool) {
   std::sort(result.dependencies.begin(), result.dependencies.end());
   result.dependencies.erase(std::unique(result.dependencies.begin(), result.dependencies.end()), result.dependencies.end());
   result.log = log.str();
-  result.key = jobKey(tool, job, result.dependencies, &sources);
+  result.key = jobKey(tool, job, result.dependencies, [&](const std::string& path) {
+    for (size_t i = 0; i < sources.size() && i < job.stages.size(); ++i)
+      if (job.stages[i].string() == path) return hashBytes(sources[i].contents);
+    return hashFile(path);
+  });
   return result;
 }
 
@@ -167,7 +171,7 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
         for (const auto& note : failure.notes) result.log += note + "\n";
       }
     } else {
-      nlohmann::json outputs = nlohmann::json::object();
+      nlohmann::json outputs = nlohmann::json::object(), stamps = nlohmann::json::object();
       bool writeFailed = false;
       // A pipeline is all or nothing: when one stage failed, the stages that converted are not
       // written either, so the output tree keeps the pipeline's last good conversion whole.
@@ -188,13 +192,20 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
           continue;
         }
         outputs[job.outputs[k].string()] = hashBytes(result.outputs[k]);
+        stamps[job.outputs[k].string()] = fileStamp(job.outputs[k]);
       }
+      // What the outputs just written include: the include copies and the next no-op build need
+      // not read them back. Unknown when a stage was not written (the disk keeps an older output).
+      result.outputIncludesKnown = !writeFailed && !pipelineFailed && result.outputs.size() == job.outputs.size();
+      for (size_t k = 0; result.outputIncludesKnown && k < job.outputs.size(); ++k)
+        for (auto& header : includedFiles(job.stages[k], result.outputs[k], job.options.includeDirs))
+          result.outputIncludes.push_back(header.string());
       for (auto& r : result.reports) {
         r["cached"] = false;
         r["timings_ms"]["pipeline_wall"] = outcome.seconds * 1000.0;
       }
       // A failure to write depends on the disk, not on the inputs: never cached.
-      if (!writeFailed && (!result.errors || result.replayable)) recordFinished(next, plan, job, result, std::move(outputs));
+      if (!writeFailed && (!result.errors || result.replayable)) recordFinished(next, plan, job, result, std::move(outputs), std::move(stamps));
     }
     ++finished;
     if (tty) drawProgress(finished, toConvert.size(), job.id);
@@ -231,10 +242,14 @@ std::vector<fs::path> copyIncludedFiles(const Plan& plan, std::vector<JobResult>
   std::vector<std::pair<fs::path, size_t>> pending;
   for (size_t i = 0; i < results.size() && i < plan.jobs.size(); ++i) {
     const BuildJob& job = plan.jobs[i];
+    if (results[i].outputIncludesKnown) {
+      for (const auto& header : results[i].outputIncludes) pending.emplace_back(header, i);
+      continue;
+    }
+    // Otherwise what the outputs on disk name (a copy-through pass, a pipeline kept from a former run).
     for (size_t k = 0; k < job.stages.size() && k < job.outputs.size(); ++k) {
       std::string text;
-      if (k < results[i].outputs.size() && !results[i].outputs[k].empty()) text = results[i].outputs[k];
-      else if (!readFile(job.outputs[k].string(), &text)) continue;  // not written (failed) or up to date and gone
+      if (!readFile(job.outputs[k].string(), &text)) continue;  // never written, or gone
       for (auto& header : includedFiles(job.stages[k], text, job.options.includeDirs)) pending.emplace_back(header, i);
     }
   }
