@@ -1,11 +1,13 @@
 #include "cli/verify_command.h"
 
 #include "cli/diagnostic_output.h"
+#include "cli/worker_pool.h"
 #include "transpiler/d3dasm/asm_route.h"
 #include "transpiler/d3dasm/asm_verify.h"
 #include "transpiler/verify/stereo_verify.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 namespace stereoshift {
@@ -82,10 +84,8 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
   return r.ok ? 0 : 1;
 }
 
-}  // namespace
-
-int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOptions& options,
-                     const VerifyCommandOptions& verify) {
+int verifyInThisProcess(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                        const VerifyCommandOptions& verify) {
   for (const SourceFile& source : sources) {
     if (!isD3DAssemblyInput(source)) continue;
     if (sources.size() == 1) return runAssemblyVerify(source, options, verify);
@@ -199,6 +199,35 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
     std::cout << (r.ok ? "verified" : "FAILED") << "\n";
   }
   return r.ok ? 0 : 1;
+}
+
+}  // namespace
+
+// The run happens in a forked child: a shader that reads memory outside what the harness gave it
+// (an address computed in the shader, an index past an array without robustness) crashes the
+// driver's compiled code, and the user is told so, with the file, instead of getting a bare
+// "Segmentation fault". STEREOSHIFT_NO_FORK=1 keeps it in this process, for a debugger.
+int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOptions& options,
+                     const VerifyCommandOptions& verify) {
+  if (const char* noFork = std::getenv("STEREOSHIFT_NO_FORK"); noFork && *noFork && std::string(noFork) != "0")
+    return verifyInThisProcess(sources, options, verify);
+  std::cout.flush();
+  std::cerr.flush();
+  TaskOutcome outcome = runIsolatedOnce(
+      [&] {
+        const int status = verifyInThisProcess(sources, options, verify);
+        std::cout.flush();
+        std::cerr.flush();
+        return std::to_string(status);
+      },
+      0);
+  if (outcome.completed && (outcome.payload == "0" || outcome.payload == "1")) return std::stoi(outcome.payload);
+  const std::string name = sources.empty() ? std::string("verify") : sources.back().path;
+  std::cerr << name << ": error: the verification run " << (outcome.completed ? "answered garbage" : outcome.failure)
+            << (outcome.phase.empty() ? "" : " in " + outcome.phase)
+            << "; a crash while the shaders run on the device means they read memory outside the buffers the "
+               "harness gave them (an address or an index the inputs do not make valid)\n1 error generated.\n";
+  return 1;
 }
 
 }  // namespace stereoshift

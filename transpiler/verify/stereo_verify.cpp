@@ -363,6 +363,15 @@ class StereoCheck {
     return true;
   }
 
+  // Captured component `c` of the original as the shader names it: "'teClip'.y (component 5)".
+  std::string componentName(uint32_t c) const {
+    for (const auto& f : layoutA_.fields)
+      if (c >= f.offset / 4 && c < f.offset / 4 + f.components)
+        return "'" + f.name + "'" + (f.components > 1 ? std::string(".") + "xyzw"[c - f.offset / 4] : std::string()) +
+               " (component " + std::to_string(c) + ")";
+    return "component " + std::to_string(c);
+  }
+
   std::string valueText(const CaptureResult& capture, uint32_t vertex, uint32_t component) const {
     const uint32_t original = &capture == &mono_ ? component
                               : uint32_t(std::find(inStereo_.begin(), inStereo_.end(), component) - inStereo_.begin());
@@ -406,8 +415,8 @@ class StereoCheck {
       if (staleCopy) {  // a copy of the position left mono: the 3Dmigoto "halo"
         result_.otherOutputsUnchanged = false;
         if (result_.problems.size() < 8)
-          result_.problems.push_back("vertex " + std::to_string(vs) + ": a copy of the position (component " +
-                                     std::to_string(c) + ") was not shifted with it (halo) in " + run);
+          result_.problems.push_back("vertex " + std::to_string(vs) + ": " + componentName(c) +
+                                     ", a copy of the position, was not shifted with it (halo) in " + run);
         continue;
       }
       if (mono_.u32(vm, c) == stereo.u32(vs, cs)) continue;
@@ -428,7 +437,7 @@ class StereoCheck {
       } else {
         result_.otherOutputsUnchanged = false;
         if (result_.problems.size() < 8)
-          result_.problems.push_back("vertex " + std::to_string(vs) + " component " + std::to_string(c) +
+          result_.problems.push_back("vertex " + std::to_string(vs) + ": output " + componentName(c) +
                                      " changed for " + run + " (" + valueText(mono_, vm, c) + " became " +
                                      valueText(stereo, vs, cs) + ")");
       }
@@ -486,7 +495,7 @@ class StereoCheck {
     for (uint32_t v = 0; v < result_.vertices && where.empty(); ++v)
       for (uint32_t c = 0; c < layoutA_.stride / 4 && where.empty(); ++c)
         if (mono_.u32(v, c) != stereo.u32(v, c))
-          where = ": first at vertex " + std::to_string(v) + " component " + std::to_string(c) + " (" +
+          where = ": first at vertex " + std::to_string(v) + ", " + componentName(c) + " (" +
                   std::to_string(mono_.f32(v, c)) + " became " + std::to_string(stereo.f32(v, c)) + ")";
     result_.problems.push_back("eyeSign = 0 output differs from the original" + where);
   }

@@ -11,6 +11,7 @@
 #include "transpiler/verify/verify_inputs.h"
 
 #include "passes/ir/module.h"
+#include "transpiler/verify/address_inputs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +78,12 @@ double matrixEntry(uint32_t seed, uint32_t row, uint32_t column, bool affine) {
 
 struct Reflector {
   const Module& m;
+  // Memory the shader reaches through device addresses (see address_inputs.h): each pointer, or
+  // integer cast to one, gets a buffer of its own filled like any other resource.
+  std::vector<std::vector<uint8_t>>* addressBuffers = nullptr;
+  AddressSources addressSources = {};
+  mutable uint32_t addressDepth = 0;
+  mutable uint32_t runtimeElements = 64;  // elements given to a runtime-sized array
 
   const Instruction* def(uint32_t id) const { return m.definition(id); }
 
@@ -110,6 +117,46 @@ struct Reflector {
   }
   void putReal(std::vector<uint8_t>& bytes, size_t at, double v, bool wide) const {
     wide ? putDouble(bytes, at, v) : putFloat(bytes, at, float(v));
+  }
+
+  // A buffer of `pointee` data for an address; its placeholder goes at byte `at` of `bytes`.
+  // Runtime arrays in it get 4096 elements (shaders index them by vertex), and the buffer is at
+  // least 64 KiB, so reads a little past what the type says stay in memory the draw owns. Three
+  // levels down (a linked list) the address is null, as the end of a list is: a cycle would keep
+  // a traversal running for ever.
+  void putAddress(std::vector<uint8_t>& bytes, size_t at, uint32_t pointee, uint32_t seed) const {
+    uint64_t placeholder = 0;
+    if (addressBuffers && addressDepth < 3) {
+      const uint32_t index = uint32_t(addressBuffers->size());
+      addressBuffers->emplace_back();
+      const uint32_t savedDepth = addressDepth, savedElements = runtimeElements;
+      addressDepth = savedDepth + 1;
+      runtimeElements = 4096;
+      std::vector<uint8_t> data;
+      fill(data, pointee, 0, 0, false, mix(seed, 0xADD5u));
+      data.resize(std::max<size_t>((data.size() + 15) & ~size_t(15), 64 * 1024), 0);
+      (*addressBuffers)[index] = std::move(data);
+      addressDepth = savedDepth;
+      runtimeElements = savedElements;
+      placeholder = addressPlaceholder(index);
+    }
+    if (bytes.size() < at + 8) bytes.resize(at + 8, 0);
+    std::memcpy(bytes.data() + at, &placeholder, 8);
+  }
+
+  // An integer member the shader casts to an address (every element of an array member).
+  bool fillIntegerAddress(std::vector<uint8_t>& bytes, uint32_t structType, uint32_t member, uint32_t memberType,
+                          size_t at, uint32_t seed) const {
+    auto source = addressSources.integerMembers.find({structType, member});
+    if (source == addressSources.integerMembers.end()) return false;
+    const Instruction* d = def(memberType);
+    uint32_t count = 1, stride = 8;
+    if (d && (d->opcode == spv::OpTypeArray || d->opcode == spv::OpTypeRuntimeArray)) {
+      count = d->opcode == spv::OpTypeArray ? arrayLength(d) : runtimeElements;
+      stride = m.decorationValue(memberType, spv::DecorationArrayStride).value_or(8);
+    }
+    for (uint32_t i = 0; i < count; ++i) putAddress(bytes, at + size_t(i) * stride, source->second, mix(seed, i));
+    return true;
   }
 
   // Fills one value of `type` at byte `at` of a resource with seed `seed` (see "generated data").
@@ -152,9 +199,14 @@ struct Reflector {
           }
         break;
       }
+      case spv::OpTypePointer: {
+        uint32_t pointee = 0;
+        if (isDeviceAddressPointer(m, type, &pointee)) putAddress(bytes, at, pointee, here);
+        break;
+      }
       case spv::OpTypeArray:
       case spv::OpTypeRuntimeArray: {
-        uint32_t count = d->opcode == spv::OpTypeArray ? arrayLength(d) : 64;  // a runtime array gets 64 elements
+        uint32_t count = d->opcode == spv::OpTypeArray ? arrayLength(d) : runtimeElements;
         uint32_t stride = m.decorationValue(type, spv::DecorationArrayStride).value_or(16);
         for (uint32_t i = 0; i < count; ++i) fill(bytes, d->operand(0), at + i * stride, matrixStride, rowMajor, seed, true);
         break;
@@ -164,7 +216,8 @@ struct Reflector {
           uint32_t offset = m.memberDecorationValue(type, i, spv::DecorationOffset).value_or(0);
           uint32_t ms = m.memberDecorationValue(type, i, spv::DecorationMatrixStride).value_or(0);
           bool rm = m.hasMemberDecoration(type, i, spv::DecorationRowMajor);
-          fill(bytes, d->operands[i], at + offset, ms, rm, seed, inArray);
+          if (!fillIntegerAddress(bytes, type, i, d->operands[i], at + offset, mix(here, i)))
+            fill(bytes, d->operands[i], at + offset, ms, rm, seed, inArray);
         }
         break;
       default:
@@ -405,7 +458,12 @@ bool describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t bindin
 // Buffers, images, samplers and push constants of one module (merged across stages by the caller:
 // a (set, binding) already present keeps its data).
 bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
-  Reflector r{m};
+  Reflector r{m, &in->addressBuffers, traceAddressSources(m)};
+  if (!r.addressSources.problem.empty()) {
+    *error = "the shader reads memory through a buffer device address, and " + r.addressSources.problem +
+             ": the harness cannot give it valid memory, so it is not run";
+    return false;
+  }
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable) continue;
     auto storage = static_cast<spv::StorageClass>(inst.operand(0));

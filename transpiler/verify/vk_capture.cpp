@@ -56,7 +56,9 @@ void VulkanContext::Impl::capture(const CaptureRequest& req, CaptureResult& out)
 
   RasterConfig raster;
   raster.discard = true;
-  BuiltPipeline p = buildPipeline(scope, cb, req.pipeline, rp, raster, "capture");
+  PipelineInputs withAddresses;
+  const PipelineInputs& in = resolveAddresses(scope, req.pipeline, &withAddresses, "capture");
+  BuiltPipeline p = buildPipeline(scope, cb, in, rp, raster, "capture");
 
   // Capture buffer pre-filled with 0xCD so that unwritten bytes are recognizable; counter buffer.
   HostBuffer xfb = hostBuffer(scope, capacity, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT, nullptr, 0,
@@ -81,12 +83,12 @@ void VulkanContext::Impl::capture(const CaptureRequest& req, CaptureResult& out)
   rbi.framebuffer = fb;
   rbi.renderArea = {{0, 0}, {1, 1}};
   vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
-  recordBind(cb, p, req.pipeline, 1, 1);
+  recordBind(cb, p, in, 1, 1);
   VkDeviceSize zero = 0, size = capacity;
   cmdBindXfbBuffers(cb, 0, 1, &xfb.buffer, &zero, &size);
   if (query) cmdBeginQueryIndexed(cb, qp, 0, 0, 0);
   cmdBeginXfb(cb, 0, 0, nullptr, nullptr);  // no counter buffer: start writing at offset 0
-  recordDraw(cb, p, req.pipeline);
+  recordDraw(cb, p, in);
   cmdEndXfb(cb, 0, 1, &counter.buffer, &zero);  // the counter receives the bytes written
   if (query) cmdEndQueryIndexed(cb, qp, 0, 0);
   vkCmdEndRenderPass(cb);

@@ -102,6 +102,7 @@ struct VulkanContext::Impl {
   bool validation = false;
   bool geometryShader = false, tessellationShader = false;
   bool multiview = false, multiviewGeometry = false, multiviewTessellation = false;
+  bool bufferDeviceAddress = false;  // Vulkan 1.2's feature, enabled when supported (address buffers)
   uint32_t maxMultiviewViewCount = 0;
   bool lost = false;
 
@@ -139,10 +140,15 @@ struct VulkanContext::Impl {
   uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred,
                       const char* what) const;
   // Memory for `req` (freed by `scope`): a type with `required` and, where one has it, `preferred`.
+  // `allocateFlags`: VkMemoryAllocateFlagsInfo (device addresses).
   VkDeviceMemory allocateMemory(Scope& scope, const VkMemoryRequirements& req, VkMemoryPropertyFlags required,
-                                VkMemoryPropertyFlags preferred, const char* what);
+                                VkMemoryPropertyFlags preferred, const char* what, VkMemoryAllocateFlags allocateFlags = 0);
   HostBuffer hostBuffer(Scope& scope, VkDeviceSize size, VkBufferUsageFlags usage, const void* init,
                         size_t initSize, const char* what);
+  // `in` with its address buffers created (alive as long as `scope`) and every placeholder replaced
+  // by the address it names (see addressPlaceholder); `in` itself when it has none.
+  const PipelineInputs& resolveAddresses(Scope& scope, const PipelineInputs& in, PipelineInputs* resolved,
+                                         const std::string& label);
   // An image as `ici` describes it, in device-local memory, with a view of all its layers.
   Image deviceImage(Scope& scope, const VkImageCreateInfo& ici, VkImageViewType viewType, VkImageAspectFlags aspect,
                     const char* what);

@@ -228,6 +228,7 @@ void VulkanContext::Impl::createDevice() {
   enabledFeatures = features.features;
   tessellationShader = features.features.tessellationShader;
   if (v12) {
+    bufferDeviceAddress = f12.bufferDeviceAddress;
     multiview = f11.multiview;
     multiviewGeometry = f11.multiviewGeometryShader;
     multiviewTessellation = f11.multiviewTessellationShader;

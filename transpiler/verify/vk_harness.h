@@ -99,6 +99,14 @@ struct SpecConstant {
   uint32_t bits = 0;
 };
 
+// Memory a shader reaches through a buffer device address (GL_EXT_buffer_reference,
+// vk::RawBufferLoad) rather than a descriptor: PipelineInputs::addressBuffers[i] is created with
+// VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, and wherever the push constants, a uniform buffer or
+// an address buffer holds addressPlaceholder(i) (8 bytes at an 8-byte-aligned offset) the harness
+// writes that buffer's address before the draw. No generated value has these high bits.
+constexpr uint64_t kAddressPlaceholderTag = 0x5AD0DDA000000000ull;
+constexpr uint64_t addressPlaceholder(uint32_t index) { return kAddressPlaceholderTag | index; }
+
 struct PipelineInputs {
   // Vertex stage required; tessellation control + evaluation optional (both or neither);
   // geometry optional; fragment optional (render() only; ignored by capture()).
@@ -118,6 +126,7 @@ struct PipelineInputs {
   std::vector<SampledTexture> textures;
   std::vector<uint8_t> pushConstants;  // offset 0, all graphics stages; size multiple of 4
   std::vector<SpecConstant> specConstants;
+  std::vector<std::vector<uint8_t>> addressBuffers;  // see addressPlaceholder
 };
 
 // ---------------------------------------------------------------------------------------------

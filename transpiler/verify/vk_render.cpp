@@ -170,13 +170,17 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   const uint32_t layers = target.layers;
 
   std::vector<BuiltPipeline> pipelines;
+  std::vector<PipelineInputs> withAddresses(req.draws.size());
+  std::vector<const PipelineInputs*> inputs;
+  for (size_t i = 0; i < req.draws.size(); ++i)
+    inputs.push_back(&resolveAddresses(scope, req.draws[i].pipeline, &withAddresses[i], "render draw " + std::to_string(i)));
   for (size_t i = 0; i < req.draws.size(); ++i) {
     RasterConfig raster;
     raster.colorAttachment = raster.depthAttachment = true;
     raster.draw = &req.draws[i];
     raster.viewCount = useMultiview ? layers : 1;
     pipelines.push_back(
-        buildPipeline(scope, cb, req.draws[i].pipeline, target.renderPass, raster, "render draw " + std::to_string(i)));
+        buildPipeline(scope, cb, *inputs[i], target.renderPass, raster, "render draw " + std::to_string(i)));
   }
 
   const VkDeviceSize pixelBytes = VkDeviceSize(req.width) * req.height * 4 * layers;
@@ -199,8 +203,8 @@ void VulkanContext::Impl::render(const RenderRequest& req, RenderResult& out) {
   VkQueryPool timer = timestamps ? startTimer(dev, scope, cb) : VK_NULL_HANDLE;
   vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
   for (size_t i = 0; i < req.draws.size(); ++i) {
-    recordBind(cb, pipelines[i], req.draws[i].pipeline, req.width, req.height);
-    recordDraw(cb, pipelines[i], req.draws[i].pipeline);
+    recordBind(cb, pipelines[i], *inputs[i], req.width, req.height);
+    recordDraw(cb, pipelines[i], *inputs[i]);
   }
   vkCmdEndRenderPass(cb);
   if (timestamps) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timer, 1);

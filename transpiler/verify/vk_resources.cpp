@@ -32,14 +32,75 @@ uint32_t VulkanContext::Impl::memoryType(uint32_t typeBits, VkMemoryPropertyFlag
 
 VkDeviceMemory VulkanContext::Impl::allocateMemory(Scope& scope, const VkMemoryRequirements& req,
                                                    VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred,
-                                                   const char* what) {
+                                                   const char* what, VkMemoryAllocateFlags allocateFlags) {
   VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+  flags.flags = allocateFlags;
+  if (allocateFlags) mai.pNext = &flags;
   mai.allocationSize = req.size;
   mai.memoryTypeIndex = memoryType(req.memoryTypeBits, required, preferred, what);
   VkDeviceMemory mem = VK_NULL_HANDLE;
   VKH_CHECK(vkAllocateMemory(device, &mai, nullptr, &mem));
   scope.deferFree(mem);
   return mem;
+}
+
+namespace {
+
+// Replaces every placeholder in `bytes` by the address it names.
+void patchAddresses(std::vector<uint8_t>& bytes, const std::vector<VkDeviceAddress>& addresses, const std::string& label) {
+  for (size_t at = 0; at + 8 <= bytes.size(); at += 8) {
+    uint64_t value = 0;
+    std::memcpy(&value, bytes.data() + at, 8);
+    if ((value & 0xFFFFFFFF00000000ull) != kAddressPlaceholderTag) continue;
+    const uint64_t index = value & 0xFFFFFFFFull;
+    if (index >= addresses.size()) failIn(label, "address placeholder " + std::to_string(index) + " names no address buffer");
+    std::memcpy(bytes.data() + at, &addresses[index], 8);
+  }
+}
+
+}  // namespace
+
+const PipelineInputs& VulkanContext::Impl::resolveAddresses(Scope& scope, const PipelineInputs& in,
+                                                            PipelineInputs* resolved, const std::string& label) {
+  if (in.addressBuffers.empty()) return in;
+  if (!bufferDeviceAddress)
+    failIn(label, "the shader reads memory through buffer device addresses and the device lacks bufferDeviceAddress");
+  *resolved = in;
+  std::vector<VkDeviceAddress> addresses;
+  std::vector<HostBuffer> buffers;
+  for (const auto& bytes : in.addressBuffers) {
+    HostBuffer b;
+    b.size = std::max<VkDeviceSize>(bytes.size(), 16);
+    VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    bci.size = b.size;
+    bci.usage = VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VKH_CHECK(vkCreateBuffer(device, &bci, nullptr, &b.buffer));
+    VkDevice dev = device;
+    VkBuffer buf = b.buffer;
+    scope.defer([dev, buf] { vkDestroyBuffer(dev, buf, nullptr); });
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device, b.buffer, &req);
+    VkDeviceMemory mem = allocateMemory(scope, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                        0, "address buffer", VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT);
+    VKH_CHECK(vkBindBufferMemory(device, b.buffer, mem, 0));
+    VKH_CHECK(vkMapMemory(device, mem, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+    VkBufferDeviceAddressInfo bai{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+    bai.buffer = b.buffer;
+    addresses.push_back(vkGetBufferDeviceAddress(device, &bai));
+    buffers.push_back(b);
+  }
+  patchAddresses(resolved->pushConstants, addresses, label);
+  for (auto& u : resolved->uniformBuffers) patchAddresses(u.bytes, addresses, label);
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    std::vector<uint8_t> bytes = in.addressBuffers[i];
+    patchAddresses(bytes, addresses, label);
+    std::memset(buffers[i].mapped, 0, size_t(buffers[i].size));
+    std::memcpy(buffers[i].mapped, bytes.data(), bytes.size());
+  }
+  resolved->addressBuffers.clear();
+  return *resolved;
 }
 
 HostBuffer VulkanContext::Impl::hostBuffer(Scope& scope, VkDeviceSize size, VkBufferUsageFlags usage,

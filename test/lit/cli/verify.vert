@@ -22,5 +22,5 @@ void main() {
 // JSON-DAG: "other_outputs_unchanged": true
 // JSON-DAG: "ok": true
 // JSON-DAG: "vertices": 96
-// HALO: problem: vertex {{[0-9]+}}: a copy of the position (component 4) was not shifted with it (halo)
+// HALO: problem: vertex {{[0-9]+}}: 'outCopy'.x (component 4), a copy of the position, was not shifted with it (halo)
 // HALO: {{^}}FAILED
