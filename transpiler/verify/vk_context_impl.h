@@ -143,8 +143,9 @@ struct VulkanContext::Impl {
   // `allocateFlags`: VkMemoryAllocateFlagsInfo (device addresses).
   VkDeviceMemory allocateMemory(Scope& scope, const VkMemoryRequirements& req, VkMemoryPropertyFlags required,
                                 VkMemoryPropertyFlags preferred, const char* what, VkMemoryAllocateFlags allocateFlags = 0);
+  // A host-visible buffer of at least `size` bytes, mapped, zeroed and then filled from `init`.
   HostBuffer hostBuffer(Scope& scope, VkDeviceSize size, VkBufferUsageFlags usage, const void* init,
-                        size_t initSize, const char* what);
+                        size_t initSize, const char* what, VkMemoryAllocateFlags allocateFlags = 0);
   // `in` with its address buffers created (alive as long as `scope`) and every placeholder replaced
   // by the address it names (see addressPlaceholder); `in` itself when it has none.
   const PipelineInputs& resolveAddresses(Scope& scope, const PipelineInputs& in, PipelineInputs* resolved,

@@ -70,22 +70,9 @@ const PipelineInputs& VulkanContext::Impl::resolveAddresses(Scope& scope, const 
   std::vector<VkDeviceAddress> addresses;
   std::vector<HostBuffer> buffers;
   for (const auto& bytes : in.addressBuffers) {
-    HostBuffer b;
-    b.size = std::max<VkDeviceSize>(bytes.size(), 16);
-    VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    bci.size = b.size;
-    bci.usage = VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VKH_CHECK(vkCreateBuffer(device, &bci, nullptr, &b.buffer));
-    VkDevice dev = device;
-    VkBuffer buf = b.buffer;
-    scope.defer([dev, buf] { vkDestroyBuffer(dev, buf, nullptr); });
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device, b.buffer, &req);
-    VkDeviceMemory mem = allocateMemory(scope, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                        0, "address buffer", VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT);
-    VKH_CHECK(vkBindBufferMemory(device, b.buffer, mem, 0));
-    VKH_CHECK(vkMapMemory(device, mem, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+    HostBuffer b = hostBuffer(scope, std::max<VkDeviceSize>(bytes.size(), 16),
+                              VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, nullptr, 0,
+                              "address buffer", VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT);
     VkBufferDeviceAddressInfo bai{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
     bai.buffer = b.buffer;
     addresses.push_back(vkGetBufferDeviceAddress(device, &bai));
@@ -96,7 +83,6 @@ const PipelineInputs& VulkanContext::Impl::resolveAddresses(Scope& scope, const 
   for (size_t i = 0; i < buffers.size(); ++i) {
     std::vector<uint8_t> bytes = in.addressBuffers[i];
     patchAddresses(bytes, addresses, label);
-    std::memset(buffers[i].mapped, 0, size_t(buffers[i].size));
     std::memcpy(buffers[i].mapped, bytes.data(), bytes.size());
   }
   resolved->addressBuffers.clear();
@@ -104,7 +90,8 @@ const PipelineInputs& VulkanContext::Impl::resolveAddresses(Scope& scope, const 
 }
 
 HostBuffer VulkanContext::Impl::hostBuffer(Scope& scope, VkDeviceSize size, VkBufferUsageFlags usage,
-                                           const void* init, size_t initSize, const char* what) {
+                                           const void* init, size_t initSize, const char* what,
+                                           VkMemoryAllocateFlags allocateFlags) {
   HostBuffer b;
   b.size = std::max<VkDeviceSize>(size, 4);
   VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -119,7 +106,7 @@ HostBuffer VulkanContext::Impl::hostBuffer(Scope& scope, VkDeviceSize size, VkBu
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device, b.buffer, &req);
   VkDeviceMemory mem = allocateMemory(scope, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                      0, what);
+                                      0, what, allocateFlags);
   VKH_CHECK(vkBindBufferMemory(device, b.buffer, mem, 0));
   VKH_CHECK(vkMapMemory(device, mem, 0, VK_WHOLE_SIZE, 0, &b.mapped));
   std::memset(b.mapped, 0, size_t(b.size));
