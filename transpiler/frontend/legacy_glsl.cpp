@@ -233,6 +233,91 @@ bool isNewKeyword(const std::string& word, bool es) {
   return common.count(word) || (es ? essl310.count(word) : glsl330.count(word));
 }
 
+// The built-in functions ESSL 3.10 has and ESSL 1.00 does not (with GL_EXT_gpu_shader5, which the
+// front end enables for the translation's parse). WebGL1 code often defines the ones it lacks
+// itself (`inverse`, `transpose`, `round`): plain user functions in ESSL 1.00, but glslang parses
+// the translation as ESSL 3.10, where they would redefine built-ins (an error in ESSL 3). A
+// function named like an ESSL 1.00 built-in is another matter: redefining one is an error in ESSL
+// 1.00 too (Mesa says so), and an overload of one stays glslang's refusal.
+bool isBuiltinOnlyAfterEssl100(const std::string& name) {
+  static const std::set<std::string> names = {
+      // trigonometry, common
+      "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "trunc", "round", "roundEven", "modf", "isnan", "isinf",
+      "floatBitsToInt", "floatBitsToUint", "intBitsToFloat", "uintBitsToFloat", "fma", "frexp", "ldexp",
+      // packing
+      "packSnorm2x16", "unpackSnorm2x16", "packUnorm2x16", "unpackUnorm2x16", "packHalf2x16", "unpackHalf2x16",
+      "packUnorm4x8", "packSnorm4x8", "unpackUnorm4x8", "unpackSnorm4x8",
+      // matrix
+      "outerProduct", "transpose", "determinant", "inverse",
+      // integer
+      "uaddCarry", "usubBorrow", "umulExtended", "imulExtended", "bitfieldExtract", "bitfieldInsert",
+      "bitfieldReverse", "bitCount", "findLSB", "findMSB",
+      // texture (`texture` itself is renamed as a new keyword)
+      "textureSize", "textureProj", "textureLod", "textureOffset", "texelFetch", "texelFetchOffset",
+      "textureProjOffset", "textureLodOffset", "textureProjLod", "textureProjLodOffset", "textureGrad",
+      "textureGradOffset", "textureProjGrad", "textureProjGradOffset", "textureGather", "textureGatherOffset",
+      "textureGatherOffsets",
+      // atomics, images, interpolation, barriers
+      "atomicCounterIncrement", "atomicCounterDecrement", "atomicCounter", "atomicAdd", "atomicMin", "atomicMax",
+      "atomicAnd", "atomicOr", "atomicXor", "atomicExchange", "atomicCompSwap", "imageSize", "imageLoad",
+      "imageStore", "imageAtomicAdd", "imageAtomicMin", "imageAtomicMax", "imageAtomicAnd", "imageAtomicOr",
+      "imageAtomicXor", "imageAtomicExchange", "imageAtomicCompSwap", "interpolateAtCentroid",
+      "interpolateAtSample", "interpolateAtOffset", "barrier", "memoryBarrier", "memoryBarrierAtomicCounter", "memoryBarrierBuffer", "memoryBarrierImage", "memoryBarrierShared",
+      "groupMemoryBarrier"};
+  return names.count(name) > 0;
+}
+
+// The code token before `k` (comments skipped; a macro body's tokens count as code); npos: none.
+size_t previousCodeToken(const source::LexedText& lexed, size_t k) {
+  while (k-- > 0)
+    if (lexed[k].kind != source::TokenKind::Comment) return k;
+  return std::string::npos;
+}
+
+// The names of ESSL 3.10 built-ins ESSL 1.00 lacks that `scan`'s text declares or defines at file
+// scope (a type word, the name, `(`, outside every brace): in ESSL 100 they name the user's functions.
+std::set<std::string> builtinFunctionsDefined(const Scan& scan) {
+  std::set<std::string> defined;
+  const source::LexedText& lexed = scan.lexed;
+  int depth = 0;
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    if (!lexed[k].isCode()) continue;
+    if (lexed.isPunct(k, '{')) ++depth;
+    if (lexed.isPunct(k, '}')) depth = std::max(0, depth - 1);
+    if (depth != 0 || !lexed.isIdentifier(k) || !lexed.isPunct(lexed.nextNonComment(k), '(')) continue;
+    std::string name(lexed.text(k));
+    size_t before = previousCodeToken(lexed, k);
+    if (isBuiltinOnlyAfterEssl100(name) && before != std::string::npos && lexed.isIdentifier(before) &&
+        lexed[before].isCode())
+      defined.insert(std::move(name));
+  }
+  return defined;
+}
+
+// `name` at `t` names a function, not a member selected after `.`.
+bool isFreeName(const source::LexedText& lexed, const Token& t) {
+  size_t before = previousCodeToken(lexed, t.index);
+  return before == std::string::npos || !lexed.isPunct(before, '.');
+}
+
+// `text` with each user function named like an ESSL 3 built-in ESSL 1.00 lacks renamed
+// (name_stereoshift) wherever it is named: glslang refuses such a definition at every ES version.
+std::string renameUserBuiltins(const std::string& text) {
+  Scan scan(text);
+  std::set<std::string> defined = builtinFunctionsDefined(scan);
+  if (defined.empty()) return text;
+  std::string out;
+  size_t pos = 0;
+  for (const Token& t : scan.identifiers) {
+    if (!defined.count(t.text) || !isFreeName(scan.lexed, t)) continue;
+    out.append(text, pos, t.end - pos);
+    out += "_stereoshift";
+    pos = t.end;
+  }
+  out.append(text, pos, std::string::npos);
+  return out;
+}
+
 // Whether `name` is a compatibility built-in of any stage, translated or not.
 bool isCompatBuiltin(const std::string& name) {
   static const std::set<std::string> names = [] {
@@ -307,6 +392,7 @@ class LegacyTranslator {
 
   LegacyTranslation run() {
     rewriteDirectives();
+    if (es_) userBuiltins_ = builtinFunctionsDefined(scan_);
     for (const Token& t : scan_.identifiers)
       if (auto error = rewriteIdentifier(t)) return failed(*error);
     if (fragColor_ && fragData_) {
@@ -358,7 +444,9 @@ class LegacyTranslator {
     auto rename = [&](std::string to) {
       edits_.push_back({t.begin, t.end, std::move(to) + source::splicesOf(text_, scan_.lexed[t.index])});
     };
-    if (oneXX_ && w == "attribute") {
+    if (userBuiltins_.count(w) && isFreeName(scan_.lexed, t)) {
+      rename(w + "_stereoshift");  // the user's function, hiding the built-in of its name
+    } else if (oneXX_ && w == "attribute") {
       if (stage_ != Stage::Vertex) return locate(t.begin, "'attribute' is only allowed in a vertex shader");
       rename("in");
     } else if (oneXX_ && w == "varying") {
@@ -461,6 +549,7 @@ class LegacyTranslator {
   std::vector<Edit> edits_;
   std::set<std::string> declare_;  // compat built-ins (by gl_ name) used
   std::set<std::string> helpers_;  // shadow helpers used
+  std::set<std::string> userBuiltins_;  // ESSL 100: the user's functions named like ESSL 3-only built-ins
   bool fragColor_ = false, fragData_ = false;
 };
 
@@ -481,9 +570,12 @@ bool verifyLegacyCompiles(const std::string& text, Stage stage, int version, boo
     default: break;
   }
   glslang::TShader shader(lang);
-  const char* strings[] = {text.c_str()};
+  // ESSL 100 code may define `inverse` & co. itself; glslang refuses it (isBuiltinOnlyAfterEssl100):
+  // those functions compiled under another name, the rest as written.
+  const std::string compiled = es ? renameUserBuiltins(text) : text;
+  const char* strings[] = {compiled.c_str()};
   const char* names[] = {displayName.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
+  const int lengths[] = {static_cast<int>(compiled.size())};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   // AST only, no SPIR-V client: glslang's built-ins for 1xx parse only without one (with one it
   // prints its whole built-in text to stdout and fails).
