@@ -132,6 +132,7 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   // stdout. Such shaders are parsed as a faithful ESSL 310 / GLSL 330 translation instead (the
   // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
   LegacyDialect dialect = decideLegacyDialect(input.contents, v);
+  settleDefaultDialect(dialect, input.contents, stage);
   bool usesCompatibilityBuiltIns = false;
   FrontEndOptions parseOptions = options;
   if (dialect.legacy && dialect.es) {

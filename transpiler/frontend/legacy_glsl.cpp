@@ -376,7 +376,23 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
   }
   d.version = 110;
   d.reason = "no #version and nothing ES-only, so GLSL's default 110";
+  d.byDefault = true;
   return d;
+}
+
+void settleDefaultDialect(LegacyDialect& dialect, const std::string& text, Stage stage) {
+  if (!dialect.byDefault || (stage != Stage::Vertex && stage != Stage::Fragment)) return;
+  Diagnostics asDesktop, asEs;
+  if (verifyLegacyCompiles(text, stage, 110, false, "", asDesktop)) return;
+  if (!verifyLegacyCompiles(text, stage, 100, true, "", asEs)) return;  // neither: GLSL's default, and its errors
+  const auto& errors = asDesktop.all();
+  auto first = std::find_if(errors.begin(), errors.end(), [](const Diagnostic& e) { return e.severity == Severity::Error; });
+  dialect.version = 100;
+  dialect.es = true;
+  dialect.byDefault = false;
+  dialect.reason = "no #version; glslang refuses it as GLSL 110" +
+                   (first != errors.end() ? " (" + first->message + ")" : std::string()) +
+                   " and takes it as ESSL 100, so ESSL 100 (WebGL1)";
 }
 
 namespace {

@@ -35,10 +35,18 @@ struct LegacyDialect {
   bool es = false;
   bool versionWritten = false;  // false: no #version, the version was decided from the text
   std::string reason;           // why this dialect, for the report
+  bool byDefault = false;       // no #version and nothing in the text chose: GLSL's default 110
 };
 
 // The dialect of `text` given its #version line (findVersion).
 LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& version);
+
+// A dialect GLSL's default chose (byDefault) for a vertex or fragment shader without #version that
+// glslang refuses as GLSL 110 and accepts as ESSL 100 becomes ESSL 100: WebGL1 vertex shaders need
+// no precision statement (the vertex stage has a default) and so often show nothing ES-only, while
+// what they use may be ESSL 100's and not GLSL 110's (a matrix built from a matrix). Costs one parse
+// (two when 110 fails) for such shaders only.
+void settleDefaultDialect(LegacyDialect& dialect, const std::string& text, Stage stage);
 
 struct LegacyTranslation {
   bool ok = false;
