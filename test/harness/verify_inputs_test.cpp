@@ -158,6 +158,19 @@ TEST_F(VerifyInputs, TutorialAndSampleConventions) {
     expectVerified(verify({file}), file);
 }
 
+// Memory reached through buffer device addresses: pointers held in the push constants and a 64-bit
+// address cast in the code each get a buffer of generated data (before, the draw read wild memory).
+TEST_F(VerifyInputs, BufferDeviceAddresses) {
+  for (const char* file : {"buffer_reference_mesh.vert", "buffer_address_camera.vert"})
+    expectVerified(verify({file}), file);
+}
+
+// WebGL1 code with no #version or precision statement that writes ESSL 3's `transpose` itself and
+// builds a matrix from a matrix: ESSL 100, analysed with its helper named apart.
+TEST_F(VerifyInputs, WebGL1MatrixHelpers) {
+  expectVerified(verify({"webgl1_matrix_helpers.vert"}), "webgl1_matrix_helpers.vert");
+}
+
 // Halo by value on the driver: outputs that recompute the clip position (inline and through a
 // helper) and a position read back from its varying (a mirror's projective lookup) carry, per eye
 // and vertex, bit for bit the shifted x of gl_Position (verify compares each copy with the captured
