@@ -143,12 +143,16 @@ def run_case(path, args):
             routes = [s.get("route") for s in stages]
             if cfg["route"] not in routes:
                 problems.append("no stage took the %s route (routes: %s)" % (cfg["route"], routes))
-        base = [("separation", cfg["separation"]), ("convergence", cfg["convergence"])]
-        ok, log = run_runner(runner, render(with_test(converted, [("eyeSign", "0")] + base, None)), work, "mono")
+        # The eye parameters by the names the GL API gives them: a member of the injected block
+        # StereoParams is "StereoParams.eyeSign", a loose uniform "eyeSign".
+        block = any(re.search(r"\buniform\s+StereoParams\b", body) for _, body in converted)
+        prefix = "StereoParams." if block else ""
+        base = [(prefix + "separation", cfg["separation"]), (prefix + "convergence", cfg["convergence"])]
+        ok, log = run_runner(runner, render(with_test(converted, [(prefix + "eyeSign", "0")] + base, None)), work, "mono")
         if not ok:
             problems.append("eyeSign = 0: the converted pipeline does not render what the original renders:\n" + log)
         for sign, probes in stereo_probes.items():
-            ok, log = run_runner(runner, render(with_test(converted, [("eyeSign", sign)] + base, probes)), work,
+            ok, log = run_runner(runner, render(with_test(converted, [(prefix + "eyeSign", sign)] + base, probes)), work,
                                  "stereo" + sign)
             if not ok:
                 problems.append("eyeSign = %s: the stereo probes fail:\n%s" % (sign, log))

@@ -163,14 +163,27 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   // -e NAME: the function glslang compiles as `main` (glslangValidator's --source-entrypoint).
   const std::string glslEntry = options.entryPoint.empty() ? "main" : options.entryPoint;
   std::optional<Attempt> best;
+  std::optional<Attempt> vulkanButOpenGLStyle;
   for (Client client : clients) {
     Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, glslEntry, parseOptions);
     if (a.ok) {
       a.info.vulkan = client == Client::Vulkan;
+      // Valid as Vulkan GLSL only through the auto-mapping, with an interface written the OpenGL
+      // way: OpenGL GLSL, if OpenGL rules take it (else Vulkan after all: `set`, push constants).
+      if (client == Client::Vulkan && !a.openGLStyleInterface.empty() && !options.targetEnv) {
+        result.dialectReason = "Vulkan GLSL only with locations and bindings made up: its " + a.openGLStyleInterface +
+                               ", as OpenGL code writes it, so OpenGL GLSL";
+        vulkanButOpenGLStyle = std::move(a);
+        continue;
+      }
       best = std::move(a);
       break;
     }
     if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
+  }
+  if ((!best || !best->ok) && vulkanButOpenGLStyle) {
+    best = std::move(vulkanButOpenGLStyle);
+    result.dialectReason.clear();
   }
   // Refused as written: a lifted copy (glsl_lift.h) for the analysis, with OpenGL rules.
   std::string lifted;

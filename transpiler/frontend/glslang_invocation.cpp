@@ -102,6 +102,34 @@ void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, Source
   }
 }
 
+// The first user interface variable of `intermediate` written the OpenGL way (Attempt::openGLStyleInterface).
+std::string firstOpenGLStyleInterface(const glslang::TIntermediate& intermediate) {
+  auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
+  if (!root) return {};
+  for (auto* node : root->getSequence()) {
+    auto* agg = node->getAsAggregate();
+    if (!agg || agg->getOp() != glslang::EOpLinkerObjects) continue;
+    for (auto* object : agg->getSequence()) {
+      auto* symbol = object->getAsSymbolNode();
+      if (!symbol) continue;
+      const auto& type = symbol->getType();
+      const auto& q = type.getQualifier();
+      std::string name = type.getBasicType() == glslang::EbtBlock ? type.getTypeName().c_str() : symbol->getName().c_str();
+      if (name.starts_with("gl_") || q.builtIn != glslang::EbvNone) continue;
+      const bool inOut = q.storage == glslang::EvqVaryingIn || q.storage == glslang::EvqVaryingOut;
+      const bool resource = q.storage == glslang::EvqBuffer ||
+                            (q.storage == glslang::EvqUniform && (type.getBasicType() == glslang::EbtBlock || type.isOpaque()));
+      if (q.layoutPushConstant) continue;
+      if (inOut && !q.hasLocation())
+        return std::string(q.storage == glslang::EvqVaryingIn ? "input" : "output") + " '" + name + "' has no location";
+      if (resource && !q.hasBinding())
+        return std::string(type.getBasicType() == glslang::EbtBlock ? "block" : "uniform") + " '" + name +
+               "' has no binding";
+    }
+  }
+  return {};
+}
+
 // The first node of glslang's tree past kMaxSyntaxTreeDepth levels or kMaxControlFlowNesting
 // nested if / ?: / loop / switch, as a located error. The walk keeps its own stack: the tree is
 // exactly what may be too deep for recursion.
@@ -278,6 +306,8 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
     return attempt;
   }
   recordExplicitQualifiers(*shader.getIntermediate(), attempt.info);
+  if (language == SourceLanguage::Glsl && client == Client::Vulkan)
+    attempt.openGLStyleInterface = firstOpenGLStyleInterface(*shader.getIntermediate());
   attempt.info.multiviewViews = declaredViewCount(text);
 
   glslang::TProgram program;

@@ -39,6 +39,11 @@ struct Attempt {
   Diagnostics diags;
   SourceInfo info;
   std::vector<std::string> included;
+  // A user input or output without a location, or a uniform / storage block or opaque uniform
+  // without a binding ("input 'uv' has no location"; empty: none): OpenGL gives those meaning (names, glBindAttribLocation,
+  // glUniformBlockBinding), Vulkan GLSL does not (glslangValidator -V refuses them; this front end
+  // auto-maps them only to make SPIR-V).
+  std::string openGLStyleInterface;
 };
 Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Stage stage, SourceLanguage language,
                            Client client, const std::string& entry, const FrontEndOptions& options);
