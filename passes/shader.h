@@ -64,6 +64,15 @@ struct SourceInfo {
   // GLSL glslang refused as written and parsed as a lifted copy (transpiler/frontend/glsl_lift.h):
   // what was lifted. The analysis ran on the copy; the output is the original text.
   std::string liftedBecause;
+  // GLSL without #version whose text is of a version from 330 / ESSL 300 on (the loader prepends
+  // one): the front end parsed it with `version` put before it; a re-compile of the output (which
+  // stays without one) goes through the front end, which decides the same again.
+  bool versionPrepended = false;
+  // A text spliced back without #version whose #extension lines give it, at a lower version, what
+  // glslang knows only at `version` (GL_ARB_gpu_shader5's uaddCarry at 400): the loader may prepend
+  // any version from the extensions' own, so the splice writes only what GLSL `spliceVersionCap` has
+  // (no `precise` / `fma`). 0: no cap.
+  int spliceVersionCap = 0;
 };
 
 struct SourceFile {

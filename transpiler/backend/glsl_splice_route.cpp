@@ -165,7 +165,8 @@ class GlslSpliceRoute final : public BackEndRoute {
     const PassContext& ctx = r.context;
     GlslSpliceOptions splice;
     static_cast<ShiftSpec&>(splice) = shiftSpec(ctx);
-    splice.version = ctx.source.version;
+    splice.version = ctx.source.spliceVersionCap ? std::min(ctx.source.version, ctx.source.spliceVersionCap)
+                                                 : ctx.source.version;
     splice.es = ctx.source.es;
     splice.stage = ctx.source.stage;
     if (!r.entryPointOption.empty()) splice.entryPoint = r.entryPointOption;
@@ -196,7 +197,8 @@ class GlslSpliceRoute final : public BackEndRoute {
     // ESSL 100 / GLSL below 330: through the front end and its analysis translation, as the input
     // was read (glslang alone lacks some of those dialects' built-ins).
     // A lifted copy's source (glsl_lift.h) likewise: glslang accepts only the lifted form of it.
-    check.throughFrontEnd = isLegacyGlslDialect(ctx.source) || !ctx.source.liftedBecause.empty();
+    check.throughFrontEnd =
+        isLegacyGlslDialect(ctx.source) || !ctx.source.liftedBecause.empty() || ctx.source.versionPrepended;
     check.failure = "the spliced GLSL does not compile at the source's version";
     result.checks.push_back(std::move(check));
     result.declineIfChecksFail = true;

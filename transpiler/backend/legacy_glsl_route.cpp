@@ -90,7 +90,7 @@ class LegacyGlslRoute final : public BackEndRoute {
     check.stage = ctx.source.stage;
     check.legacy = true;
     // A lifted copy's source (frontend/glsl_lift.h): through the front end, which lifts it again.
-    check.throughFrontEnd = !ctx.source.liftedBecause.empty();
+    check.throughFrontEnd = !ctx.source.liftedBecause.empty() || ctx.source.versionPrepended;
     check.version = ctx.source.version;
     check.es = ctx.source.es;
     check.failure = "the emitted shader does not compile at its original version";

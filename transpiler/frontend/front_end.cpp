@@ -117,6 +117,17 @@ void compileHlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   result.includedFiles = std::move(a.included);
 }
 
+// Whether `text` has an #extension line (not `disable`): an extension may give the text, at a lower
+// version than glslang reads it at, what glslang knows only at a core version (uaddCarry at 400).
+bool enablesAnExtension(const std::string& text) {
+  source::LexedText lexed(text);
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed[k].kind == source::TokenKind::Directive && lexed[k].directive == source::DirectiveKind::Extension &&
+        source::spelledString(text, lexed[k]).find("disable") == std::string::npos)
+      return true;
+  return false;
+}
+
 // GLSL: the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL (tried
 // first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
 void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage stage,
@@ -132,8 +143,9 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   // stdout. Such shaders are parsed as a faithful ESSL 310 / GLSL 330 translation instead (the
   // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
   LegacyDialect dialect = decideLegacyDialect(input.contents, v);
-  settleDefaultDialect(dialect, input.contents, stage);
+  settleVersionlessDialect(dialect, input.contents, stage);
   bool usesCompatibilityBuiltIns = false;
+  bool versionPrepended = false;
   FrontEndOptions parseOptions = options;
   if (dialect.legacy && dialect.es) {
     // ESSL 100 lets a loop index pick a sampler of an array (its Appendix A's constant-index
@@ -151,6 +163,16 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
     v.version = dialect.version;
     v.es = dialect.es;
     result.dialectReason = dialect.reason;
+  } else if (!dialect.versionWritten) {
+    // No #version, and the text is of a version past the legacy ones (settleVersionlessDialect):
+    // parsed with that version put before it (ESSL 300 as 310, as below), its lines numbered as
+    // written; the output stays without one, for the loader that prepends its own.
+    v.version = dialect.version;
+    v.es = dialect.es;
+    const int parseVersion = v.es ? std::max(v.version, 310) : v.version;
+    text = "#version " + std::to_string(parseVersion) + (v.es ? " es" : "") + "\n#line 1\n" + text;
+    result.dialectReason = dialect.reason;
+    versionPrepended = true;
   } else if (v.es && v.version < 310) {
     // glslang 12 refuses ES < 310 for SPIR-V; parse as 310 (same line count) and emit the original.
     text.replace(v.begin, v.end - v.begin, "#version 310 es");
@@ -219,6 +241,9 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   result.info.es = v.es;
   result.info.compatibilityBuiltIns = usesCompatibilityBuiltIns;
   result.info.liftedBecause = lifted;
+  result.info.versionPrepended = versionPrepended;
+  if (versionPrepended && !v.es && v.version >= 400 && enablesAnExtension(input.contents))
+    result.info.spliceVersionCap = 150;
   result.info.entryPoint = "main";
   result.includedFiles = std::move(best->included);
 }

@@ -2,6 +2,7 @@
 #include "transpiler/frontend/legacy_glsl.h"
 
 #include "passes/crash_phase.h"
+#include "transpiler/frontend/glsl_lift.h"
 #include "transpiler/source/lexer.h"
 
 #include <glslang/Public/ResourceLimits.h>
@@ -117,7 +118,7 @@ std::string extensionName(const std::string& rest) {
 const std::map<std::string, std::string>& textureRenames() {
   static const std::map<std::string, std::string> renames = [] {
     std::map<std::string, std::string> m;
-    for (const char* dim : {"1D", "2D", "3D", "Cube", "2DRect"}) {
+    for (const char* dim : {"1D", "2D", "3D", "Cube", "2DRect", "1DArray", "2DArray"}) {
       std::string d = dim;
       m["texture" + d] = "texture";
       m["texture" + d + "Proj"] = "textureProj";
@@ -139,23 +140,44 @@ const std::map<std::string, std::string>& textureRenames() {
   return renames;
 }
 
-// Desktop shadow lookups return a vec4 in 1xx and a float from `texture`: helpers keep the vec4.
+// Desktop shadow lookups return a vec4 in 1xx and a float from `texture`: helpers keep the vec4. The
+// 1xx forms with a LOD bias (fragment stage), the rectangle and array forms of GL_ARB_texture_rectangle
+// and GL_EXT_texture_array, and GL_ARB_shader_texture_lod's gradients, each an overload of its name.
 struct ShadowHelper {
   const char* name;
   const char* sampler;
   const char* coord;
-  const char* call;  // the 130 function
-  bool lod;
+  const char* call;    // the 130 function
+  const char* params;  // after the coordinate: ", float lod", ...
+  const char* args;    // the same, passed on: ", lod", ...
+  bool fragmentOnly;   // a bias: implicit derivatives
 };
 const ShadowHelper kShadowHelpers[] = {
-    {"shadow1D", "sampler1DShadow", "vec3", "texture", false},
-    {"shadow1DProj", "sampler1DShadow", "vec4", "textureProj", false},
-    {"shadow1DLod", "sampler1DShadow", "vec3", "textureLod", true},
-    {"shadow1DProjLod", "sampler1DShadow", "vec4", "textureProjLod", true},
-    {"shadow2D", "sampler2DShadow", "vec3", "texture", false},
-    {"shadow2DProj", "sampler2DShadow", "vec4", "textureProj", false},
-    {"shadow2DLod", "sampler2DShadow", "vec3", "textureLod", true},
-    {"shadow2DProjLod", "sampler2DShadow", "vec4", "textureProjLod", true},
+    {"shadow1D", "sampler1DShadow", "vec3", "texture", "", "", false},
+    {"shadow1D", "sampler1DShadow", "vec3", "texture", ", float bias", ", bias", true},
+    {"shadow1DProj", "sampler1DShadow", "vec4", "textureProj", "", "", false},
+    {"shadow1DProj", "sampler1DShadow", "vec4", "textureProj", ", float bias", ", bias", true},
+    {"shadow1DLod", "sampler1DShadow", "vec3", "textureLod", ", float lod", ", lod", false},
+    {"shadow1DProjLod", "sampler1DShadow", "vec4", "textureProjLod", ", float lod", ", lod", false},
+    {"shadow2D", "sampler2DShadow", "vec3", "texture", "", "", false},
+    {"shadow2D", "sampler2DShadow", "vec3", "texture", ", float bias", ", bias", true},
+    {"shadow2DProj", "sampler2DShadow", "vec4", "textureProj", "", "", false},
+    {"shadow2DProj", "sampler2DShadow", "vec4", "textureProj", ", float bias", ", bias", true},
+    {"shadow2DLod", "sampler2DShadow", "vec3", "textureLod", ", float lod", ", lod", false},
+    {"shadow2DProjLod", "sampler2DShadow", "vec4", "textureProjLod", ", float lod", ", lod", false},
+    {"shadow2DRect", "sampler2DRectShadow", "vec3", "texture", "", "", false},
+    {"shadow2DRectProj", "sampler2DRectShadow", "vec4", "textureProj", "", "", false},
+    {"shadow1DArray", "sampler1DArrayShadow", "vec3", "texture", "", "", false},
+    {"shadow1DArray", "sampler1DArrayShadow", "vec3", "texture", ", float bias", ", bias", true},
+    {"shadow1DArrayLod", "sampler1DArrayShadow", "vec3", "textureLod", ", float lod", ", lod", false},
+    {"shadow2DArray", "sampler2DArrayShadow", "vec4", "texture", "", "", false},
+    {"shadow1DGradARB", "sampler1DShadow", "vec3", "textureGrad", ", float dx, float dy", ", dx, dy", false},
+    {"shadow1DProjGradARB", "sampler1DShadow", "vec4", "textureProjGrad", ", float dx, float dy", ", dx, dy", false},
+    {"shadow2DGradARB", "sampler2DShadow", "vec3", "textureGrad", ", vec2 dx, vec2 dy", ", dx, dy", false},
+    {"shadow2DProjGradARB", "sampler2DShadow", "vec4", "textureProjGrad", ", vec2 dx, vec2 dy", ", dx, dy", false},
+    {"shadow2DRectGradARB", "sampler2DRectShadow", "vec3", "textureGrad", ", vec2 dx, vec2 dy", ", dx, dy", false},
+    {"shadow2DRectProjGradARB", "sampler2DRectShadow", "vec4", "textureProjGrad", ", vec2 dx, vec2 dy", ", dx, dy",
+     false},
 };
 
 // A compatibility built-in the translation declares: `storage type stereoshift_<name>[array]`.
@@ -380,19 +402,62 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
   return d;
 }
 
-void settleDefaultDialect(LegacyDialect& dialect, const std::string& text, Stage stage) {
-  if (!dialect.byDefault || (stage != Stage::Vertex && stage != Stage::Fragment)) return;
-  Diagnostics asDesktop, asEs;
-  if (verifyLegacyCompiles(text, stage, 110, false, "", asDesktop)) return;
-  if (!verifyLegacyCompiles(text, stage, 100, true, "", asEs)) return;  // neither: GLSL's default, and its errors
-  const auto& errors = asDesktop.all();
+void settleVersionlessDialect(LegacyDialect& dialect, const std::string& text, Stage stage) {
+  if (dialect.versionWritten || !dialect.legacy) return;
+  // Each candidate with its #version put before the text (glslang takes ESSL 300 on only so), the
+  // lines numbered as written.
+  auto versioned = [&](int version, bool es) {
+    return "#version " + std::to_string(version) + (es && version >= 300 ? " es" : "") + "\n#line 1\n" + text;
+  };
+  auto parses = [&](int version, bool es, Diagnostics& diags) {
+    return verifyLegacyCompiles(versioned(version, es), stage, version, es, "", diags);
+  };
+  Diagnostics asDecided;
+  if (parses(dialect.version, dialect.es, asDecided)) return;
+  // What the decision was made from; the first error at the decided version says why not.
+  const auto& errors = asDecided.all();
   auto first = std::find_if(errors.begin(), errors.end(), [](const Diagnostic& e) { return e.severity == Severity::Error; });
-  dialect.version = 100;
-  dialect.es = true;
-  dialect.byDefault = false;
-  dialect.reason = "no #version; glslang refuses it as GLSL 110" +
-                   (first != errors.end() ? " (" + first->message + ")" : std::string()) +
-                   " and takes it as ESSL 100, so ESSL 100 (WebGL1)";
+  const std::string why = first != errors.end() ? " (" + first->message + ")" : std::string();
+  const std::string decided = dialect.es ? "ESSL 100" : "GLSL 110";
+  struct Candidate {
+    int version;
+    bool es;
+  };
+  std::vector<Candidate> ladder;
+  if (dialect.es) {
+    ladder = {{300, true}, {310, true}, {320, true}};
+  } else {
+    // GLSL 110's neighbour first where nothing in the text is desktop-only: WebGL1 vertex shaders
+    // need no precision statement (the vertex stage has a default) and so often show nothing ES-only.
+    if (dialect.byDefault && (stage == Stage::Vertex || stage == Stage::Fragment)) ladder.push_back({100, true});
+    for (int version : {120, 130, 140, 150, 330, 400, 410, 420, 430, 440, 450, 460}) ladder.push_back({version, false});
+  }
+  // At a version as written, or, where glslang's only objection is a built-in block redeclaration
+  // (which it takes from 410 on, drivers from 150), as its lifted copy (glsl_lift.h) at that version:
+  // the front end lifts it the same way.
+  auto parsesAt = [&](const Candidate& c) {
+    Diagnostics plain;
+    if (parses(c.version, c.es, plain)) return true;
+    if (c.es || c.version < 150) return false;
+    for (const auto& d : plain.all())
+      if (d.severity == Severity::Error && d.message.find("built-in block redeclaration") == std::string::npos &&
+          d.line != 0)
+        return false;
+    LiftedGlsl lifted = liftGlsl(versioned(c.version, false));
+    Diagnostics ignored;
+    return lifted.lifted && verifyLegacyCompiles(lifted.text, stage, c.version, false, "", ignored);
+  };
+  for (const Candidate& c : ladder) {
+    if (!parsesAt(c)) continue;
+    dialect.version = c.version;
+    dialect.es = c.es;
+    dialect.legacy = c.es ? c.version < 300 : c.version < 330;
+    dialect.byDefault = false;
+    std::string name = c.es ? "ESSL " + std::to_string(c.version) : "GLSL " + std::to_string(c.version);
+    dialect.reason = "no #version; glslang refuses it as " + decided + why + " and takes it as " + name + ", so " +
+                     name + (c.es && c.version == 100 ? " (WebGL1)" : " (the version its loader prepends, at the least)");
+    return;
+  }
 }
 
 namespace {
@@ -528,9 +593,9 @@ class LegacyTranslator {
       declared.push_back(b.declaredName);
     }
     for (const auto& h : kShadowHelpers) {
-      if (!helpers_.count(h.name)) continue;
+      if (!helpers_.count(h.name) || (h.fragmentOnly && !fragment_)) continue;
       decls += std::string("vec4 stereoshift_") + h.name + "(" + h.sampler + " s, " + h.coord + " c" +
-               (h.lod ? ", float lod" : "") + ") { return vec4(" + h.call + "(s, c" + (h.lod ? ", lod" : "") + ")); } ";
+               h.params + ") { return vec4(" + h.call + "(s, c" + h.args + ")); } ";
     }
     return decls;
   }
@@ -583,6 +648,9 @@ bool verifyLegacyCompiles(const std::string& text, Stage stage, int version, boo
   switch (stage) {
     case Stage::Fragment: lang = EShLangFragment; break;
     case Stage::Geometry: lang = EShLangGeometry; break;
+    case Stage::TessControl: lang = EShLangTessControl; break;
+    case Stage::TessEvaluation: lang = EShLangTessEvaluation; break;
+    case Stage::Compute: lang = EShLangCompute; break;
     default: break;
   }
   glslang::TShader shader(lang);

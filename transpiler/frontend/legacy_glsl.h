@@ -41,12 +41,17 @@ struct LegacyDialect {
 // The dialect of `text` given its #version line (findVersion).
 LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& version);
 
-// A dialect GLSL's default chose (byDefault) for a vertex or fragment shader without #version that
-// glslang refuses as GLSL 110 and accepts as ESSL 100 becomes ESSL 100: WebGL1 vertex shaders need
-// no precision statement (the vertex stage has a default) and so often show nothing ES-only, while
-// what they use may be ESSL 100's and not GLSL 110's (a matrix built from a matrix). Costs one parse
-// (two when 110 fails) for such shaders only.
-void settleDefaultDialect(LegacyDialect& dialect, const std::string& text, Stage stage);
+// A shader without #version is GLSL 110 or ESSL 100 by the language's rule, but much code is written
+// for a loader that prepends a #version of its own (engines, three.js, piglit's shader_runner), so
+// its text uses what 110 / 100 do not have (`in`/`out`, layout qualifiers, a matrix built from a
+// matrix in a WebGL1 vertex shader, which needs no precision statement and so shows nothing
+// ES-only). When glslang refuses such a text at the decided version, the lowest version it takes
+// it at is the dialect: ESSL 100 first for a vertex or fragment shader nothing chose (byDefault),
+// then desktop 120 ... 460; ESSL 300 ... 320 for one with ES hints. A version from 330 / ESSL 300
+// on leaves the legacy translation (`legacy` false): the front end parses the text with that
+// #version put before it, and the output stays without one. Costs one parse for a versionless
+// shader, one more per version tried when the first fails.
+void settleVersionlessDialect(LegacyDialect& dialect, const std::string& text, Stage stage);
 
 struct LegacyTranslation {
   bool ok = false;
