@@ -42,6 +42,52 @@ bool isPureArithmetic(spv::Op op) {
   }
 }
 
+// The source spelling of the output part `pointer` addresses (`vClip`, `surf.clip`, `copies[1]`):
+// its variable's name and, through constant access-chain indices, struct member names and array
+// indices. Empty for a vector component, a variable index or a missing name.
+std::string outputPath(const spirv::Module& m, uint32_t pointer) {
+  std::vector<const Instruction*> chain;
+  for (int depth = 0;; ++depth) {
+    const Instruction* def = m.definition(pointer);
+    if (!def || depth > 16) return {};
+    if (def->opcode == spv::OpVariable) break;
+    if (def->opcode != spv::OpAccessChain && def->opcode != spv::OpInBoundsAccessChain) return {};
+    chain.push_back(def);
+    pointer = def->operand(0);
+  }
+  std::string path = m.name(pointer);
+  const Instruction* pointerType = m.definition(m.definition(pointer)->typeId);
+  if (path.empty() || !pointerType || pointerType->opcode != spv::OpTypePointer) return {};
+  uint32_t type = pointerType->operand(1);
+  for (auto link = chain.rbegin(); link != chain.rend(); ++link)
+    for (size_t k = 1; k < (*link)->operands.size(); ++k) {
+      const Instruction* index = m.definition((*link)->operand(k));
+      const Instruction* composite = m.definition(type);
+      if (!index || index->opcode != spv::OpConstant || !composite) return {};
+      const uint32_t at = index->operand(0);
+      if (composite->opcode == spv::OpTypeStruct && at < composite->operands.size()) {
+        std::string member = m.memberName(type, at);
+        if (member.empty()) return {};
+        path += "." + member;
+        type = composite->operand(at);
+      } else if (composite->opcode == spv::OpTypeArray) {
+        path += "[" + std::to_string(at) + "]";
+        type = composite->operand(0);
+      } else {
+        return {};
+      }
+    }
+  return path;
+}
+
+// Whether two output paths overlap (one is the other or a part of it).
+bool pathsOverlap(const std::string& a, const std::string& b) {
+  const std::string& shorter = a.size() <= b.size() ? a : b;
+  const std::string& longer = a.size() <= b.size() ? b : a;
+  return longer.compare(0, shorter.size(), shorter) == 0 &&
+         (longer.size() == shorter.size() || longer[shorter.size()] == '.' || longer[shorter.size()] == '[');
+}
+
 class HaloPass final : public Pass {
  public:
   const char* name() const override { return "halo"; }
@@ -74,6 +120,8 @@ class HaloPass final : public Pass {
     exactCopies_.clear();
     std::map<uint32_t, uint32_t> monoStoredTo;  // output -> the mono value its (single) store wrote
     std::vector<std::string> fixed;
+    std::vector<std::pair<uint32_t, std::string>> exactPaths;  // output, the path an exact copy stored to
+    std::set<std::string> inexactRoots;  // outputs one of whose shifted stores is not a copy
     if (!positionValues.empty())
       for (auto& fn : m.functions) {
         for (auto& block : fn.blocks) {
@@ -88,8 +136,13 @@ class HaloPass final : public Pass {
             uint32_t newValue = cloneWithShift(ctx, store.operand(1), positionValues, code, cloned, 0);
             if (newValue == store.operand(1)) continue;  // not derived from the position
             monoStoredTo[target] = store.operand(1);
-            if (isPosition_(store.operand(1)))  // equal by value: the splice may copy the shifted position
-              exactCopies_.push_back(m.name(target).empty() ? std::to_string(target) : m.name(target));
+            const std::string root = m.name(target).empty() ? std::to_string(target) : m.name(target);
+            if (isPosition_(store.operand(1))) {  // equal by value: the splice may copy the shifted position
+              exactCopies_.push_back(root);
+              exactPaths.push_back({target, outputPath(m, store.operand(0))});
+            } else {
+              inexactRoots.insert(root);
+            }
             block.instructions[i].operands[1] = newValue;
             block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
             i += code.size();
@@ -115,8 +168,22 @@ class HaloPass final : public Pass {
     // shifts copies in the text, these only the IR carries.
     facts.derivedOutputs.clear();
     for (const auto& output : fixed)
-      if (std::find(exactCopies_.begin(), exactCopies_.end(), output) == exactCopies_.end())
+      if (inexactRoots.count(output) &&
+          std::find(facts.derivedOutputs.begin(), facts.derivedOutputs.end(), output) == facts.derivedOutputs.end())
         facts.derivedOutputs.push_back(output);
+    // A copy's path the text can re-copy to: named, and no other store writes any part of it.
+    facts.exactCopyPaths.clear();
+    // Only where the position has one value: re-copying the final position is then the copy's value.
+    for (const auto& [target, path] : exactPaths) {
+      if (path.empty() || positionValues.size() != 1) continue;
+      int overlapping = 0;
+      spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+        if (inst.opcode != spv::OpStore || m.rootVariable(inst.operand(0)) != target) return;
+        std::string other = outputPath(m, inst.operand(0));
+        if (other.empty() || pathsOverlap(other, path)) ++overlapping;
+      });
+      if (overlapping == 1) facts.exactCopyPaths.push_back(path);
+    }
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 

@@ -88,6 +88,10 @@ struct EyeParamFacts {
 struct HaloFacts {
   std::optional<std::vector<std::string>> shiftedOutputs;  // set when the pass looked
   std::vector<std::string> derivedOutputs;  // computed from the position, not copies of it
+  // The exact copies as the source spells what they store to (`vClip`, `surf.clip`, `copies[1]`),
+  // where the copy is the only store to that part of its output: a text splice re-copies the shifted
+  // position there.
+  std::vector<std::string> exactCopyPaths;
 };
 
 // stereo-shift.

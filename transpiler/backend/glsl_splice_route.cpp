@@ -120,13 +120,29 @@ bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::str
   }
   if (!record.halo.shiftedOutputs) return true;
   std::vector<std::string> exact = exactPositionCopies(r.input.contents);
+  auto add = [&](const std::string& path) {
+    if (std::find(copies.begin(), copies.end(), path) == copies.end()) copies.push_back(path);
+  };
   for (const auto& translated : *record.halo.shiftedOutputs) {
     std::string out = sourceName(translated);
-    if (std::find(exact.begin(), exact.end(), out) == exact.end()) {
+    if (std::find(exact.begin(), exact.end(), out) != exact.end()) {
+      add(out);
+      continue;
+    }
+    // Proved a copy on the IR (equal by value to the one position value, the only store to its
+    // part of the output): re-copied at the part the IR names (`surf.clip`).
+    bool proved = false;
+    for (const auto& path : record.halo.exactCopyPaths) {
+      std::string spelled = sourceName(path);
+      if (spelled == out || spelled.starts_with(out + ".") || spelled.starts_with(out + "[")) {
+        add(spelled);
+        proved = true;
+      }
+    }
+    if (!proved) {
       why = "the halo copy '" + out + "' of the clip position is not a plain `" + out + " = gl_Position;` in the text";
       return false;
     }
-    if (std::find(copies.begin(), copies.end(), out) == copies.end()) copies.push_back(out);
   }
   return true;
 }
