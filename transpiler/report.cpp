@@ -219,7 +219,7 @@ json renderStageReport(const StageRecord& record) {
     report["lifted"] = record.lifted;
   }
   if (record.textOnly) {
-    report["analysis"] = "text-only";
+    report["analysis"] = record.textOnly->unanalysed ? "none" : "text-only";
     report["analysis_reason"] = record.textOnly->reason;
     report["not_done"] = record.textOnly->notDone;
     report["eye_params"] = record.textOnly->eyeParams;

@@ -45,10 +45,12 @@ struct StageRecord {
   std::string frontEndSpirvInvalid;        // glslang's module does not validate (and why)
   EmitFacts emit;
   // Shifted from the text alone (text_only_shift.h): the front end's reason, what was not done.
+  // `unanalysed`: a stage that takes no shift, copied unchanged without an analysis ("analysis": "none").
   struct TextOnly {
     std::string reason;
     std::vector<std::string> notDone;
     std::string eyeParams;
+    bool unanalysed = false;
   };
   std::optional<TextOnly> textOnly;
   // D3D shader assembly, edited by the assembly route (d3dasm/asm_shift.h): no SPIR-V analysis ran;

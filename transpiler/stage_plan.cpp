@@ -183,6 +183,8 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
 }
 
 namespace {
+std::string demoteGlslangErrors(StagePlan& plan);
+bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
 bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route);
@@ -193,6 +195,7 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
   if (!plan.frontEndRan || !plan.front.glslangRejected || !plan.stage || !plan.stage->stage || !plan.diags.hasErrors())
     return false;
   Stage stage = *plan.stage->stage;
+  if (copiesUnshiftedStage(plan, options, stage)) return true;
   if (!mayShiftFromText(stage, language, options, options)) return false;
   if (options.correctionsOnly) return copyLeftToDriver(plan, stage);
   if (language == SourceLanguage::Hlsl) return shiftHlslStageFromText(plan, options, stage);
@@ -212,6 +215,45 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
 }
 
 namespace {
+
+// A GLSL stage that takes no shift (fragment, tessellation control, compute, or a pre-rasterization
+// stage before the one a pipeline shifts) which glslang refuses for what it reads more narrowly than
+// drivers (an #extension, a line continuation, the compatibility profile) or crashes on: the output
+// would be its input unless a per-eye fix applied, so it is copied unchanged with a warning that no
+// fix was looked for, and the rest of the pipeline converts. Not with --require-analysis, another
+// output language or version, or errors in its #include files (those are the input's).
+bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+  const bool preRaster = stage == Stage::Vertex || stage == Stage::TessEvaluation || stage == Stage::Geometry;
+  if (preRaster && options.shiftThisStage) return false;
+  if (plan.front.info.language != SourceLanguage::Glsl || options.requireAnalysis || options.forceReemit ||
+      options.targetVersion)
+    return false;
+  if (options.target != TargetLanguage::Auto && options.target != TargetLanguage::Glsl &&
+      options.target != TargetLanguage::Essl)
+    return false;
+  for (const auto& d : plan.diags.all())
+    if (d.severity == Severity::Error && ((!d.file.empty() && d.file != plan.input->path) ||
+                                          d.message.find("includ") != std::string::npos))
+      return false;
+  const std::string gap = glslangGapIn(plan.input->contents);
+  if (!options.glslangCrashed && gap.empty()) return false;
+  const std::string file = plan.input->path;
+  const std::string reason = demoteGlslangErrors(plan);
+  plan.diags.warning(file, "glslang cannot analyse this " + std::string(stageName(stage)) + " stage (its text has " +
+                               (gap.empty() ? std::string("what crashed glslang") : gap) +
+                               "); it takes no shift, so it is copied unchanged, without the per-eye fixes an "
+                               "analysis might find; --require-analysis makes this an error");
+  StageRecord& record = plan.record;
+  record.stage = stage;
+  record.stageReason = plan.stage->reason;
+  record.textOnly = StageRecord::TextOnly{reason, {"per-eye view vectors", "deferred unprojection"}, {}, true};
+  record.output = StageRecord::Output::Copied;
+  record.totalMs = msSince(plan.started);
+  plan.output = plan.input->contents;
+  plan.copied = true;
+  plan.changed = false;
+  return true;
+}
 
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
   // Decompiled text only: the D3D compiler accepted what it was decompiled from, so glslang's
