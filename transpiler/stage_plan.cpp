@@ -235,7 +235,19 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
     if (d.severity == Severity::Error && ((!d.file.empty() && d.file != plan.input->path) ||
                                           d.message.find("includ") != std::string::npos))
       return false;
-  const std::string gap = glslangGapIn(plan.input->contents);
+  std::string gap = glslangGapIn(plan.input->contents);
+  // One compilation unit of a stage OpenGL links from several shader objects (the pipeline holds
+  // another unit of its stage): its functions' bodies or its `main` are in another unit, which
+  // glslang, compiling one file, cannot see.
+  const auto& all = plan.diags.all();
+  const bool linkedWithOthers = options.stageHasOtherUnits && std::any_of(all.begin(), all.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }) &&
+                                std::all_of(all.begin(), all.end(), [](const Diagnostic& d) {
+                                  return d.severity != Severity::Error ||
+                                         d.message.find("No function definition (body) found") != std::string::npos ||
+                                         d.message.find("Missing entry point") != std::string::npos ||
+                                         d.message.find("ERROR: Linking") != std::string::npos;
+                                });
+  if (gap.empty() && linkedWithOthers) gap = "functions or a main defined in another compilation unit of its stage";
   if (!options.glslangCrashed && gap.empty()) return false;
   const std::string file = plan.input->path;
   const std::string reason = demoteGlslangErrors(plan);

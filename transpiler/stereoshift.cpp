@@ -173,6 +173,10 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < plans.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
+    stageOptions.stageHasOtherUnits = std::any_of(plans.begin(), plans.end(), [&](const auto& other) {
+      return other != plans[i] && other->stage && plans[i]->stage && other->stage->stage &&
+             other->stage->stage == plans[i]->stage->stage;
+    });
     if (isD3DAssemblyInput(stages[i])) {
       results.push_back(convertAssemblyStage(stages[i], stageOptions));
       continue;

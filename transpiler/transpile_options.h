@@ -8,6 +8,10 @@
 
 namespace stereoshift {
 
-struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {};
+struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
+  // A pipeline holds another compilation unit of this stage (OpenGL links a stage from several
+  // shader objects): a unit that does not link alone may be one of them (stage_plan.h).
+  bool stageHasOtherUnits = false;
+};
 
 }  // namespace stereoshift
