@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <optional>
 
 namespace stereoshift {
@@ -81,53 +82,53 @@ int declaredViewCount(const std::string& text) {
   return 0;
 }
 
-void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, SourceInfo& info) {
+// The linker objects of `intermediate` (its global variables and blocks), in order, to `visit`;
+// stops when `visit` returns false.
+void forEachLinkerObject(const glslang::TIntermediate& intermediate,
+                         const std::function<bool(const glslang::TIntermSymbol&)>& visit) {
   auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
   if (!root) return;
   for (auto* node : root->getSequence()) {
     auto* agg = node->getAsAggregate();
     if (!agg || agg->getOp() != glslang::EOpLinkerObjects) continue;
-    for (auto* object : agg->getSequence()) {
-      auto* symbol = object->getAsSymbolNode();
-      if (!symbol) continue;
-      const auto& type = symbol->getType();
-      const auto& q = type.getQualifier();
-      std::vector<std::string> keys = {symbol->getName().c_str()};
-      if (type.getBasicType() == glslang::EbtBlock) keys.push_back(type.getTypeName().c_str());
-      for (const auto& key : keys) {
-        if (q.hasLocation()) info.explicitLocation.insert(key);
-        if (q.hasBinding()) info.explicitBinding.insert(key);
-      }
-    }
+    for (auto* object : agg->getSequence())
+      if (auto* symbol = object->getAsSymbolNode(); symbol && !visit(*symbol)) return;
   }
+}
+
+void recordExplicitQualifiers(const glslang::TIntermediate& intermediate, SourceInfo& info) {
+  forEachLinkerObject(intermediate, [&](const glslang::TIntermSymbol& symbol) {
+    const auto& type = symbol.getType();
+    const auto& q = type.getQualifier();
+    std::vector<std::string> keys = {symbol.getName().c_str()};
+    if (type.getBasicType() == glslang::EbtBlock) keys.push_back(type.getTypeName().c_str());
+    for (const auto& key : keys) {
+      if (q.hasLocation()) info.explicitLocation.insert(key);
+      if (q.hasBinding()) info.explicitBinding.insert(key);
+    }
+    return true;
+  });
 }
 
 // The first user interface variable of `intermediate` written the OpenGL way (Attempt::openGLStyleInterface).
 std::string firstOpenGLStyleInterface(const glslang::TIntermediate& intermediate) {
-  auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
-  if (!root) return {};
-  for (auto* node : root->getSequence()) {
-    auto* agg = node->getAsAggregate();
-    if (!agg || agg->getOp() != glslang::EOpLinkerObjects) continue;
-    for (auto* object : agg->getSequence()) {
-      auto* symbol = object->getAsSymbolNode();
-      if (!symbol) continue;
-      const auto& type = symbol->getType();
-      const auto& q = type.getQualifier();
-      std::string name = type.getBasicType() == glslang::EbtBlock ? type.getTypeName().c_str() : symbol->getName().c_str();
-      if (name.starts_with("gl_") || q.builtIn != glslang::EbvNone) continue;
-      const bool inOut = q.storage == glslang::EvqVaryingIn || q.storage == glslang::EvqVaryingOut;
-      const bool resource = q.storage == glslang::EvqBuffer ||
-                            (q.storage == glslang::EvqUniform && (type.getBasicType() == glslang::EbtBlock || type.isOpaque()));
-      if (q.layoutPushConstant) continue;
-      if (inOut && !q.hasLocation())
-        return std::string(q.storage == glslang::EvqVaryingIn ? "input" : "output") + " '" + name + "' has no location";
-      if (resource && !q.hasBinding())
-        return std::string(type.getBasicType() == glslang::EbtBlock ? "block" : "uniform") + " '" + name +
-               "' has no binding";
-    }
-  }
-  return {};
+  std::string found;
+  forEachLinkerObject(intermediate, [&](const glslang::TIntermSymbol& symbol) {
+    const auto& type = symbol.getType();
+    const auto& q = type.getQualifier();
+    const bool block = type.getBasicType() == glslang::EbtBlock;
+    std::string name = block ? type.getTypeName().c_str() : symbol.getName().c_str();
+    if (name.starts_with("gl_") || q.builtIn != glslang::EbvNone || q.layoutPushConstant) return true;
+    const bool inOut = q.storage == glslang::EvqVaryingIn || q.storage == glslang::EvqVaryingOut;
+    const bool resource =
+        q.storage == glslang::EvqBuffer || (q.storage == glslang::EvqUniform && (block || type.isOpaque()));
+    if (inOut && !q.hasLocation())
+      found = std::string(q.storage == glslang::EvqVaryingIn ? "input" : "output") + " '" + name + "' has no location";
+    else if (resource && !q.hasBinding())
+      found = std::string(block ? "block" : "uniform") + " '" + name + "' has no binding";
+    return found.empty();
+  });
+  return found;
 }
 
 // The first node of glslang's tree past kMaxSyntaxTreeDepth levels or kMaxControlFlowNesting
