@@ -79,7 +79,7 @@ def measure(path, args):
 
 def reason_key(text):
     line = text.strip().splitlines()[0] if text.strip() else "(no message)"
-    line = re.sub(r"^\S+?:(\d+:)*\s*(error|warning):\s*", "", line)
+    line = re.sub(r"^\S+?( \(emitted\))?:(\d+:)*\s*(error|warning):\s*", r"\1 ", line).strip()
     line = re.sub(r"'[^']*'", "'…'", line)
     line = re.sub(r"\b\d+(\.\d+)?\b", "N", line)
     return line[:120]
