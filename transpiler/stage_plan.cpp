@@ -184,6 +184,22 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
 
 namespace {
 std::string demoteGlslangErrors(StagePlan& plan);
+
+constexpr const char* kOtherUnits = "functions or a main defined in another compilation unit of its stage";
+
+// One compilation unit of a stage OpenGL links from several shader objects (the pipeline holds
+// another unit of its stage), refused by glslang only at its link: its functions' bodies or its
+// `main` are in another unit, which glslang, compiling one file, cannot see.
+bool linkedWithOtherUnits(const StagePlan& plan, const TranspileOptions& options) {
+  const auto& all = plan.diags.all();
+  auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
+  return options.stageHasOtherUnits && std::any_of(all.begin(), all.end(), isError) &&
+         std::all_of(all.begin(), all.end(), [&](const Diagnostic& d) {
+           return !isError(d) || d.message.find("No function definition (body) found") != std::string::npos ||
+                  d.message.find("Missing entry point") != std::string::npos ||
+                  d.message.find("ERROR: Linking") != std::string::npos;
+         });
+}
 bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
@@ -209,7 +225,8 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
          (!d.file.empty() && d.file != plan.input->path)))
       return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
   // The shader's own error, said as it is (a crash is glslang's, whatever the text).
-  if (!options.glslangCrashed && glslangGapIn(plan.input->contents).empty()) return false;
+  if (!options.glslangCrashed && glslangGapIn(plan.input->contents).empty() && !linkedWithOtherUnits(plan, options))
+    return false;
   TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
   return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only");
 }
@@ -236,18 +253,7 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
                                           d.message.find("includ") != std::string::npos))
       return false;
   std::string gap = glslangGapIn(plan.input->contents);
-  // One compilation unit of a stage OpenGL links from several shader objects (the pipeline holds
-  // another unit of its stage): its functions' bodies or its `main` are in another unit, which
-  // glslang, compiling one file, cannot see.
-  const auto& all = plan.diags.all();
-  const bool linkedWithOthers = options.stageHasOtherUnits && std::any_of(all.begin(), all.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }) &&
-                                std::all_of(all.begin(), all.end(), [](const Diagnostic& d) {
-                                  return d.severity != Severity::Error ||
-                                         d.message.find("No function definition (body) found") != std::string::npos ||
-                                         d.message.find("Missing entry point") != std::string::npos ||
-                                         d.message.find("ERROR: Linking") != std::string::npos;
-                                });
-  if (gap.empty() && linkedWithOthers) gap = "functions or a main defined in another compilation unit of its stage";
+  if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
   if (!options.glslangCrashed && gap.empty()) return false;
   const std::string file = plan.input->path;
   const std::string reason = demoteGlslangErrors(plan);

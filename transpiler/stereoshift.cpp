@@ -6,6 +6,7 @@
 
 #include "passes/pass_manager.h"
 #include "transpiler/d3dasm/asm_route.h"
+#include "transpiler/source/lexer.h"
 #include "transpiler/stage_plan.h"
 
 #include <algorithm>
@@ -58,6 +59,20 @@ TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
 
 // Pipeline order of the stages that come before rasterization; 0 for the others (tessellation
 // control, fragment, compute, task: never shifted).
+// Whether a GLSL text defines `void main(`: a code token `main` after `void`, before `(`.
+bool definesMain(const SourceFile& input) {
+  source::LexedText lexed(input.contents);
+  size_t previous = lexed.size();
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    if (!lexed[k].isCode()) continue;
+    if (lexed.isIdentifier(k) && lexed.text(k) == "main" && previous < lexed.size() && lexed.text(previous) == "void" &&
+        lexed.isPunct(lexed.nextNonComment(k), '('))
+      return true;
+    previous = k;
+  }
+  return false;
+}
+
 int shiftRank(std::optional<Stage> stage) {
   if (!stage) return 0;
   switch (*stage) {
@@ -157,7 +172,10 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     } else {
       plan->stage = decideInputStage(stages[i], options);
     }
-    if (int rank = shiftRank(plan->stage->stage); rank > lastRank) {
+    // Of several compilation units of the last stage (OpenGL links a stage from several shader
+    // objects), the one that defines `main` takes the shift: its wrapper shifts what the others write.
+    if (int rank = shiftRank(plan->stage->stage);
+        rank > lastRank || (rank > 0 && rank == lastRank && !definesMain(stages[last]) && definesMain(stages[i]))) {
       last = static_cast<int>(i);
       lastRank = rank;
     }

@@ -122,7 +122,8 @@ def run_case(path, args):
         files = []
         for i, (n, body) in enumerate(sections):
             if n in STAGE_SECTIONS:
-                f = os.path.join(work, "%s.%s" % (name, STAGE_SECTIONS[n]))
+                # One file per section: a stage may be linked from several (two [vertex shader]s).
+                f = os.path.join(work, "%s-%d.%s" % (name, i, STAGE_SECTIONS[n]))
                 with open(f, "w") as out:
                     out.write(body)
                 files.append((i, f))
