@@ -174,7 +174,10 @@ class HaloPass final : public Pass {
     // A copy's path the text can re-copy to: named, and no other store writes any part of it.
     facts.exactCopyPaths.clear();
     // Only where the position has one value: re-copying the final position is then the copy's value.
-    for (const auto& [target, path] : exactPaths) {
+    for (const auto& exact : exactPaths) {
+      // Plain variables, not structured bindings: the lambda below captures them (clang 14 cannot).
+      const uint32_t target = exact.first;
+      const std::string& path = exact.second;
       if (path.empty() || positionValues.size() != 1) continue;
       int overlapping = 0;
       spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
