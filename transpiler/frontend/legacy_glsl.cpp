@@ -340,6 +340,12 @@ std::string renameUserBuiltins(const std::string& text) {
   return out;
 }
 
+// The matrix type names GLSL 1.20 made keywords (mat2x2 ... mat4x4): plain names in a GLSL 110 text.
+bool isMatrixTypeSince120(const std::string& word) {
+  return word.size() == 6 && word.compare(0, 3, "mat") == 0 && word[4] == 'x' && word[3] >= '2' && word[3] <= '4' &&
+         word[5] >= '2' && word[5] <= '4';
+}
+
 // Whether `name` is a compatibility built-in of any stage, translated or not.
 bool isCompatBuiltin(const std::string& name) {
   static const std::set<std::string> names = [] {
@@ -562,7 +568,7 @@ class LegacyTranslator {
       return locate(t.begin, "'" + w + "' is not available in a " + std::string(stageName(stage_)) + " shader");
     } else if (w.starts_with("gl_")) {
       // A core built-in: unchanged.
-    } else if (oneXX_ && isNewKeyword(w, es_)) {
+    } else if ((oneXX_ && isNewKeyword(w, es_)) || (!es_ && dialect_.version < 120 && isMatrixTypeSince120(w))) {
       rename(w + "_stereoshift");
     }
     return std::nullopt;
