@@ -120,7 +120,7 @@ class HaloPass final : public Pass {
     exactCopies_.clear();
     std::map<uint32_t, uint32_t> monoStoredTo;  // output -> the mono value its (single) store wrote
     std::vector<std::string> fixed;
-    std::vector<std::pair<uint32_t, std::string>> exactPaths;  // output, the path an exact copy stored to
+    std::vector<std::pair<uint32_t, HaloFacts::ExactCopy>> exactParts;  // output variable, its copy
     std::set<std::string> inexactRoots;  // outputs one of whose shifted stores is not a copy
     if (!positionValues.empty())
       for (auto& fn : m.functions) {
@@ -139,7 +139,7 @@ class HaloPass final : public Pass {
             const std::string root = m.name(target).empty() ? std::to_string(target) : m.name(target);
             if (isPosition_(store.operand(1))) {  // equal by value: the splice may copy the shifted position
               exactCopies_.push_back(root);
-              exactPaths.push_back({target, outputPath(m, store.operand(0))});
+              exactParts.push_back({target, {root, outputPath(m, store.operand(0))}});
             } else {
               inexactRoots.insert(root);
             }
@@ -171,22 +171,23 @@ class HaloPass final : public Pass {
       if (inexactRoots.count(output) &&
           std::find(facts.derivedOutputs.begin(), facts.derivedOutputs.end(), output) == facts.derivedOutputs.end())
         facts.derivedOutputs.push_back(output);
-    // A copy's path the text can re-copy to: named, and no other store writes any part of it.
-    facts.exactCopyPaths.clear();
-    // Only where the position has one value: re-copying the final position is then the copy's value.
-    for (const auto& exact : exactPaths) {
-      // Plain variables, not structured bindings: the lambda below captures them (clang 14 cannot).
-      const uint32_t target = exact.first;
-      const std::string& path = exact.second;
-      if (path.empty() || positionValues.size() != 1) continue;
-      int overlapping = 0;
-      spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
-        if (inst.opcode != spv::OpStore || m.rootVariable(inst.operand(0)) != target) return;
-        std::string other = outputPath(m, inst.operand(0));
-        if (other.empty() || pathsOverlap(other, path)) ++overlapping;
-      });
-      if (overlapping == 1) facts.exactCopyPaths.push_back(path);
-    }
+    // A copy's part the text can re-copy to: named, and no other store writes any of it; only where
+    // the position has one value (re-copying the final position is then the copy's value).
+    facts.exactCopies.clear();
+    if (positionValues.size() == 1)
+      for (const auto& part : exactParts) {
+        // Plain variables, not structured bindings: the lambda below captures them (clang 14 cannot).
+        const uint32_t target = part.first;
+        const HaloFacts::ExactCopy& copy = part.second;
+        if (copy.path.empty()) continue;
+        int overlapping = 0;
+        spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+          if (inst.opcode != spv::OpStore || m.rootVariable(inst.operand(0)) != target) return;
+          std::string other = outputPath(m, inst.operand(0));
+          if (other.empty() || pathsOverlap(other, copy.path)) ++overlapping;
+        });
+        if (overlapping == 1) facts.exactCopies.push_back(copy);
+      }
     return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
   }
 

@@ -88,10 +88,13 @@ struct EyeParamFacts {
 struct HaloFacts {
   std::optional<std::vector<std::string>> shiftedOutputs;  // set when the pass looked
   std::vector<std::string> derivedOutputs;  // computed from the position, not copies of it
-  // The exact copies as the source spells what they store to (`vClip`, `surf.clip`, `copies[1]`),
-  // where the copy is the only store to that part of its output: a text splice re-copies the shifted
-  // position there.
-  std::vector<std::string> exactCopyPaths;
+  // The exact copies where the copy is the only store to its part of the output: the output (as
+  // shiftedOutputs names it) and, as the source spells it, the part stored to (`vClip`, `surf.clip`,
+  // `copies[1]`). A text splice re-copies the shifted position there.
+  struct ExactCopy {
+    std::string output, path;
+  };
+  std::vector<ExactCopy> exactCopies;
 };
 
 // stereo-shift.

@@ -200,6 +200,25 @@ bool linkedWithOtherUnits(const StagePlan& plan, const TranspileOptions& options
                   d.message.find("ERROR: Linking") != std::string::npos;
          });
 }
+
+// Whether an error of glslang's refusal is about the shader's #include files (those are the input's).
+bool errorsInIncludes(const StagePlan& plan) {
+  return std::any_of(plan.diags.all().begin(), plan.diags.all().end(), [&](const Diagnostic& d) {
+    return d.severity == Severity::Error &&
+           (d.message.find("includ") != std::string::npos || (!d.file.empty() && d.file != plan.input->path));
+  });
+}
+
+// What may make glslang's refusal glslang's own gap rather than the shader's error: what the text
+// uses that glslang reads more narrowly than drivers (glslangGapIn), a unit of a stage linked from
+// several, or a crash (whatever the text). Empty: the shader's own error.
+std::string glslangsGap(const StagePlan& plan, const TranspileOptions& options) {
+  std::string gap = glslangGapIn(plan.input->contents);
+  if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
+  if (gap.empty() && options.glslangCrashed) gap = "what crashed glslang";
+  return gap;
+}
+
 bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
@@ -219,14 +238,12 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
   // Only where glslang's refusal may be its own gap: the source uses what glslang reads more
   // narrowly than drivers do (an #extension it enables, a line continuation, the compatibility
   // profile), and no error is about the shader's #include files (those are the input's).
-  for (const auto& d : plan.diags.all())
-    if (d.severity == Severity::Error &&
-        (d.message.find("includ") != std::string::npos || d.message.find("requires SPIR-V") != std::string::npos ||
-         (!d.file.empty() && d.file != plan.input->path)))
-      return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
-  // The shader's own error, said as it is (a crash is glslang's, whatever the text).
-  if (!options.glslangCrashed && glslangGapIn(plan.input->contents).empty() && !linkedWithOtherUnits(plan, options))
-    return false;
+  if (errorsInIncludes(plan) || std::any_of(plan.diags.all().begin(), plan.diags.all().end(), [](const Diagnostic& d) {
+        return d.severity == Severity::Error && d.message.find("requires SPIR-V") != std::string::npos;
+      }))
+    return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
+  // The shader's own error, said as it is.
+  if (glslangsGap(plan, options).empty()) return false;
   TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
   return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only");
 }
@@ -248,18 +265,13 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
   if (options.target != TargetLanguage::Auto && options.target != TargetLanguage::Glsl &&
       options.target != TargetLanguage::Essl)
     return false;
-  for (const auto& d : plan.diags.all())
-    if (d.severity == Severity::Error && ((!d.file.empty() && d.file != plan.input->path) ||
-                                          d.message.find("includ") != std::string::npos))
-      return false;
-  std::string gap = glslangGapIn(plan.input->contents);
-  if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
-  if (!options.glslangCrashed && gap.empty()) return false;
+  if (errorsInIncludes(plan)) return false;
+  const std::string gap = glslangsGap(plan, options);
+  if (gap.empty()) return false;
   const std::string file = plan.input->path;
   const std::string reason = demoteGlslangErrors(plan);
   plan.diags.warning(file, "glslang cannot analyse this " + std::string(stageName(stage)) + " stage (its text has " +
-                               (gap.empty() ? std::string("what crashed glslang") : gap) +
-                               "); it takes no shift, so it is copied unchanged, without the per-eye fixes an "
+                               gap + "); it takes no shift, so it is copied unchanged, without the per-eye fixes an "
                                "analysis might find; --require-analysis makes this an error");
   StageRecord& record = plan.record;
   record.stage = stage;

@@ -57,8 +57,6 @@ TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
   return result;
 }
 
-// Pipeline order of the stages that come before rasterization; 0 for the others (tessellation
-// control, fragment, compute, task: never shifted).
 // Whether a GLSL text defines `void main(`: a code token `main` after `void`, before `(`.
 bool definesMain(const SourceFile& input) {
   source::LexedText lexed(input.contents);
@@ -73,6 +71,8 @@ bool definesMain(const SourceFile& input) {
   return false;
 }
 
+// Pipeline order of the stages that come before rasterization; 0 for the others (tessellation
+// control, fragment, compute, task: never shifted).
 int shiftRank(std::optional<Stage> stage) {
   if (!stage) return 0;
   switch (*stage) {

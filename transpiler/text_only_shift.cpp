@@ -4,6 +4,7 @@
 #include "passes/pass.h"
 #include "passes/shift_emitter.h"
 #include "transpiler/backend/glsl_splice.h"
+#include "transpiler/frontend/glsl_lift.h"
 #include "transpiler/frontend/glsl_version.h"
 #include "transpiler/source/lexer.h"
 
@@ -155,18 +156,14 @@ bool declareEyeParams(const TextFacts& facts, const VersionLine& v, bool legacy,
 
 std::string glslangGapIn(const std::string& text) {
   if (text.find("\\\n") != std::string::npos || text.find("\\\r\n") != std::string::npos) return "a line continuation";
+  // The #version line comes before the #extension lines: its profile is said first.
   source::LexedText lexed(text);
-  for (size_t k = 0; k < lexed.size(); ++k) {
-    const source::Token& t = lexed[k];
-    if (t.kind != source::TokenKind::Directive) continue;
-    std::string line = source::spelledString(text, t);
-    // #include's extensions are glslang's own; every other one it may know only in part.
-    bool include = line.find("include") != std::string::npos;
-    if (t.directive == source::DirectiveKind::Extension && !include && line.find("disable") == std::string::npos)
-      return "an #extension";
-    if (t.directive == source::DirectiveKind::Version && line.find("compatibility") != std::string::npos)
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed[k].kind == source::TokenKind::Directive && lexed[k].directive == source::DirectiveKind::Version &&
+        source::spelledString(text, lexed[k]).find("compatibility") != std::string::npos)
       return "the compatibility profile";
-  }
+  // #include's extensions are glslang's own; every other one it may know only in part.
+  if (enablesAnExtension(text)) return "an #extension";
   return {};
 }
 

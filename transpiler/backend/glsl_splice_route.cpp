@@ -132,13 +132,11 @@ bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::str
     // Proved a copy on the IR (equal by value to the one position value, the only store to its
     // part of the output): re-copied at the part the IR names (`surf.clip`).
     bool proved = false;
-    for (const auto& path : record.halo.exactCopyPaths) {
-      std::string spelled = sourceName(path);
-      if (spelled == out || spelled.starts_with(out + ".") || spelled.starts_with(out + "[")) {
-        add(spelled);
+    for (const auto& copy : record.halo.exactCopies)
+      if (copy.output == translated) {
+        add(sourceName(copy.path));
         proved = true;
       }
-    }
     if (!proved) {
       why = "the halo copy '" + out + "' of the clip position is not a plain `" + out + " = gl_Position;` in the text";
       return false;

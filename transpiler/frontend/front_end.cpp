@@ -117,17 +117,6 @@ void compileHlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   result.includedFiles = std::move(a.included);
 }
 
-// Whether `text` has an #extension line (not `disable`): an extension may give the text, at a lower
-// version than glslang reads it at, what glslang knows only at a core version (uaddCarry at 400).
-bool enablesAnExtension(const std::string& text) {
-  source::LexedText lexed(text);
-  for (size_t k = 0; k < lexed.size(); ++k)
-    if (lexed[k].kind == source::TokenKind::Directive && lexed[k].directive == source::DirectiveKind::Extension &&
-        source::spelledString(text, lexed[k]).find("disable") == std::string::npos)
-      return true;
-  return false;
-}
-
 // GLSL: the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL (tried
 // first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
 void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage stage,
@@ -242,6 +231,8 @@ void compileGlsl(const SourceFile& input, const FrontEndOptions& options, Stage 
   result.info.compatibilityBuiltIns = usesCompatibilityBuiltIns;
   result.info.liftedBecause = lifted;
   result.info.versionPrepended = versionPrepended;
+  // An extension may give the text, at a lower version than glslang reads it at, what glslang knows
+  // only at a core version (uaddCarry at 400).
   if (versionPrepended && !v.es && v.version >= 400 && enablesAnExtension(input.contents))
     result.info.spliceVersionCap = 150;
   result.info.entryPoint = "main";

@@ -61,6 +61,16 @@ std::string joinContinuations(const std::string& text) {
 
 }  // namespace
 
+bool enablesAnExtension(const std::string& text) {
+  source::LexedText lexed(text);
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    if (lexed[k].kind != source::TokenKind::Directive || lexed[k].directive != source::DirectiveKind::Extension) continue;
+    std::string line = source::spelledString(text, lexed[k]);
+    if (line.find("include") == std::string::npos && line.find("disable") == std::string::npos) return true;
+  }
+  return false;
+}
+
 LiftedGlsl liftGlsl(const std::string& text) {
   LiftedGlsl result;
   result.text = joinContinuations(text);

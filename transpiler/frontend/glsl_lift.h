@@ -28,6 +28,10 @@ struct LiftedGlsl {
 
 LiftedGlsl liftGlsl(const std::string& text);
 
+// Whether `text` has an #extension line that enables something (not `disable`, not glslang's own
+// #include extension): what it enables glslang may know only at a later version, or not at all.
+bool enablesAnExtension(const std::string& text);
+
 // The OpenGL core version an ARB / EXT extension's GLSL functionality became part of; none for an
 // extension that never did (or that this table does not know).
 std::optional<int> coreVersionOf(std::string_view extension);

@@ -284,8 +284,8 @@ bool isBuiltinOnlyAfterEssl100(const std::string& name) {
       "atomicAnd", "atomicOr", "atomicXor", "atomicExchange", "atomicCompSwap", "imageSize", "imageLoad",
       "imageStore", "imageAtomicAdd", "imageAtomicMin", "imageAtomicMax", "imageAtomicAnd", "imageAtomicOr",
       "imageAtomicXor", "imageAtomicExchange", "imageAtomicCompSwap", "interpolateAtCentroid",
-      "interpolateAtSample", "interpolateAtOffset", "barrier", "memoryBarrier", "memoryBarrierAtomicCounter", "memoryBarrierBuffer", "memoryBarrierImage", "memoryBarrierShared",
-      "groupMemoryBarrier"};
+      "interpolateAtSample", "interpolateAtOffset", "barrier", "memoryBarrier", "memoryBarrierAtomicCounter",
+      "memoryBarrierBuffer", "memoryBarrierImage", "memoryBarrierShared", "groupMemoryBarrier"};
   return names.count(name) > 0;
 }
 
