@@ -40,5 +40,35 @@ TEST(HlslLift, IndexZeroOfSystemValuesIsDroppedKeepingColumns) {
   EXPECT_TRUE(what.empty());
 }
 
+TEST(HlslLift, MatrixSwizzlesOfSeveralComponentsAreReadOneComponentAtATime) {
+  std::string text =
+      "cbuffer cb : register(b0) { row_major float4x4 World : packoffset(c0); half3x3 Tbn; float4x4 Bones[8]; }\n"
+      "void main() {\n"
+      "  r1.x = dot(r0.xyzw, World._m00_m10_m20_m30);\n"
+      "  r1.yz = mul(r0.xyz, transpose(Tbn))._m01_m11; r2.xy = Tbn._11_22;\n"
+      "  r3.x = dot(r0.xy, Bones[r4.x]._m00_m01) + World._m33;\n"
+      "  r5 = asuint(Frame.Camera._m00_m10_m20_m30);\n"
+      "}\n";
+  std::string what;
+  std::string lifted = liftHlslIdioms(text, &what);
+  EXPECT_EQ(lifted,
+            "cbuffer cb : register(b0) { row_major float4x4 World : packoffset(c0); half3x3 Tbn; float4x4 Bones[8]; }\n"
+            "void main() {\n"
+            "  r1.x = dot(r0.xyzw, float4(World._m00, World._m10, World._m20, World._m30));\n"
+            // A call's result is not repeated (its swizzle is left as it is); the matrix's own scalar type.
+            "  r1.yz = mul(r0.xyz, transpose(Tbn))._m01_m11; r2.xy = half2(Tbn._11, Tbn._22);\n"
+            "  r3.x = dot(r0.xy, float2(Bones[r4.x]._m00, Bones[r4.x]._m01)) + World._m33;\n"
+            // A member of a struct nobody declared as a matrix here: float.
+            "  r5 = asuint(float4(Frame.Camera._m00, Frame.Camera._m10, Frame.Camera._m20, Frame.Camera._m30));\n"
+            "}\n");
+  EXPECT_EQ(lines(lifted), lines(text));
+  EXPECT_EQ(what, "swizzles of several matrix components (World._m00_m10_m20_m30) read one component at a time");
+  // Written swizzles, mixed or malformed spellings and single components stay as they are.
+  for (std::string other : {"void f() { m._m00_m11 = r0.xy; m._11_22 += 1; }\n", "float x = m._m00_22 + m._m0;\n",
+                            "float x = m._m00 + m._44 + m._m44_m00 + m._m00_m01_m02_m03_m10;\n",
+                            "float2 v = f(i++)[0]._m00_m10 + a[i++]._m00_m10;\n"})
+    EXPECT_EQ(liftHlslIdioms(other), other) << other;
+}
+
 }  // namespace
 }  // namespace stereoshift

@@ -5,6 +5,7 @@
 #include "transpiler/source/lexer.h"
 
 #include <cctype>
+#include <map>
 #include <string_view>
 #include <vector>
 
@@ -23,6 +24,96 @@ bool isUnindexedSystemValue(std::string_view upper) {
   return false;
 }
 
+// The components of a matrix swizzle with two or more of them (`_m00_m10_m20_m30`, zero-based, or
+// `_11_21_31_41`, one-based), each as its own single-component swizzle (`_m00`); empty when `name`
+// is not one. One spelling per swizzle, as HLSL requires.
+std::vector<std::string> matrixSwizzleComponents(std::string_view name) {
+  std::vector<std::string> parts;
+  if (name.size() < 4 || name[0] != '_') return parts;
+  const bool zeroBased = name[1] == 'm';
+  const size_t step = zeroBased ? 4 : 3;
+  const char low = zeroBased ? '0' : '1', high = zeroBased ? '3' : '4';
+  if (name.size() % step != 0) return {};
+  for (size_t at = 0; at < name.size(); at += step) {
+    std::string_view part = name.substr(at, step);
+    if (part[0] != '_' || (zeroBased && part[1] != 'm')) return {};
+    char row = part[step - 2], column = part[step - 1];
+    if (row < low || row > high || column < low || column > high) return {};
+    parts.emplace_back(part);
+  }
+  if (parts.size() < 2 || parts.size() > 4) return {};
+  return parts;
+}
+
+// The scalar type of an HLSL matrix type name (`float4x3` -> "float", `min16float4x4` ->
+// "min16float"); empty when `type` is not one.
+std::string matrixScalarType(std::string_view type) {
+  if (type.size() < 4 || type[type.size() - 2] != 'x') return {};
+  char rows = type[type.size() - 3], columns = type[type.size() - 1];
+  if (rows < '1' || rows > '4' || columns < '1' || columns > '4') return {};
+  std::string_view scalar = type.substr(0, type.size() - 3);
+  for (std::string_view known : {"float", "half", "double", "int", "uint", "bool", "dword", "min16float",
+                                 "min10float", "min16int", "min12int", "min16uint"})
+    if (scalar == known) return std::string(scalar);
+  return {};
+}
+
+// The scalar type of every matrix declared as `TYPEnxm NAME` (cbuffer members, struct members,
+// locals, parameters), by name; a name declared with two types maps to the first.
+std::map<std::string, std::string, std::less<>> matrixDeclarations(const source::LexedText& lexed) {
+  std::map<std::string, std::string, std::less<>> scalars;
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    if (!lexed.isIdentifier(k) || !lexed[k].isCode()) continue;
+    std::string scalar = matrixScalarType(lexed.text(k));
+    if (scalar.empty()) continue;
+    size_t name = lexed.nextNonComment(k);
+    if (lexed.isIdentifier(name)) scalars.emplace(std::string(lexed.text(name)), scalar);
+  }
+  return scalars;
+}
+
+// Where the receiver of the member access at `dot` begins: the token index of the first token of
+// the postfix chain before it (`World`, `Bones[r0.x]`, `Frame.Camera.ViewProj`), or `dot` when the
+// chain is not one of names, member accesses and indexing (a call, a parenthesised expression).
+size_t receiverBegin(const source::LexedText& lexed, size_t dot) {
+  size_t k = dot;
+  while (k > 0) {
+    size_t before = k - 1;
+    while (before > 0 && lexed[before].kind == source::TokenKind::Comment) --before;
+    if (lexed.isIdentifier(before)) {
+      k = before;
+      size_t prior = k;
+      while (prior > 0 && lexed[prior - 1].kind == source::TokenKind::Comment) --prior;
+      if (prior > 0 && lexed.isPunct(prior - 1, '.')) {
+        k = prior - 1;
+        continue;
+      }
+      return k;
+    }
+    if (!lexed.isPunct(before, ']')) return dot;
+    int depth = 0;
+    size_t open = before;
+    for (;; --open) {
+      if (lexed.isPunct(open, ']')) ++depth;
+      if (lexed.isPunct(open, '[') && --depth == 0) break;
+      if (open == 0) return dot;
+    }
+    k = open;
+  }
+  return dot;
+}
+
+// Whether the token at `k` starts an assignment (`=`, `+=`, `<<=`, ...; not `==`): the expression
+// before it is written, not read.
+bool startsAssignment(const source::LexedText& lexed, size_t k) {
+  if (lexed.isPunct(k, '=')) return !lexed.isPunctPair(k, "==");
+  for (char op : {'+', '-', '*', '/', '%', '&', '|', '^'})
+    if (lexed.isPunct(k, op) && lexed.isPunct(k + 1, '=') && lexed[k].end == lexed[k + 1].begin) return true;
+  return lexed.isPunct(k, '<') || lexed.isPunct(k, '>')
+             ? lexed.isPunct(k + 1, lexed.text(k)[0]) && lexed.isPunct(k + 2, '=') && lexed[k + 2].begin == lexed[k + 1].end
+             : false;
+}
+
 std::string upperCase(std::string_view s) {
   std::string u(s);
   for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -35,16 +126,56 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
   if (what) what->clear();
   bool mayHaveCmp = text.find("cmp") != std::string::npos;
   bool mayHaveIndexedSystemValue = text.find("SV_") != std::string::npos || text.find("sv_") != std::string::npos;
-  if (!mayHaveCmp && !mayHaveIndexedSystemValue) return text;
+  bool mayHaveMatrixSwizzle = text.find("._") != std::string::npos;
+  if (!mayHaveCmp && !mayHaveIndexedSystemValue && !mayHaveMatrixSwizzle) return text;
   source::LexedText lexed(text);
   struct Edit {
     size_t begin, end;
     std::string with;
   };
   std::vector<Edit> edits;  // in text order: the loop below walks the tokens once
-  std::string semantic;
+  std::string semantic, matrixSwizzle;
   bool cmp = false;
+  std::map<std::string, std::string, std::less<>> matrixScalars;
+  bool matricesRead = false;
   for (size_t k = 0; k < lexed.size(); ++k) {
+    // `M._m00_m10_m20_m30` read -> `float4(M._m00, M._m10, M._m20, M._m30)`: glslang's HLSL front end
+    // gives a swizzle of several matrix components a constant 0 of the wrong type, which makes
+    // invalid SPIR-V (and crashes it or the optimizer when the value is a call's argument); single
+    // components it reads right. The receiver is repeated, so it must be a chain of names, members
+    // and indices (no call, no side effect); a swizzle written to is left alone.
+    if (mayHaveMatrixSwizzle && lexed.isIdentifier(k) && lexed[k].isCode() && k > 0 && lexed.isPunct(k - 1, '.')) {
+      std::vector<std::string> parts = matrixSwizzleComponents(lexed.text(k));
+      if (parts.empty()) continue;
+      size_t begin = receiverBegin(lexed, k - 1);
+      if (begin == k - 1 || startsAssignment(lexed, lexed.nextNonComment(k))) continue;
+      if (!edits.empty() && edits.back().end > lexed[begin].begin) continue;  // inside an earlier edit's text
+      std::string_view receiver = lexed.text().substr(lexed[begin].begin, lexed[k - 1].begin - lexed[begin].begin);
+      if (receiver.find("++") != std::string_view::npos || receiver.find("--") != std::string_view::npos ||
+          receiver.find('\n') != std::string_view::npos)
+        continue;
+      if (!matricesRead) {
+        matrixScalars = matrixDeclarations(lexed);
+        matricesRead = true;
+      }
+      // The matrix's own name is the chain's last name (`Bones[i]` -> Bones, `Frame.ViewProj` -> ViewProj).
+      size_t nameToken = k - 2;
+      while (nameToken > begin && !lexed.isIdentifier(nameToken)) {
+        int depth = 0;  // a `]`: back to its `[`, then the name (or `]`) before it
+        for (; nameToken > begin; --nameToken) {
+          if (lexed.isPunct(nameToken, ']')) ++depth;
+          if (lexed.isPunct(nameToken, '[') && --depth == 0) break;
+        }
+        if (nameToken > begin) --nameToken;
+      }
+      auto scalar = matrixScalars.find(lexed.text(nameToken));
+      std::string with = (scalar == matrixScalars.end() ? std::string("float") : scalar->second) +
+                         std::to_string(parts.size()) + "(";
+      for (size_t p = 0; p < parts.size(); ++p) with += (p ? ", " : "") + std::string(receiver) + "." + parts[p];
+      edits.push_back({lexed[begin].begin, lexed[k].end, with + ")"});
+      if (matrixSwizzle.empty()) matrixSwizzle = std::string(receiver) + "." + std::string(lexed.text(k));
+      continue;
+    }
     // `: SV_POSITION0` -> `: SV_POSITION ` (the same columns after it).
     if (lexed.isPunct(k, ':') && !lexed[k].inDirective()) {
       size_t name = lexed.nextNonComment(k);
@@ -79,6 +210,9 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
   if (what) {
     if (!semantic.empty()) *what = "system-value semantics with index 0 (" + semantic + ") read without it";
     if (cmp) *what += std::string(what->empty() ? "" : "; ") + "the decompiler's `#define cmp -` read as `#define cmp(x) (0 - (x))`";
+    if (!matrixSwizzle.empty())
+      *what += std::string(what->empty() ? "" : "; ") + "swizzles of several matrix components (" + matrixSwizzle +
+               ") read one component at a time";
   }
   return out;
 }
