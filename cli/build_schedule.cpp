@@ -135,27 +135,43 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
   if (toConvert.empty()) return;
   const bool tty = ::isatty(2);
   size_t finished = 0;
-  // Jobs whose worker died in glslang's parser: converted again without it (the text-only shift may
-  // take the stage, text_only_shift.h) once every other job is done.
-  std::vector<size_t> crashedJobs;
-  std::vector<BuildJob> retryJobs;
-  std::vector<TaskOutcome> retryFailures;
+  // Jobs whose worker crashed: converted again down the crash ladder (process_failure.h), each round
+  // without what the last attempt died in, once every job of the round before is done.
+  struct Retry {
+    size_t job;          // index into plan.jobs
+    BuildJob converted;  // the job as the next rung converts it
+    TaskOutcome first;   // the first crash: what the user is told when no rung converts
+    std::vector<std::pair<TaskOutcome, std::string>> climbed;  // each crash and the rung taken after it
+  };
+  std::vector<Retry> retries, nextRetries;
   bool retrying = false;
   auto record = [&](size_t slot, TaskOutcome&& outcome) {
-    size_t i = retrying ? crashedJobs[slot] : toConvert[slot];
+    size_t i = retrying ? retries[slot].job : toConvert[slot];
     const BuildJob& job = plan.jobs[i];
     JobResult& result = results[i];
-    if (!retrying && crashedInGlslang(outcome) && !job.options.requireAnalysis) {
-      crashedJobs.push_back(i);
-      retryJobs.push_back(job);
-      retryJobs.back().options.glslangCrashed = true;
-      retryFailures.push_back(std::move(outcome));
-      return;
+    if (!outcome.completed) {
+      Retry next = retrying ? std::move(retries[slot]) : Retry{i, job, outcome, {}};
+      std::string rung;
+      if (climbCrashLadder(outcome, next.converted.options, &rung)) {
+        next.climbed.emplace_back(outcome, rung);
+        nextRetries.push_back(std::move(next));
+        return;
+      }
+      if (retrying) outcome = std::move(next.first);
     }
     bool decoded = outcome.completed && decodeJobResult(outcome.payload, &result);
-    if (retrying && (!decoded || result.errors > 0)) {
-      outcome = std::move(retryFailures[slot]);  // the crash is what the user is told
+    if (retrying && decoded && result.errors > 0) {
+      outcome = std::move(retries[slot].first);  // the crash is what the user is told
       decoded = false;
+    }
+    if (retrying && decoded) {
+      // Said in the log and each stage's report: the output comes from a later rung.
+      nlohmann::json rungs = nlohmann::json::array();
+      for (const auto& [crash, rung] : retries[slot].climbed) {
+        result.log += job.stages.front().string() + ": warning: " + crashWords(crash) + "; converted again " + rung + "\n";
+        rungs.push_back({{"crashed", crashWords(crash)}, {"then", rung}});
+      }
+      for (auto& r : result.reports) r["crash_recovery"] = rungs;
     }
     if (!decoded) {
       if (outcome.completed) {
@@ -217,11 +233,13 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
   runIsolated(
       toConvert.size(), workers, options.jobTimeoutSeconds,
       [&](size_t slot) { return encodeJobResult(convertJob(plan.jobs[toConvert[slot]], tool)); }, record, affinity);
-  if (!crashedJobs.empty()) {
+  while (!nextRetries.empty()) {
+    retries = std::move(nextRetries);
+    nextRetries.clear();
     retrying = true;
     runIsolated(
-        crashedJobs.size(), workers, options.jobTimeoutSeconds,
-        [&](size_t slot) { return encodeJobResult(convertJob(retryJobs[slot], tool)); }, record);
+        retries.size(), workers, options.jobTimeoutSeconds,
+        [&](size_t slot) { return encodeJobResult(convertJob(retries[slot].converted, tool)); }, record);
   }
   if (tty) std::cerr << "\n";
 }

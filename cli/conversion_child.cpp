@@ -46,6 +46,22 @@ ConversionRun convertInChild(const CliOptions& o, const std::vector<std::string>
   return run;
 }
 
+// Says, in a warning per climbed rung and in the report ("crash_recovery", on each stage's), that the
+// output comes from a later rung of the crash ladder than the first attempt.
+void attachCrashRecovery(const std::string& shown, const std::vector<std::pair<TaskOutcome, std::string>>& climbed,
+                         ConversionRun* run) {
+  nlohmann::json rungs = nlohmann::json::array();
+  for (const auto& [crash, rung] : climbed) {
+    std::cerr << shown << ": warning: " << crashWords(crash) << "; converted again " << rung << "\n";
+    rungs.push_back({{"crashed", crashWords(crash)}, {"then", rung}});
+  }
+  if (run->report.is_array()) {
+    for (auto& stage : run->report) stage["crash_recovery"] = rungs;
+  } else if (run->report.is_object()) {
+    run->report["crash_recovery"] = rungs;
+  }
+}
+
 }  // namespace
 
 bool runConversionChild(const CliOptions& o, const std::vector<std::string>& paths,
@@ -86,19 +102,25 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
       return decodeConversionRun(done.payload.substr(sizeof size + size), result);
     };
     TaskOutcome outcome = attempt(o, false);
-    // glslang crashed on the input: once more without it, for the text-only shift (text_only_shift.h)
-    // to take the stage where it can; where it cannot, the crash is what the user is told.
-    if (crashedInGlslang(outcome) && !o.t.requireAnalysis) {
-      CliOptions again = o;
-      again.t.glslangCrashed = true;
-      TaskOutcome retried = attempt(again, true);
+    // A crash: once more down the crash ladder (process_failure.h), each attempt without what the last
+    // one died in. The first attempt that converts is the result, said in a warning and the report;
+    // when none does, the first crash is what the user is told.
+    CliOptions again = o;
+    std::string rung;
+    std::vector<std::pair<TaskOutcome, std::string>> climbed;  // each crash and the rung taken after it
+    for (TaskOutcome last = outcome; climbCrashLadder(last, again.t, &rung);) {
+      climbed.emplace_back(last, rung);
+      last = attempt(again, true);
       std::string messages;
       ConversionRun candidate;
-      if (retried.completed && unframe(retried, &messages, &candidate) && candidate.errors == 0) {
+      if (!last.completed) continue;
+      if (unframe(last, &messages, &candidate) && candidate.errors == 0) {
         std::cerr << messages;
+        attachCrashRecovery(shown, climbed, &candidate);
         *run = std::move(candidate);
         return true;
       }
+      break;
     }
     if (!outcome.completed) {
       // runIsolated's words for a task it stopped at the limit start with "timed out".

@@ -12,6 +12,29 @@ bool crashedInGlslang(const TaskOutcome& outcome) {
          (outcome.phase == kGlslangGlslPhase || outcome.phase == kGlslangHlslPhase);
 }
 
+bool climbCrashLadder(const TaskOutcome& outcome, TranspileOptions& options, std::string* rung) {
+  if (outcome.completed || outcome.failure.rfind("crashed", 0) != 0) return false;
+  if (crashedInGlslang(outcome)) {
+    if (options.glslangCrashed || options.requireAnalysis) return false;
+    options.glslangCrashed = true;
+    *rung = "without glslang's parser: the shift from the text alone";
+    return true;
+  }
+  if (outcome.phase == kFoldedCopyPhase && !options.foldedCopyCrashed) {
+    options.foldedCopyCrashed = true;
+    *rung = "with the analyses but without their folded copy";
+    return true;
+  }
+  if (options.glslangCrashed || !options.crashedAfterFrontEnd.empty() || options.requireAnalysis) return false;
+  options.crashedAfterFrontEnd = outcome.phase.empty() ? std::string("an unmarked phase") : outcome.phase;
+  *rung = "without the analysis: the shift from the text alone";
+  return true;
+}
+
+std::string crashWords(const TaskOutcome& outcome) {
+  return "stereoshift " + outcome.failure + (outcome.phase.empty() ? std::string() : " in " + outcome.phase);
+}
+
 ProcessFailureText describeProcessFailure(const TaskOutcome& outcome, const std::vector<std::string>& files) {
   ProcessFailureText text;
   const bool crashed = outcome.failure.rfind("crashed", 0) == 0;

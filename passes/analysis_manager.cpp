@@ -23,8 +23,9 @@ const char* analysisName(Analysis analysis) {
   return "?";
 }
 
-AnalysisManager::AnalysisManager(const spirv::Module& module, const SourceInfo& source, std::string file)
-    : module_(module), source_(source), file_(std::move(file)) {}
+AnalysisManager::AnalysisManager(const spirv::Module& module, const SourceInfo& source, std::string file,
+                                 bool foldedCopy)
+    : module_(module), source_(source), file_(std::move(file)), foldingAllowed_(foldedCopy) {}
 
 AnalysisManager::~AnalysisManager() = default;
 
@@ -120,7 +121,7 @@ std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module, bool ac
 const spirv::Module* AnalysisManager::foldedCopy() {
   if (!foldTried_) {
     foldTried_ = true;
-    folded_ = makeFoldedCopy(module_);
+    if (foldingAllowed_) folded_ = makeFoldedCopy(module_);
   }
   return folded_ ? &*folded_ : nullptr;
 }
@@ -128,7 +129,7 @@ const spirv::Module* AnalysisManager::foldedCopy() {
 const spirv::Module* AnalysisManager::registerSsaCopy() {
   if (!registerTried_) {
     registerTried_ = true;
-    registers_ = makeFoldedCopy(module_, true);
+    if (foldingAllowed_) registers_ = makeFoldedCopy(module_, true);
   }
   return registers_ ? &*registers_ : nullptr;
 }

@@ -38,8 +38,10 @@ const char* analysisName(Analysis analysis);
 
 class AnalysisManager {
  public:
-  // `source` and `file` name the stage for the facts it gives the stage before it.
-  AnalysisManager(const spirv::Module& module, const SourceInfo& source, std::string file);
+  // `source` and `file` name the stage for the facts it gives the stage before it. `foldedCopy`
+  // false: the optimizer is never run (an earlier attempt of this conversion crashed in it), and
+  // every question the folded copy would answer is asked of the module as it is.
+  AnalysisManager(const spirv::Module& module, const SourceInfo& source, std::string file, bool foldedCopy = true);
   AnalysisManager(const AnalysisManager&) = delete;
   AnalysisManager& operator=(const AnalysisManager&) = delete;
   ~AnalysisManager();
@@ -88,6 +90,7 @@ class AnalysisManager {
   std::optional<ClipPositionAnalysis> clipPositions_;
   std::optional<spirv::Module> folded_;
   bool foldTried_ = false;
+  bool foldingAllowed_ = true;
   std::optional<spirv::Module> registers_;
   bool registerTried_ = false;
   std::unique_ptr<analysis::ViewVectorFlow> foldedFlow_;

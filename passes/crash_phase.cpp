@@ -3,6 +3,8 @@
 
 #include <sys/mman.h>
 
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 
 namespace stereoshift {
@@ -55,6 +57,12 @@ std::string crashPhaseOf(const CrashPhaseSlot* slot) {
 ScopedCrashPhase::ScopedCrashPhase(const char* phase) : previous_(current) {
   current = phase;
   publish(current);
+  // Test-only: STEREOSHIFT_TEST_CRASH_IN names the start of a phase ("the back end"), and the process
+  // dies in it as a third-party library would, so the tests of the crash ladder (cli/process_failure.h)
+  // reach each rung whatever input crashes the packaged libraries today. Nothing else reads it.
+  if (const char* crashIn = std::getenv("STEREOSHIFT_TEST_CRASH_IN");
+      crashIn && *crashIn && std::strncmp(phase, crashIn, std::strlen(crashIn)) == 0)
+    std::raise(SIGSEGV);
 }
 
 ScopedCrashPhase::~ScopedCrashPhase() {

@@ -67,6 +67,9 @@ struct PassOptions {
   bool fusedShift = false;        // x' = fma(eyeSign*separation, w - convergence, x): one rounding less
   bool compensatedShift = false;  // error-free transformations: x' within ~0.5 ULP of the exact shift
   bool haloFix = true;
+  // The crash ladder's first rung (cli/process_failure.h): an earlier attempt of this conversion died
+  // in the analyses' folded copy (SPIRV-Tools' optimizer), so the analyses run without it.
+  bool foldedCopyCrashed = false;
   bool shiftThisStage = true;     // false for an intermediate stage of a pipeline
   // --corrections-only: the driver shifts every clip position itself (3D Vision Automatic, geo-11);
   // no stage gets the shift, only the per-eye corrections (deferred-unprojection's fixes).

@@ -137,11 +137,12 @@ void runFrontEnd(StagePlan& plan, const TranspileOptions& options) {
   plan.frontEndMs = msSince(started);
 }
 
-bool parseEarly(StagePlan& plan) {
+bool parseEarly(StagePlan& plan, const TranspileOptions& options) {
   if (!plan.front.ok) return false;
   std::string error;
   if (!parseModuleOnce(plan, &error)) return false;  // reported when the stage converts
-  plan.analyses = std::make_unique<AnalysisManager>(*plan.module, plan.front.info, plan.input->path);
+  plan.analyses =
+      std::make_unique<AnalysisManager>(*plan.module, plan.front.info, plan.input->path, !options.foldedCopyCrashed);
   return true;
 }
 
@@ -216,6 +217,7 @@ std::string glslangsGap(const StagePlan& plan, const TranspileOptions& options) 
   std::string gap = glslangGapIn(plan.input->contents);
   if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
   if (gap.empty() && options.glslangCrashed) gap = "what crashed glslang";
+  if (gap.empty() && !options.crashedAfterFrontEnd.empty()) gap = "what crashed " + options.crashedAfterFrontEnd;
   return gap;
 }
 
@@ -353,7 +355,7 @@ bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, cons
 
 }  // namespace
 
-bool parseStage(StagePlan& plan) {
+bool parseStage(StagePlan& plan, const TranspileOptions& options) {
   const std::string& file = plan.input->path;
   std::string error;
   if (!parseModuleOnce(plan, &error)) {
@@ -375,7 +377,8 @@ bool parseStage(StagePlan& plan) {
   recordLanguage(record, plan.info);
   if (plan.info.language == SourceLanguage::Glsl)
     record.dialect = std::to_string(plan.info.version) + (plan.info.es ? " es" : "") + (plan.info.vulkan ? " vulkan" : "");
-  if (!plan.analyses) plan.analyses = std::make_unique<AnalysisManager>(*plan.module, plan.info, file);
+  if (!plan.analyses)
+    plan.analyses = std::make_unique<AnalysisManager>(*plan.module, plan.info, file, !options.foldedCopyCrashed);
   return true;
 }
 
@@ -466,7 +469,8 @@ void convertOtherEntryPoints(StagePlan& plan) {
       continue;
     }
     entry->info = front.info;
-    entry->analyses = std::make_unique<AnalysisManager>(*entry->module, entry->info, plan.input->path);
+    entry->analyses = std::make_unique<AnalysisManager>(*entry->module, entry->info, plan.input->path,
+                                                        !entry->options.foldedCopyCrashed);
     entry->context = std::make_unique<PassContext>(*entry->module, entry->options, entry->info, other.diags,
                                                    plan.input->path, *entry->analyses);
     std::string log;

@@ -71,10 +71,10 @@ bool goesThroughFrontEnd(const SourceFile& input);
 // then parses its module for the questions a pipeline asks across stages (false when it cannot:
 // the stage's own conversion reports why).
 void runFrontEnd(StagePlan& plan, const TranspileOptions& options);
-bool parseEarly(StagePlan& plan);
+bool parseEarly(StagePlan& plan, const TranspileOptions& options);
 // Steps 1 and 2: false (the reason in plan.diags) when the stage cannot be converted.
 bool readStage(StagePlan& plan, const TranspileOptions& options);
-bool parseStage(StagePlan& plan);
+bool parseStage(StagePlan& plan, const TranspileOptions& options);
 // Steps 1 and 2 failed because the front end could not parse a GLSL pre-rasterisation stage: the
 // text-only shift (text_only_shift.h) writes the stage instead, the front end's errors
 // becoming warnings, when the options allow it and the text is enough. False (a note in

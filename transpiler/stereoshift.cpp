@@ -32,7 +32,7 @@ namespace {
 // Steps 1 to 5 of stage_plan.h on `plan`, then the result and its report.
 TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
   plan.started = std::chrono::steady_clock::now();
-  bool ok = readStage(plan, options) && parseStage(plan);
+  bool ok = readStage(plan, options) && parseStage(plan, options);
   bool fromText = !ok && shiftStageFromText(plan, options);
   if (ok) {
     chooseStageOptions(plan, options);
@@ -181,7 +181,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     }
     if (!assembly && goesThroughFrontEnd(stages[i])) {
       runFrontEnd(*plan, options);
-      parseEarly(*plan);
+      parseEarly(*plan, options);
     }
     plans.push_back(std::move(plan));
   }

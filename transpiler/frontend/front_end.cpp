@@ -270,6 +270,12 @@ FrontEndResult compileToSpirv(const SourceFile& input, const FrontEndOptions& op
     result.glslangRejected = true;
     return result;
   }
+  if (!options.crashedAfterFrontEnd.empty()) {
+    diags.error(input.path, "stereoshift crashed on this input in " + options.crashedAfterFrontEnd +
+                                "; the analysis was not run again");
+    result.glslangRejected = true;
+    return result;
+  }
   if (decided.language == SourceLanguage::Hlsl)
     compileHlsl(input, options, *stage, decided, result, diags);
   else

@@ -27,6 +27,10 @@ struct FrontEndOptions {
   // glslang crashed on this input in an earlier attempt (the conversion child died in its parser):
   // it is not run again; the stage is refused as glslang's, for the text-only shift to take.
   bool glslangCrashed = false;
+  // An earlier attempt crashed in a phase after the front end (passes/crash_phase.h names it: the
+  // back end, the re-compile check, the folded copy once more): the analysis is not run again and the
+  // stage is refused as above, for the text-only shift to take. Empty: no such crash.
+  std::string crashedAfterFrontEnd;
   // HLSL pixel shaders: the module carries glslang's OpLine per statement (its debug line info),
   // for fixes only the source text can carry, placed by line (the 3Dmigoto correction splice).
   bool sourceLines = false;
