@@ -10,6 +10,7 @@
 #include "transpiler/frontend/hlsl_lift.h"
 #include "transpiler/frontend/legacy_glsl.h"
 #include "transpiler/output_version.h"
+#include "transpiler/source/lexer.h"
 #include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
@@ -87,9 +88,13 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 bool isSpirvInput(const SourceFile& input) { return hasSpirvMagic(input.contents) || input.path.ends_with(".spv"); }
 
+// Text with a NUL byte only inside a comment or at its end is still text (source/lexer.h).
+bool isBinaryContent(const std::string& contents) {
+  return contents.find('\0') != std::string::npos && !source::nulsOnlyInCommentsOrAtEnd(contents);
+}
+
 bool goesThroughFrontEnd(const SourceFile& input) {
-  return !input.contents.empty() && !isSpirvInput(input) &&
-         !std::memchr(input.contents.data(), '\0', std::min<size_t>(input.contents.size(), 4096));
+  return !input.contents.empty() && !isSpirvInput(input) && !isBinaryContent(input.contents);
 }
 
 StageDecision decideInputStage(const SourceFile& input, const TranspileOptions& options) {
@@ -157,7 +162,7 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
   if (isSpirvInput(input)) {
     if (!readSpirvInput(plan)) return false;
   } else {
-    if (std::memchr(input.contents.data(), '\0', std::min<size_t>(input.contents.size(), 4096))) {
+    if (isBinaryContent(input.contents)) {
       plan.diags.error(file, "binary content is not shader source (and not SPIR-V: bad magic number)");
       return false;
     }

@@ -361,5 +361,19 @@ TEST(SourceLexer, HlslEffectSample) {
   EXPECT_EQ(spellings(text, TokenKind::Comment).size(), 1u);
 }
 
+// NUL bytes: text where each is in a comment or in the run of NULs and blanks that ends the file.
+TEST(SourceLexer, NulsInCommentsOrAtTheEndAreText) {
+  using namespace std::string_literals;
+  EXPECT_TRUE(nulsOnlyInCommentsOrAtEnd("void main() {}\n/* disassembly\n\0\n*/\n"s));
+  EXPECT_TRUE(nulsOnlyInCommentsOrAtEnd("void main() {} // a\0b\n"s));
+  EXPECT_TRUE(nulsOnlyInCommentsOrAtEnd("void main() {}\n\0\0\n\0"s));
+  EXPECT_TRUE(nulsOnlyInCommentsOrAtEnd("void main() {}\n"s));
+  EXPECT_FALSE(nulsOnlyInCommentsOrAtEnd("void main() {\0}\n"s));
+  EXPECT_FALSE(nulsOnlyInCommentsOrAtEnd("\0void main() {}\n"s));
+  EXPECT_FALSE(nulsOnlyInCommentsOrAtEnd("/* a */\0 x\n"s));
+  EXPECT_FALSE(nulsOnlyInCommentsOrAtEnd("float s = \"\0\";\n"s));
+  EXPECT_EQ(blankNuls("a\0b\0"s), "a b ");
+}
+
 }  // namespace
 }  // namespace stereoshift::source

@@ -281,8 +281,10 @@ Attempt compileGlslangOnce(const SourceFile& input, const std::string& text, Sta
   ScopedCrashPhase phase(language == SourceLanguage::Hlsl ? kGlslangHlslPhase : kGlslangGlslPhase);
   EShLanguage lang = toGlslang(stage);
   glslang::TShader shader(lang);
-  const char* strings[] = {text.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
+  // glslang ends its input at a NUL byte, even in a comment: the compiler's copy has spaces there.
+  const std::string given = source::blankNuls(text);
+  const char* strings[] = {given.c_str()};
+  const int lengths[] = {static_cast<int>(given.size())};
   const char* names[] = {input.path.c_str()};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   std::string preamble = buildPreamble(options.defines, language == SourceLanguage::Glsl);

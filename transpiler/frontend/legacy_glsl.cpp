@@ -663,9 +663,11 @@ bool verifyLegacyCompiles(const std::string& text, Stage stage, int version, boo
   // ESSL 100 code may define `inverse` & co. itself; glslang refuses it (isBuiltinOnlyAfterEssl100):
   // those functions compiled under another name, the rest as written.
   const std::string compiled = es ? renameUserBuiltins(text) : text;
-  const char* strings[] = {compiled.c_str()};
+  // glslang ends its input at a NUL byte, even in a comment: the compiler's copy has spaces there.
+  const std::string given = source::blankNuls(compiled);
+  const char* strings[] = {given.c_str()};
   const char* names[] = {displayName.c_str()};
-  const int lengths[] = {static_cast<int>(compiled.size())};
+  const int lengths[] = {static_cast<int>(given.size())};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   // AST only, no SPIR-V client: glslang's built-ins for 1xx parse only without one (with one it
   // prints its whole built-in text to stdout and fails).

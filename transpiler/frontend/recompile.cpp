@@ -1,5 +1,6 @@
 // The re-compile checks (see front_end.h): this turns emitted GLSL or HLSL text into a yes or no from
 // glslang, with its errors, under the conversion's environment (`--verify`, the splices' checks).
+#include "transpiler/source/lexer.h"
 #include "transpiler/frontend/front_end.h"
 
 #include "passes/crash_phase.h"
@@ -20,9 +21,11 @@ bool verifyCompiles(const std::string& text, SourceLanguage language, Stage stag
                     const FrontEndOptions* environment, const std::string& includeFrom) {
   ensureGlslangInitialized();
   glslang::TShader shader(toGlslang(stage));
-  const char* strings[] = {text.c_str()};
+  // glslang ends its input at a NUL byte, even in a comment: the compiler's copy has spaces there.
+  const std::string given = source::blankNuls(text);
+  const char* strings[] = {given.c_str()};
   const char* names[] = {displayName.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
+  const int lengths[] = {static_cast<int>(given.size())};
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
   int messages = configureEnvironment(shader, stage, language, vulkanSemantics ? Client::Vulkan : Client::AstOnly,
                                       entryPoint, environment);

@@ -4,6 +4,7 @@
 #include "transpiler/source/lexer.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 
 namespace stereoshift::source {
@@ -432,6 +433,25 @@ std::string splicesOf(std::string_view text, const Token& t) {
     else if (raw[k + 1] == '\r' && k + 2 < raw.size() && raw[k + 2] == '\n') out += "\\\r\n";
   }
   return out;
+}
+
+bool nulsOnlyInCommentsOrAtEnd(std::string_view text) {
+  size_t end = text.size();
+  while (end > 0 && (text[end - 1] == '\0' || std::isspace(static_cast<unsigned char>(text[end - 1])))) --end;
+  size_t nul = text.find('\0');
+  if (nul >= end) return true;
+  const std::vector<Token> tokens = lex(text.substr(0, end));
+  size_t k = 0;
+  for (; nul < end; nul = text.find('\0', nul + 1)) {
+    while (k < tokens.size() && tokens[k].end <= nul) ++k;
+    if (k == tokens.size() || tokens[k].begin > nul || tokens[k].kind != TokenKind::Comment) return false;
+  }
+  return true;
+}
+
+std::string blankNuls(std::string text) {
+  std::replace(text.begin(), text.end(), '\0', ' ');
+  return text;
 }
 
 std::pair<int, int> lineAndColumn(std::string_view text, size_t offset) {

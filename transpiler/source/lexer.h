@@ -154,6 +154,15 @@ std::string spelledString(std::string_view text, const Token& t);
 // keep every later line where it was.
 std::string splicesOf(std::string_view text, const Token& t);
 
+// Whether `text`, which holds NUL bytes, is still shader source: each NUL is inside a comment or in the
+// run of NULs and blanks that ends the text (3Dmigoto writes a NUL after the disassembly in the
+// comment that closes a dump; editors and tools pad files with them). A NUL in code is binary.
+bool nulsOnlyInCommentsOrAtEnd(std::string_view text);
+
+// The text as a compiler is given it: every NUL byte a space (glslang's preprocessor ends its input at
+// the first NUL, even inside a comment). The same string when it holds none.
+std::string blankNuls(std::string text);
+
 // 1-based line and byte column of `offset` in `text` (clamped to its end).
 std::pair<int, int> lineAndColumn(std::string_view text, size_t offset);
 
