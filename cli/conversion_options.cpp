@@ -211,20 +211,15 @@ std::optional<std::string> finishEyeOptions(CliOptions& o) {
   if (o.eyeRoute == "layer") o.t.eye.route = EyeRoute::Layer;
   else if (o.eyeRoute == "viewport") o.t.eye.route = EyeRoute::Viewport;
   else return unknownValue("--eye-route", o.eyeRoute);
-  // 3Dmigoto's StereoParams texture (t125): the passes analyse with a cbuffer of an internal name in
-  // its place (so that the dump's own `StereoParams` declaration is no clash), the HLSL splice
-  // renders the texture.
-  o.t.eyeFrom3DMigoto = o.eyeSource == "3dmigoto";
-  if (o.t.eyeFrom3DMigoto) {
-    paramsSource = "uniform-block";
-    o.t.sourceTextFixes = true;
-    if (o.t.eye.blockName == "StereoParams") o.t.eye.blockName = "stereoshift_StereoParams";
-  }
+  // 3Dmigoto's StereoParams texture (t125): transpile_options.h.
+  if (o.eyeSource == "3dmigoto") paramsSource = "uniform-block";
   auto src = sources.find(paramsSource);
   if (src == sources.end()) return unknownValue("--eye-source", o.eyeSource);
   for (const auto& [option, name] : {std::pair{"--block-name", &o.t.eye.blockName}, std::pair{"--instance-name", &o.t.eye.instanceName}})
     if (auto why = notAnInjectableName(*name)) return std::string(option) + " '" + escapeControlBytes(*name) + "' " + *why;
   o.t.eye.source = src->second;
+  o.t.eyeFrom3DMigoto = false;
+  if (o.eyeSource == "3dmigoto") readEyeParamsFrom3DMigoto(o.t);
   return std::nullopt;
 }
 

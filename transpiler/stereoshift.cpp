@@ -7,7 +7,9 @@
 #include "passes/pass_manager.h"
 #include "transpiler/d3dasm/asm_route.h"
 #include "transpiler/source/lexer.h"
+#include "transpiler/source/stage_rules.h"
 #include "transpiler/stage_plan.h"
+#include "transpiler/text_only_shift.h"
 
 #include <algorithm>
 
@@ -147,16 +149,54 @@ void handOnNextStageFacts(Plans& plans, const TranspileOptions& options, int las
   }
 }
 
+// A 3Dmigoto dump (named `<hash>-<stage>[_replace].txt`, or with 3Dmigoto's header or declarations)
+// takes its eye parameters where 3Dmigoto puts them, its StereoParams texture (t125), unless the
+// options say where (--eye-source, single-pass stereo) or ask for what only other eye parameters
+// can be (another output language, a re-emit): a dump converted without --eye-source 3dmigoto would
+// otherwise get a cbuffer 3Dmigoto never fills, a shader that stays mono in the game. D3D assembly
+// reads the texture always (d3dasm/asm_route.h).
+bool takes3DMigotoEyeParamsByDefault(const SourceFile& input, const TranspileOptions& options) {
+  return !options.eyeFrom3DMigoto && options.eye.source == EyeSource::Auto &&
+         options.eye.select == EyeSelect::Parameter && !options.forceReemit &&
+         (options.target == TargetLanguage::Auto || options.target == TargetLanguage::Hlsl) &&
+         (isDecompiledHlsl(input) || stageOf3DMigotoDump(input.path)) && !isD3DAssemblyInput(input);
+}
+
+// Says so on a stage converted with the default: a note and the report.
+void note3DMigotoDefault(const SourceFile& input, TranspileResult& result) {
+  result.diagnostics.note(input.path,
+                          "a 3Dmigoto dump: its eye parameters are read from 3Dmigoto's StereoParams texture (t125), "
+                          "where 3Dmigoto puts them (--eye-source uniform-block or another puts them elsewhere)");
+  result.report["eye_params_default"] = "3Dmigoto dump: its StereoParams texture (t125)";
+}
+
 }  // namespace
 
 TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
   if (isD3DAssemblyInput(input)) return convertAssemblyStage(input, options);
   StagePlan plan;
   plan.input = &input;
-  return convertStage(plan, options);
+  if (!takes3DMigotoEyeParamsByDefault(input, options)) return convertStage(plan, options);
+  TranspileOptions dump = options;
+  readEyeParamsFrom3DMigoto(dump);
+  TranspileResult result = convertStage(plan, dump);
+  note3DMigotoDefault(input, result);
+  return result;
 }
 
 std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages, const TranspileOptions& options) {
+  // A pipeline of 3Dmigoto dumps (assembly or decompiled) takes 3Dmigoto's eye parameters by default.
+  bool dumps = false, others = false;
+  for (const auto& stage : stages)
+    if (!isD3DAssemblyInput(stage)) (takes3DMigotoEyeParamsByDefault(stage, options) ? dumps : others) = true;
+  if (dumps && !others) {
+    TranspileOptions dump = options;
+    readEyeParamsFrom3DMigoto(dump);
+    std::vector<TranspileResult> results = transpilePipeline(stages, dump);
+    for (size_t i = 0; i < results.size() && i < stages.size(); ++i)
+      if (!isD3DAssemblyInput(stages[i])) note3DMigotoDefault(stages[i], results[i]);
+    return results;
+  }
   // Every stage decided once; each source stage through the front end once, its module parsed for
   // the questions below; the conversion of each stage reuses all of it.
   Plans plans;

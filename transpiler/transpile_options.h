@@ -14,4 +14,15 @@ struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
   bool stageHasOtherUnits = false;
 };
 
+// The eye parameters from 3Dmigoto's StereoParams texture (t125), as 3Dmigoto fills it
+// (--eye-source 3dmigoto, and a dump's default): the passes analyse with a cbuffer of an internal
+// name in its place (so that the dump's own `StereoParams` declaration is no clash), the HLSL splice
+// renders the texture, and the fixes only the dump's text can carry are recorded for it.
+inline void readEyeParamsFrom3DMigoto(TranspileOptions& options) {
+  options.eyeFrom3DMigoto = true;
+  options.eye.source = EyeSource::UniformBlock;
+  options.sourceTextFixes = true;
+  if (options.eye.blockName == "StereoParams") options.eye.blockName = "stereoshift_StereoParams";
+}
+
 }  // namespace stereoshift
