@@ -37,6 +37,57 @@ std::optional<uint32_t> registerNumber(std::string_view operand, std::string_vie
   return n;
 }
 
+// The w a `mov` writes from a literal source (`l(1.000000)`, `l(0, 0, 0, 1.000000)`), when its
+// destination mask `mask` includes w: a scalar literal is every component, a four-component one
+// is read per destination component. nullopt when the source is not such a literal.
+std::optional<float> literalW(const AsmLine& line, const std::string& mask) {
+  if (line.baseOpcode() != "mov" || line.operands.size() != 2) return std::nullopt;
+  std::string_view source = line.operands[1].text;
+  if (!source.starts_with("l(") || !source.ends_with(")")) return std::nullopt;
+  std::vector<std::string> values;
+  std::string value;
+  for (char c : source.substr(2, source.size() - 3)) {
+    if (c == ',') {
+      values.push_back(value);
+      value.clear();
+    } else if (c != ' ') {
+      value += c;
+    }
+  }
+  values.push_back(value);
+  if (values.size() != 1 && values.size() != 4) return std::nullopt;
+  const std::string& w = values.size() == 1 ? values[0] : values[3];
+  char* end = nullptr;
+  float parsed = std::strtof(w.c_str(), &end);
+  if (w.empty() || end != w.c_str() + w.size() || mask.find('w') == std::string::npos) return std::nullopt;
+  return parsed;
+}
+
+// Whether every write of the position's w is a `mov` of the literal 1 (a 2D shader: HUD, full-screen
+// pass, sprite in pixel coordinates): the line of the first such write; nullopt when some write of
+// w is anything else or none writes it. A write through a subroutine or a saturating or
+// two-result instruction is "anything else".
+std::optional<size_t> positionWIsLiteralOne(const AsmText& text, const std::string& out) {
+  std::optional<size_t> first;
+  const std::optional<uint32_t> position = registerNumber(out, "o");
+  for (const AsmLine& line : text.lines) {
+    if (line.kind != LineKind::Instruction || registerTokenOffsets(line, out).empty()) continue;
+    // An output register is only ever a destination in SM4+: every mention is a write.
+    bool writesW = false;
+    for (const Operand& operand : line.operands) {
+      std::string mask;
+      if (registerNumber(operand.text, "o", &mask) == position && mask.find('w') != std::string::npos) writesW = true;
+    }
+    if (!writesW) continue;
+    std::string mask;
+    if (line.operands.empty() || registerNumber(line.operands[0].text, "o", &mask) != position) return std::nullopt;
+    std::optional<float> w = literalW(line, mask);
+    if (!w || *w != 1.0f) return std::nullopt;
+    if (!first) first = line.number;
+  }
+  return first;
+}
+
 struct Edits {
   std::map<size_t, std::vector<std::string>> before;  // lines inserted before line k
   std::map<size_t, std::vector<std::string>> after;   // lines inserted after line k
@@ -225,6 +276,12 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
     return unchanged("line " + std::to_string(line.number) +
                      " reads 3Dmigoto's StereoParams (t125): a stereo fix already, left as it is");
   }
+  // A position whose w is the literal 1 at every write is a proven 2D shader: the shift's cutoff would
+  // keep every vertex mono, so the dump is copied as it is, with the reason (the SPIR-V analyses
+  // classify the same shaders "2d-constant-w").
+  if (auto line = positionWIsLiteralOne(text, out))
+    return unchanged("the position's w is written only as the literal 1 (line " + std::to_string(*line) + ", " + out +
+                     ".w): a 2D shader, which the shift's cutoff keeps mono, copied as it is");
   const std::string rP = "r" + std::to_string(d.temps), rS = "r" + std::to_string(d.temps + 1);
   result.positionRegister = out;
   result.positionTemp = rP;
