@@ -81,6 +81,9 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_flag("--verify", o.t.verify, "Recompile every emitted GLSL/HLSL output with glslang");
   app.add_flag("--require-analysis", o.t.requireAnalysis,
                "Refuse a shader glslang cannot parse instead of splicing the shift from its text alone");
+  app.add_flag("--unchecked-text-route", o.t.uncheckedTextRoute,
+               "Where no Mesa is installed to compile a GLSL shader glslang refuses, take the text-only route "
+               "anyway (said in the report) instead of refusing it");
   app.add_flag("--diff", o.diff,
                "Print the edits as a unified diff against the input (instead of the output text when it "
                "goes to standard output), to review them like a patch");
@@ -315,7 +318,8 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
       {"verify", t.verify},
       {"forceReemit", t.forceReemit},
   };
-  if (t.requireAnalysis) description["requireAnalysis"] = true;  // only when given: default keys unchanged
+  if (t.requireAnalysis) description["requireAnalysis"] = true;
+  if (t.uncheckedTextRoute) description["uncheckedTextRoute"] = true;  // only when given: default keys unchanged
   if (t.eyeFrom3DMigoto) description["eyeFrom3DMigoto"] = true;
   if (t.correctionsOnly) description["correctionsOnly"] = true;
   // Only when given, so the cache keys of builds without -x stay what they were.

@@ -14,6 +14,7 @@ const char* const kGlslangHlslPhase = "the front end (glslang, parsing HLSL)";
 const char* const kRecompilePhase = "the re-compile check of the output (glslang, on the emitted text)";
 const char* const kFoldedCopyPhase = "the analyses' folded copy (SPIRV-Tools' optimizer)";
 const char* const kSpirvCrossPhase = "the back end (SPIRV-Cross, re-emitting the output)";
+const char* const kMesaPhase = "Mesa's GLSL compiler (the OpenGL driver, checking the text)";
 
 namespace {
 

@@ -45,5 +45,6 @@ extern const char* const kGlslangHlslPhase;
 extern const char* const kRecompilePhase;
 extern const char* const kFoldedCopyPhase;
 extern const char* const kSpirvCrossPhase;
+extern const char* const kMesaPhase;
 
 }  // namespace stereoshift

@@ -13,7 +13,10 @@ mode="${1:-run}"
 packages=(cmake ninja-build g++ python3 glslang-dev glslang-tools spirv-tools
           libspirv-cross-c-shared-dev spirv-cross libcli11-dev llvm-14-tools
           mesa-vulkan-drivers libvulkan-dev nlohmann-json3-dev libxxhash-dev libtomlplusplus-dev
-          googletest libgtest-dev)
+          googletest libgtest-dev
+          # Mesa's OpenGL driver, loaded at run time (transpiler/frontend/mesa_compiler.h): a real
+          # GLSL compiler's word before a route says yes to a shader glslang refuses.
+          libegl1 libegl-mesa0 libgl1-mesa-dri)
 # Test mode only: clang and its runtimes for the sanitizer tree (ASan, UBSan, libFuzzer), and piglit,
 # whose shader_runner runs the GL-side execution tests in Mesa's OpenGL driver (execution.piglit).
 if [ "$mode" = test ]; then packages+=(clang-14 libclang-rt-14-dev piglit); fi

@@ -239,6 +239,11 @@ json renderStageReport(const StageRecord& record) {
     }
     if (!a.unchangedBecause.empty()) report["unchanged_because"] = a.unchangedBecause;
   }
+  if (record.mesa) {
+    report["mesa"] = {{"original", record.mesa->original}};
+    if (!record.mesa->output.empty()) report["mesa"]["output"] = record.mesa->output;
+    if (!record.mesa->driver.empty()) report["mesa"]["driver"] = record.mesa->driver;
+  }
   if (record.output == StageRecord::Output::Copied) report["output"] = "copied";
   if (record.output == StageRecord::Output::Emitted) report["output"] = "emitted";
   if (record.verified) report["verified"] = true;

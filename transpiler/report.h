@@ -66,6 +66,12 @@ struct StageRecord {
   };
   std::optional<Assembly> assembly;
   std::string lifted;  // analysed on a lifted copy (frontend/glsl_lift.h): what was lifted
+  // Mesa's word (frontend/mesa_compiler.h) on a GLSL stage a route said yes to where glslang did not:
+  // "compiled", "refused", "unchecked: <why>"; the output's; the driver that gave it.
+  struct MesaCheck {
+    std::string original, output, driver;
+  };
+  std::optional<MesaCheck> mesa;
   enum class Output { None, Copied, Emitted } output = Output::None;
   bool verified = false;
 };

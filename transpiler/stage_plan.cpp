@@ -9,6 +9,7 @@
 #include "transpiler/frontend/hlsl_effects.h"
 #include "transpiler/frontend/hlsl_lift.h"
 #include "transpiler/frontend/legacy_glsl.h"
+#include "transpiler/frontend/mesa_compiler.h"
 #include "transpiler/output_version.h"
 #include "transpiler/source/lexer.h"
 #include "transpiler/source/stage_rules.h"
@@ -151,6 +152,91 @@ bool parseEarly(StagePlan& plan, const TranspileOptions& options) {
   return true;
 }
 
+namespace {
+
+// The #version a loader prepends to this stage's text when it has none: the version the front end
+// read it at, when it read it at all.
+std::optional<std::string> versionIfNone(const StagePlan& plan) {
+  if (!plan.front.ok || plan.front.info.language != SourceLanguage::Glsl) return std::nullopt;
+  const SourceInfo& info = plan.front.info;
+  return std::to_string(info.version) + (info.es && info.version != 100 ? " es" : "");
+}
+
+// Mesa's word (frontend/mesa_compiler.h) on the original text of a GLSL stage that `route` would
+// take where glslang did not say yes as written: true when the route may go on. Refused: the user
+// sees Mesa's errors (the driver's word), glslang's go. No verdict: refused with what to install,
+// unless --unchecked-text-route takes it anyway (said in a warning and the report).
+bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, const char* route) {
+  const std::string& file = plan.input->path;
+  const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
+  MesaVerdict verdict = compileWithMesa(plan.input->contents, stage, file, versionIfNone(plan));
+  StageRecord::MesaCheck& check = plan.record.mesa.emplace();
+  check.driver = verdict.driver;
+  switch (verdict.kind) {
+    case MesaVerdict::Kind::Compiled:
+      check.original = "compiled";
+      return true;
+    case MesaVerdict::Kind::Refused: {
+      check.original = "refused";
+      Diagnostics kept;
+      for (const auto& d : plan.diags.all())
+        if (d.severity != Severity::Error) kept.add(d);
+      for (auto& e : verdict.errors) kept.add(std::move(e));
+      kept.note(file, std::string("glslang refuses this shader too; the ") + route +
+                          " route is taken only where Mesa's GLSL compiler (" + verdict.driver + ") compiles it");
+      plan.diags = std::move(kept);
+      return false;
+    }
+    case MesaVerdict::Kind::Unavailable:
+      break;
+  }
+  if (options.uncheckedTextRoute) {
+    check.original = "unchecked: " + verdict.why;
+    plan.diags.warning(file, "no GLSL compiler checked this shader, which glslang refuses (" + verdict.why + "): the " +
+                                 route + " route is taken unchecked (--unchecked-text-route)");
+    return true;
+  }
+  check.original = "no verdict: " + verdict.why;
+  plan.diags.note(file, std::string("the ") + route + " route is taken only where Mesa's GLSL compiler compiles the "
+                        "shader, and none could be asked (" + verdict.why + "): install " + kMesaPackages +
+                        ", or pass --unchecked-text-route to take it unchecked");
+  return false;
+}
+
+// Mesa's word on the output of a stage whose original Mesa compiled: it must compile too.
+bool mesaAgreesOnOutput(StagePlan& plan, const std::string& output) {
+  if (!plan.record.mesa || plan.record.mesa->original != "compiled") return true;
+  const std::string& file = plan.input->path;
+  const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
+  MesaVerdict verdict = compileWithMesa(output, stage, file, versionIfNone(plan));
+  if (verdict.kind == MesaVerdict::Kind::Compiled) {
+    plan.record.mesa->output = "compiled";
+    return true;
+  }
+  if (verdict.kind == MesaVerdict::Kind::Unavailable) {
+    plan.record.mesa->output = "no verdict: " + verdict.why;
+    return true;
+  }
+  plan.record.mesa->output = "refused";
+  plan.diags.error(file, "the converted shader does not compile in Mesa (" + verdict.driver +
+                             "), though the original does; no output was written");
+  for (const auto& e : verdict.errors)
+    plan.diags.note(file, "in the output, line " + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " +
+                              e.message);
+  return false;
+}
+
+}  // namespace
+
+bool checkOutputWithMesa(StagePlan& plan) {
+  if (plan.binaryOutput || plan.front.info.language != SourceLanguage::Glsl || !plan.record.mesa) return true;
+  if (plan.record.target && *plan.record.target != TargetLanguage::Glsl && *plan.record.target != TargetLanguage::Essl)
+    return true;
+  if (mesaAgreesOnOutput(plan, plan.output)) return true;
+  plan.output.clear();
+  return false;
+}
+
 bool readStage(StagePlan& plan, const TranspileOptions& options) {
   const SourceFile& input = *plan.input;
   const std::string& file = input.path;
@@ -175,6 +261,10 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
       recordLanguage(plan.record, plan.front.info);  // the language decision is often why it does not parse
       return false;
     }
+    // A GLSL shader glslang took only as a lifted copy (glsl_lift.h): Mesa must compile it as written.
+    if (plan.front.info.language == SourceLanguage::Glsl && !plan.front.info.liftedBecause.empty() &&
+        !mesaAgreesOnOriginal(plan, options, "lifted-copy"))
+      return false;
     plan.words = plan.front.spirv;
     plan.info = plan.front.info;
     plan.record.dialectReason = plan.front.dialectReason;
@@ -251,8 +341,13 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
     return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
   // The shader's own error, said as it is.
   if (glslangsGap(plan, options).empty()) return false;
+  // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
+  if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
   TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
-  return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only");
+  if (!takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only")) return false;
+  if (mesaAgreesOnOutput(plan, plan.output)) return true;
+  plan.output.clear();
+  return false;
 }
 
 namespace {
@@ -275,6 +370,7 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
   if (errorsInIncludes(plan)) return false;
   const std::string gap = glslangsGap(plan, options);
   if (gap.empty()) return false;
+  if (!mesaAgreesOnOriginal(plan, options, "unanalysed-copy")) return false;
   const std::string file = plan.input->path;
   const std::string reason = demoteGlslangErrors(plan);
   plan.diags.warning(file, "glslang cannot analyse this " + std::string(stageName(stage)) + " stage (its text has " +

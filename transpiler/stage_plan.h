@@ -66,6 +66,9 @@ struct StagePlan {
 
 // Whether an input is SPIR-V (its magic number, or a .spv name), and whether it goes through the front end.
 bool isSpirvInput(const SourceFile& input);
+// After step 5, for a GLSL stage whose original only Mesa vouched for (the lifted copy's splice):
+// the output must compile in Mesa too (frontend/mesa_compiler.h); false, with the error, when not.
+bool checkOutputWithMesa(StagePlan& plan);
 bool goesThroughFrontEnd(const SourceFile& input);
 // The front end, run ahead of the other steps (a pipeline parses every stage first); `parseEarly`
 // then parses its module for the questions a pipeline asks across stages (false when it cannot:

@@ -38,7 +38,7 @@ TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
   bool fromText = !ok && shiftStageFromText(plan, options);
   if (ok) {
     chooseStageOptions(plan, options);
-    ok = runStagePasses(plan) && emitStage(plan);
+    ok = runStagePasses(plan) && emitStage(plan) && checkOutputWithMesa(plan);
   }
   TranspileResult result;
   ok = ok || fromText;

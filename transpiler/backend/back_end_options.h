@@ -15,6 +15,10 @@ struct BackEndOptions {
   // --require-analysis: a stage glslang cannot parse is an error, never shifted from its text alone
   // (text_only_shift.h).
   bool requireAnalysis = false;
+  // --unchecked-text-route: the routes that say yes where glslang did not (the text-only shift, the
+  // unanalysed copy, the lifted copy's splice) are taken without Mesa's word when no Mesa is at hand
+  // (frontend/mesa_compiler.h), said in the report; without it they are refused then.
+  bool uncheckedTextRoute = false;
   // --eye-source 3dmigoto: the eye parameters are 3Dmigoto's `StereoParams` texture at t125
   // (texel 0: x separation with the eye's sign, y convergence), rendered by the HLSL source splice
   // only; the passes analyse with an internal cbuffer in its place.
