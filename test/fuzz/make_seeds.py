@@ -5,6 +5,7 @@ layout its target reads (fuzz_transpile.cpp: an options byte, a stage byte, then
 import argparse
 import hashlib
 import pathlib
+import random
 import re
 import shutil
 import subprocess
@@ -49,11 +50,17 @@ def main():
     args = parser.parse_args()
 
     dirs = {name: args.out / name for name in
-            ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_scene_manifest",
-             "fuzz_reproject_options"]}
+            ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_decompiled_dump",
+             "fuzz_scene_manifest", "fuzz_reproject_options"]}
     for d in dirs.values():
         shutil.rmtree(d, ignore_errors=True)
         d.mkdir(parents=True)
+
+    # fuzz_decompiled_dump reads its bytes as choices (fuzz_decompiled_dump.cpp): byte strings from a
+    # fixed-seed generator, each stage and eye source, long enough for a few dozen statements.
+    chooser = random.Random(40)
+    for setup in range(16):
+        write_seed(dirs["fuzz_decompiled_dump"], bytes([setup]) + bytes(chooser.randrange(256) for _ in range(600)))
 
     for want_hlsl, target in [(False, "fuzz_transpile_glsl"), (True, "fuzz_transpile_hlsl")]:
         for path in shaders(args.source_root, want_hlsl):

@@ -32,7 +32,7 @@ import time
 
 HERE = pathlib.Path(__file__).resolve().parent
 SOURCE_ROOT = HERE.parents[1]
-TARGETS = ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_scene_manifest",
+TARGETS = ["fuzz_transpile_glsl", "fuzz_transpile_hlsl", "fuzz_transpile_spirv", "fuzz_decompiled_dump", "fuzz_scene_manifest",
            "fuzz_reproject_options"]
 DICTIONARIES = {"fuzz_scene_manifest": HERE / "scene.dict",  # the others: shader.dict
                 "fuzz_reproject_options": HERE / "reproject.dict"}
@@ -43,8 +43,10 @@ RSS_LIMIT_MB = 4096
 # Executions per target in --runs mode: about 25-30 s each on one idle core of the CI machine's kind
 # under ASan + UBSan (the transpile targets run the whole glslang front end per input; SPIR-V input
 # skips it), which keeps the whole suite within its time on two cores.
+# fuzz_decompiled_dump writes a whole decompiled shader per input and converts it (about 4 a second
+# under ASan): a small budget, spent on programs the parser accepts.
 RUN_BUDGET = {"fuzz_transpile_glsl": 7200, "fuzz_transpile_hlsl": 9000, "fuzz_transpile_spirv": 120000,
-              "fuzz_scene_manifest": 30000, "fuzz_reproject_options": 6000}
+              "fuzz_decompiled_dump": 120, "fuzz_scene_manifest": 30000, "fuzz_reproject_options": 6000}
 # After a third-party crash the fuzzer restarts (reloading the corpus) only if this much time is left.
 MIN_RESTART_S = 3
 
