@@ -160,7 +160,9 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
       if (retrying) outcome = std::move(next.first);
     }
     bool decoded = outcome.completed && decodeJobResult(outcome.payload, &result);
+    std::string failedRung;  // the messages of a rung that ended with errors, as notes after the crash
     if (retrying && decoded && result.errors > 0) {
+      failedRung = rungMessagesAsNotes(result.log);
       outcome = std::move(retries[slot].first);  // the crash is what the user is told
       decoded = false;
     }
@@ -185,6 +187,7 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
         ProcessFailureText failure = describeProcessFailure(outcome, stages);
         result = workerFailure(job, "failed: " + failure.what);
         for (const auto& note : failure.notes) result.log += note + "\n";
+        result.log += failedRung;
       }
     } else {
       nlohmann::json outputs = nlohmann::json::object(), stamps = nlohmann::json::object();

@@ -108,6 +108,7 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
     CliOptions again = o;
     std::string rung;
     std::vector<std::pair<TaskOutcome, std::string>> climbed;  // each crash and the rung taken after it
+    std::string failedRung;  // the messages of a rung that ended with errors, as notes after the crash
     for (TaskOutcome last = outcome; climbCrashLadder(last, again.t, &rung);) {
       climbed.emplace_back(last, rung);
       last = attempt(again, true);
@@ -120,6 +121,7 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
         *run = std::move(candidate);
         return true;
       }
+      failedRung = rungMessagesAsNotes(messages);
       break;
     }
     if (!outcome.completed) {
@@ -133,6 +135,7 @@ bool runConversionChild(const CliOptions& o, const std::vector<std::string>& pat
         ProcessFailureText failure = describeProcessFailure(outcome, {paths.front()});
         std::cerr << shown << ": error: " << failure.what << " while converting this shader; no output was written\n";
         for (const auto& note : failure.notes) std::cerr << note << "\n";
+        std::cerr << failedRung;
       }
       printErrorSummary(1);
       return false;

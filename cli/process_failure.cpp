@@ -31,6 +31,23 @@ bool climbCrashLadder(const TaskOutcome& outcome, TranspileOptions& options, std
   return true;
 }
 
+std::string rungMessagesAsNotes(const std::string& messages) {
+  std::string notes;
+  size_t at = 0;
+  while (at < messages.size()) {
+    size_t end = messages.find('\n', at);
+    if (end == std::string::npos) end = messages.size();
+    std::string line = messages.substr(at, end - at);
+    at = end + 1;
+    if (line.find("was not run again") != std::string::npos || line.find(": warning: ") != std::string::npos ||
+        line.find("error generated") != std::string::npos || line.find("errors generated") != std::string::npos)
+      continue;
+    if (size_t error = line.find(": error: "); error != std::string::npos) line.replace(error, 9, ": note: ");
+    if (line.find(": note: ") != std::string::npos) notes += line + "\n";
+  }
+  return notes;
+}
+
 std::string crashWords(const TaskOutcome& outcome) {
   return "stereoshift " + outcome.failure + (outcome.phase.empty() ? std::string() : " in " + outcome.phase);
 }

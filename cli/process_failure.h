@@ -39,4 +39,9 @@ bool climbCrashLadder(const TaskOutcome& outcome, TranspileOptions& options, std
 // The words for one climbed rung: "stereoshift crashed (signal 11, SIGSEGV) in <phase>".
 std::string crashWords(const TaskOutcome& outcome);
 
+// The messages of a rung that ended with errors, said after the crash (which stays the error): each
+// error a note (it says why the rung could not take the shader: a broken text, a refusal), the lines
+// that only restate the crash and warnings dropped, notes kept.
+std::string rungMessagesAsNotes(const std::string& messages);
+
 }  // namespace stereoshift

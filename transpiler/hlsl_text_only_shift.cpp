@@ -5,6 +5,7 @@
 // 3Dmigoto's StereoParams texture.
 #include "transpiler/text_only_shift.h"
 
+#include "passes/diagnostics.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/shift_emitter.h"
 #include "transpiler/backend/hlsl_splice.h"
@@ -59,6 +60,35 @@ std::string unusedName(const std::string& text, const std::string& name) {
 bool isDecompiledHlsl(const SourceFile& input) {
   return stageOfDecompiledDump(input.path).has_value() || input.contents.find("3Dmigoto declarations") != std::string::npos ||
          input.contents.find("Created with 3Dmigoto") != std::string::npos;
+}
+
+std::optional<Diagnostic> ownTextError(const SourceFile& input) {
+  source::LexedText lexed(input.contents);
+  auto at = [&](size_t k, std::string message) {
+    return Diagnostic{Severity::Error, input.path, static_cast<int>(lexed[k].line), static_cast<int>(lexed[k].column),
+                      std::move(message)};
+  };
+  std::vector<size_t> open;  // the brackets not closed yet, innermost last
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.unterminated)
+      return at(k, t.kind == source::TokenKind::Comment ? "a comment is left open to the end of the file"
+                                                        : "a string is left open at the end of its line");
+    if (t.kind == source::TokenKind::Directive && t.directive == source::DirectiveKind::Error && t.ifDepth == 0)
+      return at(k, "the text's own " + std::string(lexed.text(k)));
+    if (!t.isCode() || t.kind != source::TokenKind::Punctuation) continue;
+    const char c = lexed.text(k)[0];
+    if (c == '(' || c == '[' || c == '{') open.push_back(k);
+    if (c != ')' && c != ']' && c != '}') continue;
+    const char expected = c == ')' ? '(' : c == ']' ? '[' : '{';
+    if (open.empty()) return at(k, std::string("'") + c + "' closes nothing");
+    if (lexed.text(open.back())[0] != expected)
+      return at(open.back(), std::string("'") + lexed.text(open.back())[0] + "' is not closed before the '" + c +
+                                 "' at line " + std::to_string(t.line));
+    open.pop_back();
+  }
+  if (!open.empty()) return at(open.back(), std::string("'") + lexed.text(open.back())[0] + "' is never closed");
+  return std::nullopt;
 }
 
 TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options) {

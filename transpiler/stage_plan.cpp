@@ -394,6 +394,18 @@ bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   if (!isDecompiledHlsl(*plan.input)) return false;
   for (const auto& d : plan.diags.all())
     if (d.severity == Severity::Error && !d.file.empty() && d.file != plan.input->path) return false;  // an #include's
+  // Never past an error of the text's own: the D3D compiler did not compile that.
+  if (auto own = ownTextError(*plan.input)) {
+    plan.diags.add(*own);
+    std::string note = "the decompiled text is broken itself, so no D3D compiler made it: the text-only shift is not "
+                       "taken";
+    if (auto dumped = stageOf3DMigotoDump(plan.input->path); dumped && plan.input->path.ends_with("_replace.txt"))
+      note += "; 3Dmigoto's assembly dump of the same shader (" +
+              plan.input->path.substr(0, plan.input->path.size() - std::string("_replace.txt").size()) +
+              ".txt, export_shaders with asm) goes through the assembly route without a decompiler";
+    plan.diags.note(plan.input->path, note);
+    return false;
+  }
   return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), "hlsl-text-only");
 }
 

@@ -15,11 +15,13 @@
 // binding the text names, unless the options ask for another source, set or binding.
 #pragma once
 
+#include "passes/diagnostics.h"
 #include "passes/pass_options.h"
 #include "passes/shader.h"
 #include "transpiler/backend/back_end_options.h"
 #include "transpiler/transpile_options.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,10 @@ TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOpti
 // output from the text, the eye parameters a cbuffer at the first free b register (or
 // --hlsl-register), or 3Dmigoto's StereoParams texture with --eye-source 3dmigoto.
 bool isDecompiledHlsl(const SourceFile& input);
+// An error of decompiled text's own, which no D3D compiler would have taken either (the decompiler
+// or a hand edit broke it): an `#error` outside every #if group, a bracket, brace or parenthesis
+// without its partner, a comment or string left open. The text-only shift is never taken past one.
+std::optional<Diagnostic> ownTextError(const SourceFile& input);
 TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options);
 
 }  // namespace stereoshift
