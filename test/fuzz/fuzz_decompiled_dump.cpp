@@ -84,7 +84,10 @@ class DumpWriter {
              "  out float4 o0 : SV_POSITION0,\n  out float4 o1 : TEXCOORD0)\n";
     }
     out += "{\n  float4 r0,r1,r2,r3,r4,r5;\n  uint4 bitmask, uiDest;\n  float4 fDest;\n\n";
-    out += "  r0.xyzw = v0.xyzw;\n  r1.xyzw = v1.xyzw;\n  r2.xyz = v2.xyz;\n  r2.w = 1;\n";
+    // Every register written before any read, as a compiler's output always has them: a read of an
+    // unwritten one would be undefined, and two compilations of it may differ.
+    out += "  r0.xyzw = v0.xyzw;\n  r1.xyzw = v1.xyzw;\n  r2.xyz = v2.xyz;\n  r2.w = 1;\n"
+           "  r3.xyzw = v0.yzwx;\n  r4.xyzw = v1.wzyx;\n  r5.xyzw = cb0[0].xyzw;\n";
     for (unsigned k = 0; k < 12 && !c_.exhausted(); ++k) out += statement(1);
     if (pixel_) {
       out += "  o0.xyzw = " + value(4, 2) + ";\n";
@@ -124,7 +127,12 @@ class DumpWriter {
     const Matrix& m = matrices_[c_.pick(static_cast<unsigned>(matrices_.size()))];
     std::string receiver = m.name;
     if (m.count > 1) receiver += "[" + std::string(c_.pick(2) ? "(uint)" + reg() + ".x % " + std::to_string(m.count) : std::to_string(c_.pick(static_cast<unsigned>(m.count)))) + "]";
-    if (c_.pick(4) == 0 && n <= m.columns) return receiver + "[" + std::to_string(c_.pick(static_cast<unsigned>(m.rows))) + "]." + swizzle(n, true);
+    if (c_.pick(4) == 0 && n <= m.columns) {  // a row (the first index), read within its columns
+      std::string row = receiver + "[" + std::to_string(c_.pick(static_cast<unsigned>(m.rows))) + "].";
+      int first = static_cast<int>(c_.pick(static_cast<unsigned>(m.columns - n + 1)));
+      for (int i = 0; i < n; ++i) row += kComponents[first + i];
+      return row;
+    }
     const bool oneBased = c_.pick(4) == 0;
     std::string s;
     for (int i = 0; i < n; ++i) {
@@ -150,7 +158,7 @@ class DumpWriter {
       }
       case 5: return value(n, depth - 1) + " * " + value(n, depth - 1) + " + " + value(n, depth - 1);
       case 6: {
-        if (n != 1) return "-" + value(n, depth - 1);
+        if (n != 1) return "-(" + value(n, depth - 1) + ")";
         int width = 2 + static_cast<int>(c_.pick(3));
         return "dot(" + value(width, depth - 1) + ", " + (c_.pick(2) ? matrixValue(width) : value(width, depth - 1)) + ")";
       }
