@@ -15,6 +15,7 @@
 #include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
+#include <functional>
 #include <cstring>
 
 namespace stereoshift {
@@ -595,8 +596,11 @@ void convertOtherEntryPoints(StagePlan& plan) {
 }
 
 // One re-compile a route asked for (route.h, CompileCheck).
+// `mesaDecides`: asked where glslang does not take GLSL output: true when Mesa's GLSL compiler
+// compiles both the original and the output (glslang's refusal is then its own gap, as with the
+// original), which it says in a note.
 bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options, const std::string& file,
-                     Diagnostics& diags) {
+                     Diagnostics& diags, const std::function<bool(const CompileCheck&)>& mesaDecides) {
   Diagnostics verifyDiags;
   std::string display = file + " (emitted)";
   if (check.throughFrontEnd) {
@@ -614,6 +618,13 @@ bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options,
                                           check.stage, check.entryPoint, check.vulkanSemantics, display, verifyDiags,
                                           &options, check.includeFrom);
   if (ok) return true;
+  if (mesaDecides && check.language == SourceLanguage::Glsl && mesaDecides(check)) {
+    const auto& all = verifyDiags.all();
+    auto first = std::find_if(all.begin(), all.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    diags.note(file, "glslang does not take the output (" + (first == all.end() ? check.failure : first->message) +
+                         "), nor the original as written; Mesa's GLSL compiler compiles both");
+    return true;
+  }
   diags.append(verifyDiags);
   diags.error(file, check.failure);
   return false;
@@ -622,10 +633,13 @@ bool runCompileCheck(const CompileCheck& check, const TranspileOptions& options,
 // The first of a route's checks that fails, as its first error ("" when all pass). Its errors go to
 // `diags` unless the route declines on a failed check.
 std::string failedCheck(const EmitResult& emitted, const TranspileOptions& options, const std::string& file,
-                        Diagnostics& diags) {
+                        Diagnostics& diags, const std::function<bool(const CompileCheck&)>& mesaDecides) {
   for (const auto& check : emitted.checks) {
     Diagnostics checkDiags;
-    if (runCompileCheck(check, options, file, checkDiags)) continue;
+    if (runCompileCheck(check, options, file, checkDiags, mesaDecides)) {
+      diags.append(checkDiags);  // a note where Mesa's word decided
+      continue;
+    }
     if (!emitted.declineIfChecksFail) diags.append(checkDiags);
     return checkDiags.hasErrors() ? checkDiags.all().front().message : check.failure;
   }
@@ -695,7 +709,26 @@ bool emitStage(StagePlan& plan) {
       continue;
     }
     if (emitted.status == EmitResult::Failed) return false;
-    if (std::string failed = failedCheck(emitted, plan.options, file, plan.diags); !failed.empty()) {
+    // GLSL output glslang does not take, where it does not take the original as written either (the
+    // check at the original's version): Mesa's word on both decides, recorded in the report.
+    auto mesaDecides = [&](const CompileCheck& check) {
+      if (plan.front.info.language != SourceLanguage::Glsl || plan.spirvInput) return false;
+      if (!plan.record.mesa) {
+        CompileCheck original = check;
+        original.text = plan.input->contents;
+        Diagnostics ignored;
+        if (runCompileCheck(original, plan.options, file, ignored, nullptr)) return false;  // glslang's word stands
+        MesaVerdict verdict = compileWithMesa(plan.input->contents, check.stage, file, versionIfNone(plan));
+        if (verdict.kind != MesaVerdict::Kind::Compiled) return false;
+        plan.record.mesa = StageRecord::MesaCheck{"compiled", "", verdict.driver};
+      }
+      if (plan.record.mesa->original != "compiled") return false;
+      MesaVerdict output = compileWithMesa(check.text, check.stage, file, versionIfNone(plan));
+      if (output.kind != MesaVerdict::Kind::Compiled) return false;
+      plan.record.mesa->output = "compiled";
+      return true;
+    };
+    if (std::string failed = failedCheck(emitted, plan.options, file, plan.diags, mesaDecides); !failed.empty()) {
       if (!emitted.declineIfChecksFail) return false;
       plan.record.emit = std::move(before);
       noteDecline(plan, std::string(route->name()) + ": its text does not compile (" + failed + "); the next route writes the stage");
