@@ -243,6 +243,7 @@ json renderStageReport(const StageRecord& record) {
     report["mesa"] = {{"original", record.mesa->original}};
     if (!record.mesa->output.empty()) report["mesa"]["output"] = record.mesa->output;
     if (!record.mesa->driver.empty()) report["mesa"]["driver"] = record.mesa->driver;
+    if (!record.mesa->readAt.empty()) report["mesa"]["read_at"] = record.mesa->readAt;
   }
   if (record.output == StageRecord::Output::Copied) report["output"] = "copied";
   if (record.output == StageRecord::Output::Emitted) report["output"] = "emitted";

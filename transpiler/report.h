@@ -70,6 +70,7 @@ struct StageRecord {
   // "compiled", "refused", "unchecked: <why>"; the output's; the driver that gave it.
   struct MesaCheck {
     std::string original, output, driver;
+    std::string readAt;  // text without #version: the version Mesa compiled it at
   };
   std::optional<MesaCheck> mesa;
   enum class Output { None, Copied, Emitted } output = Output::None;

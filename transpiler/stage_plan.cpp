@@ -163,6 +163,13 @@ std::optional<std::string> versionIfNone(const StagePlan& plan) {
   return std::to_string(info.version) + (info.es && info.version != 100 ? " es" : "");
 }
 
+// The version text without #version is compiled at in Mesa: the one Mesa took the original at, else
+// the front end's.
+std::optional<std::string> mesaVersion(const StagePlan& plan) {
+  if (plan.record.mesa && !plan.record.mesa->readAt.empty()) return plan.record.mesa->readAt;
+  return versionIfNone(plan);
+}
+
 // Mesa's word (frontend/mesa_compiler.h) on the original text of a GLSL stage that `route` would
 // take where glslang did not say yes as written: true when the route may go on. Refused: the user
 // sees Mesa's errors (the driver's word), glslang's go. No verdict: refused with what to install,
@@ -173,6 +180,7 @@ bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, cons
   MesaVerdict verdict = compileWithMesa(plan.input->contents, stage, file, versionIfNone(plan));
   StageRecord::MesaCheck& check = plan.record.mesa.emplace();
   check.driver = verdict.driver;
+  check.readAt = verdict.version;
   switch (verdict.kind) {
     case MesaVerdict::Kind::Compiled:
       check.original = "compiled";
@@ -209,7 +217,7 @@ bool mesaAgreesOnOutput(StagePlan& plan, const std::string& output) {
   if (!plan.record.mesa || plan.record.mesa->original != "compiled") return true;
   const std::string& file = plan.input->path;
   const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
-  MesaVerdict verdict = compileWithMesa(output, stage, file, versionIfNone(plan));
+  MesaVerdict verdict = compileWithMesa(output, stage, file, mesaVersion(plan));
   if (verdict.kind == MesaVerdict::Kind::Compiled) {
     plan.record.mesa->output = "compiled";
     return true;
@@ -720,10 +728,10 @@ bool emitStage(StagePlan& plan) {
         if (runCompileCheck(original, plan.options, file, ignored, nullptr)) return false;  // glslang's word stands
         MesaVerdict verdict = compileWithMesa(plan.input->contents, check.stage, file, versionIfNone(plan));
         if (verdict.kind != MesaVerdict::Kind::Compiled) return false;
-        plan.record.mesa = StageRecord::MesaCheck{"compiled", "", verdict.driver};
+        plan.record.mesa = StageRecord::MesaCheck{"compiled", "", verdict.driver, verdict.version};
       }
       if (plan.record.mesa->original != "compiled") return false;
-      MesaVerdict output = compileWithMesa(check.text, check.stage, file, versionIfNone(plan));
+      MesaVerdict output = compileWithMesa(check.text, check.stage, file, mesaVersion(plan));
       if (output.kind != MesaVerdict::Kind::Compiled) return false;
       plan.record.mesa->output = "compiled";
       return true;

@@ -118,6 +118,8 @@ Mesa load() {
   return m;
 }
 
+MesaVerdict compileOnce(Mesa& m, const std::string& source, unsigned type, const std::string& file);
+
 Mesa& mesa() {
   static Mesa loaded = [] {
     ScopedCrashPhase phase(kMesaPhase);
@@ -171,11 +173,35 @@ MesaVerdict compileWithMesa(const std::string& text, Stage stage, const std::str
     return verdict;
   }
   ScopedCrashPhase phase(kMesaPhase);
-  // Text without #version is read at the version the loader prepends; Mesa numbers the line after
-  // `#line 0` as 1, so every line keeps its number.
-  std::string prefix;
-  if (versionIfNone && findVersion(text).begin == std::string::npos) prefix = "#version " + *versionIfNone + "\n#line 0\n";
-  const std::string source = prefix + text;
+  if (findVersion(text).begin == std::string::npos) {
+    // Text without #version is read at the version a loader prepends; Mesa numbers the line after
+    // `#line 0` as 1, so every line keeps its number.
+    static const char* const ladder[] = {"110", "100", "120", "130", "140", "150", "330", "400", "410",
+                                         "420", "430", "440", "450", "300 es", "310 es", "320 es"};
+    std::vector<std::string> versions;
+    if (versionIfNone) versions.push_back(*versionIfNone);
+    else versions.assign(std::begin(ladder), std::end(ladder));
+    MesaVerdict first;
+    for (const auto& version : versions) {
+      MesaVerdict tried = compileOnce(m, "#version " + version + "\n#line 0\n" + text, type, file);
+      tried.driver = m.driver;
+      if (tried.kind == MesaVerdict::Kind::Compiled) {
+        tried.version = version;
+        return tried;
+      }
+      if (&version == &versions.front()) first = std::move(tried);
+    }
+    return first;
+  }
+  MesaVerdict once = compileOnce(m, text, type, file);
+  once.driver = m.driver;
+  return once;
+}
+
+namespace {
+
+MesaVerdict compileOnce(Mesa& m, const std::string& source, unsigned type, const std::string& file) {
+  MesaVerdict verdict;
   const char* strings[] = {source.c_str()};
   const int lengths[] = {static_cast<int>(source.size())};
   unsigned shader = m.createShader(type);
@@ -202,5 +228,7 @@ MesaVerdict compileWithMesa(const std::string& text, Stage stage, const std::str
   if (verdict.errors.empty()) verdict.errors.push_back({Severity::Error, file, 0, 0, "Mesa: " + log});
   return verdict;
 }
+
+}  // namespace
 
 }  // namespace stereoshift

@@ -32,10 +32,15 @@ struct MesaVerdict {
   // Unavailable: why there is no verdict (no libEGL, no surfaceless display, a version Mesa lacks).
   std::string why;
   std::string driver;  // "Mesa 22.3.6 (llvmpipe (LLVM 15.0.6, 256 bits))" once a context exists
+  // Text without #version: the version it was compiled at ("330", "300 es"); empty otherwise.
+  std::string version;
 };
 
 // Mesa's verdict on `text` as a shader of `stage`, its messages naming `file`. `versionIfNone`: the
-// version a loader prepends to text without a #version line (the lines keep their numbers).
+// version a loader prepends to text without a #version line (the lines keep their numbers); without
+// it, such text is tried at each version Mesa has, from GLSL's default 110 up (an engine or a test
+// runner prepends the one it needs), and compiled at the first that takes it; refused with the
+// errors at 110 when none does.
 MesaVerdict compileWithMesa(const std::string& text, Stage stage, const std::string& file,
                             std::optional<std::string> versionIfNone = std::nullopt);
 
