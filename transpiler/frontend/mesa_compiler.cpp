@@ -180,7 +180,8 @@ MesaVerdict compileWithMesa(const std::string& text, Stage stage, const std::str
                                          "420", "430", "440", "450", "300 es", "310 es", "320 es"};
     std::vector<std::string> versions;
     if (versionIfNone) versions.push_back(*versionIfNone);
-    else versions.assign(std::begin(ladder), std::end(ladder));
+    for (const char* version : ladder)
+      if (!versionIfNone || *versionIfNone != version) versions.emplace_back(version);
     MesaVerdict first;
     for (const auto& version : versions) {
       MesaVerdict tried = compileOnce(m, "#version " + version + "\n#line 0\n" + text, type, file);

@@ -37,10 +37,10 @@ struct MesaVerdict {
 };
 
 // Mesa's verdict on `text` as a shader of `stage`, its messages naming `file`. `versionIfNone`: the
-// version a loader prepends to text without a #version line (the lines keep their numbers); without
-// it, such text is tried at each version Mesa has, from GLSL's default 110 up (an engine or a test
-// runner prepends the one it needs), and compiled at the first that takes it; refused with the
-// errors at 110 when none does.
+// version a loader prepends to text without a #version line (the lines keep their numbers), tried
+// first; then such text is tried at each version Mesa has, from GLSL's default 110 up (an engine or
+// a test runner prepends the one it needs), and compiled at the first that takes it; refused with
+// the errors of the first version tried when none does.
 MesaVerdict compileWithMesa(const std::string& text, Stage stage, const std::string& file,
                             std::optional<std::string> versionIfNone = std::nullopt);
 
