@@ -20,9 +20,10 @@ packages=(cmake ninja-build g++ python3 glslang-dev glslang-tools spirv-tools
 # Test mode only: clang and its runtimes for the sanitizer tree (ASan, UBSan, libFuzzer), and piglit,
 # whose shader_runner runs the GL-side execution tests in Mesa's OpenGL driver (execution.piglit).
 if [ "$mode" = test ]; then packages+=(clang-14 libclang-rt-14-dev piglit); fi
-# Bazel (its example test, integration.bazel_example, is skipped without it): opt-in, because its
-# install and its test add about a minute to a suite that CI runs within its time on two cores.
-if [ "$mode" = test ] && [ -n "${STEREOSHIFT_WITH_BAZEL:-}" ]; then packages+=(bazel-bootstrap); fi
+# Bazel and nginx (integration.bazel_example and integration.bazel_remote_cache, which serves Bazel's
+# --remote_cache from nginx's WebDAV module, are skipped without them): opt-in, because their install
+# (a JDK) and their tests add about a minute to a suite that CI runs within its time on two cores.
+if [ "$mode" = test ] && [ -n "${STEREOSHIFT_WITH_BAZEL:-}" ]; then packages+=(bazel-bootstrap nginx); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -14,82 +14,15 @@ Offline: the workspace has no external repositories. Exits 77 (ctest SKIP_RETURN
 not installed. Scratch files (and Bazel's output root) go under --work-dir only.
 """
 import argparse
-import json
 import os
 import shutil
 import subprocess
 import sys
 import time
 
-SKIP = 77
+from bazel_support import (PIPELINES, SINGLE_SHADERS, SHARED_INCLUDE, SKIP, USERS_OF_SHARED_INCLUDE, Bazel, check,
+                           edit_shared_include, pipelines_run)
 
-# The example's pipelines and the CLI options its BUILD.bazel gives them (kept in step by hand: this
-# table is the independent statement of what each target must produce).
-PIPELINES = {
-    "forward": (["shaders/glsl/forward.vert", "shaders/glsl/forward.frag"],
-                ["-I", "shaders/common", "-I", "{bin}/shaders/common"]),
-    "skybox": (["shaders/glsl/skybox.vert", "shaders/glsl/skybox.frag"],
-               ["--target", "essl", "--eye-source", "push-constant"]),
-    "terrain": (["shaders/hlsl/terrain_vs.hlsl", "shaders/hlsl/terrain_ps.hlsl"],
-                ["-I", "shaders/common", "-I", "{bin}/shaders/common", "--shift-form=select"]),
-}
-# Converted one by one (pipeline = False): each is its own CLI command and its own action.
-SINGLE_SHADERS = {"standalone": ["shaders/glsl/crosshair.vert", "shaders/glsl/particles.vert"]}
-SHARED_INCLUDE = "shaders/common/scene_limits.h"
-USERS_OF_SHARED_INCLUDE = {"forward", "terrain"}
-
-
-class Bazel:
-    def __init__(self, bazel, workspace, output_root, tool, rules):
-        self.bazel = bazel
-        self.workspace = workspace
-        # The user's ~/.bazelrc may add caches or remote services: not here. The system rc stays
-        # (Debian's bazel-bootstrap keeps its install base there).
-        self.startup = ["--nohome_rc", "--output_user_root=" + output_root, "--max_idle_secs=120"]
-        self.flags = ["--repo_env=STEREOSHIFT_TOOL=" + tool, "--override_repository=stereoshift_rules=" + rules]
-
-    def run(self, command, *args, check=True):
-        started = time.monotonic()
-        p = subprocess.run([self.bazel] + self.startup + [command] + list(args), cwd=self.workspace,
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        seconds = time.monotonic() - started
-        if check and p.returncode != 0:
-            sys.exit(f"FAIL: bazel {command} {' '.join(args)} exited {p.returncode}:\n{p.stdout}")
-        return p, seconds
-
-    def build(self, log_path, *extra, check=True):
-        p, seconds = self.run("build", *self.flags, "--execution_log_json_file=" + log_path, *extra, "//...", check=check)
-        return p, seconds, (read_execution_log(log_path) if os.path.exists(log_path) else [])
-
-
-def read_execution_log(path):
-    """The conversion spawns of one build (Bazel writes a stream of JSON objects, not one array)."""
-    text = open(path).read()
-    decoder = json.JSONDecoder()
-    spawns, at = [], 0
-    while True:
-        while at < len(text) and text[at].isspace():
-            at += 1
-        if at >= len(text):
-            break
-        entry, at = decoder.raw_decode(text, at)
-        if entry.get("mnemonic") == "StereoshiftConvert":
-            spawns.append(entry)
-    return spawns
-
-
-def pipelines_run(spawns):
-    """Which targets' actions ran: an output path is <bin>/<target>/<file>."""
-    names = set()
-    for spawn in spawns:
-        for output in spawn.get("listedOutputs", []):
-            names.add(output.split("/")[-2])
-    return names
-
-
-def check(condition, message):
-    if not condition:
-        sys.exit("FAIL: " + message)
 
 
 def compare_with_cli(tool, workspace, bin_dir, cli_dir):
@@ -170,11 +103,7 @@ def main():
             check(not spawns, f"{mode}: a no-op build reran {sorted(pipelines_run(spawns))}")
 
             # An edit that changes the shaders' outputs (a touch that keeps the bytes is no change to Bazel).
-            include = os.path.join(workspace, SHARED_INCLUDE)
-            text = open(include).read()
-            edited = text.replace("0.015", "0.02") if "0.015" in text else text.replace("0.02", "0.015")
-            check(edited != text, "the shared include has no fog density to edit")
-            open(include, "w").write(edited)
+            edit_shared_include(workspace)
             _, seconds, spawns = bazel.build(os.path.join(logs, mode + "-include.json"), *flags)
             timings.append((f"{mode}: rebuild after the include", seconds))
             check(pipelines_run(spawns) == USERS_OF_SHARED_INCLUDE,
