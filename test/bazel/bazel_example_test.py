@@ -13,7 +13,6 @@ promises.
 Offline: the workspace has no external repositories. Exits 77 (ctest SKIP_RETURN_CODE) when bazel is
 not installed. Scratch files (and Bazel's output root) go under --work-dir only.
 """
-import argparse
 import os
 import shutil
 import subprocess
@@ -21,7 +20,7 @@ import sys
 import time
 
 from bazel_support import (PIPELINES, SINGLE_SHADERS, SHARED_INCLUDE, SKIP, USERS_OF_SHARED_INCLUDE, Bazel, check,
-                           edit_shared_include, pipelines_run)
+                           edit_shared_include, parse_arguments, pipelines_run)
 
 
 
@@ -50,15 +49,8 @@ def compare_with_cli(tool, workspace, bin_dir, cli_dir):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--stereoshift", required=True)
-    parser.add_argument("--bazel", default=shutil.which("bazel"))
-    parser.add_argument("--rules", required=True, help="the bazel/ directory of this checkout")
-    parser.add_argument("--example", required=True, help="examples/bazel")
-    parser.add_argument("--work-dir", required=True)
-    args = parser.parse_args()
-    if not args.bazel or not shutil.which(args.bazel):
-        print("SKIP: bazel is not installed (Debian: apt-get install bazel-bootstrap)")
+    args = parse_arguments(__doc__)
+    if args is None:
         return SKIP
 
     total_started = time.monotonic()

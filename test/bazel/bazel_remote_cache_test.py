@@ -18,7 +18,6 @@ execution needs an executor and stays documented only (bazel/README.md).
 Exits 77 (ctest SKIP_RETURN_CODE) when bazel or nginx is not installed. Scratch files, Bazel's output
 roots and the cache go under --work-dir only.
 """
-import argparse
 import filecmp
 import grp
 import os
@@ -31,7 +30,7 @@ import sys
 import time
 
 from bazel_support import (PIPELINES, SINGLE_SHADERS, SKIP, USERS_OF_SHARED_INCLUDE, Bazel, check,
-                           edit_shared_include, pipelines_run)
+                           edit_shared_include, parse_arguments, pipelines_run)
 
 ALL_TARGETS = set(PIPELINES) | set(SINGLE_SHADERS)
 CONVERSIONS = len(PIPELINES) + sum(len(s) for s in SINGLE_SHADERS.values())
@@ -135,16 +134,9 @@ def executed(spawns):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--stereoshift", required=True)
-    parser.add_argument("--bazel", default=shutil.which("bazel"))
-    parser.add_argument("--nginx", default=shutil.which("nginx") or "/usr/sbin/nginx")
-    parser.add_argument("--rules", required=True, help="the bazel/ directory of this checkout")
-    parser.add_argument("--example", required=True, help="examples/bazel")
-    parser.add_argument("--work-dir", required=True)
-    args = parser.parse_args()
-    if not args.bazel or not shutil.which(args.bazel):
-        print("SKIP: bazel is not installed (Debian: apt-get install bazel-bootstrap)")
+    args = parse_arguments(__doc__, lambda parser: parser.add_argument(
+        "--nginx", default=shutil.which("nginx") or "/usr/sbin/nginx"))
+    if args is None:
         return SKIP
     if not os.access(args.nginx, os.X_OK):
         print("SKIP: nginx is not installed (Debian: apt-get install nginx)")

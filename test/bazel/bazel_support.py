@@ -24,6 +24,26 @@ SHARED_INCLUDE = "shaders/common/scene_limits.h"
 USERS_OF_SHARED_INCLUDE = {"forward", "terrain"}
 
 
+def parse_arguments(description, add_more=None):
+    """The options both Bazel tests take (and the test's own, from `add_more(parser)`); None when
+    bazel is not installed (the test then exits SKIP)."""
+    import argparse
+    import shutil
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--stereoshift", required=True)
+    parser.add_argument("--bazel", default=shutil.which("bazel"))
+    if add_more:
+        add_more(parser)
+    parser.add_argument("--rules", required=True, help="the bazel/ directory of this checkout")
+    parser.add_argument("--example", required=True, help="examples/bazel")
+    parser.add_argument("--work-dir", required=True)
+    args = parser.parse_args()
+    if not args.bazel or not shutil.which(args.bazel):
+        print("SKIP: bazel is not installed (Debian: apt-get install bazel-bootstrap)")
+        return None
+    return args
+
+
 def check(condition, message):
     if not condition:
         sys.exit("FAIL: " + message)
