@@ -10,7 +10,9 @@
 // (`r1.xyz = ...;`): swizzles of every width, cbuffer rows, matrix swizzles of one or several
 // components (`World._m00_m10_m20_m30`), `dot`, `mad` chains, `mul` and `transpose`, `cmp(a < b)`,
 // `asuint`/`asfloat` and integer casts, ternaries, `Load`/`SampleLevel`/`Sample`, intrinsics, and
-// `if` blocks; then the position (vertex) or the colour (pixel) from them. The file is named
+// `if` blocks, structured-buffer and immediate-constant-buffer reads, register-indexed cbuffer rows,
+// the bitfield inserts through `bitmask`, `sincos`, `GetDimensions` through `uiDest`, `f16tof32`,
+// `ddx_coarse` (pixel); then the position (vertex) or the colour (pixel) from them. The file is named
 // `<16 hex>-vs_replace.txt` / `-ps_replace.txt`, with 3Dmigoto's header and declarations, as in
 // ShaderFixes/. A crash, a sanitizer report or a broken API promise is a finding.
 #include "transpiler/stereoshift.h"
@@ -75,7 +77,12 @@ class DumpWriter {
     out += "  float4 CameraPosition : packoffset(c" + std::to_string(offset) + ");\n}\n\n";
     out += "\n\n\n// 3Dmigoto declarations\n#define cmp -\nTexture1D<float4> IniParams : register(t120);\n"
            "Texture2D<float4> StereoParams : register(t125);\n\nSamplerState s0_s : register(s0);\n"
-           "Texture2D<float4> t0 : register(t0);\n\n\nvoid main(\n";
+           "Texture2D<float4> t0 : register(t0);\n";
+    // A structured buffer and an immediate constant buffer, as the decompiler declares them.
+    out += "struct t1_t {\n  float val[16];\n};\nStructuredBuffer<t1_t> t1 : register(t1);\n\n";
+    out += "static const float4 icb[] = { { 1.000000, 0, 0, 0},\n                              { 0, 1.000000, 0, 0},\n"
+           "                              { 0, 0, 1.000000, 0},\n                              { 0, 0, 0, 1.000000} };\n";
+    out += "\n\nvoid main(\n";
     if (pixel_) {
       out += "  float4 v0 : SV_POSITION0,\n  float4 v1 : TEXCOORD0,\n  float3 v2 : TEXCOORD1,\n"
              "  out float4 o0 : SV_Target0)\n";
@@ -145,7 +152,7 @@ class DumpWriter {
 
   // An expression of `n` float components, `depth` levels of operators at most.
   std::string value(int n, int depth) {
-    const unsigned kinds = depth > 0 ? 16 : 5;
+    const unsigned kinds = depth > 0 ? 21 : 5;
     switch (c_.pick(kinds)) {
       case 0: return reg() + "." + swizzle(n, false);
       case 1: return "cb0[" + std::to_string(c_.pick(static_cast<unsigned>(cbufferRows_))) + "]." + swizzle(n, false);
@@ -182,6 +189,21 @@ class DumpWriter {
                                  : "t0.SampleLevel(s0_s, " + at + ", 1)." + swizzle(n, false);
         }
       }
+      // Indices from registers stay in range (an index out of range reads what nobody defined, so two
+      // compilations may differ): the register masked, as a compiler's own range proof would allow.
+      case 16:  // a cbuffer row picked by a register (skinning, instancing)
+        return "cb0[((uint)" + reg() + "." + swizzle(1, false) + " & 3) + " + std::to_string(c_.pick(4)) + "]." +
+               swizzle(n, false);
+      case 17: return "icb[((uint)" + reg() + "." + swizzle(1, false) + " & 3) + 0]." + swizzle(n, false);
+      case 18: {  // a structured buffer's dword at the decompiler's byte offset / 4
+        std::string s = n == 1 ? "" : vectorType(n) + "(";
+        for (int i = 0; i < n; ++i)
+          s += (i ? ", " : "") + std::string("t1[(uint)") + reg() + "." + swizzle(1, false) + " & 3].val[" +
+               std::to_string(4 * c_.pick(16)) + "/4]";
+        return n == 1 ? s : s + ")";
+      }
+      case 19: return "f16tof32(asuint(" + value(n, depth - 1) + "))";
+      case 20: return pixel_ ? "ddx_coarse(" + value(n, depth - 1) + ")" : "sqrt(abs(" + value(n, depth - 1) + "))";
       case 14: {
         static const char* const unary[] = {"rsqrt", "saturate", "abs", "frac", "sqrt", "exp2", "log2", "-"};
         return std::string(unary[c_.pick(8)]) + "(" + value(n, depth - 1) + ")";
@@ -203,6 +225,21 @@ class DumpWriter {
         for (unsigned k = 0, n = 1 + c_.pick(3); k < n; ++k) s += statement(nesting + 1);
       }
       return s + indent + "}\n";
+    }
+    switch (c_.pick(12)) {
+      case 0: {  // the decompiler's bitfield insert through `bitmask`
+        const char component = kComponents[c_.pick(4)];
+        const std::string width = std::to_string(1 + c_.pick(16)), offset = std::to_string(c_.pick(16));
+        const std::string target = reg() + "." + component;
+        return indent + "bitmask." + component + " = ((~(-1 << " + width + ")) << " + offset + ") & 0xffffffff;  " +
+               target + " = (((uint)" + reg() + "." + component + " << " + offset + ") & bitmask." + component +
+               ") | ((uint)" + target + " & ~bitmask." + component + ");\n";
+      }
+      case 1: return indent + "sincos(" + reg() + ".x, " + reg() + ".y, " + reg() + ".z);\n";
+      case 2: {  // a texture's size through uiDest
+        return indent + "t0.GetDimensions(0, uiDest.x, uiDest.y, uiDest.z);\n" + indent + reg() + ".xy = uiDest.xy;\n";
+      }
+      default: break;
     }
     int n = 1 + static_cast<int>(c_.pick(4));
     return indent + reg() + "." + swizzle(n, true) + " = " + value(n, 2) + ";\n";
