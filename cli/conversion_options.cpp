@@ -124,6 +124,11 @@ std::string validValues(const std::string& option) {
 }
 
 // Why `name` cannot name an injected declaration in GLSL and HLSL alike, or nothing when it can.
+std::optional<std::string> layoutNumberOutOfRange(const char* option, uint64_t value, uint64_t max) {
+  if (value <= max) return std::nullopt;
+  return std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to " + std::to_string(max) + ")";
+}
+
 std::optional<std::string> notAnInjectableName(const std::string& name) {
   static const std::set<std::string> kReserved = {
       "main", "attribute", "const", "uniform", "varying", "buffer", "shared", "layout", "centroid", "flat",
@@ -243,19 +248,16 @@ std::optional<std::string> finishShiftOptions(CliOptions& o) {
   // written; past the widths of its layout fields (a set below 63, a binding below 65535, a
   // specialization-constant id below 2047, a location below 4095) that re-compile fails, and past
   // 2^31 - 1 the number even reads as negative. Refused here instead, as the option's error.
-  auto outOfRange = [](const char* option, uint64_t value, uint64_t max) -> std::optional<std::string> {
-    if (value <= max) return std::nullopt;
-    return std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to " + std::to_string(max) + ")";
-  };
-  for (const auto& [name, value, max] : {std::tuple{"--set", o.set, uint64_t{62}},
-                                         std::tuple{"--binding", o.binding, uint64_t{65534}},
-                                         std::tuple{"--hlsl-register", o.hlslRegister, uint64_t{65534}},
-                                         std::tuple{"--gl-binding", o.glBinding, uint64_t{65534}}})
+  for (const auto& [name, value, max] : {std::tuple{"--set", o.set, kMaxDescriptorSet},
+                                         std::tuple{"--binding", o.binding, kMaxBinding},
+                                         std::tuple{"--hlsl-register", o.hlslRegister, kMaxBinding},
+                                         std::tuple{"--gl-binding", o.glBinding, kMaxBinding}})
     if (value)
-      if (auto problem = outOfRange(name, *value, max)) return problem;
+      if (auto problem = layoutNumberOutOfRange(name, *value, max)) return problem;
   // Up to eight eye parameters take consecutive ids from the base.
-  if (auto problem = outOfRange("--spec-id-base", o.t.eye.specIdBase, 2046 - 7)) return problem;
-  if (auto problem = outOfRange("--eye-varying-location", o.t.eye.eyeVaryingLocation, 4094)) return problem;
+  if (auto problem = layoutNumberOutOfRange("--spec-id-base", o.t.eye.specIdBase, kMaxSpecId - 7)) return problem;
+  if (auto problem = layoutNumberOutOfRange("--eye-varying-location", o.t.eye.eyeVaryingLocation, kMaxLocation))
+    return problem;
   o.t.eye.descriptorSet = o.set;
   o.t.eye.binding = o.binding;
   o.t.eye.hlslRegister = o.hlslRegister;

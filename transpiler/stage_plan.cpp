@@ -177,7 +177,13 @@ std::optional<std::string> mesaVersion(const StagePlan& plan) {
 bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, const char* route) {
   const std::string& file = plan.input->path;
   const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
-  MesaVerdict verdict = compileWithMesa(plan.input->contents, stage, file, versionIfNone(plan));
+  // Vulkan GLSL: glslang is its reference compiler, and OpenGL's cannot read it (descriptor sets,
+  // push constants): there is no second word to be had.
+  MesaVerdict verdict;
+  if (isVulkanGlslText(plan.input->contents))
+    verdict.why = "the shader is Vulkan GLSL, which only glslang, its reference compiler, reads; no OpenGL compiler can vouch for it";
+  else
+    verdict = compileWithMesa(plan.input->contents, stage, file, versionIfNone(plan));
   StageRecord::MesaCheck& check = plan.record.mesa.emplace();
   check.driver = verdict.driver;
   check.readAt = verdict.version;
@@ -206,9 +212,14 @@ bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, cons
     return true;
   }
   check.original = "no verdict: " + verdict.why;
-  plan.diags.note(file, std::string("the ") + route + " route is taken only where Mesa's GLSL compiler compiles the "
-                        "shader, and none could be asked (" + verdict.why + "): install " + kMesaPackages +
-                        ", or pass --unchecked-text-route to take it unchecked");
+  // An error where glslang's are not (the lifted copy parsed): the refusal must say why.
+  const std::string why = std::string("the ") + route + " route is taken only where Mesa's GLSL compiler compiles the "
+                          "shader, and none could be asked (" + verdict.why + "): install " + kMesaPackages +
+                          " where Mesa is missing, or pass --unchecked-text-route to take it unchecked";
+  if (plan.diags.hasErrors())
+    plan.diags.note(file, why);
+  else
+    plan.diags.error(file, why);
   return false;
 }
 

@@ -184,6 +184,8 @@ bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& p
          passes.shiftThisStage && passes.eye.select == EyeSelect::Parameter;
 }
 
+bool isVulkanGlslText(const std::string& text) { return readText(text).vulkan; }
+
 TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options) {
   TextOnlyShift result;
   VersionLine v = findVersion(input.contents);

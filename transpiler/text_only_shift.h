@@ -50,6 +50,10 @@ bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& p
 
 TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options);
 
+// Whether GLSL text says it is Vulkan GLSL (descriptor sets, push constants, Vulkan built-ins, subpass
+// inputs, GL_KHR_vulkan_glsl): OpenGL's compilers cannot judge it.
+bool isVulkanGlslText(const std::string& text);
+
 // HLSL (hlsl_text_only_shift.cpp): for text a decompiler wrote from a compiled shader (a 3Dmigoto
 // dump by its name or its header), which the D3D compiler accepted, so that glslang's refusal or
 // crash is glslang's gap. The HLSL splice alone: the entry point by its signature, the SV_Position

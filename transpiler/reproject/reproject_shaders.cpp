@@ -10,6 +10,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <tuple>
 #include <cstdio>
 #include <sstream>
 #include <utility>
@@ -152,9 +153,15 @@ std::vector<std::string> checkReprojectOptions(const ReprojectOptions& o) {
                                      "a float (") + values + "): choose a near plane of at least 1e-30 eye units");
     }
   }
-  // Bindings are written as layout numbers; glslang's layout fields hold bindings below 65535.
+  // Bindings are written as layout numbers; glslang's layout fields hold bindings below 65535 and sets
+  // below 63 (found by fuzz_reproject_options: `--set 148`).
   for (const auto& [option, value] : {std::pair{"--colour-binding", o.colourBinding}, std::pair{"--depth-binding", o.depthBinding}})
     if (value > 65534) problems.push_back(std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to 65534)");
+  for (const auto& [option, value, max] : {std::tuple{"--set", o.eye.descriptorSet, 62u}, std::tuple{"--binding", o.eye.binding, 65534u},
+                                           std::tuple{"--hlsl-register", o.eye.hlslRegister, 65534u}})
+    if (value && *value > max)
+      problems.push_back(std::string(option) + " " + std::to_string(*value) + " is out of range (valid: 0 to " +
+                         std::to_string(max) + ")");
   // In OpenGL ES a sampler's binding is a texture unit: below gl_MaxCombinedTextureImageUnits, which
   // glslang (and the re-compile check) takes as 80 (found by fuzz_reproject_options: an ESSL pass
   // with --depth-binding 2148 did not compile). The same for OpenGL GLSL (loose uniforms).

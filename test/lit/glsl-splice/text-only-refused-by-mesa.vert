@@ -18,7 +18,7 @@
 // RUN: env STEREOSHIFT_EGL_LIBRARY=none %not %stereoshift %s -o %t.none.vert 2>&1 | FileCheck %s --check-prefix=NONE
 // RUN: env STEREOSHIFT_EGL_LIBRARY=none %stereoshift %s --unchecked-text-route -o %t.unchecked.vert 2>&1 | FileCheck %s --check-prefix=UNCHECKED
 // NONE: error: {{.*}}textureSamplesUndeclared
-// NONE: note: the text-only route is taken only where Mesa's GLSL compiler compiles the shader, and none could be asked (no libEGL (STEREOSHIFT_EGL_LIBRARY=none)): install libegl1, libegl-mesa0 and libgl1-mesa-dri, or pass --unchecked-text-route to take it unchecked
+// NONE: note: the text-only route is taken only where Mesa's GLSL compiler compiles the shader, and none could be asked (no libEGL (STEREOSHIFT_EGL_LIBRARY=none)): install libegl1, libegl-mesa0 and libgl1-mesa-dri where Mesa is missing, or pass --unchecked-text-route to take it unchecked
 // UNCHECKED: warning: no GLSL compiler checked this shader, which glslang refuses (no libEGL (STEREOSHIFT_EGL_LIBRARY=none)): the text-only route is taken unchecked (--unchecked-text-route)
 uniform sampler2DMS depthSamples;
 in vec4 position;
