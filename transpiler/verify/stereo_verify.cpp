@@ -408,9 +408,17 @@ class StereoCheck {
     for (uint32_t c = 0; c < layoutA_.stride / 4; ++c) {
       if (c == px_) continue;
       const uint32_t cs = inStereo_[c];
+      // A copy of the position holds all of it: an output whose x merely equals the position's x at
+      // this vertex (an integer-valued output, a constant 0 beside x = 0) is no copy (found with
+      // generated game dumps, fuzz_decompiled_dump's generator).
+      auto copiesPositionHere = [&](uint32_t first) {
+        for (uint32_t k = 0; k < 4; ++k)
+          if (mono_.u32(vm, first + k) != mono_.u32(vm, px_ + k)) return false;
+        return true;
+      };
       bool staleCopy = false;
       for (const auto& f : layoutA_.fields)
-        staleCopy |= !f.isPosition && f.components == 4 && c == f.offset / 4 && mono_.u32(vm, c) == mono_.u32(vm, px_) &&
+        staleCopy |= !f.isPosition && f.components == 4 && c == f.offset / 4 && copiesPositionHere(c) &&
                      stereo.u32(vs, cs) != stereo.u32(vs, pxStereo_);
       if (staleCopy) {  // a copy of the position left mono: the 3Dmigoto "halo"
         result_.otherOutputsUnchanged = false;
