@@ -124,11 +124,6 @@ std::string validValues(const std::string& option) {
 }
 
 // Why `name` cannot name an injected declaration in GLSL and HLSL alike, or nothing when it can.
-std::optional<std::string> layoutNumberOutOfRange(const char* option, uint64_t value, uint64_t max) {
-  if (value <= max) return std::nullopt;
-  return std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to " + std::to_string(max) + ")";
-}
-
 std::optional<std::string> notAnInjectableName(const std::string& name) {
   static const std::set<std::string> kReserved = {
       "main", "attribute", "const", "uniform", "varying", "buffer", "shared", "layout", "centroid", "flat",

@@ -57,11 +57,6 @@ std::vector<std::string> splitCommas(const std::string& s);
 // names with it too.
 std::optional<std::string> notAnInjectableName(const std::string& name);
 
-// Layout numbers written into emitted text must fit glslang's layout fields (it re-compiles the text):
-// the largest of each, and the option's error for a value past it.
-constexpr uint64_t kMaxDescriptorSet = 62, kMaxBinding = 65534, kMaxSpecId = 2046, kMaxLocation = 4094;
-std::optional<std::string> layoutNumberOutOfRange(const char* option, uint64_t value, uint64_t max);
-
 // Every field of the options, for the incremental cache's key: two runs with the same description
 // produce the same outputs from the same inputs. A new TranspileOptions field must be added here.
 nlohmann::json describeOptions(const TranspileOptions& options);

@@ -15,8 +15,8 @@
 #include "transpiler/source/stage_rules.h"
 
 #include <algorithm>
-#include <functional>
 #include <cstring>
+#include <functional>
 
 namespace stereoshift {
 
@@ -364,10 +364,7 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
   TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
-  if (!takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only")) return false;
-  if (mesaAgreesOnOutput(plan, plan.output)) return true;
-  plan.output.clear();
-  return false;
+  return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only") && checkOutputWithMesa(plan);
 }
 
 namespace {
@@ -419,7 +416,7 @@ bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
     plan.diags.add(*own);
     std::string note = "the decompiled text is broken itself, so no D3D compiler made it: the text-only shift is not "
                        "taken";
-    if (auto dumped = stageOf3DMigotoDump(plan.input->path); dumped && plan.input->path.ends_with("_replace.txt"))
+    if (stageOfDecompiledDump(plan.input->path))
       note += "; 3Dmigoto's assembly dump of the same shader (" +
               plan.input->path.substr(0, plan.input->path.size() - std::string("_replace.txt").size()) +
               ".txt, export_shaders with asm) goes through the assembly route without a decompiler";

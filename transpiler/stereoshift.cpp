@@ -154,12 +154,12 @@ void handOnNextStageFacts(Plans& plans, const TranspileOptions& options, int las
 // options say where (--eye-source, single-pass stereo) or ask for what only other eye parameters
 // can be (another output language, a re-emit): a dump converted without --eye-source 3dmigoto would
 // otherwise get a cbuffer 3Dmigoto never fills, a shader that stays mono in the game. D3D assembly
-// reads the texture always (d3dasm/asm_route.h).
+// reads the texture always (d3dasm/asm_route.h): `input` is a source input, never assembly.
 bool takes3DMigotoEyeParamsByDefault(const SourceFile& input, const TranspileOptions& options) {
   return !options.eyeFrom3DMigoto && options.eye.source == EyeSource::Auto &&
          options.eye.select == EyeSelect::Parameter && !options.forceReemit &&
          (options.target == TargetLanguage::Auto || options.target == TargetLanguage::Hlsl) &&
-         (isDecompiledHlsl(input) || stageOf3DMigotoDump(input.path)) && !isD3DAssemblyInput(input);
+         (isDecompiledHlsl(input) || stageOf3DMigotoDump(input.path));
 }
 
 // Says so on a stage converted with the default: a note and the report.

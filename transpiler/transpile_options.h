@@ -6,6 +6,10 @@
 #include "transpiler/backend/back_end_options.h"
 #include "transpiler/frontend/front_end_options.h"
 
+#include <cstdint>
+#include <optional>
+#include <string>
+
 namespace stereoshift {
 
 struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
@@ -18,6 +22,15 @@ struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
 // (--eye-source 3dmigoto, and a dump's default): the passes analyse with a cbuffer of an internal
 // name in its place (so that the dump's own `StereoParams` declaration is no clash), the HLSL splice
 // renders the texture, and the fixes only the dump's text can carry are recorded for it.
+// Layout numbers written into emitted text must fit glslang's layout fields (it re-compiles the text):
+// the largest of each, and the option's error for a value past it (the conversion options and
+// `reproject`'s alike).
+constexpr uint64_t kMaxDescriptorSet = 62, kMaxBinding = 65534, kMaxSpecId = 2046, kMaxLocation = 4094;
+inline std::optional<std::string> layoutNumberOutOfRange(const char* option, uint64_t value, uint64_t max) {
+  if (value <= max) return std::nullopt;
+  return std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to " + std::to_string(max) + ")";
+}
+
 inline void readEyeParamsFrom3DMigoto(TranspileOptions& options) {
   options.eyeFrom3DMigoto = true;
   options.eye.source = EyeSource::UniformBlock;

@@ -75,12 +75,15 @@ std::map<std::string, std::string, std::less<>> matrixDeclarations(const source:
 // Where the receiver of the member access at `dot` begins: the token index of the first token of
 // the postfix chain before it (`World`, `Bones[r0.x]`, `Frame.Camera.ViewProj`), or `dot` when the
 // chain is not one of names, member accesses and indexing (a call, a parenthesised expression).
-size_t receiverBegin(const source::LexedText& lexed, size_t dot) {
+// `lastName`: the chain's last name, the matrix's own (`Bones[i]` -> Bones, `Frame.ViewProj` -> ViewProj).
+size_t receiverBegin(const source::LexedText& lexed, size_t dot, size_t* lastName) {
   size_t k = dot;
+  *lastName = dot;
   while (k > 0) {
     size_t before = k - 1;
     while (before > 0 && lexed[before].kind == source::TokenKind::Comment) --before;
     if (lexed.isIdentifier(before)) {
+      if (*lastName == dot) *lastName = before;
       k = before;
       size_t prior = k;
       while (prior > 0 && lexed[prior - 1].kind == source::TokenKind::Comment) --prior;
@@ -147,7 +150,8 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
     if (mayHaveMatrixSwizzle && lexed.isIdentifier(k) && lexed[k].isCode() && k > 0 && lexed.isPunct(k - 1, '.')) {
       std::vector<std::string> parts = matrixSwizzleComponents(lexed.text(k));
       if (parts.empty()) continue;
-      size_t begin = receiverBegin(lexed, k - 1);
+      size_t nameToken = k - 1;
+      size_t begin = receiverBegin(lexed, k - 1, &nameToken);
       if (begin == k - 1 || startsAssignment(lexed, lexed.nextNonComment(k))) continue;
       if (!edits.empty() && edits.back().end > lexed[begin].begin) continue;  // inside an earlier edit's text
       std::string_view receiver = lexed.text().substr(lexed[begin].begin, lexed[k - 1].begin - lexed[begin].begin);
@@ -157,16 +161,6 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
       if (!matricesRead) {
         matrixScalars = matrixDeclarations(lexed);
         matricesRead = true;
-      }
-      // The matrix's own name is the chain's last name (`Bones[i]` -> Bones, `Frame.ViewProj` -> ViewProj).
-      size_t nameToken = k - 2;
-      while (nameToken > begin && !lexed.isIdentifier(nameToken)) {
-        int depth = 0;  // a `]`: back to its `[`, then the name (or `]`) before it
-        for (; nameToken > begin; --nameToken) {
-          if (lexed.isPunct(nameToken, ']')) ++depth;
-          if (lexed.isPunct(nameToken, '[') && --depth == 0) break;
-        }
-        if (nameToken > begin) --nameToken;
       }
       auto scalar = matrixScalars.find(lexed.text(nameToken));
       std::string with = (scalar == matrixScalars.end() ? std::string("float") : scalar->second) +

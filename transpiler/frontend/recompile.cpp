@@ -1,12 +1,12 @@
 // The re-compile checks (see front_end.h): this turns emitted GLSL or HLSL text into a yes or no from
 // glslang, with its errors, under the conversion's environment (`--verify`, the splices' checks).
-#include "transpiler/source/lexer.h"
 #include "transpiler/frontend/front_end.h"
 
 #include "passes/crash_phase.h"
 #include "transpiler/frontend/glslang_invocation.h"
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/include_resolver.h"
+#include "transpiler/source/lexer.h"
 #include "transpiler/source/stage_rules.h"
 
 #include <glslang/Public/ResourceLimits.h>

@@ -10,9 +10,9 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
-#include <tuple>
 #include <cstdio>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace stereoshift {
@@ -155,13 +155,13 @@ std::vector<std::string> checkReprojectOptions(const ReprojectOptions& o) {
   }
   // Bindings are written as layout numbers; glslang's layout fields hold bindings below 65535 and sets
   // below 63 (found by fuzz_reproject_options: `--set 148`).
-  for (const auto& [option, value] : {std::pair{"--colour-binding", o.colourBinding}, std::pair{"--depth-binding", o.depthBinding}})
-    if (value > 65534) problems.push_back(std::string(option) + " " + std::to_string(value) + " is out of range (valid: 0 to 65534)");
-  for (const auto& [option, value, max] : {std::tuple{"--set", o.eye.descriptorSet, 62u}, std::tuple{"--binding", o.eye.binding, 65534u},
-                                           std::tuple{"--hlsl-register", o.eye.hlslRegister, 65534u}})
-    if (value && *value > max)
-      problems.push_back(std::string(option) + " " + std::to_string(*value) + " is out of range (valid: 0 to " +
-                         std::to_string(max) + ")");
+  for (const auto& [option, value, max] :
+       {std::tuple{"--colour-binding", std::optional<uint32_t>(o.colourBinding), kMaxBinding},
+        std::tuple{"--depth-binding", std::optional<uint32_t>(o.depthBinding), kMaxBinding},
+        std::tuple{"--set", o.eye.descriptorSet, kMaxDescriptorSet}, std::tuple{"--binding", o.eye.binding, kMaxBinding},
+        std::tuple{"--hlsl-register", o.eye.hlslRegister, kMaxBinding}})
+    if (value)
+      if (auto problem = layoutNumberOutOfRange(option, *value, max)) problems.push_back(*problem);
   // In OpenGL ES a sampler's binding is a texture unit: below gl_MaxCombinedTextureImageUnits, which
   // glslang (and the re-compile check) takes as 80 (found by fuzz_reproject_options: an ESSL pass
   // with --depth-binding 2148 did not compile). The same for OpenGL GLSL (loose uniforms).
