@@ -4,7 +4,7 @@
 #include "cli/build_cache.h"
 
 #include "cli/scene_manifest.h"
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/frontend/language_detect.h"
 #include "transpiler/source/file_io.h"

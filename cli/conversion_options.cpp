@@ -3,7 +3,7 @@
 #include "cli/conversion_options.h"
 
 #include "passes/pass_registry.h"
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "transpiler/source/identifiers.h"
 #include "transpiler/source/stage_rules.h"
 

@@ -1,7 +1,7 @@
 // See process_failure.h.
 #include "cli/process_failure.h"
 
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 #include "transpiler/frontend/known_crashes.h"
 #include "transpiler/source/file_io.h"
 

@@ -1,6 +1,6 @@
 // The words for a conversion whose process did not come back (crashed, killed at the time limit),
 // shared by the single-shader command and `build`: which part of the tool it was in (the phase the
-// worker published, passes/crash_phase.h), and the input construct known to trigger a crash there
+// worker published, core/crash_phase.h), and the input construct known to trigger a crash there
 // where the text shows one. A crash in the front end is a crash on this input, said as such.
 #pragma once
 

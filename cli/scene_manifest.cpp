@@ -1,5 +1,5 @@
 #include "cli/scene_manifest.h"
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "transpiler/source/stage_rules.h"
 
 #include <toml++/toml.h>

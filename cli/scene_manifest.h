@@ -13,7 +13,7 @@
 //   block-name = "StereoParams"   # any conversion option, overriding [defaults]
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <filesystem>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "cli/worker_pool.h"
 
 #include "cli/fd_io.h"
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 
 #include <poll.h>
 #include <signal.h>

@@ -20,7 +20,7 @@ struct TaskOutcome {
   bool completed = false;  // the task returned; `payload` is what it returned
   std::string payload;
   std::string failure;     // otherwise why not: "crashed (signal 11, SIGSEGV)", "timed out after 300 s"
-  std::string phase;       // and what it was doing then (passes/crash_phase.h): "the front end (glslang, ...)"
+  std::string phase;       // and what it was doing then (core/crash_phase.h): "the front end (glslang, ...)"
   double seconds = 0;      // wall time of the task
 };
 

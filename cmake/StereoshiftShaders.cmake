@@ -208,7 +208,7 @@ function(stereoshift_add_shaders target)
     # Sorted, so the command lines do not depend on the order the caller listed the stages in.
     list(SORT sources)
 
-    # The pipeline key is the CLI's (passes/shader.cpp readStagedName): the directory plus the file
+    # The pipeline key is the CLI's (transpiler/source/stage_rules.cpp readStagedName): the directory plus the file
     # name without its language extension and its stage part (a stage extension, else a stage word
     # at the end or the start of an HLSL/GLSL/FX name: basicVS, water_ps, VS_Sky).
     set(stage_tokens "vert|vertex|vs|tesc|tesscontrol|tcs|hs|hull|tese|tesseval|tessevaluation|tes|ds|domain|geom|geometry|gs|frag|fragment|fs|ps|pixel|comp|compute|cs|mesh|ms|task|as|amplification")

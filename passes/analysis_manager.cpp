@@ -2,7 +2,7 @@
 #include "passes/analysis_manager.h"
 
 #include "passes/analysis/stage_interface.h"
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 
 #include <spirv-tools/optimizer.hpp>
 

@@ -13,7 +13,7 @@
 
 #include "passes/ir/module.h"
 #include "passes/pass_options.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <cstdint>
 #include <string>

@@ -5,12 +5,12 @@
 #pragma once
 
 #include "passes/analysis_manager.h"
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "passes/ir/module.h"
 #include "passes/next_stage_facts.h"
 #include "passes/pass_options.h"
 #include "passes/run_record.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <memory>
 #include <optional>

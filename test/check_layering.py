@@ -1,19 +1,22 @@
 #!/usr/bin/env python3
 """Fails when a source file includes a header of a higher layer.
 
-The layers, bottom up (docs/architecture.md): passes/ (with passes/ir/), transpiler/ (frontend/,
-backend/, verify/, the driver), cli/. A file may include headers of its own layer and of the layers
-below. Product code (passes/, transpiler/, cli/) never includes test/ or bench/. Inside transpiler/,
-source/ (the lexer and the stage and file-name rules) is at the bottom: it includes only itself
-(and passes/), and every other part may include it. frontend/ and backend/ do not include each
-other, the driver or verify/: the driver sits on top of both and verify/ on top of the driver.
+The layers, bottom up (docs/architecture.md): core/ (a shader's stage and languages, diagnostics,
+crash phases), passes/ (with passes/ir/), transpiler/ (frontend/, backend/, verify/, the driver),
+cli/. A file may include headers of its own layer and of the layers below. Product code (core/,
+passes/, transpiler/, cli/) never includes test/ or bench/. Inside transpiler/, source/ (the lexer
+and the stage and file-name rules) is at the bottom: it includes only itself (and core/), and every
+other part may include it. frontend/ and backend/ do not include each other, the driver or verify/:
+the driver sits on top of both and verify/ on top of the driver. The parts that read text and know
+nothing of SPIR-V passes (source/, frontend/, d3dasm/) take the basic types from core/, never from
+passes/.
 """
 import argparse
 import pathlib
 import re
 import sys
 
-RANK = {"passes": 0, "transpiler": 1, "cli": 2}
+RANK = {"core": 0, "passes": 1, "transpiler": 2, "cli": 3}
 # Sub-layers of transpiler/: what each may include from transpiler/ besides itself.
 TRANSPILER_ALLOWED = {
     "source": {"source"},
@@ -22,6 +25,8 @@ TRANSPILER_ALLOWED = {
     "driver": {"source", "frontend", "backend", "driver"},
     "verify": {"source", "frontend", "backend", "driver", "verify"},
 }
+# Parts of transpiler/ that include core/ but nothing of passes/.
+BELOW_PASSES = {"source", "frontend", "d3dasm"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
@@ -50,6 +55,9 @@ def check(root: pathlib.Path) -> list[str]:
                     continue  # a system or package header spelled with quotes, or a file beside it
                 if RANK[head] > RANK[top]:
                     errors.append(where + f"{top}/ is below {head}/ but includes {target}")
+                    continue
+                if top == "transpiler" and head == "passes" and rel.parts[1] in BELOW_PASSES:
+                    errors.append(where + f"transpiler/{rel.parts[1]} takes its basic types from core/, not passes/ ({target})")
                     continue
                 if top == head == "transpiler":
                     mine, theirs = transpiler_part(rel), transpiler_part(target)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Fails when the code loses the shape docs/architecture.md promises.
 
-- No product source file (passes/, transpiler/, cli/) over 800 lines.
+- No product source file (core/, passes/, transpiler/, cli/) over 800 lines.
 - No function over 120 lines outside test/ (C++ in the product and bench/, Python in bench/ and
   scripts/): a body that long mixes phases that deserve names of their own.
 - The JSON report is an output, never an API: the keys that describe what passes found
@@ -22,7 +22,7 @@ import pathlib
 import re
 import sys
 
-PRODUCT = ("passes", "transpiler", "cli", "include")
+PRODUCT = ("core", "passes", "transpiler", "cli", "include")
 CXX = (".h", ".hpp", ".cpp", ".cc")
 MAX_FILE_LINES = 800
 MAX_FUNCTION_LINES = 120

@@ -5,7 +5,7 @@
 // 3Dmigoto's StereoParams texture.
 #include "transpiler/text_only_shift.h"
 
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/shift_emitter.h"
 #include "transpiler/backend/hlsl_splice.h"

@@ -1,7 +1,7 @@
 // The output version a single-pass mode needs (the driver raises an OpenGL GLSL output to it).
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 #include "transpiler/transpile_options.h"
 
 #include <optional>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "passes/run_record.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 #include "transpiler/backend/emit_facts.h"
 
 #include <nlohmann/json.hpp>

@@ -14,7 +14,7 @@
 #pragma once
 
 #include "passes/analysis_manager.h"
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "passes/ir/module.h"
 #include "passes/pass.h"
 #include "transpiler/backend/route.h"

@@ -1,8 +1,8 @@
 // stereoshift public API: turn one mono shader (or one pipeline of stages) into its stereo version.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "transpiler/transpile_options.h"
 #include "transpiler/report.h"
 

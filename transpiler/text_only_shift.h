@@ -15,9 +15,9 @@
 // binding the text names, unless the options ask for another source, set or binding.
 #pragma once
 
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "passes/pass_options.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 #include "transpiler/backend/back_end_options.h"
 #include "transpiler/transpile_options.h"
 

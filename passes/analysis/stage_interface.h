@@ -7,7 +7,7 @@
 #include "passes/analysis/view_vector_flow.h"
 #include "passes/ir/module.h"
 #include "passes/next_stage_facts.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <cstdint>
 #include <optional>

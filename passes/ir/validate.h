@@ -4,8 +4,8 @@
 // its own version). Used on the input, after each pass (--validate-each) and before emission.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 
 #include <cstdint>
 #include <string>

@@ -71,7 +71,7 @@ THIRD_PARTY_MODULES = [
 THIRD_PARTY_SOURCES = [(re.compile(r"/glslang/|/(HLSL|MachineIndependent)/"), "glslang"),
                        (re.compile(r"SPIRV-Tools|spirv-tools"), "spirv-tools"),
                        (re.compile(r"SPIRV-Cross|spirv[-_]cross", re.I), "spirv-cross")]
-OUR_DIRECTORIES = ("passes", "transpiler", "cli", "test", "include", "runtime", "src")
+OUR_DIRECTORIES = ("core", "passes", "transpiler", "cli", "test", "include", "runtime", "src")
 # Frames that belong to whoever called them: the C and C++ runtimes, the sanitizers and libFuzzer.
 NEUTRAL_MODULES = re.compile(r"(^|/)(libc|libstdc\+\+|libgcc_s|libm|libpthread|libdl|librt|ld-linux[\w-]*)"
                              r"[\w.-]*\.so|<unknown module>|linux-vdso")

@@ -1,7 +1,7 @@
 // The worker pool's scheduling by affinity group, with tasks that imitate glslang: the first task of
 // a group in a process pays a set-up (the built-in symbol tables), later ones do not.
 #include "cli/worker_pool.h"
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -75,7 +75,7 @@ TEST(WorkerPool, EveryTaskRunsOnceWithOneWorker) {
 }  // namespace
 }  // namespace stereoshift
 
-// A task that dies inside a marked phase (passes/crash_phase.h): its outcome names the signal and
+// A task that dies inside a marked phase (core/crash_phase.h): its outcome names the signal and
 // the phase; the worker after it starts with no phase; a task that dies outside every phase names none.
 namespace stereoshift {
 namespace {

@@ -1,6 +1,6 @@
 #include "transpiler/backend/back_end.h"
 
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 #include "transpiler/source/identifiers.h"
 
 #include <spirv_cross/spirv_glsl.hpp>

@@ -3,8 +3,8 @@
 // (reemit_route.h) calls it.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "passes/pass_options.h"
 #include "transpiler/backend/back_end_options.h"
 #include "transpiler/backend/route.h"

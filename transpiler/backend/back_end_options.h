@@ -1,7 +1,7 @@
 // The options the back end reads: the output language and version, and how it writes it.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <optional>
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "passes/ir/module.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 #include "transpiler/backend/back_end.h"
 
 namespace stereoshift {

@@ -28,8 +28,8 @@
 // where it was.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "passes/shift_emitter.h"
 
 #include <string>

@@ -36,7 +36,7 @@
 #pragma once
 
 #include "passes/run_record.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 #include "passes/shift_emitter.h"
 
 #include <cstdint>

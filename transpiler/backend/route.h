@@ -5,9 +5,9 @@
 // after it, by the driver, from the checks the route lists (EmitResult::checks).
 #pragma once
 
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 #include "passes/pass.h"
-#include "passes/shader.h"
+#include "core/shader.h"
 #include "transpiler/backend/back_end_options.h"
 #include "transpiler/backend/emit_facts.h"
 

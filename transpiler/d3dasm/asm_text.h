@@ -7,7 +7,7 @@
 // brace (`dcl_immediateConstantBuffer { {...},`) runs on until its braces close.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <optional>
 #include <string>

@@ -4,8 +4,8 @@
 // (recompile.cpp) checks emitted text. findVersion (glsl_version.h) reads the #version line.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "transpiler/frontend/front_end_options.h"
 #include "transpiler/frontend/glsl_version.h"
 #include "transpiler/source/stage_rules.h"

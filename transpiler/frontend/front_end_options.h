@@ -2,7 +2,7 @@
 // environment glslang parses for, the HLSL entry point, defines and include directories.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <map>
 #include <optional>
@@ -27,7 +27,7 @@ struct FrontEndOptions {
   // glslang crashed on this input in an earlier attempt (the conversion child died in its parser):
   // it is not run again; the stage is refused as glslang's, for the text-only shift to take.
   bool glslangCrashed = false;
-  // An earlier attempt crashed in a phase after the front end (passes/crash_phase.h names it: the
+  // An earlier attempt crashed in a phase after the front end (core/crash_phase.h names it: the
   // back end, the re-compile check, the folded copy once more): the analysis is not run again and the
   // stage is refused as above, for the text-only shift to take. Empty: no such crash.
   std::string crashedAfterFrontEnd;

@@ -2,7 +2,7 @@
 // read, the limits its tree must keep, and the SPIR-V it makes.
 #include "transpiler/frontend/glslang_invocation.h"
 
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/include_resolver.h"
 #include "transpiler/frontend/source_limits.h"

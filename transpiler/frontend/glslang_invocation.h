@@ -5,8 +5,8 @@
 // which attempts to make; verifyCompiles re-compiles emitted text with the same environment.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "transpiler/frontend/front_end_options.h"
 
 #include <glslang/Public/ShaderLang.h>

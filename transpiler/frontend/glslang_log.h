@@ -1,7 +1,7 @@
 // glslang info logs into diagnostics (file:line:col form).
 #pragma once
 
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 
 #include <string>
 #include <utility>

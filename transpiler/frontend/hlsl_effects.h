@@ -5,7 +5,7 @@
 // glslang's line numbers stay those of the file.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <set>
 #include <string>

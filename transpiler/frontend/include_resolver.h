@@ -5,7 +5,7 @@
 // source in all, an included file past the bracket limit (source_limits.h).
 #pragma once
 
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 
 #include <glslang/Public/ShaderLang.h>
 

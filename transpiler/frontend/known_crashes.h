@@ -2,7 +2,7 @@
 // message about a front end that died (transpiler/crash_phase.h) can say what to change.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <optional>
 #include <string>

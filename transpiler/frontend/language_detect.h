@@ -8,7 +8,7 @@
 // clearly say HLSL, so ESSL 100 / desktop 110 shaders without `#version` keep parsing as GLSL.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <optional>
 #include <string>

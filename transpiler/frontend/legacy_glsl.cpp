@@ -1,7 +1,7 @@
 // This turns ESSL 100 and desktop GLSL 110-150 into ESSL 310 / GLSL 330 for analysis: see legacy_glsl.h.
 #include "transpiler/frontend/legacy_glsl.h"
 
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 #include "transpiler/frontend/glsl_lift.h"
 #include "transpiler/source/lexer.h"
 

@@ -19,8 +19,8 @@
 // ES-only hints (a precision statement, an ES extension) is WebGL1's ESSL 100 (decideLegacyDialect).
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "transpiler/frontend/front_end.h"
 
 #include <string>

@@ -1,7 +1,7 @@
 // See mesa_compiler.h.
 #include "transpiler/frontend/mesa_compiler.h"
 
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 #include "transpiler/frontend/glsl_version.h"
 
 #include <dlfcn.h>

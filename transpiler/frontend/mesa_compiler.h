@@ -15,8 +15,8 @@
 // without Mesa).
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 
 #include <optional>
 #include <string>

@@ -2,7 +2,7 @@
 // glslang, with its errors, under the conversion's environment (`--verify`, the splices' checks).
 #include "transpiler/frontend/front_end.h"
 
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 #include "transpiler/frontend/glslang_invocation.h"
 #include "transpiler/frontend/glslang_log.h"
 #include "transpiler/frontend/include_resolver.h"

@@ -7,8 +7,8 @@
 // way. The maths is docs/stereo-math.md section 5.
 #pragma once
 
-#include "passes/diagnostics.h"
-#include "passes/shader.h"
+#include "core/diagnostics.h"
+#include "core/shader.h"
 #include "transpiler/transpile_options.h"
 
 #include <nlohmann/json.hpp>

@@ -1,10 +1,10 @@
 // How a shader's stage is told, and the other rules that read a shader's file name: the one place
 // every layer asks (the front end, the driver, the command line, `build`, the benchmarks). The
-// enums they answer in (Stage, TargetEnv) stay with what the passes know (passes/shader.h); the
+// enums they answer in (Stage, TargetEnv) stay with what the passes know (core/shader.h); the
 // stage pragma is read through the lexer, so a commented-out one is no pragma.
 #pragma once
 
-#include "passes/shader.h"
+#include "core/shader.h"
 
 #include <map>
 #include <optional>

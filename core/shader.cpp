@@ -1,5 +1,5 @@
 // The names of a shader's stage and target environment, and the stage facts the passes ask.
-#include "passes/shader.h"
+#include "core/shader.h"
 
 namespace stereoshift {
 

@@ -1,5 +1,5 @@
 // See crash_phase.h.
-#include "passes/crash_phase.h"
+#include "core/crash_phase.h"
 
 #include <sys/mman.h>
 

@@ -1,4 +1,4 @@
-#include "passes/diagnostics.h"
+#include "core/diagnostics.h"
 
 #include <algorithm>
 #include <sstream>
