@@ -44,7 +44,7 @@ bool runPassPipeline(PassContext& ctx, bool* changed, std::string* passLog) {
     // An error reported from code the pass emits on the way (a helper that could not declare what
     // it needed) fails the conversion like a pass that says Failed: nothing half-made is written.
     if (result != PassResult::Failed && ctx.diags.errorCount() > errorsBefore) result = PassResult::Failed;
-    ctx.record.passes.push_back({info.name, result, requiredBy[i]});
+    ctx.record.passes.push_back({info.name, result, requiredBy[i], result == PassResult::Changed ? info.edits : kNoEdits});
     if (result == PassResult::Failed) return false;
     if (result == PassResult::Changed) {
       *changed = true;

@@ -23,6 +23,7 @@ struct PassInfo {
   std::vector<const char*> requiredPasses;  // must have run first (the pass reads what they decide)
   AnalysisSet requiredAnalyses; // cached analyses it reads (computed on the first request)
   AnalysisSet preservedAnalyses;  // still valid after it changed the module
+  EditSet edits = kNoEdits;     // what its change to the module is, for the routes (none: analysis only)
 };
 
 // Every pass, in the order the pipeline runs them.

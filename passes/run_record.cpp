@@ -1,6 +1,8 @@
 // See run_record.h.
 #include "passes/run_record.h"
 
+#include <algorithm>
+
 namespace stereoshift {
 
 const char* toString(PassResult result) {
@@ -33,6 +35,34 @@ const PassStatus* RunRecord::status(const std::string& name) const {
 bool RunRecord::changed(const std::string& name) const {
   const PassStatus* pass = status(name);
   return pass && pass->result == PassResult::Changed;
+}
+
+std::vector<std::string> RunRecord::passesWithEditsBeyond(EditSet rendered) const {
+  std::vector<std::string> beyond;
+  for (const auto& pass : passes)
+    if (pass.result == PassResult::Changed && (pass.edits & ~rendered) != 0) beyond.push_back(pass.name);
+  std::sort(beyond.begin(), beyond.end());
+  return beyond;
+}
+
+bool RunRecord::madeEdit(EditKind kind) const {
+  return std::any_of(passes.begin(), passes.end(), [&](const PassStatus& pass) { return hasEdit(pass.edits, kind); });
+}
+
+std::string describeEdits(EditSet set) {
+  static constexpr std::pair<EditKind, const char*> kNames[] = {
+      {EditKind::EyeParameters, "eye parameters"},
+      {EditKind::PositionShift, "position shift"},
+      {EditKind::DerivedOutputShift, "derived-output shift"},
+      {EditKind::PositionAtDepth, "position at depth"},
+      {EditKind::SinglePassEye, "single-pass eye"},
+      {EditKind::PerEyeCamera, "per-eye camera"},
+      {EditKind::UnprojectionCorrection, "unprojection correction"},
+  };
+  std::string text;
+  for (const auto& [kind, name] : kNames)
+    if (hasEdit(set, kind)) text += (text.empty() ? "" : ", ") + std::string(name);
+  return text.empty() ? "none" : text;
 }
 
 }  // namespace stereoshift

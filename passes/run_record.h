@@ -29,12 +29,34 @@ enum class Classification {
 };
 const char* toString(Classification c);
 
-// One pass that ran: its result, and for a pass only pulled in by `--pass`, the named pass that
-// required it.
+// What a pass's change to the module is, in the terms a back-end route renders: a route that writes
+// the original text plus edits takes a stage only when it can render every kind the passes made
+// (routes never ask which pass ran). A pass declares its kinds beside its requirements (PassInfo);
+// the manager records them on the pass's status when it changed the module.
+enum class EditKind : uint32_t {
+  EyeParameters = 1u << 0,        // eyeSign, separation, convergence declared where the shader reads them
+  PositionShift = 1u << 1,        // the final clip position shifted at every return / emit
+  DerivedOutputShift = 1u << 2,   // outputs computed from the clip position shifted like it (halo)
+  PositionAtDepth = 1u << 3,      // a proven-2D position scaled to an eye depth
+  SinglePassEye = 1u << 4,        // the eye taken from the view or instance index and handed on
+  PerEyeCamera = 1u << 5,         // the per-eye camera position in view vectors
+  UnprojectionCorrection = 1u << 6,  // a depth-reconstructed position corrected per eye
+};
+using EditSet = uint32_t;
+constexpr EditSet kNoEdits = 0;
+constexpr EditSet operator|(EditKind a, EditKind b) { return static_cast<EditSet>(a) | static_cast<EditSet>(b); }
+constexpr EditSet operator|(EditSet a, EditKind b) { return a | static_cast<EditSet>(b); }
+constexpr bool hasEdit(EditSet set, EditKind kind) { return (set & static_cast<EditSet>(kind)) != 0; }
+// "eye parameters, position shift": the kinds in `set`, for messages and tests.
+std::string describeEdits(EditSet set);
+
+// One pass that ran: its result, the kinds of edit it made (none unless it changed the module), and
+// for a pass only pulled in by `--pass`, the named pass that required it.
 struct PassStatus {
   std::string name;
   PassResult result = PassResult::Unchanged;
   std::string requiredBy;
+  EditSet edits = kNoEdits;
 };
 
 // A construct whose value depends on the eye, as a per-eye pass found it: what it is and what was
@@ -161,6 +183,11 @@ struct RunRecord {
   const PassStatus* status(const std::string& name) const;
   bool ran(const std::string& name) const { return status(name) != nullptr; }
   bool changed(const std::string& name) const;
+  // The passes (by name, sorted, for the user's message) whose edits include a kind outside
+  // `rendered`: what only the IR carries, which a route rendering `rendered` would lose.
+  std::vector<std::string> passesWithEditsBeyond(EditSet rendered) const;
+  // Whether some pass made an edit of this kind.
+  bool madeEdit(EditKind kind) const;
 };
 
 }  // namespace stereoshift

@@ -544,11 +544,12 @@ void chooseStageOptions(StagePlan& plan, const TranspileOptions& options) {
 void keepOnlyCorrections(StagePlan& plan, PassContext& ctx) {
   if (ctx.classification != Classification::Perspective || !plan.changed) return;
   const HaloFacts& halo = ctx.record.halo;
-  bool copies = ctx.record.changed("halo") && halo.derivedOutputs.empty();
+  const bool haloEdited = ctx.record.madeEdit(EditKind::DerivedOutputShift);
+  bool copies = haloEdited && halo.derivedOutputs.empty();
   bool hlslVertex = plan.info.language == SourceLanguage::Hlsl && plan.info.stage == Stage::Vertex &&
                     resolveTarget(plan.info, plan.options) == TargetLanguage::Hlsl;
   if (copies && hlslVertex) return;
-  if (ctx.record.changed("halo"))
+  if (haloEdited)
     plan.diags.warning(plan.input->path, "--corrections-only: the outputs derived from the clip position (" +
                                              (halo.derivedOutputs.empty() ? halo.shiftedOutputs->front()
                                                                           : halo.derivedOutputs.front()) +
@@ -705,8 +706,7 @@ bool emitStage(StagePlan& plan) {
     }
     // 3Dmigoto's StereoParams texture is rendered by the HLSL splice alone; a stage that needs
     // another route to change it cannot take its eye parameters from there (a copy changes nothing).
-    if (plan.options.eyeFrom3DMigoto && route->name() != std::string_view("hlsl-source-splice") &&
-        route->name() != std::string_view("hlsl-pixel-splice") && route->name() != std::string_view("copy-through")) {
+    if (plan.options.eyeFrom3DMigoto && !route->takesStereoParamsTexture()) {
       plan.diags.error(file, std::string("--eye-source 3dmigoto: the eye parameters are 3Dmigoto's StereoParams texture, "
                                          "which only the HLSL source splice writes; this stage takes the ") +
                                  route->name() + " route" +

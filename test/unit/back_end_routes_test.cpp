@@ -2,6 +2,7 @@
 // driver asks them in order, so a route that takes too much (or too little) sends a stage down
 // the wrong road. The stages here are made by hand: a context with the facts each rule reads.
 #include "transpiler/backend/route.h"
+#include "passes/pass_registry.h"
 
 #include "test/unit/pass_fixture.h"
 
@@ -31,7 +32,10 @@ struct Stage_ {
     context = std::make_unique<PassContext>(module, options, info, diags, "t", *analyses);
     context->eye.source = EyeSource::UniformBlock;
   }
-  void changedBy(const std::string& pass) { context->record.passes.push_back({pass, PassResult::Changed, ""}); }
+  // As the pass manager records it: the pass's status with the kinds of edit its registry entry declares.
+  void changedBy(const std::string& pass) {
+    context->record.passes.push_back({pass, PassResult::Changed, "", findPass(pass)->edits});
+  }
   RouteDecision ask(const std::string& name, TargetLanguage target, bool changed = true) {
     EmitRequest request{input, *context, options, target, changed};
     request.inheritedInvalid = inheritedInvalid;
@@ -225,12 +229,34 @@ TEST(BackEndRoutes, ReemitTakesWhatIsLeft) {
             RouteDecision::Accept);
 }
 
-TEST(BackEndRoutes, ChangesBeyondWhatASpliceRenders) {
+TEST(BackEndRoutes, EditsBeyondWhatASpliceRenders) {
   RunRecord record;
-  record.passes = {{"stereo-shift", PassResult::Changed, ""}, {"per-eye-view", PassResult::Changed, ""},
-                   {"deferred-unprojection", PassResult::Unchanged, ""}, {"halo", PassResult::Changed, ""}};
-  EXPECT_EQ(changesBeyond(record, {"stereo-shift"}), (std::vector<std::string>{"halo", "per-eye-view"}));
-  EXPECT_TRUE(changesBeyond(record, {"stereo-shift", "per-eye-view", "halo"}).empty());
+  auto changed = [](const char* name) { return PassStatus{name, PassResult::Changed, "", findPass(name)->edits}; };
+  record.passes = {changed("stereo-shift"), changed("per-eye-view"),
+                   {"deferred-unprojection", PassResult::Unchanged, "", kNoEdits}, changed("halo")};
+  EXPECT_EQ(record.passesWithEditsBeyond(static_cast<EditSet>(EditKind::PositionShift)),
+            (std::vector<std::string>{"halo", "per-eye-view"}));
+  EXPECT_EQ(record.passesWithEditsBeyond(kGlslSpliceRenders), (std::vector<std::string>{"per-eye-view"}));
+  EXPECT_TRUE(record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera).empty());
+  EXPECT_TRUE(record.madeEdit(EditKind::DerivedOutputShift));
+  EXPECT_FALSE(record.madeEdit(EditKind::UnprojectionCorrection));  // the pass ran and changed nothing
+}
+
+// Every pass that can change the module says what its change is, each a kind of its own, so a route
+// that renders a kind renders exactly one pass's change; detection only classifies.
+TEST(BackEndRoutes, EveryChangingPassDeclaresItsEdits) {
+  EditSet seen = kNoEdits;
+  for (const PassInfo& info : passRegistry()) {
+    if (std::string(info.name) == "clip-position-detection") {
+      EXPECT_EQ(info.edits, kNoEdits);
+      continue;
+    }
+    EXPECT_NE(info.edits, kNoEdits) << info.name;
+    EXPECT_EQ(info.edits & seen, kNoEdits) << info.name << " shares a kind: " << describeEdits(info.edits & seen);
+    seen |= info.edits;
+  }
+  EXPECT_EQ(describeEdits(seen), "eye parameters, position shift, derived-output shift, position at depth, "
+                                 "single-pass eye, per-eye camera, unprojection correction");
 }
 
 }  // namespace

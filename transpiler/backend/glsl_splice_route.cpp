@@ -155,14 +155,14 @@ class GlslSpliceRoute final : public BackEndRoute {
       return RouteDecision::decline("not a GLSL pre-rasterisation stage kept in its own dialect");
     if (ctx.options.eye.select != EyeSelect::Parameter)
       return RouteDecision::decline(fallbackNote("the single-pass stereo modes are written by SPIRV-Cross"), true);
-    auto beyond = changesBeyond(ctx.record, {"clip-position-detection", "eye-params", "stereo-shift", "halo"});
+    auto beyond = ctx.record.passesWithEditsBeyond(kGlslSpliceRenders);
     if (!beyond.empty())
       return RouteDecision::decline(fallbackNote("the splice cannot carry what the " + beyond.front() + " pass changed"),
                                     true);
     // The splice writes the shift: only where the stereo-shift pass put one in the IR (not under
     // `--pass eye-params` alone, say).
     bool shifted = std::any_of(ctx.record.passes.begin(), ctx.record.passes.end(), [](const PassStatus& p) {
-      return p.name == "stereo-shift" && p.result == PassResult::Changed;
+      return hasEdit(p.edits, EditKind::PositionShift);
     });
     if (!ctx.shiftPosition || !shifted)
       return RouteDecision::decline(fallbackNote("the stage changed but its clip position is not shifted"), true);

@@ -27,10 +27,10 @@ namespace {
 // shader, halo copies that are the clip position itself. What any other pass changed lives only in
 // the IR, which this route throws away, so a change there is refused rather than lost.
 std::string spliceBlocker(const RunRecord& record, Stage stage) {
-  for (const auto& pass : changesBeyond(record, {"clip-position-detection", "eye-params", "stereo-shift"})) {
-    if (pass == "halo" && stage == Stage::Vertex) {
+  for (const auto& pass : record.passesWithEditsBeyond(EditKind::EyeParameters | EditKind::PositionShift)) {
+    if (record.status(pass)->edits == static_cast<EditSet>(EditKind::DerivedOutputShift) && stage == Stage::Vertex) {
       if (record.halo.derivedOutputs.empty()) continue;  // copies of the clip position: the splice shifts them too
-      return "the halo pass changed the output '" + record.halo.derivedOutputs.front() +
+      return "the " + pass + " pass changed the output '" + record.halo.derivedOutputs.front() +
              "', which is computed from the clip position (not a copy of it), and only the IR carries that";
     }
     return "it cannot carry what the " + pass + " pass changed";
@@ -62,6 +62,7 @@ std::string fallbackNote(const std::string& why) {
 class HlslSpliceRoute final : public BackEndRoute {
  public:
   const char* name() const override { return "hlsl-source-splice"; }
+  bool takesStereoParamsTexture() const override { return true; }
   bool needsOtherEntryPoints() const override { return true; }
 
   RouteDecision accepts(const EmitRequest& r) const override {

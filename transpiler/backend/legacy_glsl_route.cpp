@@ -59,8 +59,8 @@ class LegacyGlslRoute final : public BackEndRoute {
     };
     if (splice.fused) drop("--fused-shift (GLSL 1xx has no fma: the plain form is used)");
     if (splice.compensated) drop("--compensated-shift (GLSL 1xx has no `precise`: the plain form is used)");
-    // The splice renders the classification, the eye parameters, the shift and halo copies.
-    for (const auto& pass : changesBeyond(ctx.record, {"clip-position-detection", "eye-params", "stereo-shift", "halo"}))
+    // The splice renders the eye parameters, the shift and halo copies.
+    for (const auto& pass : ctx.record.passesWithEditsBeyond(kGlslSpliceRenders))
       drop("what the " + pass + " pass changed");
     // Halo outputs: exact copies of gl_Position are re-copied after the shift; derived ones are not.
     std::vector<std::string> copies = exactPositionCopies(r.input.contents);

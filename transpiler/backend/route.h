@@ -14,7 +14,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -100,6 +99,9 @@ class BackEndRoute {
   virtual bool needsValidModule() const { return true; }
   // Whether the route shifts the file's other entry points too (the driver converts them first).
   virtual bool needsOtherEntryPoints() const { return false; }
+  // Whether a stage whose eye parameters are 3Dmigoto's StereoParams texture (--eye-source 3dmigoto)
+  // may take the route: one that renders the texture's read, or one that changes nothing.
+  virtual bool takesStereoParamsTexture() const { return false; }
   virtual RouteDecision accepts(const EmitRequest& request) const = 0;
   // Emits an accepted stage; facts go to `facts`, errors to `diags`.
   virtual EmitResult emit(const EmitRequest& request, EmitFacts& facts, Diagnostics& diags) const = 0;
@@ -110,9 +112,10 @@ TargetLanguage resolveTarget(const SourceInfo& info, const BackEndOptions& optio
 // Whether the output is the input's own language and version (nothing to translate).
 bool sameLanguageOutput(const SourceInfo& info, TargetLanguage target, const BackEndOptions& options);
 
-// The passes that changed the module beyond what a source splice renders as text (`rendered`),
-// by name: what only the IR carries, which a splice would lose.
-std::vector<std::string> changesBeyond(const RunRecord& record, std::initializer_list<std::string_view> rendered);
+// The edits the GLSL source splices (glsl_splice.h, the legacy route) render as text: the eye
+// parameters, the shift and halo copies. Any other edit lives only in the IR (RunRecord::
+// passesWithEditsBeyond names the passes that made one).
+constexpr EditSet kGlslSpliceRenders = EditKind::EyeParameters | EditKind::PositionShift | EditKind::DerivedOutputShift;
 
 // The routes in the order the driver asks them: copy-through, SPIR-V binary, SPIR-V assembly, the
 // HLSL source splice, the HLSL pixel-shader correction splice, the legacy GLSL source splice, the GLSL source splice, SPIRV-Cross's re-emit

@@ -27,15 +27,6 @@ bool sameLanguageOutput(const SourceInfo& info, TargetLanguage target, const Bac
           !options.targetVersion);
 }
 
-std::vector<std::string> changesBeyond(const RunRecord& record, std::initializer_list<std::string_view> rendered) {
-  std::vector<std::string> changed;
-  for (const auto& pass : record.passes)
-    if (pass.result == PassResult::Changed && std::find(rendered.begin(), rendered.end(), pass.name) == rendered.end())
-      changed.push_back(pass.name);
-  std::sort(changed.begin(), changed.end());
-  return changed;
-}
-
 namespace {
 
 // Nothing to inject: the input is already its own drop-in replacement, byte for byte.
@@ -43,6 +34,7 @@ class CopyThroughRoute final : public BackEndRoute {
  public:
   const char* name() const override { return "copy-through"; }
   bool needsValidModule() const override { return false; }
+  bool takesStereoParamsTexture() const override { return true; }  // a copy reads no eye parameters
   RouteDecision accepts(const EmitRequest& r) const override {
     if (r.changed || r.options.forceReemit || !sameLanguageOutput(r.context.source, r.target, r.options))
       return RouteDecision::decline("the shader changed, or another language or version is asked for");
