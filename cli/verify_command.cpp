@@ -87,7 +87,7 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
 int verifyInThisProcess(const std::vector<SourceFile>& sources, const TranspileOptions& options,
                         const VerifyCommandOptions& verify) {
   for (const SourceFile& source : sources) {
-    if (!isD3DAssemblyInput(source)) continue;
+    if (decideInputKind(source) != InputKind::D3DAssembly) continue;
     if (sources.size() == 1) return runAssemblyVerify(source, options, verify);
     std::cerr << source.path << ": error: D3D shader assembly is verified one file at a time\n1 error generated.\n";
     return 1;

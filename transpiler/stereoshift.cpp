@@ -6,6 +6,7 @@
 
 #include "passes/pass_manager.h"
 #include "transpiler/d3dasm/asm_route.h"
+#include "transpiler/d3dasm/asm_text.h"
 #include "transpiler/source/lexer.h"
 #include "transpiler/source/stage_rules.h"
 #include "transpiler/stage_plan.h"
@@ -172,8 +173,13 @@ void note3DMigotoDefault(const SourceFile& input, TranspileResult& result) {
 
 }  // namespace
 
+InputKind decideInputKind(const SourceFile& input) {
+  // By content: its first line that is not a comment is a shader-model line (vs_5_0, ...).
+  return d3dasm::isD3DAssembly(input.contents) ? InputKind::D3DAssembly : InputKind::Source;
+}
+
 TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
-  if (isD3DAssemblyInput(input)) return convertAssemblyStage(input, options);
+  if (decideInputKind(input) == InputKind::D3DAssembly) return convertAssemblyStage(input, options);
   StagePlan plan;
   plan.input = &input;
   if (!takes3DMigotoEyeParamsByDefault(input, options)) return convertStage(plan, options);
@@ -185,18 +191,15 @@ TranspileResult transpile(const SourceFile& input, const TranspileOptions& optio
 }
 
 std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& stages, const TranspileOptions& options) {
+  std::vector<InputKind> kinds;
+  for (const auto& stage : stages) kinds.push_back(decideInputKind(stage));
   // A pipeline of 3Dmigoto dumps (assembly or decompiled) takes 3Dmigoto's eye parameters by default.
   bool dumps = false, others = false;
-  for (const auto& stage : stages)
-    if (!isD3DAssemblyInput(stage)) (takes3DMigotoEyeParamsByDefault(stage, options) ? dumps : others) = true;
-  if (dumps && !others) {
-    TranspileOptions dump = options;
-    readEyeParamsFrom3DMigoto(dump);
-    std::vector<TranspileResult> results = transpilePipeline(stages, dump);
-    for (size_t i = 0; i < results.size() && i < stages.size(); ++i)
-      if (!isD3DAssemblyInput(stages[i])) note3DMigotoDefault(stages[i], results[i]);
-    return results;
-  }
+  for (size_t i = 0; i < stages.size(); ++i)
+    if (kinds[i] == InputKind::Source) (takes3DMigotoEyeParamsByDefault(stages[i], options) ? dumps : others) = true;
+  const bool dumpDefault = dumps && !others;
+  TranspileOptions pipelineOptions = options;
+  if (dumpDefault) readEyeParamsFrom3DMigoto(pipelineOptions);
   // Every stage decided once; each source stage through the front end once, its module parsed for
   // the questions below; the conversion of each stage reuses all of it.
   Plans plans;
@@ -204,13 +207,13 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < stages.size(); ++i) {
     auto plan = std::make_unique<StagePlan>();
     plan->input = &stages[i];
-    const bool assembly = isD3DAssemblyInput(stages[i]);
+    const bool assembly = kinds[i] == InputKind::D3DAssembly;
     if (assembly) {
       // Converted on its own (convertAssemblyStage, no front end); its stage is its shader model's.
       plan->stage.emplace();
       plan->stage->stage = assemblyStage(stages[i]);
     } else {
-      plan->stage = decideInputStage(stages[i], options);
+      plan->stage = decideInputStage(stages[i], pipelineOptions);
     }
     // Of several compilation units of the last stage (OpenGL links a stage from several shader
     // objects), the one that defines `main` takes the shift: its wrapper shifts what the others write.
@@ -220,13 +223,13 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       lastRank = rank;
     }
     if (!assembly && goesThroughFrontEnd(stages[i])) {
-      runFrontEnd(*plan, options);
-      parseEarly(*plan, options);
+      runFrontEnd(*plan, pipelineOptions);
+      parseEarly(*plan, pipelineOptions);
     }
     plans.push_back(std::move(plan));
   }
-  TranspileOptions pipelineOptions = pipelineBinding(plans, options);
-  handOnNextStageFacts(plans, options, last);
+  pipelineOptions = pipelineBinding(plans, pipelineOptions);
+  handOnNextStageFacts(plans, pipelineOptions, last);
   std::vector<TranspileResult> results;
   for (size_t i = 0; i < plans.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
@@ -235,11 +238,12 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       return other != plans[i] && other->stage && plans[i]->stage && other->stage->stage &&
              other->stage->stage == plans[i]->stage->stage;
     });
-    if (isD3DAssemblyInput(stages[i])) {
+    if (kinds[i] == InputKind::D3DAssembly) {
       results.push_back(convertAssemblyStage(stages[i], stageOptions));
       continue;
     }
     results.push_back(convertStage(*plans[i], stageOptions));
+    if (dumpDefault) note3DMigotoDefault(stages[i], results.back());
   }
   return results;
 }

@@ -30,6 +30,13 @@ struct TranspileResult {
   std::vector<uint32_t> originalSpirv;  // the input as the front end made it, before any pass
 };
 
+// What an input is, decided once per input (here only): its way through the driver follows from it.
+enum class InputKind {
+  Source,       // GLSL, HLSL or SPIR-V: the front end, the passes, a back-end route
+  D3DAssembly,  // D3D shader assembly (a 3Dmigoto dump): the assembly reader, no front end or SPIR-V
+};
+InputKind decideInputKind(const SourceFile& input);
+
 // Converts one shader.
 TranspileResult transpile(const SourceFile& input, const TranspileOptions& options);
 

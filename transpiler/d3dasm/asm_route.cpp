@@ -4,8 +4,6 @@
 
 namespace stereoshift {
 
-bool isD3DAssemblyInput(const SourceFile& input) { return d3dasm::isD3DAssembly(input.contents); }
-
 std::optional<Stage> assemblyStage(const SourceFile& input) {
   d3dasm::AsmText text;
   d3dasm::AsmError error;

@@ -10,8 +10,6 @@
 
 namespace stereoshift {
 
-// By content: its first line that is not a comment is a shader-model line (vs_5_0, ...).
-bool isD3DAssemblyInput(const SourceFile& input);
 // Its stage, from its shader-model line (nullopt: not assembly, or a model without a stage).
 std::optional<Stage> assemblyStage(const SourceFile& input);
 
