@@ -113,8 +113,8 @@ int main(int argc, char** argv) {
       ++shaders;
       injected += double(instructionCount(stages.back().transpiled)) - double(instructionCount(stages.back().original));
       VerifySettings s;
-      s.cutoff = o.cutoff != CutoffMode::None;
-      s.cutoffEpsilon = o.cutoff == CutoffMode::Exact ? 0.0f : o.cutoffEpsilon;
+      s.cutoff = o.cutoff;
+      s.cutoffEpsilon = o.cutoffEpsilon;
       VerifyResult r = verifyStereo(*context, stages, s);
       if (!r.error.empty()) continue;
       ++pipelinesRun;

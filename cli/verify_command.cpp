@@ -35,9 +35,9 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
     return 0;
   }
   d3dasm::AsmVerifyOptions settings;
-  const d3dasm::AsmShiftOptions shift = assemblyShiftOptions(options);
+  const ShiftSpec shift = assemblyShiftSpec(options);
   settings.cutoff = shift.cutoff;
-  settings.cutoffEpsilon = shift.cutoffEpsilon;
+  settings.cutoffEpsilon = shift.epsilon;
   d3dasm::AsmVerifyResult r = d3dasm::verifyAssemblyConversion(input.contents, converted.output, settings);
   if (!r.ran) {
     if (verify.json)
@@ -123,8 +123,8 @@ int verifyInThisProcess(const std::vector<SourceFile>& sources, const TranspileO
   harness::VerifySettings settings;
   settings.separation = verify.separation;
   settings.convergence = verify.convergence;
-  settings.cutoff = options.cutoff != CutoffMode::None;
-  settings.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
+  settings.cutoff = options.cutoff;
+  settings.cutoffEpsilon = options.cutoffEpsilon;
   // The bound of the arithmetic that was injected: 1 ULP for the compensated form, else the
   // analytic 2.5 ULP of three separately rounded fp32 operations (test/harness/stereo_verify.h).
   if (options.compensatedShift) settings.maxUlps = 1.0;

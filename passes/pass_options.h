@@ -5,6 +5,8 @@
 // conversion's TranspileOptions is all three.
 #pragma once
 
+#include "core/shift_spec.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -30,8 +32,6 @@ enum class EyeSelect { Parameter, ViewIndex, InstanceIndex };
 // Where instanced stereo sends each eye: a layer of a layered target, or a viewport (side by side).
 enum class EyeRoute { Layer, Viewport };
 
-enum class CutoffMode { Epsilon, Exact, None };
-enum class ShiftForm { Branch, Select };
 
 struct EyeParamOptions {
   EyeSource source = EyeSource::Auto;

@@ -13,9 +13,7 @@ using spirv::Instruction;
 
 ShiftSpec makeShiftSpec(const PassOptions& options, bool preciseSupported) {
   ShiftSpec spec;
-  // A zero (or negative) epsilon is the driver's rule, w != 1: one name for one behaviour.
-  spec.cutoff = options.cutoff == CutoffMode::Epsilon && options.cutoffEpsilon <= 0.0f ? CutoffMode::Exact
-                                                                                        : options.cutoff;
+  spec.cutoff = normalisedCutoff(options.cutoff, options.cutoffEpsilon);
   spec.epsilon = options.cutoffEpsilon;
   spec.form = options.shiftForm;
   spec.fused = options.fusedShift;

@@ -1,13 +1,13 @@
-// The one description of the stereo shift, `x' = x + (eyeSign*separation)*(w - convergence)` under
-// its cutoff, and its rendering as SPIR-V. A ShiftSpec is made once from the options; the IR
-// emitters below render it as instructions (the stereo-shift and halo passes, so the position and
-// its halo copies are shifted by exactly the same sequence, bit for bit), and the HLSL source
-// splice renders the same spec as text (transpiler/backend/hlsl_splice/shift_text.h).
+// The SPIR-V printer of the shift (core/shift_spec.h): a ShiftSpec is made once from the options;
+// the IR emitters below render it as instructions (the stereo-shift and halo passes, so the position
+// and its halo copies are shifted by exactly the same sequence, bit for bit). The text printers
+// render the same spec (the GLSL and HLSL splices, D3D assembly).
 #pragma once
 
 #include "passes/ir/module.h"
 #include "passes/pass_options.h"
 #include "core/shader.h"
+#include "core/shift_spec.h"
 
 #include <cstdint>
 #include <string>
@@ -16,21 +16,6 @@
 namespace stereoshift {
 
 struct PassContext;
-
-// Everything that decides which arithmetic the shift is and how it is guarded.
-struct ShiftSpec {
-  // Epsilon: shift when |w - 1| > epsilon; Exact: when w != 1; None: always (still never in a mono
-  // draw, eyeSign 0). Normalised: Epsilon only with a positive epsilon (a zero one is Exact).
-  CutoffMode cutoff = CutoffMode::Epsilon;
-  float epsilon = 1e-5f;
-  ShiftForm form = ShiftForm::Branch;  // if around the shift, or a branch-free select
-  bool fused = false;        // fma(eyeSign*separation, w - convergence, x): one rounding less
-  bool compensated = false;  // error-free transformations, every operation NoContraction / precise
-  bool precise = true;       // NoContraction (`precise`) on the shift, so every copy rounds alike
-  std::string eyeSignName = "eyeSign";
-  std::string separationName = "separation";
-  std::string convergenceName = "convergence";
-};
 
 // The spec the options ask for. `preciseSupported`: whether the output language can express
 // NoContraction (see targetSupportsPrecise); names are the configured ones.

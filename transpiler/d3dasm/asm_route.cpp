@@ -11,11 +11,15 @@ std::optional<Stage> assemblyStage(const SourceFile& input) {
   return d3dasm::stageOfShaderModel(text.model);
 }
 
-d3dasm::AsmShiftOptions assemblyShiftOptions(const TranspileOptions& options) {
-  d3dasm::AsmShiftOptions shift;
-  shift.cutoff = options.cutoff != CutoffMode::None;
-  shift.cutoffEpsilon = options.cutoff == CutoffMode::Exact ? 0.0f : options.cutoffEpsilon;
-  return shift;
+ShiftSpec assemblyShiftSpec(const TranspileOptions& options) {
+  ShiftSpec spec;
+  spec.cutoff = normalisedCutoff(options.cutoff, options.cutoffEpsilon);
+  spec.epsilon = options.cutoffEpsilon;
+  spec.form = ShiftForm::Select;
+  spec.eyeSignName.clear();
+  spec.separationName = "StereoParams.x";
+  spec.convergenceName = "StereoParams.y";
+  return spec;
 }
 
 namespace {
@@ -45,7 +49,7 @@ TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOpt
     result.report = renderStageReport(record);
     return result;
   };
-  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, assemblyShiftOptions(options));
+  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, assemblyShiftSpec(options));
   if (!shifted.ok)
     return fail(static_cast<int>(shifted.error.line), static_cast<int>(shifted.error.column), shifted.error.message);
   const std::optional<Stage> stage = shifted.stage;

@@ -213,7 +213,7 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
 // The block before each return or emit: read StereoParams into rS, shift rP.x into rS.x where the
 // cutoff lets it, write the position out.
 std::vector<std::string> shiftBlock(const std::string& out, const std::string& mask, const std::string& rP,
-                                    const std::string& rS, bool sm5, const AsmShiftOptions& options) {
+                                    const std::string& rS, bool sm5, const ShiftSpec& spec) {
   std::vector<std::string> shift = {
       "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)",
       (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
@@ -221,10 +221,10 @@ std::vector<std::string> shiftBlock(const std::string& out, const std::string& m
       "mad " + rS + ".w, " + rS + ".x, " + rS + ".w, " + rP + ".x",
       "ne " + rS + ".x, " + rS + ".x, l(0.000000)",
   };
-  if (options.cutoff) {
-    if (options.cutoffEpsilon > 0) {
+  if (const CutoffMode cutoff = normalisedCutoff(spec.cutoff, spec.epsilon); cutoff != CutoffMode::None) {
+    if (cutoff == CutoffMode::Epsilon) {
       shift.push_back("add " + rS + ".y, " + rP + ".w, l(-1.000000)");
-      shift.push_back("lt " + rS + ".y, l(" + floatLiteral(options.cutoffEpsilon) + "), |" + rS + ".y|");
+      shift.push_back("lt " + rS + ".y, l(" + floatLiteral(spec.epsilon) + "), |" + rS + ".y|");
     } else {
       shift.push_back("ne " + rS + ".y, " + rP + ".w, l(1.000000)");
     }
@@ -240,7 +240,7 @@ std::vector<std::string> shiftBlock(const std::string& out, const std::string& m
 
 }  // namespace
 
-AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& options) {
+AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
   AsmShiftResult result;
   AsmText text;
   if (!parseAssembly(source, &text, &result.error)) return result;
@@ -318,7 +318,7 @@ AsmShiftResult shiftAssembly(const std::string& source, const AsmShiftOptions& o
     return result;
   }
 
-  const std::vector<std::string> shift = shiftBlock(out, d.positionMask, rP, rS, text.model.major >= 5, options);
+  const std::vector<std::string> shift = shiftBlock(out, d.positionMask, rP, rS, text.model.major >= 5, spec);
   for (size_t k : sites) edits.before[k] = shift;
   result.sites = static_cast<int>(sites.size());
 

@@ -31,6 +31,7 @@
 // `// stereoshift was: <the line as written>`, so the original text can be recovered exactly.
 #pragma once
 
+#include "core/shift_spec.h"
 #include "transpiler/d3dasm/asm_text.h"
 
 #include <optional>
@@ -38,11 +39,6 @@
 #include <vector>
 
 namespace stereoshift::d3dasm {
-
-struct AsmShiftOptions {
-  bool cutoff = true;
-  float cutoffEpsilon = 1e-5f;  // 0: the driver's exact w != 1
-};
 
 struct AsmShiftResult {
   bool ok = false;
@@ -61,7 +57,10 @@ struct AsmShiftResult {
   bool declaredStereoParams = false;  // t125 declared by the edit (false: the dump's own reused)
 };
 
-AsmShiftResult shiftAssembly(const std::string& text, const AsmShiftOptions& options);
+// The assembly printer of the shift renders the spec's cutoff (core/shift_spec.h) with the eye's sign
+// in 3Dmigoto's separation: branch-free (`movc`), the product and sum as one `mad`, whose fusing D3D
+// leaves to the driver; the spec's form, fused, compensated and names have no assembly spelling.
+AsmShiftResult shiftAssembly(const std::string& text, const ShiftSpec& spec);
 
 // The original text of an output of shiftAssembly: the marked blocks dropped and each
 // `// stereoshift was:` line restored (the check that the edits are all marked).

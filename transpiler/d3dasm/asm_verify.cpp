@@ -70,7 +70,8 @@ struct Sample {
   std::map<uint32_t, std::vector<Vec4>> cbuffers;
 };
 
-Sample makeSample(const Program& program, const std::set<uint32_t>& integers, int number, Random& random) {
+Sample makeSample(const Program& program, const std::set<uint32_t>& integers, int number, Random& random,
+                  const std::vector<std::array<float, 4>>& firstInputValues) {
   Sample sample;
   sample.number = number;
   // A quarter of the sets: unit-vector rows, so that transforms built of cb rows (and the input
@@ -84,6 +85,10 @@ Sample makeSample(const Program& program, const std::set<uint32_t>& integers, in
         v[k] = static_cast<uint32_t>(random.next() % 64);
       else
         v[k] = bitsOf(random.between(-2.0f, 2.0f));
+    }
+    if (!firstInputValues.empty() && &input == &program.inputs().front()) {
+      const auto& chosen = firstInputValues[static_cast<size_t>(number) % firstInputValues.size()];
+      for (int k = 0; k < 4; ++k) v[k] = bitsOf(chosen[k]);
     }
     sample.inputs[input.index] = v;
   }
@@ -164,11 +169,7 @@ struct Checker {
                           " cb rows " + (sample.identityRows ? "unit vectors" : "random");
   }
 
-  bool cutoffKeepsMono(float w) const {
-    if (!options.cutoff) return false;
-    if (!std::isfinite(w)) return true;
-    return options.cutoffEpsilon > 0 ? !(std::fabs(double(w) - 1.0) > double(options.cutoffEpsilon)) : w == 1.0f;
-  }
+  bool cutoffKeepsMono(float w) const { return stereoshift::cutoffKeepsMono(options.cutoff, options.cutoffEpsilon, w); }
 
   // x of one stereo run against the exact reference, from the original's float x and w.
   //
@@ -300,7 +301,7 @@ AsmVerifyResult verifyAssemblyConversion(const std::string& originalText, const 
   Random random{options.seed};
   Checker checker{options, position, result};
   for (int k = 0; k < options.samples; ++k) {
-    Sample sample = makeSample(*original, integers, k, random);
+    Sample sample = makeSample(*original, integers, k, random, options.firstInputValues);
     checker.checkSample(*original, *converted, sample, random);
   }
   if (result.samples == 0) {

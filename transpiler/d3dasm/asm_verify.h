@@ -5,16 +5,23 @@
 // from the original's own x and w. No GPU runs D3D bytecode here; the interpreter is the GPU.
 #pragma once
 
+#include "core/shift_spec.h"
+
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace stereoshift::d3dasm {
 
 struct AsmVerifyOptions {
   int samples = 4096;              // input sets; each runs mono once and both eyes
   uint64_t seed = 0x5733e05eedULL; // the same seed gives the same inputs, run after run
-  bool cutoff = true;              // the conversion's cutoff (AsmShiftOptions)
+  CutoffMode cutoff = CutoffMode::Epsilon;  // the conversion's cutoff (its ShiftSpec)
   float cutoffEpsilon = 1e-5f;     // 0: w != 1 exactly
+  // Explicit values for the first declared input register instead of random ones (set k takes
+  // entry k modulo the list), so a stress table reaches the guard with the w values it chose.
+  std::vector<std::array<float, 4>> firstInputValues;
 };
 
 struct AsmVerifyResult {

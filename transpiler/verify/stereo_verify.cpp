@@ -385,10 +385,8 @@ class StereoCheck {
   void compareVertex(const CaptureResult& stereo, uint32_t vm, uint32_t vs, float eye, const std::string& run) {
     double x = mono_.f32(vm, px_), w = mono_.f32(vm, px_ + 3);
     float got = stereo.f32(vs, pxStereo_);
-    // The shader's guard, in its own fp32 terms: ordered comparisons (a NaN w is not shifted)
-    // and never an infinite w.
-    bool far = settings_.cutoffEpsilon > 0 ? std::fabs(float(w) - 1.0f) > settings_.cutoffEpsilon : float(w) != 1.0f;
-    bool unshifted = !settings_.shifted || (settings_.cutoff && (!far || std::isnan(w) || std::isinf(w)));
+    // The shader's guard, in its own fp32 terms (core/shift_spec.h).
+    bool unshifted = !settings_.shifted || cutoffKeepsMono(settings_.cutoff, settings_.cutoffEpsilon, float(w));
     double shift = double(eye) * settings_.separation * (w - settings_.convergence);
     double reference = unshifted ? x : x + shift;
     if (unshifted && settings_.shifted && eye > 0) ++result_.cutoffVertices;

@@ -34,8 +34,8 @@ struct StageModules {
 struct VerifySettings {
   float separation = 0.065f;
   float convergence = 3.0f;
-  float cutoffEpsilon = 1e-5f;  // the cutoff the transpiled shader was built with (0: exact)
-  bool cutoff = true;
+  CutoffMode cutoff = CutoffMode::Epsilon;  // the cutoff the transpiled shader was built with
+  float cutoffEpsilon = 1e-5f;              // (Epsilon with 0: exact)
   uint32_t vertexCount = 96;
   std::optional<VertexBuffer> vertices;  // explicit vertex data instead of generated (stress tests)
   std::string eyeSignName = "eyeSign", separationName = "separation", convergenceName = "convergence";
