@@ -52,10 +52,17 @@ struct EyeParams {
 };
 
 // What the back end will write, as far as a pass must know it: whether `precise` exists there, how
-// a single-pass mode can route the eye. Unresolved as asked for (Auto: the input's own language).
+// a single-pass mode can route the eye (language and version: unresolved as asked for, Auto the
+// input's own language), and which kinds of edit the output can carry. The driver decides the last
+// from the back end's routes before the passes run; a pass asks it, never which route that is.
 struct PassOutput {
   TargetLanguage language = TargetLanguage::Auto;
   std::optional<int> version;
+  EditSet carries = kAllEdits;
+  // When not every kind: the output that cannot carry the rest, in the user's words, for the message
+  // of a pass whose edit would be lost ("HLSL hull shaders cannot be re-emitted as HLSL").
+  std::string limitedBecause;
+  bool canCarry(EditKind kind) const { return hasEdit(carries, kind); }
 };
 
 struct PassContext {

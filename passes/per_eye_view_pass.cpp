@@ -360,16 +360,14 @@ class PerEyeViewPass final : public Pass {
     decidePassedCameras(ctx, *flow, subtractions, cameras, facts.leftAlone);
     noteOtherViewDependentUses(folded, subtractions, cameras, facts.leftAlone);
     if (cameras.empty()) return PassResult::Unchanged;
-    // The source-splice route (HLSL geometry / domain) emits the original text: a module change
-    // would be lost silently.
-    if (ctx.source.language == SourceLanguage::Hlsl &&
-        (ctx.source.stage == Stage::Geometry || ctx.source.stage == Stage::TessEvaluation)) {
+    // An output that cannot carry the fix (the stage's own text with the shift spliced in) would
+    // lose a module change silently.
+    if (!ctx.output.canCarry(EditKind::PerEyeCamera)) {
       for (const auto& [slot, why] : cameras) {
         ViewDependentUse entry;
         entry.uniform = slotName(folded, slot);
         entry.use = "view vector";
-        entry.reason = "HLSL geometry and domain shaders take the source-splice route, which cannot "
-                       "carry this fix: fix the camera by hand";
+        entry.reason = ctx.output.limitedBecause + ", which cannot carry this fix: fix the camera by hand";
         facts.leftAlone.push_back(entry);
       }
       return PassResult::Unchanged;

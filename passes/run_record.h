@@ -44,6 +44,7 @@ enum class EditKind : uint32_t {
 };
 using EditSet = uint32_t;
 constexpr EditSet kNoEdits = 0;
+constexpr EditSet kAllEdits = (1u << 7) - 1;
 constexpr EditSet operator|(EditKind a, EditKind b) { return static_cast<EditSet>(a) | static_cast<EditSet>(b); }
 constexpr EditSet operator|(EditSet a, EditKind b) { return a | static_cast<EditSet>(b); }
 constexpr bool hasEdit(EditSet set, EditKind kind) { return (set & static_cast<EditSet>(kind)) != 0; }

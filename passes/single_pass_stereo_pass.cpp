@@ -44,16 +44,16 @@ bool checkTarget(PassContext& ctx) {
     ctx.diags.error(ctx.file, std::string(flag) + ": " + why);
     return false;
   };
-  if (ctx.source.language == SourceLanguage::Hlsl && target == TargetLanguage::Hlsl &&
-      (model == spv::ExecutionModelGeometry || model == spv::ExecutionModelTessellationEvaluation))
-    return refuse("HLSL geometry and domain shaders back to HLSL are spliced into their own text, which carries "
-                  "the two-pass shift only; choose --target spirv or --target glsl");
-  // Instanced mode hands the eye on through the hull shader, which SPIRV-Cross cannot write as HLSL
-  // (in two passes a hull shader is copied unchanged).
-  if (instanced && ctx.source.language == SourceLanguage::Hlsl && target == TargetLanguage::Hlsl &&
-      model == spv::ExecutionModelTessellationControl)
-    return refuse("the eye is handed on through the hull shader, and HLSL hull shaders cannot be re-emitted as "
-                  "HLSL; choose --target spirv or --target glsl");
+  if (!ctx.output.canCarry(EditKind::SinglePassEye)) {
+    // Instanced mode hands the eye on through a tessellation-control stage (in two passes it is
+    // copied unchanged, and multiview changes nothing there).
+    if (model != spv::ExecutionModelTessellationControl)
+      return refuse(ctx.output.limitedBecause + ", which carries the two-pass shift only; choose --target spirv or "
+                    "--target glsl");
+    if (instanced)
+      return refuse("the eye is handed on through the hull shader, and " + ctx.output.limitedBecause +
+                    "; choose --target spirv or --target glsl");
+  }
 
   if (instanced && (model == spv::ExecutionModelMeshEXT || model == spv::ExecutionModelMeshNV))
     return refuse("a mesh shader has no instance index to take the eye from; use --eye-source multiview");

@@ -565,6 +565,7 @@ bool runStagePasses(StagePlan& plan) {
   ctx.nextStage = plan.nextStage ? &*plan.nextStage : nullptr;
   if (!plan.spirvInput) ctx.frontEndSpirv = &plan.words;
   ctx.output = {plan.options.target, plan.options.targetVersion};
+  decideOutputCapability(plan.info, resolveTarget(plan.info, plan.options), ctx.output);
   plan.record.passesRan = true;
   bool ok = runPassPipeline(ctx, &plan.changed, &plan.passLog);
   if (ok && plan.options.correctionsOnly) keepOnlyCorrections(plan, ctx);

@@ -242,6 +242,35 @@ TEST(BackEndRoutes, EditsBeyondWhatASpliceRenders) {
   EXPECT_FALSE(record.madeEdit(EditKind::UnprojectionCorrection));  // the pass ran and changed nothing
 }
 
+// What a stage's output can carry is decided from the routes before the passes, which read it from
+// PassOutput: the HLSL geometry / domain splice carries the eye parameters and the shift only, an
+// HLSL hull shader back to HLSL nothing (it is copied); any other output, or another language, all.
+TEST(BackEndRoutes, OutputCapabilityFollowsTheRoutes) {
+  auto decide = [](SourceLanguage language, Stage stage, TargetLanguage target) {
+    SourceInfo info;
+    info.language = language;
+    info.stage = stage;
+    PassOutput output;
+    decideOutputCapability(info, target, output);
+    return output;
+  };
+  PassOutput geometry = decide(SourceLanguage::Hlsl, Stage::Geometry, TargetLanguage::Hlsl);
+  EXPECT_TRUE(geometry.canCarry(EditKind::PositionShift));
+  EXPECT_FALSE(geometry.canCarry(EditKind::PerEyeCamera));
+  EXPECT_FALSE(geometry.canCarry(EditKind::SinglePassEye));
+  EXPECT_NE(geometry.limitedBecause.find("spliced into their own text"), std::string::npos);
+  EXPECT_EQ(decide(SourceLanguage::Hlsl, Stage::TessEvaluation, TargetLanguage::Hlsl).carries, geometry.carries);
+  PassOutput hull = decide(SourceLanguage::Hlsl, Stage::TessControl, TargetLanguage::Hlsl);
+  EXPECT_EQ(hull.carries, kNoEdits);
+  EXPECT_FALSE(hull.limitedBecause.empty());
+  for (PassOutput all : {decide(SourceLanguage::Hlsl, Stage::Geometry, TargetLanguage::Spirv),
+                         decide(SourceLanguage::Hlsl, Stage::Vertex, TargetLanguage::Hlsl),
+                         decide(SourceLanguage::Glsl, Stage::Geometry, TargetLanguage::Glsl)}) {
+    EXPECT_EQ(all.carries, kAllEdits);
+    EXPECT_TRUE(all.limitedBecause.empty());
+  }
+}
+
 // Every pass that can change the module says what its change is, each a kind of its own, so a route
 // that renders a kind renders exactly one pass's change; detection only classifies.
 TEST(BackEndRoutes, EveryChangingPassDeclaresItsEdits) {

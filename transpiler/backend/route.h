@@ -117,6 +117,11 @@ bool sameLanguageOutput(const SourceInfo& info, TargetLanguage target, const Bac
 // passesWithEditsBeyond names the passes that made one).
 constexpr EditSet kGlslSpliceRenders = EditKind::EyeParameters | EditKind::PositionShift | EditKind::DerivedOutputShift;
 
+// Which kinds of edit the output of a stage can carry, from the routes that can take it (every
+// kind, unless the only route for it writes the stage's own text with some edits spliced in), and
+// why not, for the passes' messages (PassOutput).
+void decideOutputCapability(const SourceInfo& info, TargetLanguage target, PassOutput& output);
+
 // The routes in the order the driver asks them: copy-through, SPIR-V binary, SPIR-V assembly, the
 // HLSL source splice, the HLSL pixel-shader correction splice, the legacy GLSL source splice, the GLSL source splice, SPIRV-Cross's re-emit
 // (which takes the rest).

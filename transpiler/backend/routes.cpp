@@ -27,6 +27,19 @@ bool sameLanguageOutput(const SourceInfo& info, TargetLanguage target, const Bac
           !options.targetVersion);
 }
 
+void decideOutputCapability(const SourceInfo& info, TargetLanguage target, PassOutput& output) {
+  if (info.language != SourceLanguage::Hlsl || target != TargetLanguage::Hlsl) return;
+  // SPIRV-Cross cannot write these stages as HLSL: the HLSL source splice writes geometry and
+  // domain shaders (the eye parameters and the shift), and a hull shader is copied as it is.
+  if (info.stage == Stage::Geometry || info.stage == Stage::TessEvaluation) {
+    output.carries = EditKind::EyeParameters | EditKind::PositionShift;
+    output.limitedBecause = "HLSL geometry and domain shaders back to HLSL are spliced into their own text";
+  } else if (info.stage == Stage::TessControl) {
+    output.carries = kNoEdits;
+    output.limitedBecause = "HLSL hull shaders cannot be re-emitted as HLSL";
+  }
+}
+
 namespace {
 
 // Nothing to inject: the input is already its own drop-in replacement, byte for byte.
