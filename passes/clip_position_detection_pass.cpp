@@ -1,6 +1,7 @@
 // clip-position-detection: turns a module into a classification and the list of its clip-position
 // outputs (BuiltIn Position variables, members of gl_PerVertex-style blocks, per-vertex arrays;
 // found by the shared clip-position analysis). It changes nothing; later passes act on what it found.
+#include "passes/pass_registry.h"
 #include "passes/pass.h"
 
 #include <set>
@@ -145,5 +146,15 @@ class ClipPositionDetectionPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createClipPositionDetectionPass() { return std::make_unique<ClipPositionDetectionPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+PassInfo clipPositionDetectionPassInfo() {
+  return {"clip-position-detection", createClipPositionDetectionPass,
+          "classifies the shader (perspective, 2D, already stereo, ...) and finds its clip-position outputs",
+          "always",
+          "analysis only, first: every geometry pass below does nothing unless it found a perspective last stage",
+          {}, kClipPositionAnalysis | kFoldedCopyAnalysis, kAllAnalyses, kNoEdits};
+}
 
 }  // namespace stereoshift

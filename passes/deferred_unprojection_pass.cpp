@@ -43,6 +43,7 @@
 // application sets it to P00) and the report says so, except for an interpolated ray: without a
 // projection in the shader it cannot be told from a colour or normal scaled by a texel, and is
 // reported, not fixed.
+#include "passes/pass_registry.h"
 #include "passes/deferred_unprojection/row_products.h"
 #include "passes/deferred_unprojection/unprojection.h"
 #include "passes/eye_param_emitter.h"
@@ -405,5 +406,15 @@ class DeferredUnprojectionPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createDeferredUnprojectionPass() { return std::make_unique<DeferredUnprojectionPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+PassInfo deferredUnprojectionPassInfo() {
+  return {"deferred-unprojection", createDeferredUnprojectionPass,
+          "makes position reconstruction in deferred lighting per eye: InvM * vec4(ndc, depth, 1) and viewRay * depth",
+          "on (--no-deferred-unprojection turns it off)",
+          "independent of the shift, like per-eye-view; last, as it needs nothing the others decide",
+          {}, kValueFlowAnalysis, kNoAnalyses, static_cast<EditSet>(EditKind::UnprojectionCorrection)};
+}
 
 }  // namespace stereoshift

@@ -3,6 +3,7 @@
 // members, loose OpenGL uniforms or specialization constants; eye_param_emitter.h does the work,
 // and passes that need more parameters ask it themselves). Names that clash with the
 // application's own are renamed (and recorded), never aliased.
+#include "passes/pass_registry.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/pass.h"
 
@@ -25,5 +26,17 @@ class EyeParamsPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createEyeParamsPass() { return std::make_unique<EyeParamsPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+// Adds a declaration only: no output, no pointer to the position, no application value changes
+// (but new globals: the value-flow and value-number indexes point into what moved).
+PassInfo eyeParamsPassInfo() {
+  return {"eye-params", createEyeParamsPass,
+          "declares eyeSign, separation and convergence in a shader that gets the shift",
+          "always (--eye-source chooses how)",
+          "the shift and halo code load the parameters it declares",
+          {"clip-position-detection"}, kNoAnalyses, kKeptByDeclarations, static_cast<EditSet>(EditKind::EyeParameters)};
+}
 
 }  // namespace stereoshift

@@ -12,6 +12,7 @@
 // helper function or written another equal way is the position too. The reverse, the position read
 // back from an output (`outPos = P * V * M * p; gl_Position = outPos;`), shifts the output and has
 // the position read the mono value it was computed from, so stereo-shift shifts it once.
+#include "passes/pass_registry.h"
 #include "passes/pass.h"
 #include "passes/shift_emitter.h"
 
@@ -306,5 +307,18 @@ class HaloPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createHaloPass() { return std::make_unique<HaloPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+// Rewrites stores to other outputs only: the position's pointers and values stay as they were.
+PassInfo haloPassInfo() {
+  return {"halo", createHaloPass,
+          "shifts outputs computed from the clip position (copies, screen UVs) like the position itself",
+          "on (--no-halo turns it off)",
+          "before the shift, while the only loads of the position are the application's own, so it sees "
+          "exactly the values the application derived its outputs from",
+          {"clip-position-detection", "eye-params"}, kClipPositionAnalysis | kFoldedCopyAnalysis | kValueNumberAnalysis,
+          kKeptByDeclarations, static_cast<EditSet>(EditKind::DerivedOutputShift)};
+}
 
 }  // namespace stereoshift

@@ -11,6 +11,7 @@
 // scene and be hidden by it. Because every vertex gets the same w = d, perspective-correct
 // interpolation of the varyings equals the original linear one, and x/w, y/w are the original x, y:
 // in mono the element covers the very same pixels.
+#include "passes/pass_registry.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/pass.h"
 #include "passes/shift_emitter.h"
@@ -107,5 +108,19 @@ class HudAtDepthPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createHudAtDepthPass() { return std::make_unique<HudAtDepthPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+// Placing at depth scales the stored position; the folded copy still answers what later passes
+// ask of it (which outputs copy the position the application computed), so it is kept.
+PassInfo hudAtDepthPassInfo() {
+  return {"hud-at-depth", createHudAtDepthPass,
+          "places a proven-2D shader (w = 1) at the eye depth hudDepth, so it gets the shift",
+          "--hud-at-depth (off by default)",
+          "turns a 2D position into one at depth, which then needs the shift like any perspective position: "
+          "before eye-params, halo and stereo-shift",
+          {"clip-position-detection"}, kClipPositionAnalysis, kFoldedCopyAnalysis,
+          static_cast<EditSet>(EditKind::PositionAtDepth)};
+}
 
 }  // namespace stereoshift

@@ -1,82 +1,22 @@
-// The registry's entries (see pass_registry.h). Their order is the pipeline's, and each entry's
-// whyHere says what fixes its position.
+// The registry (see pass_registry.h): each pass's entry lives beside its code (xxxPassInfo() in its
+// file: what it needs, what its change preserves, what kind of edit it is); the list's order is the
+// pipeline's, and each entry's whyHere says what fixes its position.
 #include "passes/pass_registry.h"
 
 #include <algorithm>
 
 namespace stereoshift {
 
-namespace {
-
-// What survives a pass that only adds declarations or rewrites stores to outputs other than the
-// position: the clip position's pointers and values, the folded copy's answers about the
-// application's own values, how the stage uses its inputs. Not the value-flow and value-number
-// indexes, which point into the instruction lists the change moved.
-constexpr AnalysisSet kKeptByDeclarations = kClipPositionAnalysis | kFoldedCopyAnalysis | kStageInputAnalysis;
-
-}  // namespace
-
 const std::vector<PassInfo>& passRegistry() {
   static const std::vector<PassInfo> registry = {
-      {"clip-position-detection", createClipPositionDetectionPass,
-       "classifies the shader (perspective, 2D, already stereo, ...) and finds its clip-position outputs",
-       "always",
-       "analysis only, first: every geometry pass below does nothing unless it found a perspective last stage",
-       {}, kClipPositionAnalysis | kFoldedCopyAnalysis, kAllAnalyses, kNoEdits},
-      // Placing at depth scales the stored position; the folded copy still answers what later passes
-      // ask of it (which outputs copy the position the application computed), so it is kept.
-      {"hud-at-depth", createHudAtDepthPass,
-       "places a proven-2D shader (w = 1) at the eye depth hudDepth, so it gets the shift",
-       "--hud-at-depth (off by default)",
-       "turns a 2D position into one at depth, which then needs the shift like any perspective position: "
-       "before eye-params, halo and stereo-shift",
-       {"clip-position-detection"}, kClipPositionAnalysis, kFoldedCopyAnalysis,
-       static_cast<EditSet>(EditKind::PositionAtDepth)},
-      // Rewrites reads of the instance index and adds outputs other than the position: the position's
-      // pointers and values stay, the folded copy no longer matches the module.
-      {"single-pass-stereo", createSinglePassStereoPass,
-       "draws both eyes in one pass: eyeSign from the view index (multiview) or the instance index (instanced; "
-       "the original instance given to the shader, the eye handed on to the rasterizing stage and routed to the "
-       "layer or viewport)",
-       "--eye-source multiview | instanced",
-       "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
-       "reads it rewrites are only the application's own",
-       {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis, static_cast<EditSet>(EditKind::SinglePassEye)},
-      // Adds a declaration only: no output, no pointer to the position, no application value changes
-      // (but new globals: the value-flow and value-number indexes point into what moved).
-      {"eye-params", createEyeParamsPass,
-       "declares eyeSign, separation and convergence in a shader that gets the shift",
-       "always (--eye-source chooses how)",
-       "the shift and halo code load the parameters it declares",
-       {"clip-position-detection"}, kNoAnalyses, kKeptByDeclarations, static_cast<EditSet>(EditKind::EyeParameters)},
-      // Rewrites stores to other outputs only: the position's pointers and values stay as they were.
-      {"halo", createHaloPass,
-       "shifts outputs computed from the clip position (copies, screen UVs) like the position itself",
-       "on (--no-halo turns it off)",
-       "before the shift, while the only loads of the position are the application's own, so it sees "
-       "exactly the values the application derived its outputs from",
-       {"clip-position-detection", "eye-params"}, kClipPositionAnalysis | kFoldedCopyAnalysis | kValueNumberAnalysis,
-       kKeptByDeclarations, static_cast<EditSet>(EditKind::DerivedOutputShift)},
-      // Loads the position and adds chains to it: new pointers and values, the analysis is stale.
-      {"stereo-shift", createStereoShiftPass,
-       "shifts the final clip position by eyeSign*separation*(w - convergence) at every return / emit",
-       "always (--shift-form, --no-cutoff, --fused-shift, --compensated-shift: how)",
-       "after halo; it guards and shifts the position where it is final",
-       {"clip-position-detection", "eye-params"}, kClipPositionAnalysis, kFoldedCopyAnalysis,
-       static_cast<EditSet>(EditKind::PositionShift)},
-      {"per-eye-view", createPerEyeViewPass,
-       "uses the per-eye camera position in view vectors that offset texture coordinates",
-       "on (--no-per-eye-view turns it off, --per-eye-specular extends it)",
-       "independent of the shift (it also runs on fragment shaders) and declares the eye parameters it "
-       "needs itself; it reads detection's classification and clip positions",
-       {"clip-position-detection"}, kClipPositionAnalysis | kFoldedCopyAnalysis, kNoAnalyses,
-       // The eye parameters it declares for itself are part of its edit.
-       static_cast<EditSet>(EditKind::PerEyeCamera)},
-      {"deferred-unprojection", createDeferredUnprojectionPass,
-       "makes position reconstruction in deferred lighting per eye: InvM * vec4(ndc, depth, 1) and viewRay * depth",
-       "on (--no-deferred-unprojection turns it off)",
-       "independent of the shift, like per-eye-view; last, as it needs nothing the others decide",
-       {}, kValueFlowAnalysis, kNoAnalyses, static_cast<EditSet>(EditKind::UnprojectionCorrection)},
+      clipPositionDetectionPassInfo(),
+      hudAtDepthPassInfo(),
+      singlePassStereoPassInfo(),
+      eyeParamsPassInfo(),
+      haloPassInfo(),
+      stereoShiftPassInfo(),
+      perEyeViewPassInfo(),
+      deferredUnprojectionPassInfo(),
   };
   return registry;
 }

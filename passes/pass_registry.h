@@ -26,6 +26,22 @@ struct PassInfo {
   EditSet edits = kNoEdits;     // what its change to the module is, for the routes (none: analysis only)
 };
 
+// Each pass's entry, defined beside the pass (in pipeline order).
+PassInfo clipPositionDetectionPassInfo();
+PassInfo hudAtDepthPassInfo();
+PassInfo singlePassStereoPassInfo();
+PassInfo eyeParamsPassInfo();
+PassInfo haloPassInfo();
+PassInfo stereoShiftPassInfo();
+PassInfo perEyeViewPassInfo();
+PassInfo deferredUnprojectionPassInfo();
+
+// What survives a pass that only adds declarations or rewrites stores to outputs other than the
+// position: the clip position's pointers and values, the folded copy's answers about the
+// application's own values, how the stage uses its inputs. Not the value-flow and value-number
+// indexes, which point into the instruction lists the change moved.
+constexpr AnalysisSet kKeptByDeclarations = kClipPositionAnalysis | kFoldedCopyAnalysis | kStageInputAnalysis;
+
 // Every pass, in the order the pipeline runs them.
 const std::vector<PassInfo>& passRegistry();
 // Whether the full pipeline runs `info` for `options`: every pass runs (and reports) always, except

@@ -26,6 +26,7 @@
 // shader), or from three eye-offset parameters the application fills (include/stereoshift/
 // The offset and the rewrite live in per_eye_view/eye_offset.h; the next-stage facts in
 // analysis/stage_interface.h; names in per_eye_view/name_hints.h.
+#include "passes/pass_registry.h"
 #include "passes/analysis/stage_interface.h"
 #include "passes/analysis/uniform_slots.h"
 #include "passes/analysis/view_vector_flow.h"
@@ -410,5 +411,18 @@ class PerEyeViewPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createPerEyeViewPass() { return std::make_unique<PerEyeViewPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+// The eye parameters it declares for itself are part of its edit.
+PassInfo perEyeViewPassInfo() {
+  return {"per-eye-view", createPerEyeViewPass,
+          "uses the per-eye camera position in view vectors that offset texture coordinates",
+          "on (--no-per-eye-view turns it off, --per-eye-specular extends it)",
+          "independent of the shift (it also runs on fragment shaders) and declares the eye parameters it "
+          "needs itself; it reads detection's classification and clip positions",
+          {"clip-position-detection"}, kClipPositionAnalysis | kFoldedCopyAnalysis, kNoAnalyses,
+          static_cast<EditSet>(EditKind::PerEyeCamera)};
+}
 
 }  // namespace stereoshift

@@ -8,6 +8,7 @@
 // instance (`instance >> 1`), and the eye goes to the `stereoEye` varying and, from the stage that
 // rasterizes (vertex, tessellation evaluation or geometry), to the render-target layer or the
 // viewport index; the stages between hand it on.
+#include "passes/pass_registry.h"
 #include "passes/eye_select.h"
 #include "passes/pass.h"
 
@@ -346,5 +347,20 @@ class SinglePassStereoPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createSinglePassStereoPass() { return std::make_unique<SinglePassStereoPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+// Rewrites reads of the instance index and adds outputs other than the position: the position's
+// pointers and values stay, the folded copy no longer matches the module.
+PassInfo singlePassStereoPassInfo() {
+  return {"single-pass-stereo", createSinglePassStereoPass,
+          "draws both eyes in one pass: eyeSign from the view index (multiview) or the instance index (instanced; "
+          "the original instance given to the shader, the eye handed on to the rasterizing stage and routed to the "
+          "layer or viewport)",
+          "--eye-source multiview | instanced",
+          "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
+          "reads it rewrites are only the application's own",
+          {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis, static_cast<EditSet>(EditKind::SinglePassEye)};
+}
 
 }  // namespace stereoshift

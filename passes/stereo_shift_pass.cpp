@@ -4,6 +4,7 @@
 // before every EmitVertex / EmitStreamVertex of a geometry shader (in any function). A mesh shader
 // has no such point (each invocation writes any vertices of the per-vertex output array, in any
 // order): there the value of every store of a whole clip position is shifted instead.
+#include "passes/pass_registry.h"
 #include "passes/pass.h"
 #include "passes/shift_emitter.h"
 
@@ -268,5 +269,17 @@ class StereoShiftPass final : public Pass {
 }  // namespace
 
 std::unique_ptr<Pass> createStereoShiftPass() { return std::make_unique<StereoShiftPass>(); }
+
+// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
+// what its change preserves and what kind of edit it is.
+// Loads the position and adds chains to it: new pointers and values, the analysis is stale.
+PassInfo stereoShiftPassInfo() {
+  return {"stereo-shift", createStereoShiftPass,
+          "shifts the final clip position by eyeSign*separation*(w - convergence) at every return / emit",
+          "always (--shift-form, --no-cutoff, --fused-shift, --compensated-shift: how)",
+          "after halo; it guards and shifts the position where it is final",
+          {"clip-position-detection", "eye-params"}, kClipPositionAnalysis, kFoldedCopyAnalysis,
+          static_cast<EditSet>(EditKind::PositionShift)};
+}
 
 }  // namespace stereoshift
