@@ -1,8 +1,8 @@
 // clip-position-detection: turns a module into a classification and the list of its clip-position
 // outputs (BuiltIn Position variables, members of gl_PerVertex-style blocks, per-vertex arrays;
 // found by the shared clip-position analysis). It changes nothing; later passes act on what it found.
-#include "passes/pass_registry.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 
 #include <set>
 

@@ -43,12 +43,12 @@
 // application sets it to P00) and the report says so, except for an interpolated ray: without a
 // projection in the shader it cannot be told from a colour or normal scaled by a texel, and is
 // reported, not fixed.
-#include "passes/pass_registry.h"
 #include "passes/deferred_unprojection/row_products.h"
 #include "passes/deferred_unprojection/unprojection.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/ir/walker.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 
 #include <glslang/SPIRV/GLSL.std.450.h>
 

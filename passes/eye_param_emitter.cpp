@@ -4,6 +4,7 @@
 #include "passes/eye_param_emitter.h"
 
 #include "passes/eye_select.h"
+#include "passes/ir/builder.h"
 #include "passes/pass.h"
 #include "passes/shift_emitter.h"
 
@@ -290,9 +291,7 @@ uint32_t emitLoadDeclaredEyeParam(PassContext& context, std::vector<Instruction>
     case EyeSource::SpecConstant:
       return eye.specConstants[which];
     case EyeSource::LooseUniforms: {
-      uint32_t value = m.takeId();
-      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{eye.looseVariables[which]});
-      return value;
+      return spirv::Builder(m, out).load(floatType, eye.looseVariables[which]);
     }
     case EyeSource::UniformBlock:
     case EyeSource::PushConstant:
@@ -301,11 +300,9 @@ uint32_t emitLoadDeclaredEyeParam(PassContext& context, std::vector<Instruction>
                                                            : spv::StorageClassUniform;
       uint32_t pointerType = m.typePointer(storage, floatType);
       uint32_t index = m.constantInt(static_cast<int32_t>(eye.firstMember + which));
-      uint32_t pointer = m.takeId();
-      out.emplace_back(spv::OpAccessChain, pointerType, pointer, std::vector<uint32_t>{eye.variable, index});
-      uint32_t value = m.takeId();
-      out.emplace_back(spv::OpLoad, floatType, value, std::vector<uint32_t>{pointer});
-      return value;
+      spirv::Builder b(m, out);
+      uint32_t pointer = b.add(spv::OpAccessChain, pointerType, {eye.variable, index});
+      return b.load(floatType, pointer);
     }
   }
   return 0;
@@ -322,9 +319,9 @@ uint32_t emitLoadEyeParam(PassContext& context, std::vector<Instruction>& out, i
   uint32_t value = emitLoadDeclaredEyeParam(context, out, which);
   if (which != kEyeOffsetX && which != kEyeOffsetY && which != kEyeOffsetZ) return value;
   uint32_t sign = emitDerivedEyeSign(context, out);
-  uint32_t scaled = context.module.takeId();
-  out.emplace_back(spv::OpFMul, context.module.typeFloat(32), scaled, std::vector<uint32_t>{sign, value});
-  return scaled;
+  spirv::Builder b(context.module, out);
+  uint32_t scaled = b.reserveId();
+  return b.addAs(scaled, spv::OpFMul, context.module.typeFloat(32), {sign, value});
 }
 
 std::string numberedName(const std::string& wanted, const std::function<bool(const std::string&)>& taken) {

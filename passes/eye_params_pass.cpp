@@ -3,9 +3,9 @@
 // members, loose OpenGL uniforms or specialization constants; eye_param_emitter.h does the work,
 // and passes that need more parameters ask it themselves). Names that clash with the
 // application's own are renamed (and recorded), never aliased.
-#include "passes/pass_registry.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 
 namespace stereoshift {
 

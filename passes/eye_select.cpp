@@ -1,6 +1,7 @@
 // See eye_select.h.
 #include "passes/eye_select.h"
 
+#include "passes/ir/builder.h"
 #include "passes/pass.h"
 
 #include <string_view>
@@ -50,11 +51,7 @@ uint32_t builtInVariable(const spirv::Module& m, spv::BuiltIn builtIn) {
   return 0;
 }
 
-void addExtension(spirv::Module& m, std::string_view name) {
-  for (const auto& inst : m.extensions)
-    if (inst.stringOperand(0) == name) return;
-  m.extensions.emplace_back(spv::OpExtension, 0, 0, spirv::encodeString(name));
-}
+void addExtension(spirv::Module& m, std::string_view name) { m.addExtension(name); }
 
 // A fresh 32-bit int interface variable, named like the GLSL built-in so the emitted text reads as
 // the application's own would.
@@ -240,9 +237,7 @@ uint32_t ensureEyeVarying(PassContext& ctx, spv::StorageClass storage) {
 }
 
 uint32_t emitLoad(spirv::Module& m, std::vector<Instruction>& out, uint32_t variable) {
-  uint32_t value = m.takeId();
-  out.emplace_back(spv::OpLoad, m.pointeeType(m.definition(variable)->typeId), value, std::vector<uint32_t>{variable});
-  return value;
+  return spirv::Builder(m, out).load(m.pointeeType(m.definition(variable)->typeId), variable);
 }
 
 // `instance & 1`: the eye of an instanced-stereo vertex (0 for instances 0, 2, 4, ...).
@@ -251,13 +246,13 @@ uint32_t emitInstanceEyeBit(PassContext& ctx, std::vector<Instruction>& out) {
   uint32_t variable = ensureInstanceIndex(ctx);
   uint32_t type = m.pointeeType(m.definition(variable)->typeId);  // int, or uint for HLSL's SV_InstanceID
   uint32_t instance = emitLoad(m, out, variable);
-  uint32_t bit = m.takeId();
-  out.emplace_back(spv::OpBitwiseAnd, type, bit, std::vector<uint32_t>{instance, m.constantInt(1)});
+  spirv::Builder b(m, out);
+  uint32_t bit = b.reserveId();
+  b.addAs(bit, spv::OpBitwiseAnd, type, {instance, m.constantInt(1)});
   const Instruction* typeDef = m.definition(type);
   if (typeDef && typeDef->operand(1) == 0) {  // HLSL's `uint id : SV_InstanceID`: the layer is an int
-    uint32_t asInt = m.takeId();
-    out.emplace_back(spv::OpBitcast, m.typeInt(32, true), asInt, std::vector<uint32_t>{bit});
-    bit = asInt;
+    uint32_t asInt = b.reserveId();
+    bit = b.addAs(asInt, spv::OpBitcast, m.typeInt(32, true), {bit});
   }
   return bit;
 }
@@ -271,12 +266,10 @@ uint32_t emitLoadHandedOnEye(PassContext& ctx, std::vector<Instruction>& out) {
   const Instruction* type = m.definition(m.pointeeType(m.definition(input)->typeId));
   if (!type || type->opcode != spv::OpTypeArray) return emitLoad(m, out, input);
   uint32_t element = type->operand(0);
-  uint32_t pointer = m.takeId();
-  out.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassInput, element), pointer,
-                   std::vector<uint32_t>{input, m.constantInt(0)});
-  uint32_t value = m.takeId();
-  out.emplace_back(spv::OpLoad, element, value, std::vector<uint32_t>{pointer});
-  return value;
+  spirv::Builder b(m, out);
+  uint32_t pointer = b.reserveId();
+  b.addAs(pointer, spv::OpAccessChain, m.typePointer(spv::StorageClassInput, element), {input, m.constantInt(0)});
+  return b.load(element, pointer);
 }
 
 // Whether this stage reads the eye from the `stereoEye` varying rather than a built-in: every stage
@@ -301,14 +294,13 @@ uint32_t emitDerivedEyeSign(PassContext& ctx, std::vector<Instruction>& out) {
   } else {
     eye = emitInstanceEyeBit(ctx, out);
   }
-  uint32_t second = m.takeId();
-  out.emplace_back(spv::OpINotEqual, m.typeBool(), second, std::vector<uint32_t>{eye, m.constantInt(0)});
+  spirv::Builder b(m, out);
+  uint32_t second = b.reserveId();
+  b.addAs(second, spv::OpINotEqual, m.typeBool(), {eye, m.constantInt(0)});
   // Exactly -1 and +1, the values a two-pass draw sets: the shift is the same arithmetic, bit for bit.
   float secondSign = ctx.options.eye.swapEyes ? -1.0f : 1.0f;
-  uint32_t sign = m.takeId();
-  out.emplace_back(spv::OpSelect, m.typeFloat(32), sign,
-                   std::vector<uint32_t>{second, m.constantFloat(secondSign), m.constantFloat(-secondSign)});
-  return sign;
+  uint32_t sign = b.reserveId();
+  return b.addAs(sign, spv::OpSelect, m.typeFloat(32), {second, m.constantFloat(secondSign), m.constantFloat(-secondSign)});
 }
 
 }  // namespace stereoshift

@@ -12,8 +12,8 @@
 // helper function or written another equal way is the position too. The reverse, the position read
 // back from an output (`outPos = P * V * M * p; gl_Position = outPos;`), shifts the output and has
 // the position read the mono value it was computed from, so stereo-shift shifts it once.
-#include "passes/pass_registry.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 #include "passes/shift_emitter.h"
 
 #include "passes/analysis/value_numbers.h"

@@ -11,9 +11,10 @@
 // scene and be hidden by it. Because every vertex gets the same w = d, perspective-correct
 // interpolation of the varyings equals the original linear one, and x/w, y/w are the original x, y:
 // in mono the element covers the very same pixels.
-#include "passes/pass_registry.h"
 #include "passes/eye_param_emitter.h"
+#include "passes/ir/builder.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 #include "passes/shift_emitter.h"
 
 #include <algorithm>
@@ -75,10 +76,9 @@ class HudAtDepthPass final : public Pass {
       size_t at = sites[s].index;
       std::vector<Instruction> code;
       uint32_t depth = emitLoadEyeParam(ctx, code, kHudDepth);
-      uint32_t placedValue = m.takeId();
       // w is the literal 1, so one multiply gives (x*d, y*d, z*d, d) with w exactly d.
-      code.emplace_back(spv::OpVectorTimesScalar, v4, placedValue,
-                        std::vector<uint32_t>{instructions[at].operand(1), depth});
+      uint32_t placedValue =
+          spirv::Builder(m, code).add(spv::OpVectorTimesScalar, v4, {instructions[at].operand(1), depth});
       instructions[at].operands[1] = placedValue;
       instructions.insert(instructions.begin() + static_cast<long>(at), code.begin(), code.end());
     }

@@ -26,13 +26,13 @@
 // shader), or from three eye-offset parameters the application fills (include/stereoshift/
 // The offset and the rewrite live in per_eye_view/eye_offset.h; the next-stage facts in
 // analysis/stage_interface.h; names in per_eye_view/name_hints.h.
-#include "passes/pass_registry.h"
 #include "passes/analysis/stage_interface.h"
 #include "passes/analysis/uniform_slots.h"
 #include "passes/analysis/view_vector_flow.h"
 #include "passes/eye_param_emitter.h"
 #include "passes/ir/walker.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 #include "passes/per_eye_view/eye_offset.h"
 #include "passes/per_eye_view/name_hints.h"
 

@@ -3,12 +3,14 @@
 #include "passes/shift_emitter.h"
 
 #include "passes/eye_param_emitter.h"
+#include "passes/ir/builder.h"
 #include "passes/pass.h"
 
 #include <glslang/SPIRV/GLSL.std.450.h>
 
 namespace stereoshift {
 
+using spirv::Builder;
 using spirv::Instruction;
 
 ShiftSpec makeShiftSpec(const PassOptions& options, bool preciseSupported) {
@@ -58,16 +60,17 @@ bool targetSupportsPrecise(const PassContext& context) {
 
 uint32_t emitStereoGuard(PassContext& context, std::vector<Instruction>& out, uint32_t eyeSign) {
   auto& m = context.module;
-  uint32_t stereo = m.takeId();
-  out.emplace_back(spv::OpFUnordNotEqual, m.typeBool(), stereo, std::vector<uint32_t>{eyeSign, m.constantFloat(0.0f)});
-  return stereo;
+  Builder b(m, out);
+  uint32_t stereo = b.reserveId();
+  return b.addAs(stereo, spv::OpFUnordNotEqual, m.typeBool(), {eyeSign, m.constantFloat(0.0f)});
 }
 
 uint32_t emitEyeScale(PassContext& context, std::vector<Instruction>& out, uint32_t eyeSign, uint32_t separation,
                       bool noContraction) {
   auto& m = context.module;
-  uint32_t scale = m.takeId();
-  out.emplace_back(spv::OpFMul, m.typeFloat(32), scale, std::vector<uint32_t>{eyeSign, separation});
+  Builder b(m, out);
+  uint32_t scale = b.reserveId();
+  b.addAs(scale, spv::OpFMul, m.typeFloat(32), {eyeSign, separation});
   if (noContraction) m.decorate(scale, spv::DecorationNoContraction);
   return scale;
 }
@@ -84,9 +87,9 @@ uint32_t emitShiftedX(PassContext& context, const ShiftSpec& spec, std::vector<I
   uint32_t separation = emitLoadEyeParam(context, out, 1);
   uint32_t convergence = emitLoadEyeParam(context, out, 2);
   bool precise = spec.precise;
-  auto op = [&](spv::Op code, uint32_t a, uint32_t b) {
-    uint32_t id = m.takeId();
-    out.emplace_back(code, f, id, std::vector<uint32_t>{a, b});
+  Builder b(m, out);
+  auto op = [&](spv::Op code, uint32_t lhs, uint32_t rhs) {
+    uint32_t id = b.add(code, f, {lhs, rhs});
     if (precise) m.decorate(id, spv::DecorationNoContraction);
     return id;
   };
@@ -97,9 +100,8 @@ uint32_t emitShiftedX(PassContext& context, const ShiftSpec& spec, std::vector<I
     // x + a*(w - C) correctly rounded up to a hair: w - C exactly as dh + dl (TwoSum), a*dh exactly
     // as ph + pl (TwoProduct), x + ph exactly as sh + sl (TwoSum), then one final rounding of
     // sh + (sl + pl + a*dl). Needs NoContraction honoured (no re-association), so `precise`.
-    auto always = [&](spv::Op code, uint32_t a, uint32_t b) {
-      uint32_t id = m.takeId();
-      out.emplace_back(code, f, id, std::vector<uint32_t>{a, b});
+    auto always = [&](spv::Op code, uint32_t lhs, uint32_t rhs) {
+      uint32_t id = b.add(code, f, {lhs, rhs});
       m.decorate(id, spv::DecorationNoContraction);
       return id;
     };
@@ -135,8 +137,7 @@ uint32_t emitShiftedX(PassContext& context, const ShiftSpec& spec, std::vector<I
   if (spec.fused) {
     // One rounding less: fma(eyeSign * separation, w - convergence, x).
     uint32_t glsl = m.extInstImport("GLSL.std.450");
-    uint32_t id = m.takeId();
-    out.emplace_back(spv::OpExtInst, f, id, std::vector<uint32_t>{glsl, GLSLstd450Fma, scale, depth, x});
+    uint32_t id = b.add(spv::OpExtInst, f, {glsl, GLSLstd450Fma, scale, depth, x});
     if (precise) m.decorate(id, spv::DecorationNoContraction);
     return id;
   }
@@ -159,50 +160,36 @@ uint32_t emitCutoffCondition(PassContext& context, const ShiftSpec& spec, std::v
   if (spec.cutoff == CutoffMode::None) return stereo;
 
   uint32_t one = m.constantFloat(1.0f);
+  Builder b(m, out);
   // Ordered comparisons: a NaN w is never shifted (no new NaN in x).
-  uint32_t far = m.takeId();
+  uint32_t far = b.reserveId();
   if (spec.cutoff == CutoffMode::Exact) {
     // The driver's rule: w != 1.
-    out.emplace_back(spv::OpFOrdNotEqual, boolType, far, std::vector<uint32_t>{w, one});
+    b.addAs(far, spv::OpFOrdNotEqual, boolType, {w, one});
   } else {
     uint32_t glsl = m.extInstImport("GLSL.std.450");
-    uint32_t diff = m.takeId();
-    out.emplace_back(spv::OpFSub, f, diff, std::vector<uint32_t>{w, one});
-    uint32_t absDiff = m.takeId();
-    out.emplace_back(spv::OpExtInst, f, absDiff, std::vector<uint32_t>{glsl, GLSLstd450FAbs, diff});
-    out.emplace_back(spv::OpFOrdGreaterThan, boolType, far,
-                     std::vector<uint32_t>{absDiff, m.constantFloat(spec.epsilon)});
+    uint32_t diff = b.add(spv::OpFSub, f, {w, one});
+    uint32_t absDiff = b.add(spv::OpExtInst, f, {glsl, GLSLstd450FAbs, diff});
+    b.addAs(far, spv::OpFOrdGreaterThan, boolType, {absDiff, m.constantFloat(spec.epsilon)});
   }
   // An infinite w is not shifted either: separation 0 times infinity would be NaN.
-  uint32_t infinite = m.takeId();
-  out.emplace_back(spv::OpIsInf, boolType, infinite, std::vector<uint32_t>{w});
-  uint32_t finite = m.takeId();
-  out.emplace_back(spv::OpLogicalNot, boolType, finite, std::vector<uint32_t>{infinite});
-  uint32_t farAndFinite = m.takeId();
-  out.emplace_back(spv::OpLogicalAnd, boolType, farAndFinite, std::vector<uint32_t>{far, finite});
-  uint32_t cond = m.takeId();
-  out.emplace_back(spv::OpLogicalAnd, boolType, cond, std::vector<uint32_t>{stereo, farAndFinite});
-  return cond;
+  uint32_t infinite = b.add(spv::OpIsInf, boolType, {w});
+  uint32_t finite = b.add(spv::OpLogicalNot, boolType, {infinite});
+  uint32_t farAndFinite = b.add(spv::OpLogicalAnd, boolType, {far, finite});
+  return b.add(spv::OpLogicalAnd, boolType, {stereo, farAndFinite});
 }
 
 uint32_t emitShiftedVec4Select(PassContext& context, std::vector<Instruction>& out, uint32_t value) {
   auto& m = context.module;
   uint32_t f = m.typeFloat(32);
   uint32_t v4 = m.typeVector(f, 4);
-  uint32_t x = m.takeId();
-  out.emplace_back(spv::OpCompositeExtract, f, x, std::vector<uint32_t>{value, 0});
-  uint32_t w = m.takeId();
-  out.emplace_back(spv::OpCompositeExtract, f, w, std::vector<uint32_t>{value, 3});
+  Builder b(m, out);
+  uint32_t x = b.extract(f, value, 0);
+  uint32_t w = b.extract(f, value, 3);
   ShiftSpec spec = shiftSpec(context);
   uint32_t shifted = emitShiftedX(context, spec, out, x, w);
-  if (uint32_t cond = emitCutoffCondition(context, spec, out, w)) {
-    uint32_t chosen = m.takeId();
-    out.emplace_back(spv::OpSelect, f, chosen, std::vector<uint32_t>{cond, shifted, x});
-    shifted = chosen;
-  }
-  uint32_t result = m.takeId();
-  out.emplace_back(spv::OpCompositeInsert, v4, result, std::vector<uint32_t>{shifted, value, 0});
-  return result;
+  if (uint32_t cond = emitCutoffCondition(context, spec, out, w)) shifted = b.add(spv::OpSelect, f, {cond, shifted, x});
+  return b.add(spv::OpCompositeInsert, v4, {shifted, value, 0});
 }
 
 }  // namespace stereoshift

@@ -8,10 +8,11 @@
 // instance (`instance >> 1`), and the eye goes to the `stereoEye` varying and, from the stage that
 // rasterizes (vertex, tessellation evaluation or geometry), to the render-target layer or the
 // viewport index; the stages between hand it on.
-#include "passes/pass_registry.h"
 #include "passes/eye_select.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 
+#include "passes/ir/builder.h"
 #include "passes/ir/replace_uses.h"
 
 namespace stereoshift {
@@ -223,8 +224,7 @@ uint32_t declareEyeRouteTarget(PassContext& ctx) {
     // plain output carrying the semantic, which the back end puts back like any source semantic.
     m.setName(target, "stereoLayer");  // SPIRV-Cross reserves gl_ names for its built-ins
     m.decorate(target, spv::DecorationLocation, {o.eyeVaryingLocation + 1});
-    m.annotations.emplace_back(spv::OpDecorateString, 0, 0, std::vector<uint32_t>{target, uint32_t(spv::DecorationUserSemantic)});
-    for (uint32_t word : spirv::encodeString("SV_RenderTargetArrayIndex")) m.annotations.back().operands.push_back(word);
+    m.decorateString(target, spv::DecorationUserSemantic, "SV_RenderTargetArrayIndex");
     addExtension(m, "SPV_GOOGLE_decorate_string");
     addExtension(m, "SPV_GOOGLE_hlsl_functionality1");
     return target;
@@ -268,8 +268,9 @@ bool routeInstancedEye(PassContext& ctx) {
       failed = true;
       return code;
     }
-    if (target) code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{target, eye});
-    code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{varying, eye});
+    spirv::Builder b(m, code);
+    if (target) b.store(target, eye);
+    b.store(varying, eye);
     return code;
   };
   if (model == spv::ExecutionModelGeometry) {
@@ -294,11 +295,11 @@ bool handOnViewIndex(PassContext& ctx) {
   uint32_t view = emitLoad(m, code, viewIndex);
   const Instruction* type = m.definition(m.pointeeType(m.definition(viewIndex)->typeId));
   if (type && type->operand(1) == 0) {  // gl_ViewID_OVR is a uint
-    uint32_t asInt = m.takeId();
-    code.emplace_back(spv::OpBitcast, m.typeInt(32, true), asInt, std::vector<uint32_t>{view});
-    view = asInt;
+    spirv::Builder b(m, code);
+    uint32_t asInt = b.reserveId();
+    view = b.addAs(asInt, spv::OpBitcast, m.typeInt(32, true), {view});
   }
-  code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{varying, view});
+  spirv::Builder(m, code).store(varying, view);
   prependToEntry(m, code);
   // GL_OVR_multiview lets only gl_Position depend on the view; this output does (and the shifted
   // halo outputs may), which GL_OVR_multiview2, the extension SPIRV-Cross declares, allows.

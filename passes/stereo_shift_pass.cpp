@@ -4,8 +4,9 @@
 // before every EmitVertex / EmitStreamVertex of a geometry shader (in any function). A mesh shader
 // has no such point (each invocation writes any vertices of the per-vertex output array, in any
 // order): there the value of every store of a whole clip position is shifted instead.
-#include "passes/pass_registry.h"
+#include "passes/ir/builder.h"
 #include "passes/pass.h"
+#include "passes/pass_registry.h"
 #include "passes/shift_emitter.h"
 
 #include <optional>
@@ -13,6 +14,7 @@
 namespace stereoshift {
 
 using spirv::Block;
+using spirv::Builder;
 using spirv::Instruction;
 
 namespace {
@@ -190,12 +192,11 @@ class StereoShiftPass final : public Pass {
 
     if (!branch) {
       std::vector<Instruction> code;
+      Builder b(m, code);
       for (const auto& p : positions) {
         uint32_t pointer = positionPointer(ctx, code, p, v4);
-        uint32_t value = m.takeId();
-        code.emplace_back(spv::OpLoad, v4, value, std::vector<uint32_t>{pointer});
-        uint32_t shifted = emitShiftedVec4Select(ctx, code, value);
-        code.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{pointer, shifted});
+        uint32_t value = b.load(v4, pointer);
+        b.store(pointer, emitShiftedVec4Select(ctx, code, value));
       }
       auto& insts = fn.blocks[bi].instructions;
       insts.insert(insts.begin() + static_cast<long>(at), code.begin(), code.end());
@@ -204,54 +205,40 @@ class StereoShiftPass final : public Pass {
       return false;
     }
 
-    // head: load the position and test the cutoff; then: store the shifted x; rest: the site onward.
-    Block& head = fn.blocks[bi];
-    uint32_t headLabel = head.labelId;
-    Block rest{m.takeId(), {}};
-    rest.instructions.assign(head.instructions.begin() + static_cast<long>(at), head.instructions.end());
-    head.instructions.resize(at);
+    // head: load the position and test the cutoff; then: store the shifted x; rest: the site onward
+    // (its successors' phis now name it).
+    const uint32_t restLabel = m.takeId();
+    spirv::splitBlock(m, fn, bi, at, restLabel);
     Block then{m.takeId(), {}};
 
     // Several clip positions are exotic; each gets its own guard inside the single then-block.
-    std::vector<Instruction>& headCode = head.instructions;
+    std::vector<Instruction>& headCode = fn.blocks[bi].instructions;
+    Builder b(m, headCode, true);
     const auto& p = positions.front();
     uint32_t pointer = positionPointer(ctx, headCode, p, v4);
-    uint32_t value = m.takeId();
-    headCode.emplace_back(spv::OpLoad, v4, value, std::vector<uint32_t>{pointer});
-    uint32_t w = m.takeId();
-    headCode.emplace_back(spv::OpCompositeExtract, f, w, std::vector<uint32_t>{value, 3});
+    uint32_t value = b.load(v4, pointer);
+    uint32_t w = b.extract(f, value, 3);
     uint32_t cond = emitCutoffCondition(ctx, headCode, w);
-    headCode.emplace_back(spv::OpSelectionMerge, 0, 0, std::vector<uint32_t>{rest.labelId, 0});
-    headCode.emplace_back(spv::OpBranchConditional, 0, 0, std::vector<uint32_t>{cond, then.labelId, rest.labelId});
+    b.addVoid(spv::OpSelectionMerge, {restLabel, 0});
+    b.addVoid(spv::OpBranchConditional, {cond, then.labelId, restLabel});
 
-    uint32_t x = m.takeId();
-    then.instructions.emplace_back(spv::OpCompositeExtract, f, x, std::vector<uint32_t>{value, 0});
+    b.appendTo(then.instructions);
+    uint32_t x = b.extract(f, value, 0);
     uint32_t shiftedX = emitShiftedX(ctx, then.instructions, x, w);
-    uint32_t xPointer = m.takeId();
+    uint32_t xPointer = b.reserveId();
     std::vector<uint32_t> chain = {p.variable};
     if (p.isMember) chain.push_back(m.constantInt(static_cast<int32_t>(p.member)));
     chain.push_back(m.constantInt(0));
-    then.instructions.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, f), xPointer, chain);
-    then.instructions.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{xPointer, shiftedX});
+    b.addAs(xPointer, spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, f), chain);
+    b.store(xPointer, shiftedX);
     for (size_t i = 1; i < positions.size(); ++i) {  // further positions: branch-free
       const auto& extra = positions[i];
       uint32_t extraPointer = positionPointer(ctx, then.instructions, extra, v4);
-      uint32_t extraValue = m.takeId();
-      then.instructions.emplace_back(spv::OpLoad, v4, extraValue, std::vector<uint32_t>{extraPointer});
-      uint32_t shifted = emitShiftedVec4Select(ctx, then.instructions, extraValue);
-      then.instructions.emplace_back(spv::OpStore, 0, 0, std::vector<uint32_t>{extraPointer, shifted});
+      uint32_t extraValue = b.load(v4, extraPointer);
+      b.store(extraPointer, emitShiftedVec4Select(ctx, then.instructions, extraValue));
     }
-    then.instructions.emplace_back(spv::OpBranch, 0, 0, std::vector<uint32_t>{rest.labelId});
-
-    // Successors' phis that named the head as their predecessor now come from the rest block.
-    for (auto& block : fn.blocks)
-      for (auto& inst : block.instructions) {
-        if (inst.opcode != spv::OpPhi) continue;
-        for (size_t k = 1; k < inst.operands.size(); k += 2)
-          if (inst.operands[k] == headLabel) inst.operands[k] = rest.labelId;
-      }
+    b.branch(restLabel);
     fn.blocks.insert(fn.blocks.begin() + static_cast<long>(bi) + 1, std::move(then));
-    fn.blocks.insert(fn.blocks.begin() + static_cast<long>(bi) + 2, std::move(rest));
     m.invalidateDefinitions();
     return true;
   }
@@ -259,10 +246,10 @@ class StereoShiftPass final : public Pass {
   static uint32_t positionPointer(PassContext& ctx, std::vector<Instruction>& out, const ClipPosition& p, uint32_t v4) {
     if (!p.isMember) return p.variable;
     auto& m = ctx.module;
-    uint32_t pointer = m.takeId();
-    out.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, v4), pointer,
-                     std::vector<uint32_t>{p.variable, m.constantInt(static_cast<int32_t>(p.member))});
-    return pointer;
+    Builder b(m, out);
+    uint32_t pointer = b.reserveId();
+    return b.addAs(pointer, spv::OpAccessChain, m.typePointer(spv::StorageClassOutput, v4),
+                   {p.variable, m.constantInt(static_cast<int32_t>(p.member))});
   }
 };
 

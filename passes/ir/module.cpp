@@ -269,6 +269,18 @@ void Module::removeDecorations(uint32_t id, spv::Decoration decoration) {
   });
 }
 
+void Module::decorateString(uint32_t id, spv::Decoration decoration, std::string_view text) {
+  std::vector<uint32_t> ops = {id, uint32_t(decoration)};
+  for (uint32_t word : encodeString(text)) ops.push_back(word);
+  annotations.emplace_back(spv::OpDecorateString, 0, 0, std::move(ops));
+}
+
+void Module::addExtension(std::string_view name) {
+  for (const auto& inst : extensions)
+    if (inst.stringOperand(0) == name) return;
+  extensions.emplace_back(spv::OpExtension, 0, 0, encodeString(name));
+}
+
 void Module::forgetIds(const std::set<uint32_t>& ids) {
   auto targets = [&](const Instruction& inst) { return ids.count(inst.operand(0)) > 0; };
   std::erase_if(debugNames, targets);
@@ -328,6 +340,22 @@ uint32_t Module::newStruct(const std::vector<uint32_t>& memberTypes) {
   return id;
 }
 
+uint32_t Module::newArrayType(uint32_t elementType, uint32_t lengthId) {
+  uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpTypeArray, 0, id, std::vector<uint32_t>{elementType, lengthId});
+  invalidateDefinitions();
+  return id;
+}
+
+uint32_t Module::constantNull(uint32_t type) {
+  for (const auto& inst : typesValues)
+    if (inst.opcode == spv::OpConstantNull && inst.typeId == type) return inst.resultId;
+  const uint32_t id = takeId();
+  typesValues.emplace_back(spv::OpConstantNull, type, id);
+  invalidateDefinitions();
+  return id;
+}
+
 uint32_t Module::scalarConstant(uint32_t type, uint32_t bits) {
   if (uint32_t found = findConstant(type, spv::OpConstant, {bits})) return found;
   uint32_t id = takeId();
@@ -382,6 +410,12 @@ bool Module::hasCapability(spv::Capability capability) const {
 void Module::addCapability(spv::Capability capability) {
   if (!hasCapability(capability))
     capabilities.emplace_back(spv::OpCapability, 0, 0, std::vector<uint32_t>{uint32_t(capability)});
+}
+
+void Module::addExecutionMode(spv::ExecutionMode mode, std::vector<uint32_t> literals) {
+  std::vector<uint32_t> operands = {entryFunctionId(), uint32_t(mode)};
+  operands.insert(operands.end(), literals.begin(), literals.end());
+  executionModes.emplace_back(spv::OpExecutionMode, 0, 0, std::move(operands));
 }
 
 spv::ExecutionModel Module::executionModel() const {

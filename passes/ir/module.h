@@ -116,6 +116,10 @@ class Module {
   void decorateMember(uint32_t structId, uint32_t member, spv::Decoration decoration,
                       std::vector<uint32_t> literals = {});
   void removeDecorations(uint32_t id, spv::Decoration decoration);
+  // OpDecorateString (SPV_GOOGLE_decorate_string): `id` decorated with a string literal.
+  void decorateString(uint32_t id, spv::Decoration decoration, std::string_view text);
+  // OpExtension `name`, unless the module declares it already.
+  void addExtension(std::string_view name);
   // Drops the OpName / OpMemberName and the decorations whose target is one of `ids` (ids that are
   // going away: removed variables, the values of removed functions).
   void forgetIds(const std::set<uint32_t>& ids);
@@ -128,6 +132,10 @@ class Module {
   uint32_t typePointer(spv::StorageClass storage, uint32_t pointee);
   uint32_t typeArray(uint32_t elementType, uint32_t length);  // length: a literal, stored as a uint constant
   uint32_t newStruct(const std::vector<uint32_t>& memberTypes);  // structs are always distinct
+  // A new array type of `lengthId` elements (a constant's id), distinct from any other (for a type
+  // that gets decorations of its own, an ArrayStride).
+  uint32_t newArrayType(uint32_t elementType, uint32_t lengthId);
+  uint32_t constantNull(uint32_t type);  // find-or-create
   uint32_t constantFloat(float value);
   uint32_t constantInt(int32_t value);
   uint32_t specConstantFloat(float value);  // a new OpSpecConstant each call
@@ -140,6 +148,8 @@ class Module {
   // --- capabilities / entry points ---
   bool hasCapability(spv::Capability capability) const;
   void addCapability(spv::Capability capability);
+  // OpExecutionMode of the entry point's function.
+  void addExecutionMode(spv::ExecutionMode mode, std::vector<uint32_t> literals = {});
   spv::ExecutionModel executionModel() const;  // of the first entry point
   std::string entryPointName() const;
   uint32_t entryFunctionId() const;

@@ -2,6 +2,7 @@
 #include "passes/per_eye_view/eye_offset.h"
 
 #include "passes/eye_param_emitter.h"
+#include "passes/ir/builder.h"
 #include "passes/ir/walker.h"
 #include "passes/pass.h"
 #include "passes/per_eye_view/name_hints.h"
@@ -235,26 +236,22 @@ uint32_t emitLoadSlot(Module& m, std::vector<Instruction>& out, const Slot& slot
   uint32_t type = slotType(m, slot);
   auto storage = *m.storageClassOf(slot.variable);
   uint32_t pointer = slot.variable;
+  spirv::Builder b(m, out);
   if (!slot.indices.empty()) {
     std::vector<uint32_t> operands = {slot.variable};
     for (uint32_t index : slot.indices) operands.push_back(m.constantInt(static_cast<int32_t>(index)));
-    pointer = m.takeId();
-    out.emplace_back(spv::OpAccessChain, m.typePointer(storage, type), pointer, operands);
+    pointer = b.reserveId();
+    b.addAs(pointer, spv::OpAccessChain, m.typePointer(storage, type), operands);
   }
-  uint32_t value = m.takeId();
-  out.emplace_back(spv::OpLoad, type, value, std::vector<uint32_t>{pointer});
-  return value;
+  return b.load(type, pointer);
 }
 
 // Appends the world-space offset of this eye's centre from the mono camera; returns a vec3 id.
 uint32_t emitEyeOffset(PassContext& ctx, std::vector<Instruction>& out, const OffsetSource& source) {
   auto& m = ctx.module;
   uint32_t f = m.typeFloat(32), v3 = m.typeVector(f, 3), v4 = m.typeVector(f, 4);
-  auto op = [&](spv::Op code, uint32_t type, std::vector<uint32_t> operands) {
-    uint32_t id = m.takeId();
-    out.emplace_back(code, type, id, std::move(operands));
-    return id;
-  };
+  spirv::Builder b(m, out);
+  auto op = [&](spv::Op code, uint32_t type, std::vector<uint32_t> operands) { return b.add(code, type, std::move(operands)); };
   if (source.kind == OffsetSource::EyeOffsetParams) {
     uint32_t x = emitLoadEyeParam(ctx, out, kEyeOffsetX);
     uint32_t y = emitLoadEyeParam(ctx, out, kEyeOffsetY);
@@ -293,9 +290,9 @@ int rewriteCameraLoads(PassContext& ctx, const Slot& camera, const OffsetSource&
   auto v4OfOffset = [&](std::vector<Instruction>& code, uint32_t offset, uint32_t vectorType) {
     const Instruction* t = m.definition(vectorType);
     if (!t || t->operand(1) != 4) return offset;
-    uint32_t widened = m.takeId();
-    code.emplace_back(spv::OpCompositeConstruct, vectorType, widened, std::vector<uint32_t>{offset, m.constantFloat(0.0f)});
-    return widened;
+    spirv::Builder b(m, code);
+    uint32_t widened = b.reserveId();
+    return b.addAs(widened, spv::OpCompositeConstruct, vectorType, {offset, m.constantFloat(0.0f)});
   };
   for (auto& fn : m.functions)
     for (auto& block : fn.blocks)
@@ -312,10 +309,11 @@ int rewriteCameraLoads(PassContext& ctx, const Slot& camera, const OffsetSource&
           block.instructions[i].resultId = mono;
           std::vector<Instruction> code;
           uint32_t addend = v4OfOffset(code, emitEyeOffset(ctx, code, source), columnType);
-          uint32_t column = m.takeId(), moved = m.takeId();
-          code.emplace_back(spv::OpCompositeExtract, columnType, column, std::vector<uint32_t>{mono, 3});
-          code.emplace_back(spv::OpFAdd, columnType, moved, std::vector<uint32_t>{column, addend});
-          code.emplace_back(spv::OpCompositeInsert, matrixType, perEye, std::vector<uint32_t>{moved, mono, 3});
+          spirv::Builder b(m, code);
+          uint32_t column = b.reserveId(), moved = b.reserveId();
+          b.addAs(column, spv::OpCompositeExtract, columnType, {mono, 3});
+          b.addAs(moved, spv::OpFAdd, columnType, {column, addend});
+          b.addAs(perEye, spv::OpCompositeInsert, matrixType, {moved, mono, 3});
           block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
           i += code.size();
           m.invalidateDefinitions();
@@ -334,13 +332,14 @@ int rewriteCameraLoads(PassContext& ctx, const Slot& camera, const OffsetSource&
           block.instructions[i].resultId = mono;
           std::vector<Instruction> code;
           uint32_t addend = v4OfOffset(code, emitEyeOffset(ctx, code, source), memberType);
-          uint32_t member = m.takeId(), moved = m.takeId();
+          spirv::Builder b(m, code);
+          uint32_t member = b.reserveId(), moved = b.reserveId();
           std::vector<uint32_t> extract = {mono}, insert = {moved, mono};
           extract.insert(extract.end(), path.begin(), path.end());
           insert.insert(insert.end(), path.begin(), path.end());
-          code.emplace_back(spv::OpCompositeExtract, memberType, member, extract);
-          code.emplace_back(spv::OpFAdd, memberType, moved, std::vector<uint32_t>{member, addend});
-          code.emplace_back(spv::OpCompositeInsert, structType, perEye, insert);
+          b.addAs(member, spv::OpCompositeExtract, memberType, extract);
+          b.addAs(moved, spv::OpFAdd, memberType, {member, addend});
+          b.addAs(perEye, spv::OpCompositeInsert, structType, insert);
           block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
           i += code.size();
           m.invalidateDefinitions();
@@ -360,14 +359,14 @@ int rewriteCameraLoads(PassContext& ctx, const Slot& camera, const OffsetSource&
         std::vector<Instruction> code;
         uint32_t offset = emitEyeOffset(ctx, code, source);
         uint32_t addend = offset;
+        spirv::Builder b(m, code);
         if (component) {
-          addend = m.takeId();
-          code.emplace_back(spv::OpCompositeExtract, f, addend, std::vector<uint32_t>{offset, componentIndex});
+          addend = b.add(spv::OpCompositeExtract, f, {offset, componentIndex});
         } else if (const Instruction* t = m.definition(type); t && t->operand(1) == 4) {
-          addend = m.takeId();
-          code.emplace_back(spv::OpCompositeConstruct, type, addend, std::vector<uint32_t>{offset, m.constantFloat(0.0f)});
+          addend = b.reserveId();
+          b.addAs(addend, spv::OpCompositeConstruct, type, {offset, m.constantFloat(0.0f)});
         }
-        code.emplace_back(spv::OpFAdd, type, perEye, std::vector<uint32_t>{mono, addend});
+        b.addAs(perEye, spv::OpFAdd, type, {mono, addend});
         block.instructions.insert(block.instructions.begin() + static_cast<long>(i) + 1, code.begin(), code.end());
         i += code.size();
         m.invalidateDefinitions();

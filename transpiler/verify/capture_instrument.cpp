@@ -1,5 +1,7 @@
 #include "transpiler/verify/capture_instrument.h"
 
+#include "passes/ir/builder.h"
+
 #include <algorithm>
 #include <climits>
 #include <map>
@@ -94,8 +96,7 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
   layout->stride = offset;
 
   m.addCapability(spv::CapabilityTransformFeedback);
-  m.executionModes.emplace_back(spv::OpExecutionMode, 0, 0,
-                                std::vector<uint32_t>{m.entryFunctionId(), uint32_t(spv::ExecutionModeXfb)});
+  m.addExecutionMode(spv::ExecutionModeXfb);
   for (size_t i = 0; i < candidates.size(); ++i) {
     const auto& c = candidates[i];
     m.decorate(c.variable, spv::DecorationXfbBuffer, {0});
@@ -129,12 +130,7 @@ uint32_t storedAsUint(spirv::Module& m, uint32_t type) {
 
 // The zero of an integer scalar or vector type (what a stored bool is compared against).
 uint32_t nullOf(spirv::Module& m, uint32_t type) {
-  for (const auto& inst : m.typesValues)
-    if (inst.opcode == spv::OpConstantNull && inst.typeId == type) return inst.resultId;
-  const uint32_t id = m.takeId();
-  m.typesValues.emplace_back(spv::OpConstantNull, type, id);
-  m.invalidateDefinitions();
-  return id;
+  return m.constantNull(type);
 }
 
 // std140 size and alignment of `type`; arrays get a fresh, strided copy of their type in *type,
@@ -174,9 +170,7 @@ void std140(spirv::Module& m, uint32_t* type, uint32_t* size, uint32_t* align, u
       std140(m, &element, &elementSize, &elementAlign, matrixStride);
       uint32_t stride = (std::max({elementSize, elementAlign, 16u}) + 15) & ~15u;
       const Instruction* count = m.definition(length);
-      uint32_t id = m.takeId();
-      m.typesValues.emplace_back(spv::OpTypeArray, 0, id, std::vector<uint32_t>{element, length});
-      m.invalidateDefinitions();
+      uint32_t id = m.newArrayType(element, length);
       m.decorate(id, spv::DecorationArrayStride, {stride});
       *type = id;
       *size = stride * (count ? count->operand(0) : 1);
@@ -286,10 +280,9 @@ void loadStoredBoolsAsBools(spirv::Module& m, const std::set<uint32_t>& uniformP
           rewritten.push_back(std::move(inst));
           continue;
         }
-        const uint32_t loaded = m.takeId();
-        rewritten.emplace_back(spv::OpLoad, stored, loaded, std::vector<uint32_t>{inst.operand(0)});
-        rewritten.emplace_back(spv::OpINotEqual, inst.typeId, inst.resultId,
-                               std::vector<uint32_t>{loaded, nullOf(m, stored)});
+        spirv::Builder b(m, rewritten);
+        const uint32_t loaded = b.load(stored, inst.operand(0));
+        b.addAs(inst.resultId, spv::OpINotEqual, inst.typeId, {loaded, nullOf(m, stored)});
       }
       block.instructions = std::move(rewritten);
     }
@@ -317,10 +310,11 @@ void readLooseUniformsFromBlock(spirv::Module& m, const std::vector<uint32_t>& l
           auto it = memberOf.find(operand);
           if (it == memberOf.end()) continue;
           if (!replacement.count(operand)) {
-            uint32_t id = m.takeId();
+            spirv::Builder b(m, chains);
+            uint32_t id = b.reserveId();
             uint32_t pointee = memberTypes[it->second];
-            chains.emplace_back(spv::OpAccessChain, m.typePointer(spv::StorageClassUniform, pointee), id,
-                                std::vector<uint32_t>{blockVar, m.constantInt(static_cast<int32_t>(it->second))});
+            b.addAs(id, spv::OpAccessChain, m.typePointer(spv::StorageClassUniform, pointee),
+                    {blockVar, m.constantInt(static_cast<int32_t>(it->second))});
             replacement[operand] = id;
             uniformPointers.insert(id);
           }

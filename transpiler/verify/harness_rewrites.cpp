@@ -2,6 +2,7 @@
 #include "transpiler/verify/harness_rewrites.h"
 
 #include "transpiler/verify/stage_synthesis.h"
+#include "passes/ir/builder.h"
 #include "passes/ir/module.h"
 
 #include <algorithm>
@@ -141,11 +142,9 @@ void feedDoubleInputsAsFloats(Module& m) {
                      (inst.operand(0) == id ||
                       std::find(chains.begin(), chains.end(), inst.operand(0)) != chains.end())) {
             const bool whole = inst.operand(0) == id;
-            const uint32_t loaded = m.takeId();
-            rewritten.emplace_back(spv::OpLoad, whole ? floatType : floatScalar, loaded,
-                                   std::vector<uint32_t>{whole ? floatVar : inst.operand(0)});
-            rewritten.emplace_back(spv::OpFConvert, whole ? doubleType : doubleScalar, inst.resultId,
-                                   std::vector<uint32_t>{loaded});
+            spirv::Builder b(m, rewritten);
+            const uint32_t loaded = b.load(whole ? floatType : floatScalar, whole ? floatVar : inst.operand(0));
+            b.addAs(inst.resultId, spv::OpFConvert, whole ? doubleType : doubleScalar, {loaded});
             continue;
           }
           rewritten.push_back(std::move(inst));
