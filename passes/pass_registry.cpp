@@ -22,8 +22,7 @@ const std::vector<PassInfo>& passRegistry() {
 }
 
 bool passRunsFor(const PassInfo& info, const PassOptions& options) {
-  if (std::string_view(info.name) == "single-pass-stereo") return options.eye.select != EyeSelect::Parameter;
-  return true;
+  return !info.runsFor || info.runsFor(options);
 }
 
 const PassInfo* findPass(std::string_view name) {

@@ -24,6 +24,8 @@ struct PassInfo {
   AnalysisSet requiredAnalyses; // cached analyses it reads (computed on the first request)
   AnalysisSet preservedAnalyses;  // still valid after it changed the module
   EditSet edits = kNoEdits;     // what its change to the module is, for the routes (none: analysis only)
+  // An opt-in mode's pass: whether a full pipeline with these options runs it (null: always).
+  bool (*runsFor)(const PassOptions& options) = nullptr;
 };
 
 // Each pass's entry, defined beside the pass (in pipeline order).

@@ -361,7 +361,9 @@ PassInfo singlePassStereoPassInfo() {
           "--eye-source multiview | instanced",
           "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
           "reads it rewrites are only the application's own",
-          {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis, static_cast<EditSet>(EditKind::SinglePassEye)};
+          {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis, static_cast<EditSet>(EditKind::SinglePassEye),
+          // Only in the single-pass modes: a two-pass conversion's report never shows it.
+          [](const PassOptions& options) { return options.eye.select != EyeSelect::Parameter; }};
 }
 
 }  // namespace stereoshift

@@ -336,6 +336,17 @@ std::string glslangsGap(const StagePlan& plan, const TranspileOptions& options) 
   return gap;
 }
 
+// What a stage glslang could not analyse becomes: its text as written, or its text with the shift
+// spliced in by a text-only route. writeTextOutcome is the one place such a stage's record and
+// output are filled.
+struct TextOutcome {
+  std::string output;
+  bool copied = true;                             // the input as it is
+  std::optional<StageRecord::TextOnly> textOnly;  // what the analysis could not do, and why
+  const char* route = nullptr;                    // the text-only route that spliced it
+  int spliceSites = 0;
+};
+bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome);
 bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
@@ -393,16 +404,9 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
   plan.diags.warning(file, "glslang cannot analyse this " + std::string(stageName(stage)) + " stage (its text has " +
                                gap + "); it takes no shift, so it is copied unchanged, without the per-eye fixes an "
                                "analysis might find; --require-analysis makes this an error");
-  StageRecord& record = plan.record;
-  record.stage = stage;
-  record.stageReason = plan.stage->reason;
-  record.textOnly = StageRecord::TextOnly{reason, {"per-eye view vectors", "deferred unprojection"}, {}, true};
-  record.output = StageRecord::Output::Copied;
-  record.totalMs = msSince(plan.started);
-  plan.output = plan.input->contents;
-  plan.copied = true;
-  plan.changed = false;
-  return true;
+  TextOutcome copy{plan.input->contents};
+  copy.textOnly = StageRecord::TextOnly{reason, {"per-eye view vectors", "deferred unprojection"}, {}, true};
+  return writeTextOutcome(plan, stage, std::move(copy));
 }
 
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
@@ -449,14 +453,7 @@ bool copyLeftToDriver(StagePlan& plan, Stage stage) {
   demoteGlslangErrors(plan);
   plan.diags.warning(file, "glslang cannot analyse this shader; with --corrections-only its position is left to the driver "
                      "and no correction is looked for: copied unchanged");
-  StageRecord& record = plan.record;
-  record.stage = stage;
-  record.stageReason = plan.stage->reason;
-  record.output = StageRecord::Output::Copied;
-  record.totalMs = msSince(plan.started);
-  plan.output = plan.input->contents;
-  plan.changed = false;
-  return true;
+  return writeTextOutcome(plan, stage, TextOutcome{plan.input->contents});
 }
 
 bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route) {
@@ -470,16 +467,27 @@ bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, cons
   for (const auto& what : shifted.notDone) notDone += (notDone.empty() ? "" : ", ") + what;
   plan.diags.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "
                            "done: " + notDone + "); --require-analysis makes this an error");
+  TextOutcome spliced{std::move(shifted.output), false};
+  spliced.textOnly = StageRecord::TextOnly{reason, shifted.notDone, shifted.eyeParams};
+  spliced.route = route;
+  spliced.spliceSites = shifted.sites;
+  return writeTextOutcome(plan, stage, std::move(spliced));
+}
+
+bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome) {
   StageRecord& record = plan.record;
   record.stage = stage;
   record.stageReason = plan.stage->reason;
-  record.textOnly = StageRecord::TextOnly{reason, shifted.notDone, shifted.eyeParams};
-  record.emit.route = route;
-  record.emit.spliceSites = shifted.sites;
-  record.output = StageRecord::Output::Emitted;
+  if (outcome.textOnly) record.textOnly = std::move(*outcome.textOnly);
+  if (outcome.route) {
+    record.emit.route = outcome.route;
+    record.emit.spliceSites = outcome.spliceSites;
+  }
+  record.output = outcome.copied ? StageRecord::Output::Copied : StageRecord::Output::Emitted;
   record.totalMs = msSince(plan.started);
-  plan.output = std::move(shifted.output);
-  plan.changed = true;
+  plan.output = std::move(outcome.output);
+  plan.copied = outcome.copied;
+  plan.changed = !outcome.copied;
   return true;
 }
 
