@@ -86,15 +86,6 @@ std::vector<std::array<float, 4>> tableVertices() {
   return v;
 }
 
-VertexBuffer clipVertices(const std::vector<std::array<float, 4>>& clips) {
-  VertexBuffer vb;
-  vb.stride = 16;
-  vb.attributes = {{0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-  vb.bytes.resize(clips.size() * 16);
-  std::memcpy(vb.bytes.data(), clips.data(), vb.bytes.size());
-  return vb;
-}
-
 // How many table vertices the spec's cutoff keeps: what a stereo run must leave in place.
 uint32_t keptByCutoff(CutoffMode cutoff, float epsilon) {
   uint32_t kept = 0;

@@ -31,15 +31,6 @@ layout(set = 0, binding = 0) uniform Scale { mediump float k; } scale;
 void main() { mediump vec4 p = inClip * scale.k; gl_Position = p; }
 )";
 
-VertexBuffer clipVertices(const std::vector<std::array<float, 4>>& clips) {
-  VertexBuffer vb;
-  vb.stride = 16;
-  vb.attributes = {{0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-  vb.bytes.resize(clips.size() * 16);
-  std::memcpy(vb.bytes.data(), clips.data(), vb.bytes.size());
-  return vb;
-}
-
 std::vector<StageModules> build(const char* source, const TranspileOptions& options) {
   std::vector<StageModules> stages;
   std::string classification;

@@ -8,8 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace stereoshift::harness {
 
@@ -26,5 +29,16 @@ class VulkanSuite : public Base {
   static inline std::unique_ptr<VulkanContext> context_;
   static inline std::string setupError_;
 };
+
+// Clip positions as vertex attribute 0 (vec4): a pass-through vertex shader (gl_Position = the
+// attribute) then reaches the shift's guard with exactly these x and w (the numerical tests).
+inline VertexBuffer clipVertices(const std::vector<std::array<float, 4>>& clips) {
+  VertexBuffer vb;
+  vb.stride = 16;
+  vb.attributes = {{0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
+  vb.bytes.resize(clips.size() * 16);
+  std::memcpy(vb.bytes.data(), clips.data(), vb.bytes.size());
+  return vb;
+}
 
 }  // namespace stereoshift::harness

@@ -3,6 +3,7 @@
 // the cursor is inside the module, and splitBlock moving the tail and the successors' phis.
 #include "passes/ir/builder.h"
 #include "passes/ir/module.h"
+#include "test/unit/spirv_text.h"
 
 #include <gtest/gtest.h>
 
@@ -41,14 +42,7 @@ const char* kLoop = R"(
                OpFunctionEnd
 )";
 
-Module parseOrDie(const char* text) {
-  std::string error;
-  auto words = assemble(text, &error);
-  EXPECT_FALSE(words.empty()) << error;
-  auto m = Module::parse(words, &error);
-  EXPECT_TRUE(m.has_value()) << error;
-  return std::move(*m);
-}
+using stereoshift::spirv::test::parseOrDie;
 
 TEST(IrBuilder, IdsFollowTheCallsAndAReservedIdNumbersFirst) {
   Module m = parseOrDie(kLoop);

@@ -2,6 +2,7 @@
 // literals, result types and global references are not uses.
 #include "passes/ir/def_use.h"
 #include "passes/ir/module.h"
+#include "test/unit/spirv_text.h"
 
 #include <gtest/gtest.h>
 
@@ -55,14 +56,7 @@ const char* kFragment = R"(
                OpFunctionEnd
 )";
 
-Module parseOrDie(const char* text) {
-  std::string error;
-  auto words = assemble(text, &error);
-  EXPECT_FALSE(words.empty()) << error;
-  auto m = Module::parse(words, &error);
-  EXPECT_TRUE(m.has_value()) << error;
-  return std::move(*m);
-}
+using stereoshift::spirv::test::parseOrDie;
 
 // A use as (user's result id or opcode, operand index), for readable comparisons.
 struct Seen {

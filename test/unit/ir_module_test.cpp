@@ -1,5 +1,6 @@
 // The SPIR-V module IR: parse/encode round trips, find-or-create, decorations.
 #include "passes/ir/module.h"
+#include "test/unit/spirv_text.h"
 
 #include <gtest/gtest.h>
 
@@ -30,14 +31,7 @@ const char* kVertex = R"(
                OpFunctionEnd
 )";
 
-Module parseOrDie(const char* text) {
-  std::string error;
-  auto words = assemble(text, &error);
-  EXPECT_FALSE(words.empty()) << error;
-  auto m = Module::parse(words, &error);
-  EXPECT_TRUE(m.has_value()) << error;
-  return std::move(*m);
-}
+using stereoshift::spirv::test::parseOrDie;
 
 TEST(SpirvModule, RoundTripIsWordExact) {
   std::string error;

@@ -3,6 +3,7 @@
 #include "passes/ir/def_use.h"
 #include "passes/ir/module.h"
 #include "passes/ir/replace_uses.h"
+#include "test/unit/spirv_text.h"
 
 #include <gtest/gtest.h>
 
@@ -52,14 +53,7 @@ const char* kFragment = R"(
                OpFunctionEnd
 )";
 
-Module parseOrDie(const char* text) {
-  std::string error;
-  auto words = assemble(text, &error);
-  EXPECT_FALSE(words.empty()) << error;
-  auto m = Module::parse(words, &error);
-  EXPECT_TRUE(m.has_value()) << error;
-  return std::move(*m);
-}
+using stereoshift::spirv::test::parseOrDie;
 
 const Instruction& defining(const Module& m, uint32_t id) {
   const Instruction* def = m.definition(id);

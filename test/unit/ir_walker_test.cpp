@@ -2,6 +2,7 @@
 // block they report, editing through the mutable walk, and stopping at the first match.
 #include "passes/ir/module.h"
 #include "passes/ir/walker.h"
+#include "test/unit/spirv_text.h"
 
 #include <gtest/gtest.h>
 
@@ -43,14 +44,7 @@ const char* kTwoFunctions = R"(
                OpFunctionEnd
 )";
 
-Module parseOrDie(const char* text) {
-  std::string error;
-  auto words = assemble(text, &error);
-  EXPECT_FALSE(words.empty()) << error;
-  auto m = Module::parse(words, &error);
-  EXPECT_TRUE(m.has_value()) << error;
-  return std::move(*m);
-}
+using stereoshift::spirv::test::parseOrDie;
 
 using Visit = std::tuple<uint32_t, uint32_t, spv::Op, uint32_t>;  // function, block label, opcode, result
 
