@@ -1,0 +1,251 @@
+// The text routes of the driver: this turns a stage glslang could not analyse (it refused the
+// text, or crashed on it) into its output without a SPIR-V module, as the back end's routes turn an
+// analysed one: copied as it is, or with the shift spliced from the text alone (text_only_shift.h),
+// each said in a warning and in the report. See stage_plan.h (shiftStageFromText).
+#include "transpiler/stage_plan.h"
+
+#include "transpiler/frontend/mesa_compiler.h"
+#include "transpiler/source/stage_rules.h"
+#include "transpiler/text_only_shift.h"
+
+#include <algorithm>
+
+namespace stereoshift {
+
+namespace {
+std::string demoteGlslangErrors(StagePlan& plan);
+
+constexpr const char* kOtherUnits = "functions or a main defined in another compilation unit of its stage";
+
+// One compilation unit of a stage OpenGL links from several shader objects (the pipeline holds
+// another unit of its stage), refused by glslang only at its link: its functions' bodies or its
+// `main` are in another unit, which glslang, compiling one file, cannot see.
+bool linkedWithOtherUnits(const StagePlan& plan, const TranspileOptions& options) {
+  const auto& all = plan.diags.all();
+  auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
+  return options.stageHasOtherUnits && std::any_of(all.begin(), all.end(), isError) &&
+         std::all_of(all.begin(), all.end(), [&](const Diagnostic& d) {
+           return !isError(d) || d.message.find("No function definition (body) found") != std::string::npos ||
+                  d.message.find("Missing entry point") != std::string::npos ||
+                  d.message.find("ERROR: Linking") != std::string::npos;
+         });
+}
+
+// Whether an error of glslang's refusal is about the shader's #include files (those are the input's).
+bool errorsInIncludes(const StagePlan& plan) {
+  return std::any_of(plan.diags.all().begin(), plan.diags.all().end(), [&](const Diagnostic& d) {
+    return d.severity == Severity::Error &&
+           (d.message.find("includ") != std::string::npos || (!d.file.empty() && d.file != plan.input->path));
+  });
+}
+
+// What may make glslang's refusal glslang's own gap rather than the shader's error: what the text
+// uses that glslang reads more narrowly than drivers (glslangGapIn), a unit of a stage linked from
+// several, or a crash (whatever the text). Empty: the shader's own error.
+std::string glslangsGap(const StagePlan& plan, const TranspileOptions& options) {
+  std::string gap = glslangGapIn(plan.input->contents);
+  if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
+  if (gap.empty() && options.glslangCrashed) gap = "what crashed glslang";
+  if (gap.empty() && !options.crashedAfterFrontEnd.empty()) gap = "what crashed " + options.crashedAfterFrontEnd;
+  return gap;
+}
+
+// What a stage glslang could not analyse becomes: its text as written, or its text with the shift
+// spliced in by a text-only route. writeTextOutcome is the one place such a stage's record and
+// output are filled.
+struct TextOutcome {
+  std::string output;
+  bool copied = true;                             // the input as it is
+  std::optional<StageRecord::TextOnly> textOnly;  // what the analysis could not do, and why
+  const char* route = nullptr;                    // the text-only route that spliced it
+  int spliceSites = 0;
+};
+bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome);
+bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
+bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
+bool copyLeftToDriver(StagePlan& plan, Stage stage);
+bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route);
+}  // namespace
+
+namespace {
+
+// The GLSL text-only shift: only where glslang's refusal may be its own gap (the source uses what
+// glslang reads more narrowly than drivers do: an #extension it enables, a line continuation, the
+// compatibility profile) and no error is about the shader's #include files (those are the input's).
+bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+  if (errorsInIncludes(plan) || std::any_of(plan.diags.all().begin(), plan.diags.all().end(), [](const Diagnostic& d) {
+        return d.severity == Severity::Error && d.message.find("requires SPIR-V") != std::string::npos;
+      }))
+    return false;  // the shader's #include files, or a SPIR-V version --target-env / --target-spv gives
+  // The shader's own error, said as it is.
+  if (glslangsGap(plan, options).empty()) return false;
+  // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
+  if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
+  TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
+  return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only") && checkOutputWithMesa(plan);
+}
+
+// The ways to write a stage glslang could not analyse (no SPIR-V module), as the back end's routes
+// are for a stage it could: each says whether it takes the stage (cheap, without side effects),
+// then writes it, or finds it cannot after all (false, with diagnostics that say why). At most one
+// takes a stage: the copy is for stages that get no shift, the others for the one that does.
+struct TextRoute {
+  const char* name;
+  bool (*takes)(const StagePlan& plan, const TranspileOptions& options, Stage stage);
+  bool (*write)(StagePlan& plan, const TranspileOptions& options, Stage stage);
+};
+
+bool shiftsFromText(const StagePlan& plan, const TranspileOptions& options, Stage stage) {
+  return mayShiftFromText(stage, plan.front.info.language, options, options);
+}
+
+const TextRoute kTextRoutes[] = {
+    // A GLSL stage that takes no shift, copied as it is (copiesUnshiftedStage).
+    {"unanalysed-copy",
+     [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
+       const bool preRaster = stage == Stage::Vertex || stage == Stage::TessEvaluation || stage == Stage::Geometry;
+       const bool sameLanguage = options.target == TargetLanguage::Auto || options.target == TargetLanguage::Glsl ||
+                                 options.target == TargetLanguage::Essl;
+       return !(preRaster && options.shiftThisStage) && plan.front.info.language == SourceLanguage::Glsl &&
+              !options.requireAnalysis && !options.forceReemit && !options.targetVersion && sameLanguage;
+     },
+     copiesUnshiftedStage},
+    // --corrections-only: the driver shifts the position; nothing to correct without an analysis.
+    {"corrections-only-copy",
+     [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
+       return options.correctionsOnly && shiftsFromText(plan, options, stage);
+     },
+     [](StagePlan& plan, const TranspileOptions&, Stage stage) { return copyLeftToDriver(plan, stage); }},
+    {"hlsl-text-only",
+     [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
+       return !options.correctionsOnly && plan.front.info.language == SourceLanguage::Hlsl &&
+              shiftsFromText(plan, options, stage);
+     },
+     shiftHlslStageFromText},
+    {"glsl-text-only",
+     [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
+       return !options.correctionsOnly && plan.front.info.language == SourceLanguage::Glsl &&
+              shiftsFromText(plan, options, stage);
+     },
+     shiftGlslStageFromText},
+};
+
+}  // namespace
+
+bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
+  if (!plan.frontEndRan || !plan.front.glslangRejected || !plan.stage || !plan.stage->stage || !plan.diags.hasErrors())
+    return false;
+  const Stage stage = *plan.stage->stage;
+  for (const TextRoute& route : kTextRoutes)
+    if (route.takes(plan, options, stage)) return route.write(plan, options, stage);
+  return false;
+}
+
+namespace {
+
+// A GLSL stage that takes no shift (fragment, tessellation control, compute, or a pre-rasterization
+// stage before the one a pipeline shifts) which glslang refuses for what it reads more narrowly than
+// drivers (an #extension, a line continuation, the compatibility profile) or crashes on: the output
+// would be its input unless a per-eye fix applied, so it is copied unchanged with a warning that no
+// fix was looked for, and the rest of the pipeline converts. Not with --require-analysis, another
+// output language or version, or errors in its #include files (those are the input's).
+bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+  if (errorsInIncludes(plan)) return false;
+  const std::string gap = glslangsGap(plan, options);
+  if (gap.empty()) return false;
+  if (!mesaAgreesOnOriginal(plan, options, "unanalysed-copy")) return false;
+  const std::string file = plan.input->path;
+  const std::string reason = demoteGlslangErrors(plan);
+  plan.diags.warning(file, "glslang cannot analyse this " + std::string(stageName(stage)) + " stage (its text has " +
+                               gap + "); it takes no shift, so it is copied unchanged, without the per-eye fixes an "
+                               "analysis might find; --require-analysis makes this an error");
+  TextOutcome copy{plan.input->contents};
+  copy.textOnly = StageRecord::TextOnly{reason, {"per-eye view vectors", "deferred unprojection"}, {}, true};
+  return writeTextOutcome(plan, stage, std::move(copy));
+}
+
+bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+  // Decompiled text only: the D3D compiler accepted what it was decompiled from, so glslang's
+  // refusal (or crash) is glslang's; hand-written HLSL glslang refuses keeps its errors.
+  if (!isDecompiledHlsl(*plan.input)) return false;
+  for (const auto& d : plan.diags.all())
+    if (d.severity == Severity::Error && !d.file.empty() && d.file != plan.input->path) return false;  // an #include's
+  // Never past an error of the text's own: the D3D compiler did not compile that.
+  if (auto own = ownTextError(*plan.input)) {
+    plan.diags.add(*own);
+    std::string note = "the decompiled text is broken itself, so no D3D compiler made it: the text-only shift is not "
+                       "taken";
+    if (stageOfDecompiledDump(plan.input->path))
+      note += "; 3Dmigoto's assembly dump of the same shader (" +
+              plan.input->path.substr(0, plan.input->path.size() - std::string("_replace.txt").size()) +
+              ".txt, export_shaders with asm) goes through the assembly route without a decompiler";
+    plan.diags.note(plan.input->path, note);
+    return false;
+  }
+  return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), "hlsl-text-only");
+}
+
+// glslang's errors said as warnings: they say what it could not analyse, and the shader goes to its
+// driver as written. Returns the first of them.
+std::string demoteGlslangErrors(StagePlan& plan) {
+  Diagnostics kept;
+  std::string first;
+  for (Diagnostic d : plan.diags.all()) {
+    if (d.severity == Severity::Error) {
+      if (first.empty()) first = d.format();
+      d.severity = Severity::Warning;
+    }
+    kept.add(std::move(d));
+  }
+  plan.diags = std::move(kept);
+  return first;
+}
+
+// --corrections-only, a pre-rasterization stage glslang cannot analyse: the driver shifts its
+// position, and no correction can be found without an analysis: the input as it is, said so.
+bool copyLeftToDriver(StagePlan& plan, Stage stage) {
+  const std::string& file = plan.input->path;
+  demoteGlslangErrors(plan);
+  plan.diags.warning(file, "glslang cannot analyse this shader; with --corrections-only its position is left to the driver "
+                     "and no correction is looked for: copied unchanged");
+  return writeTextOutcome(plan, stage, TextOutcome{plan.input->contents});
+}
+
+bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route) {
+  const std::string& file = plan.input->path;
+  if (!shifted.ok) {
+    plan.diags.note(file, "no shift from the text alone either: " + shifted.whyNot);
+    return false;
+  }
+  std::string reason = demoteGlslangErrors(plan);
+  std::string notDone;
+  for (const auto& what : shifted.notDone) notDone += (notDone.empty() ? "" : ", ") + what;
+  plan.diags.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "
+                           "done: " + notDone + "); --require-analysis makes this an error");
+  TextOutcome spliced{std::move(shifted.output), false};
+  spliced.textOnly = StageRecord::TextOnly{reason, shifted.notDone, shifted.eyeParams};
+  spliced.route = route;
+  spliced.spliceSites = shifted.sites;
+  return writeTextOutcome(plan, stage, std::move(spliced));
+}
+
+bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome) {
+  StageRecord& record = plan.record;
+  record.stage = stage;
+  record.stageReason = plan.stage->reason;
+  if (outcome.textOnly) record.textOnly = std::move(*outcome.textOnly);
+  if (outcome.route) {
+    record.emit.route = outcome.route;
+    record.emit.spliceSites = outcome.spliceSites;
+  }
+  record.output = outcome.copied ? StageRecord::Output::Copied : StageRecord::Output::Emitted;
+  record.totalMs = msSince(plan.started);
+  plan.output = std::move(outcome.output);
+  plan.copied = outcome.copied;
+  plan.changed = !outcome.copied;
+  return true;
+}
+
+}  // namespace
+
+}  // namespace stereoshift
