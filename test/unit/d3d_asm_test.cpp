@@ -133,10 +133,9 @@ ret
 )";
 
 AsmText parsed(const std::string& text) {
-  AsmText out;
-  AsmError error;
-  EXPECT_TRUE(parseAssembly(text, &out, &error)) << error.message;
-  return out;
+  Result<AsmText> out = parseAssembly(text);
+  EXPECT_TRUE(out) << out.error().message;
+  return out ? *out : AsmText{};
 }
 
 TEST(D3DAsmText, DeclarationWordsAndBracketedOperands) {

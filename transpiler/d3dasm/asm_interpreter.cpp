@@ -155,7 +155,7 @@ struct OperandReader {
   AsmError* error;
 
   bool fail(const Operand& operand, const std::string& why) {
-    *error = {line.number, operand.column, why};
+    *error = errorAt(line.number, operand.column, why);
     return false;
   }
 
@@ -301,7 +301,7 @@ bool readImmediateConstants(const AsmText& text, size_t first, std::vector<Vec4>
       size_t comma = std::min(group.find(',', from), group.size());
       auto value = parseNumber(group.substr(from, comma - from));
       if (!value) {
-        *error = {head.number, 1, "'" + std::string(group) + "' in the immediate constant buffer is not four numbers"};
+        *error = errorAt(head.number, 1, "'" + std::string(group) + "' in the immediate constant buffer is not four numbers");
         return false;
       }
       row[component++] = *value;
@@ -318,7 +318,7 @@ bool readDeclaration(const AsmText& text, size_t k, Program::Impl* p, AsmError* 
   const std::string base = line.baseOpcode();
   const auto& ops = line.operands;
   auto bad = [&](const std::string& why) {
-    *error = {line.number, ops.empty() ? 1 : ops[0].column, why};
+    *error = errorAt(line.number, ops.empty() ? 1 : ops[0].column, why);
     return false;
   };
   auto numbered = [&](std::string_view prefix, size_t operand, uint32_t* n, std::string* letters) {
@@ -424,7 +424,7 @@ bool decodeInstruction(const AsmLine& line, Program::Impl* p, AsmError* error) {
   op.saturate = line.saturates();
   OperandReader reader{*p, line, error};
   auto refuse = [&](const std::string& why) {
-    *error = {line.number, line.indent.size() + 1, why};
+    *error = errorAt(line.number, line.indent.size() + 1, why);
     return false;
   };
   if (base == "label" || base == "call" || base == "callc_nz" || base == "callc_z" || base == "fcall")
@@ -468,8 +468,8 @@ std::unique_ptr<Program> Program::decode(const AsmText& text, AsmError* error) {
   auto impl = std::make_unique<Impl>();
   std::optional<Stage> stage = stageOfShaderModel(text.model);
   if (stage != Stage::Vertex || text.model.major < 4) {
-    *error = {text.lines.empty() ? 0 : text.lines[text.modelLine].number, 1,
-              text.model.text + ": the interpreter runs SM4 and SM5 vertex shaders"};
+    *error = errorAt(text.lines.empty() ? 0 : text.lines[text.modelLine].number, 1,
+              text.model.text + ": the interpreter runs SM4 and SM5 vertex shaders");
     return nullptr;
   }
   // Declarations first: an instruction's registers are checked against them.
@@ -480,13 +480,13 @@ std::unique_ptr<Program> Program::decode(const AsmText& text, AsmError* error) {
     if (line.kind != LineKind::Instruction) continue;
     if (!decodeInstruction(line, impl.get(), error)) return nullptr;
     if (std::string why = flow.add(impl->ops, impl->ops.size() - 1); !why.empty()) {
-      *error = {line.number, line.indent.size() + 1, why};
+      *error = errorAt(line.number, line.indent.size() + 1, why);
       return nullptr;
     }
   }
   if (!flow.open.empty()) {
     const Op& unclosed = impl->ops[flow.open.back().op];
-    *error = {unclosed.line, 1, flow.open.back().code == Code::Loop ? "loop without endloop" : "if without endif"};
+    *error = errorAt(unclosed.line, 1, flow.open.back().code == Code::Loop ? "loop without endloop" : "if without endif");
     return nullptr;
   }
   return std::unique_ptr<Program>(new Program(std::move(impl)));

@@ -5,10 +5,9 @@
 namespace stereoshift {
 
 std::optional<Stage> assemblyStage(const SourceFile& input) {
-  d3dasm::AsmText text;
-  d3dasm::AsmError error;
-  if (!d3dasm::parseAssembly(input.contents, &text, &error)) return std::nullopt;
-  return d3dasm::stageOfShaderModel(text.model);
+  Result<d3dasm::AsmText> text = d3dasm::parseAssembly(input.contents);
+  if (!text) return std::nullopt;
+  return d3dasm::stageOfShaderModel(text->model);
 }
 
 ShiftSpec assemblyShiftSpec(const TranspileOptions& options) {

@@ -153,13 +153,13 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
       std::string mask;
       auto n = registerNumber(line.operands[0].text, "o", &mask);
       if (!n) {
-        *error = {line.number, line.operands[0].column, "the position output '" + line.operands[0].text + "' is not an o register"};
+        *error = errorAt(line.number, line.operands[0].column, "the position output '" + line.operands[0].text + "' is not an o register");
         return false;
       }
       if (d->position && *d->position != *n) {
-        *error = {line.number, line.operands[0].column,
+        *error = errorAt(line.number, line.operands[0].column,
                   "a second position output (o" + std::to_string(*d->position) + " and o" + std::to_string(*n) +
-                      "): the assembly route shifts one"};
+                      "): the assembly route shifts one");
         return false;
       }
       d->position = n;
@@ -171,7 +171,7 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
       const std::string& count = line.operands[0].text;
       auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
       if (ec != std::errc() || end != count.data() + count.size()) {
-        *error = {line.number, line.operands[0].column, "dcl_temps takes a count, not '" + count + "'"};
+        *error = errorAt(line.number, line.operands[0].column, "dcl_temps takes a count, not '" + count + "'");
         return false;
       }
       d->temps = n;
@@ -184,9 +184,9 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
         if (reg.text == "t125" || reg.text.starts_with("t125.")) {
           if (line.opcode != "dcl_resource_texture2d" || line.operands.size() != 2 ||
               line.operands[0].text != "(float,float,float,float)") {
-            *error = {line.number, reg.column,
+            *error = errorAt(line.number, reg.column,
                       "t125 is declared as another resource ('" + line.text.substr(line.indent.size()) +
-                          "'): 3Dmigoto's StereoParams texture lives there"};
+                          "'): 3Dmigoto's StereoParams texture lives there");
             return false;
           }
           d->stereoParamsLine = k;
@@ -202,8 +202,8 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
     const std::string& n = line.operands[1].text;
     std::from_chars(n.data(), n.data() + n.size(), count);
     if (first && *first <= *d->position && *d->position < *first + count) {
-      *error = {line.number, line.operands[0].column, "the position output o" + std::to_string(*d->position) +
-                                                          " is in an indexed output range: its writes cannot be redirected"};
+      *error = errorAt(line.number, line.operands[0].column, "the position output o" + std::to_string(*d->position) +
+                                                          " is in an indexed output range: its writes cannot be redirected");
       return false;
     }
   }
@@ -242,8 +242,12 @@ std::vector<std::string> shiftBlock(const std::string& out, const std::string& m
 
 AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
   AsmShiftResult result;
-  AsmText text;
-  if (!parseAssembly(source, &text, &result.error)) return result;
+  Result<AsmText> parsed = parseAssembly(source);
+  if (!parsed) {
+    result.error = parsed.error();
+    return result;
+  }
+  const AsmText& text = *parsed;
   result.model = text.model.text;
   result.stage = stageOfShaderModel(text.model);
   result.modelLine = text.lines[text.modelLine].number;
@@ -258,9 +262,9 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
     return unchanged(text.model.text + ": only vertex, domain and geometry shaders write the clip position");
   // A D3D9 vertex shader copied as it is would be a mono drop-in that looks converted: an error.
   if (text.model.major < 4) {
-    result.error = {text.lines[text.modelLine].number, text.lines[text.modelLine].indent.size() + 1,
+    result.error = errorAt(text.lines[text.modelLine].number, text.lines[text.modelLine].indent.size() + 1,
                     text.model.text + ": shader model " + std::to_string(text.model.major) +
-                        " (D3D9) assembly is not edited; the assembly route reads SM4 and SM5"};
+                        " (D3D9) assembly is not edited; the assembly route reads SM4 and SM5");
     return result;
   }
 
@@ -308,13 +312,13 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
     if (stage == Stage::Geometry ? isEmit(base) : (isReturn(base) && !inSubroutine)) sites.push_back(k);
   }
   if (result.redirectedWrites == 0) {
-    result.error = {d.positionLineNumber, d.positionColumn,
-                    "the position output " + out + " is declared but no instruction writes it"};
+    result.error = errorAt(d.positionLineNumber, d.positionColumn,
+                    "the position output " + out + " is declared but no instruction writes it");
     return result;
   }
   if (sites.empty()) {
-    result.error = {0, 0, stage == Stage::Geometry ? "no emit instruction: the geometry shader emits no vertex"
-                                                   : "no ret instruction in the main program"};
+    result.error = errorAt(0, 0, stage == Stage::Geometry ? "no emit instruction: the geometry shader emits no vertex"
+                                                   : "no ret instruction in the main program");
     return result;
   }
 

@@ -138,7 +138,7 @@ bool isD3DAssembly(const std::string& text) {
   return false;
 }
 
-bool parseAssembly(const std::string& text, AsmText* out, AsmError* error) {
+Result<AsmText> parseAssembly(const std::string& text) {
   AsmText parsed;
   parsed.newline = text.find("\r\n") != std::string::npos ? "\r\n" : "\n";
   parsed.endsWithNewline = !text.empty() && text.back() == '\n';
@@ -176,8 +176,7 @@ bool parseAssembly(const std::string& text, AsmText* out, AsmError* error) {
     if (!haveModel) {
       auto model = readShaderModel(line.opcode);
       if (!model) {
-        *error = {line.number, first + 1, "'" + line.opcode + "' before the shader model line (vs_5_0, ps_4_0, ...)"};
-        return false;
+        return errorAt(line.number, first + 1, "'" + line.opcode + "' before the shader model line (vs_5_0, ps_4_0, ...)");
       }
       line.kind = LineKind::ShaderModel;
       parsed.model = *model;
@@ -198,21 +197,17 @@ bool parseAssembly(const std::string& text, AsmText* out, AsmError* error) {
     }
     size_t badColumn = 0;
     if (!splitOperands(view, opEnd, code, line.kind == LineKind::Declaration, &line.operands, &badColumn)) {
-      *error = {line.number, badColumn, "unbalanced brackets in the operands of '" + line.opcode + "'"};
-      return false;
+      return errorAt(line.number, badColumn, "unbalanced brackets in the operands of '" + line.opcode + "'");
     }
     parsed.lines.push_back(std::move(line));
   }
   if (!haveModel) {
-    *error = {0, 0, "no shader model line (vs_5_0, ps_4_0, ...): not D3D shader assembly"};
-    return false;
+    return errorAt(0, 0, "no shader model line (vs_5_0, ps_4_0, ...): not D3D shader assembly");
   }
   if (openBraces > 0) {
-    *error = {parsed.lines[openDeclaration].number, 1, "'" + parsed.lines[openDeclaration].opcode + "' opens a brace that is never closed"};
-    return false;
+    return errorAt(parsed.lines[openDeclaration].number, 1, "'" + parsed.lines[openDeclaration].opcode + "' opens a brace that is never closed");
   }
-  *out = std::move(parsed);
-  return true;
+  return parsed;
 }
 
 std::string joinLines(const AsmText& text) {

@@ -7,6 +7,7 @@
 // brace (`dcl_immediateConstantBuffer { {...},`) runs on until its braces close.
 #pragma once
 
+#include "core/result.h"
 #include "core/shader.h"
 
 #include <optional>
@@ -50,10 +51,9 @@ struct AsmText {
   size_t modelLine = 0;          // index of the shader-model line
 };
 
-struct AsmError {
-  size_t line = 0, column = 0;   // 1-based; 0: the whole file
-  std::string message;
-};
+// An error of the assembly reader, the shift or the interpreter: the tool's located diagnostic
+// (core/result.h), its file left to the caller.
+using AsmError = Diagnostic;
 
 // The shader model of `word` (`vs_5_0`, `ps_4_1`, `gs_4_0`, `vs_4_0_level_9_1`), or nullopt.
 std::optional<ShaderModel> readShaderModel(std::string_view word);
@@ -66,7 +66,7 @@ bool isD3DAssembly(const std::string& text);
 
 // Splits `text` into lines; an error where the text is not assembly the route can edit (no
 // shader-model line, unbalanced brackets in an operand list).
-bool parseAssembly(const std::string& text, AsmText* out, AsmError* error);
+Result<AsmText> parseAssembly(const std::string& text);
 
 // The text again: every line as stored, joined with the text's line ending.
 std::string joinLines(const AsmText& text);

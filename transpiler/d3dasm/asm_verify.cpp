@@ -270,10 +270,10 @@ struct Checker {
 };
 
 std::unique_ptr<Program> decodeText(const std::string& text, const char* which, std::string* error) {
-  AsmText parsed;
-  AsmError e;
+  Result<AsmText> parsed = parseAssembly(text);
+  AsmError e = parsed.error();
   std::unique_ptr<Program> program;
-  if (parseAssembly(text, &parsed, &e)) program = Program::decode(parsed, &e);
+  if (parsed) program = Program::decode(*parsed, &e);
   if (!program)
     *error = std::string(which) + " shader, line " + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " +
              e.message;
