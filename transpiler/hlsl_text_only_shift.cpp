@@ -91,7 +91,7 @@ std::optional<Diagnostic> ownTextError(const SourceFile& input) {
   return std::nullopt;
 }
 
-TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options) {
+Result<TextOnlyShift> shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options) {
   TextOnlyShift result;
   HlslSpliceOptions splice;
   static_cast<ShiftSpec&>(splice) = makeShiftSpec(options, true);
@@ -113,16 +113,13 @@ TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const Tran
     splice.cbufferRegister = options.eye.hlslRegister.value_or(firstFreeCbufferRegister(input.contents));
     result.eyeParams = "cbuffer " + splice.cbufferName + " (b" + std::to_string(splice.cbufferRegister) + ")";
   } else {
-    result.whyNot = "the HLSL text-only shift declares its eye parameters as a cbuffer or 3Dmigoto's StereoParams "
-                    "texture (--eye-source uniform-block or 3dmigoto)";
-    return result;
+    return errorAt(0, 0, "the HLSL text-only shift declares its eye parameters as a cbuffer or 3Dmigoto's StereoParams "
+                    "texture (--eye-source uniform-block or 3dmigoto)");
   }
   HlslSpliceResult spliced = spliceHlslStereo(input.contents, splice);
   if (!spliced.ok) {
-    result.whyNot = spliced.error + (spliced.line ? " (line " + std::to_string(spliced.line) + ")" : "");
-    return result;
+    return errorAt(spliced.line, 0, spliced.error + (spliced.line ? " (line " + std::to_string(spliced.line) + ")" : ""));
   }
-  result.ok = true;
   result.output = std::move(spliced.text);
   result.sites = spliced.sites;
   result.notDone = textOnlyNotDone();

@@ -186,26 +186,22 @@ bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& p
 
 bool isVulkanGlslText(const std::string& text) { return readText(text).vulkan; }
 
-TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options) {
+Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options) {
   TextOnlyShift result;
   VersionLine v = findVersion(input.contents);
   if (!v.problem.empty()) {
-    result.whyNot = v.problem;
-    return result;
+    return errorAt(0, 0, v.problem);
   }
   TextFacts facts = readText(input.contents);
   if (!facts.problem.empty()) {
-    result.whyNot = "the text has " + facts.problem;
-    return result;
+    return errorAt(0, 0, "the text has " + facts.problem);
   }
   if (!facts.writesPosition) {
-    result.whyNot = "the text writes no gl_Position of its own";
-    return result;
+    return errorAt(0, 0, "the text writes no gl_Position of its own");
   }
   for (const std::string* name : {&options.eye.eyeSignName, &options.eye.separationName, &options.eye.convergenceName})
     if (has(facts, *name)) {
-      result.whyNot = "the shader already uses the name '" + *name + "' (is it converted already?)";
-      return result;
+      return errorAt(0, 0, "the shader already uses the name '" + *name + "' (is it converted already?)");
     }
   bool legacy = !facts.vulkan && (v.es ? v.version < 300 : v.version < 330);
   GlslSpliceOptions spec;
@@ -217,16 +213,14 @@ TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOpti
   spec.es = v.es;
   spec.stage = stage;
   if (spec.compensated || (spec.fused && !glslHasPreciseAndFma(v.version, v.es))) {
-    result.whyNot = "--compensated-shift, and --fused-shift below GLSL 400 / ESSL 320, need the analysis";
-    return result;
+    return errorAt(0, 0, "--compensated-shift, and --fused-shift below GLSL 400 / ESSL 320, need the analysis");
   }
-  if (!declareEyeParams(facts, v, legacy, options, spec, result.eyeParams, result.whyNot)) return result;
+  std::string whyNot;
+  if (!declareEyeParams(facts, v, legacy, options, spec, result.eyeParams, whyNot)) return errorAt(0, 0, whyNot);
   GlslSpliceResult spliced = spliceGlslStereo(input.contents, spec);
   if (!spliced.ok) {
-    result.whyNot = spliced.error;
-    return result;
+    return errorAt(0, 0, spliced.error);
   }
-  result.ok = true;
   result.output = std::move(spliced.text);
   result.sites = spliced.sites;
   result.notDone = textOnlyNotDone();

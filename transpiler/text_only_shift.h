@@ -17,6 +17,7 @@
 
 #include "core/diagnostics.h"
 #include "passes/pass_options.h"
+#include "core/result.h"
 #include "core/shader.h"
 #include "transpiler/backend/back_end_options.h"
 #include "transpiler/transpile_options.h"
@@ -27,10 +28,10 @@
 
 namespace stereoshift {
 
+// A stage with the shift spliced from its text alone; the shifts below return it, or why the text
+// alone is not enough (core/result.h).
 struct TextOnlyShift {
-  bool ok = false;
   std::string output;
-  std::string whyNot;                // !ok: why the text alone is not enough
   int sites = 0;
   std::string eyeParams;             // "loose uniforms", "uniform block", ...
   std::vector<std::string> notDone;  // what an analysis would have done
@@ -48,7 +49,7 @@ const std::vector<std::string>& textOnlyNotDone();
 // parse: a pre-rasterization stage, kept in its own language, two-pass stereo, no --require-analysis.
 bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd);
 
-TextOnlyShift shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options);
+Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options);
 
 // Whether GLSL text says it is Vulkan GLSL (descriptor sets, push constants, Vulkan built-ins, subpass
 // inputs, GL_KHR_vulkan_glsl): OpenGL's compilers cannot judge it.
@@ -64,6 +65,6 @@ bool isDecompiledHlsl(const SourceFile& input);
 // or a hand edit broke it): an `#error` outside every #if group, a bracket, brace or parenthesis
 // without its partner, a comment or string left open. The text-only shift is never taken past one.
 std::optional<Diagnostic> ownTextError(const SourceFile& input);
-TextOnlyShift shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options);
+Result<TextOnlyShift> shiftHlslFromText(const SourceFile& input, Stage stage, const TranspileOptions& options);
 
 }  // namespace stereoshift

@@ -64,7 +64,7 @@ bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome);
 bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
-bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route);
+bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shifted, const char* route);
 }  // namespace
 
 namespace {
@@ -81,7 +81,7 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   if (glslangsGap(plan, options).empty()) return false;
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
-  TextOnlyShift shifted = shiftFromText(*plan.input, stage, options);
+  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options);
   return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only") && checkOutputWithMesa(plan);
 }
 
@@ -211,21 +211,21 @@ bool copyLeftToDriver(StagePlan& plan, Stage stage) {
   return writeTextOutcome(plan, stage, TextOutcome{plan.input->contents});
 }
 
-bool takeTextOnlyShift(StagePlan& plan, Stage stage, TextOnlyShift shifted, const char* route) {
+bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shifted, const char* route) {
   const std::string& file = plan.input->path;
-  if (!shifted.ok) {
-    plan.diags.note(file, "no shift from the text alone either: " + shifted.whyNot);
+  if (!shifted) {
+    plan.diags.note(file, "no shift from the text alone either: " + shifted.error().message);
     return false;
   }
   std::string reason = demoteGlslangErrors(plan);
   std::string notDone;
-  for (const auto& what : shifted.notDone) notDone += (notDone.empty() ? "" : ", ") + what;
+  for (const auto& what : shifted->notDone) notDone += (notDone.empty() ? "" : ", ") + what;
   plan.diags.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "
                            "done: " + notDone + "); --require-analysis makes this an error");
-  TextOutcome spliced{std::move(shifted.output), false};
-  spliced.textOnly = StageRecord::TextOnly{reason, shifted.notDone, shifted.eyeParams};
+  TextOutcome spliced{std::move(shifted->output), false};
+  spliced.textOnly = StageRecord::TextOnly{reason, shifted->notDone, shifted->eyeParams};
   spliced.route = route;
-  spliced.spliceSites = shifted.sites;
+  spliced.spliceSites = shifted->sites;
   return writeTextOutcome(plan, stage, std::move(spliced));
 }
 
