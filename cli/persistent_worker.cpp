@@ -266,7 +266,7 @@ std::optional<std::string> readJsonObject(FILE* in) {
 
 }  // namespace
 
-std::optional<std::vector<std::string>> expandArgsFiles(const std::vector<std::string>& args, std::string* error) {
+Result<std::vector<std::string>> expandArgsFiles(const std::vector<std::string>& args) {
   std::vector<std::string> expanded;
   for (const auto& a : args) {
     if (a.size() < 2 || a[0] != '@') {
@@ -275,8 +275,7 @@ std::optional<std::vector<std::string>> expandArgsFiles(const std::vector<std::s
     }
     std::string text;
     if (!readWholeFile(a.substr(1), &text)) {
-      *error = "cannot read argument file '" + a.substr(1) + "'";
-      return std::nullopt;
+      return errorAt(0, 0, "cannot read argument file '" + a.substr(1) + "'");
     }
     for (size_t at = 0; at < text.size();) {
       size_t end = text.find('\n', at);
@@ -360,11 +359,10 @@ int runPersistentWorker(const CommandLineEntry& entry, int requestsFd, int respo
 
     std::string output;
     int status;
-    std::string error;
-    if (auto expanded = expandArgsFiles(args, &error)) {
+    if (auto expanded = expandArgsFiles(args)) {
       status = converter.run(*expanded, &output);
     } else {
-      output = "stereoshift: error: " + error + "\n1 error generated.\n";
+      output = "stereoshift: error: " + expanded.error().message + "\n1 error generated.\n";
       status = 2;
     }
     nlohmann::json response = {{"exitCode", status}, {"output", output}, {"requestId", requestId}};
@@ -400,10 +398,9 @@ int runToolEntry(int argc, char** argv, const CommandLineEntry& entry) {
     return runPersistentWorker(entry, requestsFd, responsesFd, startupArgs);
   }
   if (!bazelAction) return entry(argc, argv);
-  std::string error;
-  std::optional<std::vector<std::string>> expanded = expandArgsFiles(args, &error);
+  Result<std::vector<std::string>> expanded = expandArgsFiles(args);
   if (!expanded) {
-    std::cerr << "stereoshift: error: " << error << "\n";
+    std::cerr << "stereoshift: error: " << expanded.error().message << "\n";
     printErrorSummary(1);
     return 2;
   }

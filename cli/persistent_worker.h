@@ -17,6 +17,7 @@
 #pragma once
 
 #include "cli/depfile.h"  // parseDepfile: the action checks the depfile it wrote
+#include "core/result.h"
 
 #include <functional>
 #include <optional>
@@ -33,8 +34,8 @@ using CommandLineEntry = std::function<int(int argc, char** argv)>;
 // files, declared inputs) when an argument asks for it, else `entry` itself, unchanged.
 int runToolEntry(int argc, char** argv, const CommandLineEntry& entry);
 
-// Expands every `@FILE` argument into the lines of FILE; nullopt (and `error`) when one cannot be read.
-std::optional<std::vector<std::string>> expandArgsFiles(const std::vector<std::string>& args, std::string* error);
+// Expands every `@FILE` argument into the lines of FILE; the error when one cannot be read.
+Result<std::vector<std::string>> expandArgsFiles(const std::vector<std::string>& args);
 
 // Runs one action (args[0] is the program name; params files already expanded): strips the
 // --declared-input= arguments, runs `entry`, then checks the depfile against them (see above).

@@ -109,13 +109,13 @@ TEST(PersistentWorker, DepfileReadBackIsWhatMakeDepfileWrote) {
 TEST(PersistentWorker, ParamsFilesExpandOneArgumentPerLine) {
   fs::path dir = scratchDir("params");
   writeText(dir / "args", "--target\nglsl\r\nwith space.vert\n\n-o\nout dir\n");
-  std::string error;
-  auto expanded = expandArgsFiles({"stereoshift", "-x", "@" + (dir / "args").string(), "last"}, &error);
-  ASSERT_TRUE(expanded) << error;
+  auto expanded = expandArgsFiles({"stereoshift", "-x", "@" + (dir / "args").string(), "last"});
+  ASSERT_TRUE(expanded) << expanded.error().format();
   EXPECT_EQ(*expanded, (std::vector<std::string>{"stereoshift", "-x", "--target", "glsl", "with space.vert", "", "-o",
                                                   "out dir", "last"}));
-  EXPECT_FALSE(expandArgsFiles({"stereoshift", "@" + (dir / "missing").string()}, &error));
-  EXPECT_NE(error.find("cannot read argument file"), std::string::npos);
+  auto missing = expandArgsFiles({"stereoshift", "@" + (dir / "missing").string()});
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().message.find("cannot read argument file"), std::string::npos);
   fs::remove_all(dir);
 }
 
