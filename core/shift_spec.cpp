@@ -12,7 +12,7 @@ CutoffMode normalisedCutoff(CutoffMode asked, float epsilon) {
 bool cutoffKeepsMono(CutoffMode cutoff, float epsilon, float w) {
   switch (normalisedCutoff(cutoff, epsilon)) {
     case CutoffMode::None: return false;
-    case CutoffMode::Exact: return !(w != 1.0f) || !std::isfinite(w);
+    case CutoffMode::Exact: return w == 1.0f || !std::isfinite(w);
     case CutoffMode::Epsilon: return !(std::fabs(w - 1.0f) > epsilon) || !std::isfinite(w);
   }
   return false;

@@ -147,8 +147,6 @@ class ClipPositionDetectionPass final : public Pass {
 
 std::unique_ptr<Pass> createClipPositionDetectionPass() { return std::make_unique<ClipPositionDetectionPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 PassInfo clipPositionDetectionPassInfo() {
   return {"clip-position-detection", createClipPositionDetectionPass,
           "classifies the shader (perspective, 2D, already stereo, ...) and finds its clip-position outputs",

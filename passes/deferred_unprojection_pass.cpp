@@ -407,14 +407,12 @@ class DeferredUnprojectionPass final : public Pass {
 
 std::unique_ptr<Pass> createDeferredUnprojectionPass() { return std::make_unique<DeferredUnprojectionPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 PassInfo deferredUnprojectionPassInfo() {
   return {"deferred-unprojection", createDeferredUnprojectionPass,
           "makes position reconstruction in deferred lighting per eye: InvM * vec4(ndc, depth, 1) and viewRay * depth",
           "on (--no-deferred-unprojection turns it off)",
           "independent of the shift, like per-eye-view; last, as it needs nothing the others decide",
-          {}, kValueFlowAnalysis, kNoAnalyses, static_cast<EditSet>(EditKind::UnprojectionCorrection)};
+          {}, kValueFlowAnalysis, kNoAnalyses, editSet(EditKind::UnprojectionCorrection)};
 }
 
 }  // namespace stereoshift

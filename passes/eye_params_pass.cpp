@@ -27,8 +27,6 @@ class EyeParamsPass final : public Pass {
 
 std::unique_ptr<Pass> createEyeParamsPass() { return std::make_unique<EyeParamsPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 // Adds a declaration only: no output, no pointer to the position, no application value changes
 // (but new globals: the value-flow and value-number indexes point into what moved).
 PassInfo eyeParamsPassInfo() {
@@ -36,7 +34,7 @@ PassInfo eyeParamsPassInfo() {
           "declares eyeSign, separation and convergence in a shader that gets the shift",
           "always (--eye-source chooses how)",
           "the shift and halo code load the parameters it declares",
-          {"clip-position-detection"}, kNoAnalyses, kKeptByDeclarations, static_cast<EditSet>(EditKind::EyeParameters)};
+          {"clip-position-detection"}, kNoAnalyses, kKeptByDeclarations, editSet(EditKind::EyeParameters)};
 }
 
 }  // namespace stereoshift

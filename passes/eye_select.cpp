@@ -51,8 +51,6 @@ uint32_t builtInVariable(const spirv::Module& m, spv::BuiltIn builtIn) {
   return 0;
 }
 
-void addExtension(spirv::Module& m, std::string_view name) { m.addExtension(name); }
-
 // A fresh 32-bit int interface variable, named like the GLSL built-in so the emitted text reads as
 // the application's own would.
 uint32_t addIntVariable(spirv::Module& m, spv::StorageClass storage, std::string_view name, bool isSigned) {
@@ -73,7 +71,7 @@ uint32_t ensureViewIndex(PassContext& ctx) {
   // An integer fragment input must be flat (Vulkan's rule for ViewIndex in the fragment stage).
   if (m.executionModel() == spv::ExecutionModelFragment) m.decorate(var, spv::DecorationFlat);
   m.addCapability(spv::CapabilityMultiView);
-  addExtension(m, "SPV_KHR_multiview");  // core from SPIR-V 1.3, still valid to name there
+  m.addExtension("SPV_KHR_multiview");  // core from SPIR-V 1.3, still valid to name there
   return var;
 }
 

@@ -38,7 +38,6 @@ int glslOutputVersion(const PassContext& ctx, TargetLanguage target);
 const char* modeFlag(EyeSelect select);
 
 uint32_t builtInVariable(const spirv::Module& m, spv::BuiltIn builtIn);
-void addExtension(spirv::Module& m, std::string_view name);
 // A fresh 32-bit int interface variable, named like the GLSL built-in so the emitted text reads as
 // the application's own would.
 uint32_t addIntVariable(spirv::Module& m, spv::StorageClass storage, std::string_view name, bool isSigned = true);

@@ -308,8 +308,6 @@ class HaloPass final : public Pass {
 
 std::unique_ptr<Pass> createHaloPass() { return std::make_unique<HaloPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 // Rewrites stores to other outputs only: the position's pointers and values stay as they were.
 PassInfo haloPassInfo() {
   return {"halo", createHaloPass,
@@ -318,7 +316,7 @@ PassInfo haloPassInfo() {
           "before the shift, while the only loads of the position are the application's own, so it sees "
           "exactly the values the application derived its outputs from",
           {"clip-position-detection", "eye-params"}, kClipPositionAnalysis | kFoldedCopyAnalysis | kValueNumberAnalysis,
-          kKeptByDeclarations, static_cast<EditSet>(EditKind::DerivedOutputShift)};
+          kKeptByDeclarations, editSet(EditKind::DerivedOutputShift)};
 }
 
 }  // namespace stereoshift

@@ -109,8 +109,6 @@ class HudAtDepthPass final : public Pass {
 
 std::unique_ptr<Pass> createHudAtDepthPass() { return std::make_unique<HudAtDepthPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 // Placing at depth scales the stored position; the folded copy still answers what later passes
 // ask of it (which outputs copy the position the application computed), so it is kept.
 PassInfo hudAtDepthPassInfo() {
@@ -120,7 +118,7 @@ PassInfo hudAtDepthPassInfo() {
           "turns a 2D position into one at depth, which then needs the shift like any perspective position: "
           "before eye-params, halo and stereo-shift",
           {"clip-position-detection"}, kClipPositionAnalysis, kFoldedCopyAnalysis,
-          static_cast<EditSet>(EditKind::PositionAtDepth)};
+          editSet(EditKind::PositionAtDepth)};
 }
 
 }  // namespace stereoshift

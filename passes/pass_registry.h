@@ -28,7 +28,8 @@ struct PassInfo {
   bool (*runsFor)(const PassOptions& options) = nullptr;
 };
 
-// Each pass's entry, defined beside the pass (in pipeline order).
+// Each pass's entry, defined in the pass's own file beside its code (what it does, why it runs
+// where it does, what it needs, what its change preserves, what kind of edit it is); in pipeline order.
 PassInfo clipPositionDetectionPassInfo();
 PassInfo hudAtDepthPassInfo();
 PassInfo singlePassStereoPassInfo();

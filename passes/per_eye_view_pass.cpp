@@ -412,8 +412,6 @@ class PerEyeViewPass final : public Pass {
 
 std::unique_ptr<Pass> createPerEyeViewPass() { return std::make_unique<PerEyeViewPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 // The eye parameters it declares for itself are part of its edit.
 PassInfo perEyeViewPassInfo() {
   return {"per-eye-view", createPerEyeViewPass,
@@ -422,7 +420,7 @@ PassInfo perEyeViewPassInfo() {
           "independent of the shift (it also runs on fragment shaders) and declares the eye parameters it "
           "needs itself; it reads detection's classification and clip positions",
           {"clip-position-detection"}, kClipPositionAnalysis | kFoldedCopyAnalysis, kNoAnalyses,
-          static_cast<EditSet>(EditKind::PerEyeCamera)};
+          editSet(EditKind::PerEyeCamera)};
 }
 
 }  // namespace stereoshift

@@ -44,10 +44,14 @@ enum class EditKind : uint32_t {
 };
 using EditSet = uint32_t;
 constexpr EditSet kNoEdits = 0;
-constexpr EditSet kAllEdits = (1u << 7) - 1;
-constexpr EditSet operator|(EditKind a, EditKind b) { return static_cast<EditSet>(a) | static_cast<EditSet>(b); }
-constexpr EditSet operator|(EditSet a, EditKind b) { return a | static_cast<EditSet>(b); }
-constexpr bool hasEdit(EditSet set, EditKind kind) { return (set & static_cast<EditSet>(kind)) != 0; }
+// The set of one kind.
+constexpr EditSet editSet(EditKind kind) { return static_cast<EditSet>(kind); }
+constexpr EditSet operator|(EditKind a, EditKind b) { return editSet(a) | editSet(b); }
+constexpr EditSet operator|(EditSet a, EditKind b) { return a | editSet(b); }
+constexpr EditSet kAllEdits = EditKind::EyeParameters | EditKind::PositionShift | EditKind::DerivedOutputShift |
+                              EditKind::PositionAtDepth | EditKind::SinglePassEye | EditKind::PerEyeCamera |
+                              EditKind::UnprojectionCorrection;
+constexpr bool hasEdit(EditSet set, EditKind kind) { return (set & editSet(kind)) != 0; }
 // "eye parameters, position shift": the kinds in `set`, for messages and tests.
 std::string describeEdits(EditSet set);
 

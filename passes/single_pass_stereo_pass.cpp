@@ -225,8 +225,8 @@ uint32_t declareEyeRouteTarget(PassContext& ctx) {
     m.setName(target, "stereoLayer");  // SPIRV-Cross reserves gl_ names for its built-ins
     m.decorate(target, spv::DecorationLocation, {o.eyeVaryingLocation + 1});
     m.decorateString(target, spv::DecorationUserSemantic, "SV_RenderTargetArrayIndex");
-    addExtension(m, "SPV_GOOGLE_decorate_string");
-    addExtension(m, "SPV_GOOGLE_hlsl_functionality1");
+    m.addExtension("SPV_GOOGLE_decorate_string");
+    m.addExtension("SPV_GOOGLE_hlsl_functionality1");
     return target;
   }
   m.decorate(target, spv::DecorationBuiltIn, {uint32_t(layer ? spv::BuiltInLayer : spv::BuiltInViewportIndex)});
@@ -236,7 +236,7 @@ uint32_t declareEyeRouteTarget(PassContext& ctx) {
     // VK_EXT_shader_viewport_index_layer, GL_ARB_shader_viewport_layer_array, D3D's SV_ViewportArrayIndex.
     // A geometry shader writes both natively (capability Geometry).
     m.addCapability(spv::CapabilityShaderViewportIndexLayerEXT);
-    addExtension(m, "SPV_EXT_shader_viewport_index_layer");
+    m.addExtension("SPV_EXT_shader_viewport_index_layer");
   }
   return target;
 }
@@ -349,8 +349,6 @@ class SinglePassStereoPass final : public Pass {
 
 std::unique_ptr<Pass> createSinglePassStereoPass() { return std::make_unique<SinglePassStereoPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 // Rewrites reads of the instance index and adds outputs other than the position: the position's
 // pointers and values stay, the folded copy no longer matches the module.
 PassInfo singlePassStereoPassInfo() {
@@ -361,7 +359,7 @@ PassInfo singlePassStereoPassInfo() {
           "--eye-source multiview | instanced",
           "after detection (it routes 2D vertex shaders too) and before eye-params and the shift, so the instance "
           "reads it rewrites are only the application's own",
-          {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis, static_cast<EditSet>(EditKind::SinglePassEye),
+          {"clip-position-detection"}, kNoAnalyses, kClipPositionAnalysis, editSet(EditKind::SinglePassEye),
           // Only in the single-pass modes: a two-pass conversion's report never shows it.
           [](const PassOptions& options) { return options.eye.select != EyeSelect::Parameter; }};
 }

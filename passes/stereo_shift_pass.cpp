@@ -257,8 +257,6 @@ class StereoShiftPass final : public Pass {
 
 std::unique_ptr<Pass> createStereoShiftPass() { return std::make_unique<StereoShiftPass>(); }
 
-// Its registry entry (pass_registry.h): what it does, why it runs where it does, what it needs,
-// what its change preserves and what kind of edit it is.
 // Loads the position and adds chains to it: new pointers and values, the analysis is stale.
 PassInfo stereoShiftPassInfo() {
   return {"stereo-shift", createStereoShiftPass,
@@ -266,7 +264,7 @@ PassInfo stereoShiftPassInfo() {
           "always (--shift-form, --no-cutoff, --fused-shift, --compensated-shift: how)",
           "after halo; it guards and shifts the position where it is final",
           {"clip-position-detection", "eye-params"}, kClipPositionAnalysis, kFoldedCopyAnalysis,
-          static_cast<EditSet>(EditKind::PositionShift)};
+          editSet(EditKind::PositionShift)};
 }
 
 }  // namespace stereoshift

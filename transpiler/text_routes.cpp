@@ -61,18 +61,14 @@ struct TextOutcome {
   int spliceSites = 0;
 };
 bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome);
-bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage);
-bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage);
+bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route);
+bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
 bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shifted, const char* route);
-}  // namespace
-
-namespace {
-
 // The GLSL text-only shift: only where glslang's refusal may be its own gap (the source uses what
 // glslang reads more narrowly than drivers do: an #extension it enables, a line continuation, the
 // compatibility profile) and no error is about the shader's #include files (those are the input's).
-bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route) {
   if (errorsInIncludes(plan) || std::any_of(plan.diags.all().begin(), plan.diags.all().end(), [](const Diagnostic& d) {
         return d.severity == Severity::Error && d.message.find("requires SPIR-V") != std::string::npos;
       }))
@@ -82,7 +78,7 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
   Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options);
-  return takeTextOnlyShift(plan, stage, std::move(shifted), "glsl-text-only") && checkOutputWithMesa(plan);
+  return takeTextOnlyShift(plan, stage, std::move(shifted), route) && checkOutputWithMesa(plan);
 }
 
 // The ways to write a stage glslang could not analyse (no SPIR-V module), as the back end's routes
@@ -92,7 +88,8 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
 struct TextRoute {
   const char* name;
   bool (*takes)(const StagePlan& plan, const TranspileOptions& options, Stage stage);
-  bool (*write)(StagePlan& plan, const TranspileOptions& options, Stage stage);
+  // `route` is the route's own name, for the record and the messages.
+  bool (*write)(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route);
 };
 
 bool shiftsFromText(const StagePlan& plan, const TranspileOptions& options, Stage stage) {
@@ -115,7 +112,7 @@ const TextRoute kTextRoutes[] = {
      [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
        return options.correctionsOnly && shiftsFromText(plan, options, stage);
      },
-     [](StagePlan& plan, const TranspileOptions&, Stage stage) { return copyLeftToDriver(plan, stage); }},
+     [](StagePlan& plan, const TranspileOptions&, Stage stage, const char*) { return copyLeftToDriver(plan, stage); }},
     {"hlsl-text-only",
      [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
        return !options.correctionsOnly && plan.front.info.language == SourceLanguage::Hlsl &&
@@ -137,7 +134,7 @@ bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
     return false;
   const Stage stage = *plan.stage->stage;
   for (const TextRoute& route : kTextRoutes)
-    if (route.takes(plan, options, stage)) return route.write(plan, options, stage);
+    if (route.takes(plan, options, stage)) return route.write(plan, options, stage, route.name);
   return false;
 }
 
@@ -149,11 +146,11 @@ namespace {
 // would be its input unless a per-eye fix applied, so it is copied unchanged with a warning that no
 // fix was looked for, and the rest of the pipeline converts. Not with --require-analysis, another
 // output language or version, or errors in its #include files (those are the input's).
-bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route) {
   if (errorsInIncludes(plan)) return false;
   const std::string gap = glslangsGap(plan, options);
   if (gap.empty()) return false;
-  if (!mesaAgreesOnOriginal(plan, options, "unanalysed-copy")) return false;
+  if (!mesaAgreesOnOriginal(plan, options, route)) return false;
   const std::string file = plan.input->path;
   const std::string reason = demoteGlslangErrors(plan);
   plan.diags.warning(file, "glslang cannot analyse this " + std::string(stageName(stage)) + " stage (its text has " +
@@ -164,7 +161,7 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
   return writeTextOutcome(plan, stage, std::move(copy));
 }
 
-bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage) {
+bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route) {
   // Decompiled text only: the D3D compiler accepted what it was decompiled from, so glslang's
   // refusal (or crash) is glslang's; hand-written HLSL glslang refuses keeps its errors.
   if (!isDecompiledHlsl(*plan.input)) return false;
@@ -182,7 +179,7 @@ bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
     plan.diags.note(plan.input->path, note);
     return false;
   }
-  return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), "hlsl-text-only");
+  return takeTextOnlyShift(plan, stage, shiftHlslFromText(*plan.input, stage, options), route);
 }
 
 // glslang's errors said as warnings: they say what it could not analyse, and the shader goes to its

@@ -234,7 +234,7 @@ TEST(BackEndRoutes, EditsBeyondWhatASpliceRenders) {
   auto changed = [](const char* name) { return PassStatus{name, PassResult::Changed, "", findPass(name)->edits}; };
   record.passes = {changed("stereo-shift"), changed("per-eye-view"),
                    {"deferred-unprojection", PassResult::Unchanged, "", kNoEdits}, changed("halo")};
-  EXPECT_EQ(record.passesWithEditsBeyond(static_cast<EditSet>(EditKind::PositionShift)),
+  EXPECT_EQ(record.passesWithEditsBeyond(editSet(EditKind::PositionShift)),
             (std::vector<std::string>{"halo", "per-eye-view"}));
   EXPECT_EQ(record.passesWithEditsBeyond(kGlslSpliceRenders), (std::vector<std::string>{"per-eye-view"}));
   EXPECT_TRUE(record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera).empty());

@@ -25,7 +25,7 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
     if (info.language != SourceLanguage::Hlsl || r.target != TargetLanguage::Hlsl || info.stage != Stage::Fragment ||
         (deferred.textFixes.empty() && deferred.rayTextFixes.empty()))
       return RouteDecision::decline("not an HLSL pixel shader with corrections for its text");
-    if (!r.context.record.passesWithEditsBeyond(static_cast<EditSet>(EditKind::UnprojectionCorrection)).empty() ||
+    if (!r.context.record.passesWithEditsBeyond(editSet(EditKind::UnprojectionCorrection)).empty() ||
         deferred.fixed.size() != deferred.textFixes.size() + deferred.rayTextFixes.size())
       return RouteDecision::decline("a pass changed what only the IR carries besides the text corrections", true);
     return RouteDecision::accept();

@@ -28,7 +28,7 @@ namespace {
 // the IR, which this route throws away, so a change there is refused rather than lost.
 std::string spliceBlocker(const RunRecord& record, Stage stage) {
   for (const auto& pass : record.passesWithEditsBeyond(EditKind::EyeParameters | EditKind::PositionShift)) {
-    if (record.status(pass)->edits == static_cast<EditSet>(EditKind::DerivedOutputShift) && stage == Stage::Vertex) {
+    if (record.status(pass)->edits == editSet(EditKind::DerivedOutputShift) && stage == Stage::Vertex) {
       if (record.halo.derivedOutputs.empty()) continue;  // copies of the clip position: the splice shifts them too
       return "the " + pass + " pass changed the output '" + record.halo.derivedOutputs.front() +
              "', which is computed from the clip position (not a copy of it), and only the IR carries that";

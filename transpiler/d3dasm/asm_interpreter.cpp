@@ -469,7 +469,7 @@ std::unique_ptr<Program> Program::decode(const AsmText& text, AsmError* error) {
   std::optional<Stage> stage = stageOfShaderModel(text.model);
   if (stage != Stage::Vertex || text.model.major < 4) {
     *error = errorAt(text.lines.empty() ? 0 : text.lines[text.modelLine].number, 1,
-              text.model.text + ": the interpreter runs SM4 and SM5 vertex shaders");
+                     text.model.text + ": the interpreter runs SM4 and SM5 vertex shaders");
     return nullptr;
   }
   // Declarations first: an instruction's registers are checked against them.

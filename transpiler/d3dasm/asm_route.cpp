@@ -14,10 +14,6 @@ ShiftSpec assemblyShiftSpec(const TranspileOptions& options) {
   ShiftSpec spec;
   spec.cutoff = normalisedCutoff(options.cutoff, options.cutoffEpsilon);
   spec.epsilon = options.cutoffEpsilon;
-  spec.form = ShiftForm::Select;
-  spec.eyeSignName.clear();
-  spec.separationName = "StereoParams.x";
-  spec.convergenceName = "StereoParams.y";
   return spec;
 }
 

@@ -13,9 +13,8 @@ namespace stereoshift {
 // Its stage, from its shader-model line (nullopt: not assembly, or a model without a stage).
 std::optional<Stage> assemblyStage(const SourceFile& input);
 
-// The shift the options ask for, as the assembly printer renders it (and its check runs it): the
-// cutoff, the eye's sign in 3Dmigoto's separation (StereoParams texel 0: x the separation, y the
-// convergence).
+// The shift the options ask for, as the assembly printer renders it (and its check runs it): its
+// cutoff; the rest of a ShiftSpec has no assembly spelling (asm_shift.h).
 ShiftSpec assemblyShiftSpec(const TranspileOptions& options);
 
 TranspileResult convertAssemblyStage(const SourceFile& input, const TranspileOptions& options);

@@ -158,8 +158,8 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
       }
       if (d->position && *d->position != *n) {
         *error = errorAt(line.number, line.operands[0].column,
-                  "a second position output (o" + std::to_string(*d->position) + " and o" + std::to_string(*n) +
-                      "): the assembly route shifts one");
+                         "a second position output (o" + std::to_string(*d->position) + " and o" + std::to_string(*n) +
+                             "): the assembly route shifts one");
         return false;
       }
       d->position = n;
@@ -185,8 +185,8 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
           if (line.opcode != "dcl_resource_texture2d" || line.operands.size() != 2 ||
               line.operands[0].text != "(float,float,float,float)") {
             *error = errorAt(line.number, reg.column,
-                      "t125 is declared as another resource ('" + line.text.substr(line.indent.size()) +
-                          "'): 3Dmigoto's StereoParams texture lives there");
+                             "t125 is declared as another resource ('" + line.text.substr(line.indent.size()) +
+                                 "'): 3Dmigoto's StereoParams texture lives there");
             return false;
           }
           d->stereoParamsLine = k;
@@ -203,7 +203,7 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
     std::from_chars(n.data(), n.data() + n.size(), count);
     if (first && *first <= *d->position && *d->position < *first + count) {
       *error = errorAt(line.number, line.operands[0].column, "the position output o" + std::to_string(*d->position) +
-                                                          " is in an indexed output range: its writes cannot be redirected");
+                                                                 " is in an indexed output range: its writes cannot be redirected");
       return false;
     }
   }
@@ -263,8 +263,8 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
   // A D3D9 vertex shader copied as it is would be a mono drop-in that looks converted: an error.
   if (text.model.major < 4) {
     result.error = errorAt(text.lines[text.modelLine].number, text.lines[text.modelLine].indent.size() + 1,
-                    text.model.text + ": shader model " + std::to_string(text.model.major) +
-                        " (D3D9) assembly is not edited; the assembly route reads SM4 and SM5");
+                           text.model.text + ": shader model " + std::to_string(text.model.major) +
+                               " (D3D9) assembly is not edited; the assembly route reads SM4 and SM5");
     return result;
   }
 
@@ -313,12 +313,12 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
   }
   if (result.redirectedWrites == 0) {
     result.error = errorAt(d.positionLineNumber, d.positionColumn,
-                    "the position output " + out + " is declared but no instruction writes it");
+                           "the position output " + out + " is declared but no instruction writes it");
     return result;
   }
   if (sites.empty()) {
     result.error = errorAt(0, 0, stage == Stage::Geometry ? "no emit instruction: the geometry shader emits no vertex"
-                                                   : "no ret instruction in the main program");
+                                                          : "no ret instruction in the main program");
     return result;
   }
 

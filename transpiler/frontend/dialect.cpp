@@ -1,51 +1,13 @@
 // The list of the front end's dialects (see dialect.h).
 #include "transpiler/frontend/dialect.h"
 
-#include "transpiler/frontend/glsl_lift.h"
-#include "transpiler/frontend/hlsl_lift.h"
-
 namespace stereoshift {
-
-namespace {
-
-class HlslDialect final : public FrontEndDialect {
- public:
-  const char* name() const override { return "hlsl"; }
-  SourceLanguage language() const override { return SourceLanguage::Hlsl; }
-  std::string liftForAnalysis(const std::string& text, std::string* what) const override {
-    std::string lifted;
-    std::string copy = hlslForGlslang(text, &lifted);
-    if (what) *what = lifted;
-    return copy;
-  }
-  void compile(const SourceFile& input, const FrontEndOptions& options, Stage stage, const LanguageDecision& decided,
-               FrontEndResult& result, Diagnostics& diags) const override {
-    compileHlslDialect(input, options, stage, decided, result, diags);
-  }
-};
-
-class GlslDialect final : public FrontEndDialect {
- public:
-  const char* name() const override { return "glsl"; }
-  SourceLanguage language() const override { return SourceLanguage::Glsl; }
-  std::string liftForAnalysis(const std::string& text, std::string* what) const override {
-    LiftedGlsl copy = liftGlsl(text);
-    if (what) *what = copy.lifted ? copy.what : std::string();
-    return copy.lifted ? copy.text : text;
-  }
-  void compile(const SourceFile& input, const FrontEndOptions& options, Stage stage, const LanguageDecision& decided,
-               FrontEndResult& result, Diagnostics& diags) const override {
-    compileGlslDialect(input, options, stage, decided, result, diags);
-  }
-};
-
-}  // namespace
 
 const std::vector<std::unique_ptr<FrontEndDialect>>& frontEndDialects() {
   static const std::vector<std::unique_ptr<FrontEndDialect>> dialects = [] {
     std::vector<std::unique_ptr<FrontEndDialect>> list;
-    list.push_back(std::make_unique<HlslDialect>());
-    list.push_back(std::make_unique<GlslDialect>());
+    list.push_back(makeHlslDialect());
+    list.push_back(makeGlslDialect());
     return list;
   }();
   return dialects;

@@ -36,10 +36,8 @@ const FrontEndDialect& dialectOf(SourceLanguage language);
 // What the front end decided about the input, in the result whether or not it compiles.
 void recordFrontEndDecisions(FrontEndResult& result, Stage stage, const LanguageDecision& decided);
 
-// The dialects' parses (hlsl_dialect.cpp, glsl_dialect.cpp).
-void compileHlslDialect(const SourceFile& input, const FrontEndOptions& options, Stage stage,
-                        const LanguageDecision& decided, FrontEndResult& result, Diagnostics& diags);
-void compileGlslDialect(const SourceFile& input, const FrontEndOptions& options, Stage stage,
-                        const LanguageDecision& decided, FrontEndResult& result, Diagnostics& diags);
+// The dialects, each in its own file (hlsl_dialect.cpp, glsl_dialect.cpp).
+std::unique_ptr<FrontEndDialect> makeHlslDialect();
+std::unique_ptr<FrontEndDialect> makeGlslDialect();
 
 }  // namespace stereoshift

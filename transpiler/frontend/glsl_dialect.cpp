@@ -25,129 +25,141 @@ void reportVersionProblem(const SourceFile& input, const VersionLine& v, Diagnos
   diags.error(input.path, line, column, v.problem);
 }
 
-}  // namespace
-
-// GLSL: the client from the #version line. Desktop >= 400 and ES >= 310 may be Vulkan GLSL (tried
-// first) or OpenGL GLSL with loose uniforms (the fallback). Older dialects are OpenGL.
-void compileGlslDialect(const SourceFile& input, const FrontEndOptions& options, Stage stage,
-                        const LanguageDecision& decided, FrontEndResult& result, Diagnostics& diags) {
-  VersionLine v = findVersion(input.contents);
-  if (!v.problem.empty()) {
-    reportVersionProblem(input, v, diags);
-    return;
+// The client from the #version line: desktop >= 400 and ES >= 310 may be Vulkan GLSL (tried first)
+// or OpenGL GLSL with loose uniforms (the fallback); older dialects are OpenGL.
+class GlslDialect final : public FrontEndDialect {
+ public:
+  const char* name() const override { return "glsl"; }
+  SourceLanguage language() const override { return SourceLanguage::Glsl; }
+  std::string liftForAnalysis(const std::string& text, std::string* what) const override {
+    LiftedGlsl copy = liftGlsl(text);
+    if (what) *what = copy.lifted ? copy.what : std::string();
+    return copy.lifted ? copy.text : text;
   }
-  std::string text = input.contents;
-  // ESSL 100 and desktop 110-150 (and no #version at all): glslang makes SPIR-V only from ESSL 310 and
-  // GLSL 330 on, and asked for 1xx with a SPIR-V client it fails its own built-ins and prints them to
-  // stdout. Such shaders are parsed as a faithful ESSL 310 / GLSL 330 translation instead (the
-  // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
-  LegacyDialect dialect = decideLegacyDialect(input.contents, v);
-  settleVersionlessDialect(dialect, input.contents, stage);
-  bool usesCompatibilityBuiltIns = false;
-  bool versionPrepended = false;
-  FrontEndOptions parseOptions = options;
-  if (dialect.legacy && dialect.es) {
-    // ESSL 100 lets a loop index pick a sampler of an array (its Appendix A's constant-index
-    // expressions); ESSL 310 only with GL_EXT_gpu_shader5 (the output keeps the original text).
-    parseOptions.analysisExtensions.push_back("GL_EXT_gpu_shader5");
-  }
-  if (dialect.legacy) {
-    LegacyTranslation translated = translateLegacyGlsl(input.contents, stage, dialect, input.path);
-    if (!translated.ok) {
-      diags.add(translated.error);
+  void compile(const SourceFile& input, const FrontEndOptions& options, Stage stage, const LanguageDecision& decided,
+               FrontEndResult& result, Diagnostics& diags) const override {
+    VersionLine v = findVersion(input.contents);
+    if (!v.problem.empty()) {
+      reportVersionProblem(input, v, diags);
       return;
     }
-    text = std::move(translated.text);
-    usesCompatibilityBuiltIns = !translated.declared.empty();
-    v.version = dialect.version;
-    v.es = dialect.es;
-    result.dialectReason = dialect.reason;
-  } else if (!dialect.versionWritten) {
-    // No #version, and the text is of a version past the legacy ones (settleVersionlessDialect):
-    // parsed with that version put before it (ESSL 300 as 310, as below), its lines numbered as
-    // written; the output stays without one, for the loader that prepends its own.
-    v.version = dialect.version;
-    v.es = dialect.es;
-    const int parseVersion = v.es ? std::max(v.version, 310) : v.version;
-    text = "#version " + std::to_string(parseVersion) + (v.es ? " es" : "") + "\n#line 1\n" + text;
-    result.dialectReason = dialect.reason;
-    versionPrepended = true;
-  } else if (v.es && v.version < 310) {
-    // glslang 12 refuses ES < 310 for SPIR-V; parse as 310 (same line count) and emit the original.
-    text.replace(v.begin, v.end - v.begin, "#version 310 es");
-  }
-  std::vector<Client> clients;
-  bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);
-  if (mayBeVulkan && options.targetEnv != TargetEnv::OpenGL45) clients.push_back(Client::Vulkan);  // --target-env opengl: GL rules only
-  clients.push_back(Client::OpenGL);
+    std::string text = input.contents;
+    // ESSL 100 and desktop 110-150 (and no #version at all): glslang makes SPIR-V only from ESSL 310 and
+    // GLSL 330 on, and asked for 1xx with a SPIR-V client it fails its own built-ins and prints them to
+    // stdout. Such shaders are parsed as a faithful ESSL 310 / GLSL 330 translation instead (the
+    // same-language output is the original text, see glsl_splice.h), so glslang never sees 1xx here.
+    LegacyDialect dialect = decideLegacyDialect(input.contents, v);
+    settleVersionlessDialect(dialect, input.contents, stage);
+    bool usesCompatibilityBuiltIns = false;
+    bool versionPrepended = false;
+    FrontEndOptions parseOptions = options;
+    if (dialect.legacy && dialect.es) {
+      // ESSL 100 lets a loop index pick a sampler of an array (its Appendix A's constant-index
+      // expressions); ESSL 310 only with GL_EXT_gpu_shader5 (the output keeps the original text).
+      parseOptions.analysisExtensions.push_back("GL_EXT_gpu_shader5");
+    }
+    if (dialect.legacy) {
+      LegacyTranslation translated = translateLegacyGlsl(input.contents, stage, dialect, input.path);
+      if (!translated.ok) {
+        diags.add(translated.error);
+        return;
+      }
+      text = std::move(translated.text);
+      usesCompatibilityBuiltIns = !translated.declared.empty();
+      v.version = dialect.version;
+      v.es = dialect.es;
+      result.dialectReason = dialect.reason;
+    } else if (!dialect.versionWritten) {
+      // No #version, and the text is of a version past the legacy ones (settleVersionlessDialect):
+      // parsed with that version put before it (ESSL 300 as 310, as below), its lines numbered as
+      // written; the output stays without one, for the loader that prepends its own.
+      v.version = dialect.version;
+      v.es = dialect.es;
+      const int parseVersion = v.es ? std::max(v.version, 310) : v.version;
+      text = "#version " + std::to_string(parseVersion) + (v.es ? " es" : "") + "\n#line 1\n" + text;
+      result.dialectReason = dialect.reason;
+      versionPrepended = true;
+    } else if (v.es && v.version < 310) {
+      // glslang 12 refuses ES < 310 for SPIR-V; parse as 310 (same line count) and emit the original.
+      text.replace(v.begin, v.end - v.begin, "#version 310 es");
+    }
+    std::vector<Client> clients;
+    bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);
+    if (mayBeVulkan && options.targetEnv != TargetEnv::OpenGL45) clients.push_back(Client::Vulkan);  // --target-env opengl: GL rules only
+    clients.push_back(Client::OpenGL);
 
-  // -e NAME: the function glslang compiles as `main` (glslangValidator's --source-entrypoint).
-  const std::string glslEntry = options.entryPoint.empty() ? "main" : options.entryPoint;
-  std::optional<Attempt> best;
-  std::optional<Attempt> vulkanButOpenGLStyle;
-  for (Client client : clients) {
-    Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, glslEntry, parseOptions);
-    if (a.ok) {
-      a.info.vulkan = client == Client::Vulkan;
-      // Valid as Vulkan GLSL only through the auto-mapping, with an interface written the OpenGL
-      // way: OpenGL GLSL, if OpenGL rules take it (else Vulkan after all: `set`, push constants).
-      if (client == Client::Vulkan && !a.openGLStyleInterface.empty() && !options.targetEnv) {
-        result.dialectReason = "Vulkan GLSL only with locations and bindings made up: its " + a.openGLStyleInterface +
-                               ", as OpenGL code writes it, so OpenGL GLSL";
-        vulkanButOpenGLStyle = std::move(a);
-        continue;
-      }
-      best = std::move(a);
-      break;
-    }
-    if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
-  }
-  if ((!best || !best->ok) && vulkanButOpenGLStyle) {
-    best = std::move(vulkanButOpenGLStyle);
-    result.dialectReason.clear();
-  }
-  // Refused as written: a lifted copy (glsl_lift.h) for the analysis, with OpenGL rules.
-  std::string lifted;
-  if (!best->ok) {
-    std::string what;
-    std::string copy = dialectOf(SourceLanguage::Glsl).liftForAnalysis(text, &what);
-    if (!what.empty()) {
-      Attempt a = compileGlslangOnce(input, copy, stage, SourceLanguage::Glsl, Client::OpenGL, glslEntry, parseOptions);
+    // -e NAME: the function glslang compiles as `main` (glslangValidator's --source-entrypoint).
+    const std::string glslEntry = options.entryPoint.empty() ? "main" : options.entryPoint;
+    std::optional<Attempt> best;
+    std::optional<Attempt> vulkanButOpenGLStyle;
+    for (Client client : clients) {
+      Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, glslEntry, parseOptions);
       if (a.ok) {
-        a.info.vulkan = false;
+        a.info.vulkan = client == Client::Vulkan;
+        // Valid as Vulkan GLSL only through the auto-mapping, with an interface written the OpenGL
+        // way: OpenGL GLSL, if OpenGL rules take it (else Vulkan after all: `set`, push constants).
+        if (client == Client::Vulkan && !a.openGLStyleInterface.empty() && !options.targetEnv) {
+          result.dialectReason = "Vulkan GLSL only with locations and bindings made up: its " + a.openGLStyleInterface +
+                                 ", as OpenGL code writes it, so OpenGL GLSL";
+          vulkanButOpenGLStyle = std::move(a);
+          continue;
+        }
         best = std::move(a);
-        lifted = what;
+        break;
+      }
+      if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
+    }
+    if ((!best || !best->ok) && vulkanButOpenGLStyle) {
+      best = std::move(vulkanButOpenGLStyle);
+      result.dialectReason.clear();
+    }
+    // Refused as written: a lifted copy (glsl_lift.h) for the analysis, with OpenGL rules.
+    std::string lifted;
+    if (!best->ok) {
+      std::string what;
+      std::string copy = liftForAnalysis(text, &what);
+      if (!what.empty()) {
+        Attempt a = compileGlslangOnce(input, copy, stage, SourceLanguage::Glsl, Client::OpenGL, glslEntry, parseOptions);
+        if (a.ok) {
+          a.info.vulkan = false;
+          best = std::move(a);
+          lifted = what;
+        }
       }
     }
+    if (!best->ok) {
+      result.glslangRejected = true;
+      diags.append(best->diags);
+      if (decided.source == LanguageSource::Content && v.begin == std::string::npos)
+        diags.note(input.path, "parsed as GLSL (" + decided.reason + "); if this is HLSL, say so with -x hlsl");
+      const auto& all = best->diags.all();
+      if (options.entryPoint.empty() && std::any_of(all.begin(), all.end(), [](const Diagnostic& d) {
+            return d.message.find("Missing entry point") != std::string::npos;
+          }))
+        diags.note(input.path, "no `main`: if another function is the entry point, name it with -e <function>");
+      return;
+    }
+    diags.append(best->diags);  // warnings
+    result.ok = true;
+    result.spirv = std::move(best->spirv);
+    result.info = std::move(best->info);
+    recordFrontEndDecisions(result, stage, decided);
+    result.info.version = v.version;
+    result.info.es = v.es;
+    result.info.compatibilityBuiltIns = usesCompatibilityBuiltIns;
+    result.info.liftedBecause = lifted;
+    result.info.versionPrepended = versionPrepended;
+    // An extension may give the text, at a lower version than glslang reads it at, what glslang knows
+    // only at a core version (uaddCarry at 400).
+    if (versionPrepended && !v.es && v.version >= 400 && enablesAnExtension(input.contents))
+      result.info.spliceVersionCap = 150;
+    result.info.entryPoint = "main";
+    result.includedFiles = std::move(best->included);
   }
-  if (!best->ok) {
-    result.glslangRejected = true;
-    diags.append(best->diags);
-    if (decided.source == LanguageSource::Content && v.begin == std::string::npos)
-      diags.note(input.path, "parsed as GLSL (" + decided.reason + "); if this is HLSL, say so with -x hlsl");
-    const auto& all = best->diags.all();
-    if (options.entryPoint.empty() && std::any_of(all.begin(), all.end(), [](const Diagnostic& d) {
-          return d.message.find("Missing entry point") != std::string::npos;
-        }))
-      diags.note(input.path, "no `main`: if another function is the entry point, name it with -e <function>");
-    return;
-  }
-  diags.append(best->diags);  // warnings
-  result.ok = true;
-  result.spirv = std::move(best->spirv);
-  result.info = std::move(best->info);
-  recordFrontEndDecisions(result, stage, decided);
-  result.info.version = v.version;
-  result.info.es = v.es;
-  result.info.compatibilityBuiltIns = usesCompatibilityBuiltIns;
-  result.info.liftedBecause = lifted;
-  result.info.versionPrepended = versionPrepended;
-  // An extension may give the text, at a lower version than glslang reads it at, what glslang knows
-  // only at a core version (uaddCarry at 400).
-  if (versionPrepended && !v.es && v.version >= 400 && enablesAnExtension(input.contents))
-    result.info.spliceVersionCap = 150;
-  result.info.entryPoint = "main";
-  result.includedFiles = std::move(best->included);
-}
+};
+
+}  // namespace
+
+std::unique_ptr<FrontEndDialect> makeGlslDialect() { return std::make_unique<GlslDialect>(); }
 
 }  // namespace stereoshift
