@@ -15,10 +15,10 @@ namespace stereoshift {
 namespace {
 
 // D3D shader assembly does not run on Vulkan: it is converted by the same route `stereoshift`
-// takes (convertAssemblyStage) and both texts are run on the assembly interpreter instead.
+// takes (the assembly route, d3dasm/asm_route.h) and both texts are run on the assembly interpreter instead.
 int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, const VerifyCommandOptions& verify) {
   const std::string& name = input.path;
-  TranspileResult converted = convertAssemblyStage(input, options);
+  TranspileResult converted = transpile(input, options);
   if (!converted.ok) {
     printErrorSummary(std::max(1, printDiagnostics(converted.diagnostics, std::cerr)));
     return 1;

@@ -20,6 +20,7 @@
 #include "transpiler/backend/route.h"
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/report.h"
+#include "transpiler/stereoshift.h"
 #include "transpiler/transpile_options.h"
 
 #include <chrono>
@@ -38,6 +39,7 @@ struct StagePlan {
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 
   // 1. read
+  InputKind kind = InputKind::Source;  // decided once, before the plan (decideInputKind)
   bool spirvInput = false;
   std::optional<StageDecision> stage;  // source inputs: decided once
   bool frontEndRan = false;
@@ -81,11 +83,12 @@ bool parseEarly(StagePlan& plan, const TranspileOptions& options);
 // Steps 1 and 2: false (the reason in plan.diags) when the stage cannot be converted.
 bool readStage(StagePlan& plan, const TranspileOptions& options);
 bool parseStage(StagePlan& plan, const TranspileOptions& options);
-// Steps 1 and 2 failed because the front end could not parse a GLSL pre-rasterisation stage: the
-// text-only shift (text_only_shift.h) writes the stage instead, the front end's errors
-// becoming warnings, when the options allow it and the text is enough. False (a note in
-// plan.diags saying why, the errors kept) when it is not.
-bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options);
+// The routes for a stage with no SPIR-V module (text_routes.cpp), as the back end's routes are for
+// one with a module: D3D shader assembly (its own reader and printer, no front end), and a GLSL or
+// HLSL stage steps 1 and 2 could not parse, which the text-only shift (text_only_shift.h) writes
+// instead, or copies, the front end's errors becoming warnings, when the options allow it and the
+// text is enough. False (plan.diags says why, a source stage's errors kept) when none writes it.
+bool writeWithoutModule(StagePlan& plan, const TranspileOptions& options);
 // Step 1 for the stages of a pipeline, before anything else: the stage each input is, decided once.
 StageDecision decideInputStage(const SourceFile& input, const TranspileOptions& options);
 // Step 3: the options the plan converts with, from those given.

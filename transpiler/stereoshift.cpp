@@ -32,11 +32,12 @@ std::string defaultOutputExtension(const SourceFile& input, const TranspileOptio
 
 namespace {
 
-// Steps 1 to 5 of stage_plan.h on `plan`, then the result and its report.
+// Steps 1 to 5 of stage_plan.h on `plan`, then the result and its report. A stage with no SPIR-V
+// module (assembly, or a source glslang could not parse) takes a route for such stages instead.
 TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
   plan.started = std::chrono::steady_clock::now();
-  bool ok = readStage(plan, options) && parseStage(plan, options);
-  bool fromText = !ok && shiftStageFromText(plan, options);
+  bool ok = plan.kind == InputKind::Source && readStage(plan, options) && parseStage(plan, options);
+  bool fromText = !ok && writeWithoutModule(plan, options);
   if (ok) {
     chooseStageOptions(plan, options);
     ok = runStagePasses(plan) && emitStage(plan) && checkOutputWithMesa(plan);
@@ -179,10 +180,11 @@ InputKind decideInputKind(const SourceFile& input) {
 }
 
 TranspileResult transpile(const SourceFile& input, const TranspileOptions& options) {
-  if (decideInputKind(input) == InputKind::D3DAssembly) return convertAssemblyStage(input, options);
   StagePlan plan;
   plan.input = &input;
-  if (!takes3DMigotoEyeParamsByDefault(input, options)) return convertStage(plan, options);
+  plan.kind = decideInputKind(input);
+  if (plan.kind != InputKind::Source || !takes3DMigotoEyeParamsByDefault(input, options))
+    return convertStage(plan, options);
   TranspileOptions dump = options;
   readEyeParamsFrom3DMigoto(dump);
   TranspileResult result = convertStage(plan, dump);
@@ -207,9 +209,10 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < stages.size(); ++i) {
     auto plan = std::make_unique<StagePlan>();
     plan->input = &stages[i];
+    plan->kind = kinds[i];
     const bool assembly = kinds[i] == InputKind::D3DAssembly;
     if (assembly) {
-      // Converted on its own (convertAssemblyStage, no front end); its stage is its shader model's.
+      // No front end (the assembly route reads it); its stage is its shader model's.
       plan->stage.emplace();
       plan->stage->stage = assemblyStage(stages[i]);
     } else {
@@ -238,12 +241,8 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       return other != plans[i] && other->stage && plans[i]->stage && other->stage->stage &&
              other->stage->stage == plans[i]->stage->stage;
     });
-    if (kinds[i] == InputKind::D3DAssembly) {
-      results.push_back(convertAssemblyStage(stages[i], stageOptions));
-      continue;
-    }
     results.push_back(convertStage(*plans[i], stageOptions));
-    if (dumpDefault) note3DMigotoDefault(stages[i], results.back());
+    if (dumpDefault && kinds[i] == InputKind::Source) note3DMigotoDefault(stages[i], results.back());
   }
   return results;
 }

@@ -1,9 +1,12 @@
-// The text routes of the driver: this turns a stage glslang could not analyse (it refused the
-// text, or crashed on it) into its output without a SPIR-V module, as the back end's routes turn an
-// analysed one: copied as it is, or with the shift spliced from the text alone (text_only_shift.h),
-// each said in a warning and in the report. See stage_plan.h (shiftStageFromText).
+// The routes of the driver for a stage with no SPIR-V module, as the back end's routes
+// (backend/route.h) are for a stage with one: this turns D3D shader assembly into its converted
+// text (the assembly route, d3dasm/asm_route.h: no front end ever reads it), and a stage glslang
+// could not analyse (it refused the text, or crashed on it) into its text copied as it is, or with
+// the shift spliced from the text alone (text_only_shift.h), each said in a warning and in the
+// report. See stage_plan.h (writeWithoutModule).
 #include "transpiler/stage_plan.h"
 
+#include "transpiler/d3dasm/asm_route.h"
 #include "transpiler/frontend/mesa_compiler.h"
 #include "transpiler/source/stage_rules.h"
 #include "transpiler/text_only_shift.h"
@@ -65,6 +68,7 @@ bool copiesUnshiftedStage(StagePlan& plan, const TranspileOptions& options, Stag
 bool shiftHlslStageFromText(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route);
 bool copyLeftToDriver(StagePlan& plan, Stage stage);
 bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shifted, const char* route);
+bool writeAssemblyStage(StagePlan& plan, const TranspileOptions& options, Stage, const char*);
 // The GLSL text-only shift: only where glslang's refusal may be its own gap (the source uses what
 // glslang reads more narrowly than drivers do: an #extension it enables, a line continuation, the
 // compatibility profile) and no error is about the shader's #include files (those are the input's).
@@ -81,29 +85,41 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   return takeTextOnlyShift(plan, stage, std::move(shifted), route) && checkOutputWithMesa(plan);
 }
 
-// The ways to write a stage glslang could not analyse (no SPIR-V module), as the back end's routes
-// are for a stage it could: each says whether it takes the stage (cheap, without side effects),
-// then writes it, or finds it cannot after all (false, with diagnostics that say why). At most one
-// takes a stage: the copy is for stages that get no shift, the others for the one that does.
+// The ways to write a stage with no SPIR-V module, as the back end's routes are for a stage with
+// one: each says whether it takes the stage (cheap, without side effects), then writes it, or finds
+// it cannot after all (false, with diagnostics that say why). At most one takes a stage: the
+// assembly route takes assembly, and of the others (a source stage glslang could not analyse) the
+// copy is for stages that get no shift, the rest for the one that does.
 struct TextRoute {
   const char* name;
+  // `stage` is the stage decided for a source input (Unknown for assembly: its shader model says).
   bool (*takes)(const StagePlan& plan, const TranspileOptions& options, Stage stage);
   // `route` is the route's own name, for the record and the messages.
   bool (*write)(StagePlan& plan, const TranspileOptions& options, Stage stage, const char* route);
 };
 
+// A source stage whose front end ran and which glslang refused (or crashed on): no module.
+bool unanalysedSource(const StagePlan& plan) {
+  return plan.kind == InputKind::Source && plan.frontEndRan && plan.front.glslangRejected && plan.stage &&
+         plan.stage->stage && plan.diags.hasErrors();
+}
+
 bool shiftsFromText(const StagePlan& plan, const TranspileOptions& options, Stage stage) {
-  return mayShiftFromText(stage, plan.front.info.language, options, options);
+  return unanalysedSource(plan) && mayShiftFromText(stage, plan.front.info.language, options, options);
 }
 
 const TextRoute kTextRoutes[] = {
+    // D3D shader assembly: shifted in its own syntax, or copied when it takes no shift.
+    {"d3d-asm-splice",
+     [](const StagePlan& plan, const TranspileOptions&, Stage) { return plan.kind == InputKind::D3DAssembly; },
+     writeAssemblyStage},
     // A GLSL stage that takes no shift, copied as it is (copiesUnshiftedStage).
     {"unanalysed-copy",
      [](const StagePlan& plan, const TranspileOptions& options, Stage stage) {
        const bool preRaster = stage == Stage::Vertex || stage == Stage::TessEvaluation || stage == Stage::Geometry;
        const bool sameLanguage = options.target == TargetLanguage::Auto || options.target == TargetLanguage::Glsl ||
                                  options.target == TargetLanguage::Essl;
-       return !(preRaster && options.shiftThisStage) && plan.front.info.language == SourceLanguage::Glsl &&
+       return unanalysedSource(plan) && !(preRaster && options.shiftThisStage) && plan.front.info.language == SourceLanguage::Glsl &&
               !options.requireAnalysis && !options.forceReemit && !options.targetVersion && sameLanguage;
      },
      copiesUnshiftedStage},
@@ -129,10 +145,8 @@ const TextRoute kTextRoutes[] = {
 
 }  // namespace
 
-bool shiftStageFromText(StagePlan& plan, const TranspileOptions& options) {
-  if (!plan.frontEndRan || !plan.front.glslangRejected || !plan.stage || !plan.stage->stage || !plan.diags.hasErrors())
-    return false;
-  const Stage stage = *plan.stage->stage;
+bool writeWithoutModule(StagePlan& plan, const TranspileOptions& options) {
+  const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
   for (const TextRoute& route : kTextRoutes)
     if (route.takes(plan, options, stage)) return route.write(plan, options, stage, route.name);
   return false;
@@ -224,6 +238,21 @@ bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shift
   spliced.route = route;
   spliced.spliceSites = shifted->sites;
   return writeTextOutcome(plan, stage, std::move(spliced));
+}
+
+// The assembly route (d3dasm/asm_route.h) writing into the plan: its record, its warnings and text,
+// or its error.
+bool writeAssemblyStage(StagePlan& plan, const TranspileOptions& options, Stage, const char*) {
+  Result<ConvertedAssembly> converted = convertAssembly(*plan.input, options, plan.record, plan.diags);
+  if (!converted) {
+    plan.diags.add(located(converted.error(), plan.input->path));
+    return false;
+  }
+  plan.record.totalMs = msSince(plan.started);
+  plan.output = std::move(converted->text);
+  plan.copied = converted->copied;
+  plan.changed = !converted->copied;
+  return true;
 }
 
 bool writeTextOutcome(StagePlan& plan, Stage stage, TextOutcome outcome) {
