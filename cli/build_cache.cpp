@@ -201,9 +201,9 @@ Cache loadCache(const fs::path& file) {
 void saveCache(const fs::path& file, const std::string& tool, Cache&& next) {
   nlohmann::json cacheJson = {{"format", kCacheFormat}, {"tool", tool}, {"jobs", std::move(next.jobs)}};
   std::vector<std::uint8_t> packed = nlohmann::json::to_msgpack(cacheJson);
-  std::string error;
-  if (!writeAtomically(file, std::string(packed.begin(), packed.end()), &error))
-    std::cerr << file.string() << ": warning: cannot write the cache (" << error << "); the next run converts everything\n";
+  if (Status written = writeAtomically(file, std::string(packed.begin(), packed.end())); !written)
+    std::cerr << file.string() << ": warning: cannot write the cache (" << written.error().message
+              << "); the next run converts everything\n";
 }
 
 std::vector<size_t> reuseUpToDate(const Plan& plan, const std::string& tool, bool trusted, Cache& previous,
@@ -290,14 +290,11 @@ int removeStaleOutputs(const Plan& plan, const Cache& previous, const fs::path& 
   return removed;
 }
 
-bool writeIfChanged(const fs::path& outDir, const fs::path& path, const std::string& bytes, std::string* error) {
-  if (std::string escape = linkOutOfOutputDirectory(path, outDir); !escape.empty()) {
-    *error = escape;
-    return false;
-  }
+Status writeIfChanged(const fs::path& outDir, const fs::path& path, const std::string& bytes) {
+  if (std::string escape = linkOutOfOutputDirectory(path, outDir); !escape.empty()) return fileError(escape);
   std::string existing;
-  if (readFile(path.string(), &existing) && existing == bytes) return true;
-  return writeAtomically(path, bytes, error);
+  if (readFile(path.string(), &existing) && existing == bytes) return Done{};
+  return writeAtomically(path, bytes);
 }
 
 }  // namespace stereoshift

@@ -80,7 +80,6 @@ int removeStaleOutputs(const Plan& plan, const Cache& previous, const std::files
 // Writes `bytes` to the output `path` unless the file already holds them (an unchanged output keeps
 // its timestamp, so a build system downstream does not redo its work). Never through a symbolic
 // link out of `outDir`: that is an error.
-bool writeIfChanged(const std::filesystem::path& outDir, const std::filesystem::path& path, const std::string& bytes,
-                    std::string* error);
+Status writeIfChanged(const std::filesystem::path& outDir, const std::filesystem::path& path, const std::string& bytes);
 
 }  // namespace stereoshift

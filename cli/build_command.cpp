@@ -137,10 +137,11 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   const bool cacheUnchanged = !build.noCache && toConvert.empty() && next.jobs.size() == previousCount &&
                               fs::exists(cacheFile, ec);
   if (!cacheUnchanged) saveCache(cacheFile, tool, std::move(next));
-  std::string error;
-  if (!build.depfile.empty() && !writeAtomically(build.depfile, makeDepfile({reportPath}, report.dependencies), &error)) {
-    std::cerr << build.depfile << ": error: " << error << "\n";
-    ++errors;
+  if (!build.depfile.empty()) {
+    if (Status written = writeAtomically(build.depfile, makeDepfile({reportPath}, report.dependencies)); !written) {
+      std::cerr << located(written.error(), build.depfile).format() << "\n";
+      ++errors;
+    }
   }
   printSummaryLine(report, build.source, build.output);
   printErrorSummary(errors);

@@ -112,13 +112,14 @@ void copyThroughPasses(const Plan& plan, std::vector<JobResult>& results) {
       nlohmann::json report = {{"file", job.stages[k].string()}, {"pass", job.pass}, {"mode", toString(job.mode)},
                                {"classification", std::string(toString(job.mode)) + "-pass"},
                                {"output", "copied"}, {"changed", false}};
-      std::string bytes, error;
+      std::string bytes;
+      Status written = Done{};
       if (!readFile(job.stages[k].string(), &bytes)) {
         results[i].log += job.stages[k].string() + ": error: cannot read file\n";
         report["ok"] = false;
         ++results[i].errors;
-      } else if (!writeIfChanged(plan.outputDir, job.outputs[k], bytes, &error)) {
-        results[i].log += job.outputs[k].string() + ": error: " + error + "\n";
+      } else if (written = writeIfChanged(plan.outputDir, job.outputs[k], bytes); !written) {
+        results[i].log += located(written.error(), job.outputs[k].string()).format() + "\n";
         report["ok"] = false;
         ++results[i].errors;
       } else {
@@ -202,9 +203,8 @@ void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, co
           result.reports[k]["output"] = "not written: another stage of the pipeline failed";
           continue;
         }
-        std::string error;
-        if (!writeIfChanged(plan.outputDir, job.outputs[k], result.outputs[k], &error)) {
-          result.log += job.outputs[k].string() + ": error: " + error + "\n";
+        if (Status written = writeIfChanged(plan.outputDir, job.outputs[k], result.outputs[k]); !written) {
+          result.log += located(written.error(), job.outputs[k].string()).format() + "\n";
           result.reports[k]["ok"] = false;
           ++result.errors;
           writeFailed = true;
@@ -288,14 +288,13 @@ std::vector<fs::path> copyIncludedFiles(const Plan& plan, std::vector<JobResult>
   std::vector<fs::path> copied;
   for (const auto& [file, n] : needed) {
     const fs::path output = plan.outputDir / file.lexically_relative(root);
-    std::string error;
     if (!n.read) {
       results[n.job].log += file.string() + ": error: cannot read the included file to copy it into the output tree\n";
       ++results[n.job].errors;
       continue;
     }
-    if (!writeIfChanged(plan.outputDir, output, n.bytes, &error)) {
-      results[n.job].log += output.string() + ": error: " + error + "\n";
+    if (Status written = writeIfChanged(plan.outputDir, output, n.bytes); !written) {
+      results[n.job].log += located(written.error(), output.string()).format() + "\n";
       ++results[n.job].errors;
       continue;
     }

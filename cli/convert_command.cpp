@@ -100,9 +100,8 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
   if (!errors) errors += writeAllOrNothing(run.outputs, std::cerr);
   if (run.hasReport) writeReport(o.reportPath, run.report);
   if (!errors && !run.depfileText.empty()) {
-    std::string error;
-    if (!writeAtomically(o.depfile, run.depfileText, &error)) {
-      std::cerr << o.depfile << ": error: " << error << "\n";
+    if (Status written = writeAtomically(o.depfile, run.depfileText); !written) {
+      std::cerr << located(written.error(), o.depfile).format() << "\n";
       ++errors;
     }
   }

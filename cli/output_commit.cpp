@@ -49,48 +49,44 @@ std::string blockedBecause(const fs::path& path) {
   return {};
 }
 
-bool writeInPlace(const fs::path& path, const std::string& bytes, std::string* error) {
+Status writeInPlace(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!out.flush()) {
-    *error = "cannot write '" + path.string() + "'";
-    return false;
-  }
-  return true;
+  if (!out.flush()) return fileError("cannot write '" + path.string() + "'");
+  return Done{};
 }
 
 // The first half of an atomic write: the bytes in a temporary file beside `path`.
-bool writeTemporary(const fs::path& path, const std::string& bytes, fs::path* temp, std::string* error) {
+// Returns the temporary's path.
+Result<fs::path> writeTemporary(const fs::path& path, const std::string& bytes) {
   std::error_code ec;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-  *temp = path;
-  *temp += ".stereoshift-tmp-" + std::to_string(::getpid());
-  std::ofstream out(*temp, std::ios::binary | std::ios::trunc);
+  fs::path temp = path;
+  temp += ".stereoshift-tmp-" + std::to_string(::getpid());
+  std::ofstream out(temp, std::ios::binary | std::ios::trunc);
   if (!out) {
     int why = errno;
-    *error = "cannot write '" + path.string() + "': " + std::strerror(why);
-    return false;
+    return fileError("cannot write '" + path.string() + "': " + std::strerror(why));
   }
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (!out.flush()) {
-    *error = "cannot write '" + temp->string() + "'";
     out.close();
-    fs::remove(*temp, ec);
-    return false;
+    fs::remove(temp, ec);
+    return fileError("cannot write '" + temp.string() + "'");
   }
-  return true;
+  return temp;
 }
 
 // The second half: the temporary renamed into place (removed when that fails).
-bool renameIntoPlace(const fs::path& temp, const fs::path& path, std::string* error) {
+Status renameIntoPlace(const fs::path& temp, const fs::path& path) {
   std::error_code ec;
   fs::rename(temp, path, ec);
   if (ec) {
-    *error = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message();
+    std::string message = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message();
     fs::remove(temp, ec);
-    return false;
+    return fileError(std::move(message));
   }
-  return true;
+  return Done{};
 }
 
 }  // namespace
@@ -101,11 +97,12 @@ std::string outputBlockedBecause(const std::string& path) {
 }
 
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
-bool writeAtomically(const fs::path& requested, const std::string& bytes, std::string* error) {
+Status writeAtomically(const fs::path& requested, const std::string& bytes) {
   OutputTarget target = targetOf(requested);
-  if (target.inPlace) return writeInPlace(target.path, bytes, error);
-  fs::path temp;
-  return writeTemporary(target.path, bytes, &temp, error) && renameIntoPlace(temp, target.path, error);
+  if (target.inPlace) return writeInPlace(target.path, bytes);
+  Result<fs::path> temp = writeTemporary(target.path, bytes);
+  if (!temp) return temp.error();
+  return renameIntoPlace(*temp, target.path);
 }
 
 int writeAllOrNothing(const std::vector<PendingOutput>& outputs, std::ostream& log) {
@@ -127,22 +124,23 @@ int writeAllOrNothing(const std::vector<PendingOutput>& outputs, std::ostream& l
   for (const auto& output : outputs) {
     if (output.path == "-" || output.path.empty()) continue;
     Staged s{&output, targetOf(output.path), {}};
-    std::string error;
-    if (!s.target.inPlace && !writeTemporary(s.target.path, output.bytes, &s.temp, &error)) {
-      log << output.path << ": error: " << error << "\n";
-      for (const auto& done : staged)
-        if (!done.temp.empty()) fs::remove(done.temp, ec);
-      return 1;
+    if (!s.target.inPlace) {
+      Result<fs::path> temp = writeTemporary(s.target.path, output.bytes);
+      if (!temp) {
+        log << located(temp.error(), output.path).format() << "\n";
+        for (const auto& done : staged)
+          if (!done.temp.empty()) fs::remove(done.temp, ec);
+        return 1;
+      }
+      s.temp = *temp;
     }
     staged.push_back(std::move(s));
   }
   int errors = 0;
   for (const auto& s : staged) {
-    std::string error;
-    bool written = s.target.inPlace ? writeInPlace(s.target.path, s.output->bytes, &error)
-                                    : renameIntoPlace(s.temp, s.target.path, &error);
+    Status written = s.target.inPlace ? writeInPlace(s.target.path, s.output->bytes) : renameIntoPlace(s.temp, s.target.path);
     if (!written) {
-      log << s.output->path << ": error: " << error << "\n";
+      log << located(written.error(), s.output->path).format() << "\n";
       ++errors;
     }
   }
@@ -162,10 +160,10 @@ bool writeReportText(const std::string& path, const std::string& text) {
     return true;
   }
   // An identical report is left alone (a repeated no-op build rewrites nothing).
-  std::string existing, error;
+  std::string existing;
   if (readFile(path, &existing) && existing == text) return true;
-  if (!writeAtomically(path, text, &error)) {
-    std::cerr << "stereoshift: error: " << error << "\n";
+  if (Status written = writeAtomically(path, text); !written) {
+    std::cerr << "stereoshift: error: " << written.error().message << "\n";
     return false;
   }
   return true;

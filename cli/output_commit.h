@@ -3,6 +3,8 @@
 // and no output may be one of the inputs. Every command writes through these.
 #pragma once
 
+#include "core/result.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -14,7 +16,7 @@
 namespace stereoshift {
 
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
-bool writeAtomically(const std::filesystem::path& path, const std::string& bytes, std::string* error);
+Status writeAtomically(const std::filesystem::path& path, const std::string& bytes);
 
 // One output waiting to be written ("-": standard output).
 struct PendingOutput {

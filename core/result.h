@@ -18,11 +18,21 @@ inline Diagnostic errorAt(size_t line, size_t column, std::string message) {
   return Diagnostic{Severity::Error, "", static_cast<int>(line), static_cast<int>(column), std::move(message)};
 }
 
+// An error about a whole file or an action on it (no line): `file: error: message` once located.
+inline Diagnostic fileError(std::string message) { return errorAt(0, 0, std::move(message)); }
+
 // `error` placed in `file` (kept when it names one already).
 inline Diagnostic located(Diagnostic error, const std::string& file) {
   if (error.file.empty()) error.file = file;
   return error;
 }
+
+template <class T>
+class Result;
+
+// A result with no value: done, or the diagnostic that says why not.
+struct Done {};
+using Status = Result<Done>;
 
 template <class T>
 class [[nodiscard]] Result {

@@ -19,6 +19,15 @@ TEST(CoreResult, AValueOrALocatedError) {
   EXPECT_EQ(located(Diagnostic{Severity::Error, "inc.h", 1, 1, "x"}, "shader.txt").file, "inc.h");
 }
 
+TEST(CoreResult, AStatusIsDoneOrAFileError) {
+  Status done = Done{};
+  EXPECT_TRUE(done);
+  Status failed = fileError("cannot write 'out/a.vert'");
+  ASSERT_FALSE(failed);
+  // A whole-file error prints without a line: `file: error: message`.
+  EXPECT_EQ(located(failed.error(), "out/a.vert").format(), "out/a.vert: error: cannot write 'out/a.vert'");
+}
+
 TEST(CoreResult, TheAssemblyReaderSaysWhereTheTextIsNotAssembly) {
   Result<d3dasm::AsmText> text = d3dasm::parseAssembly("vs_5_0\nmov o0.xyzw, v0.xy(zw\nret\n");
   ASSERT_FALSE(text);
