@@ -98,7 +98,7 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
     }
   if (!errors && o.diff) printDiffs(paths, run.outputs);
   if (!errors) errors += writeAllOrNothing(run.outputs, std::cerr);
-  if (run.hasReport) writeReport(o.reportPath, run.report);
+  if (run.hasReport && !writeReport(o.reportPath, run.report)) ++errors;
   if (!errors && !run.depfileText.empty()) {
     if (Status written = writeAtomically(o.depfile, run.depfileText); !written) {
       std::cerr << located(written.error(), o.depfile).format() << "\n";
