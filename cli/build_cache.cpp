@@ -291,7 +291,7 @@ int removeStaleOutputs(const Plan& plan, const Cache& previous, const fs::path& 
 }
 
 Status writeIfChanged(const fs::path& outDir, const fs::path& path, const std::string& bytes) {
-  if (std::string escape = linkOutOfOutputDirectory(path, outDir); !escape.empty()) return fileError(escape);
+  if (std::string escape = linkOutOfOutputDirectory(path, outDir); !escape.empty()) return plainError(escape);
   std::string existing;
   if (readFile(path.string(), &existing) && existing == bytes) return Done{};
   return writeAtomically(path, bytes);

@@ -52,7 +52,7 @@ std::string blockedBecause(const fs::path& path) {
 Status writeInPlace(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!out.flush()) return fileError("cannot write '" + path.string() + "'");
+  if (!out.flush()) return plainError("cannot write '" + path.string() + "'");
   return Done{};
 }
 
@@ -66,13 +66,13 @@ Result<fs::path> writeTemporary(const fs::path& path, const std::string& bytes) 
   std::ofstream out(temp, std::ios::binary | std::ios::trunc);
   if (!out) {
     int why = errno;
-    return fileError("cannot write '" + path.string() + "': " + std::strerror(why));
+    return plainError("cannot write '" + path.string() + "': " + std::strerror(why));
   }
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (!out.flush()) {
     out.close();
     fs::remove(temp, ec);
-    return fileError("cannot write '" + temp.string() + "'");
+    return plainError("cannot write '" + temp.string() + "'");
   }
   return temp;
 }
@@ -84,7 +84,7 @@ Status renameIntoPlace(const fs::path& temp, const fs::path& path) {
   if (ec) {
     std::string message = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message();
     fs::remove(temp, ec);
-    return fileError(std::move(message));
+    return plainError(std::move(message));
   }
   return Done{};
 }

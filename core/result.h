@@ -18,8 +18,9 @@ inline Diagnostic errorAt(size_t line, size_t column, std::string message) {
   return Diagnostic{Severity::Error, "", static_cast<int>(line), static_cast<int>(column), std::move(message)};
 }
 
-// An error about a whole file or an action on it (no line): `file: error: message` once located.
-inline Diagnostic fileError(std::string message) { return errorAt(0, 0, std::move(message)); }
+// An error with no line or column: about a whole file, an action on it or a run (`file: error:
+// message` once located).
+inline Diagnostic plainError(std::string message) { return errorAt(0, 0, std::move(message)); }
 
 // `error` placed in `file` (kept when it names one already).
 inline Diagnostic located(Diagnostic error, const std::string& file) {

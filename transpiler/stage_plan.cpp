@@ -76,10 +76,12 @@ bool readSpirvInput(StagePlan& plan) {
 }
 
 // The module in the IR, parsed once (a pipeline parses it early for its questions across stages).
-bool parseModuleOnce(StagePlan& plan, std::string* error) {
-  if (plan.module) return true;
-  plan.module = spirv::Module::parse(plan.words.empty() ? plan.front.spirv : plan.words, error);
-  return plan.module.has_value();
+Status parseModuleOnce(StagePlan& plan) {
+  if (plan.module) return Done{};
+  std::string error;
+  plan.module = spirv::Module::parse(plan.words.empty() ? plan.front.spirv : plan.words, &error);
+  if (!plan.module) return plainError(std::move(error));
+  return Done{};
 }
 
 }  // namespace
@@ -146,8 +148,7 @@ void runFrontEnd(StagePlan& plan, const TranspileOptions& options) {
 
 bool parseEarly(StagePlan& plan, const TranspileOptions& options) {
   if (!plan.front.ok) return false;
-  std::string error;
-  if (!parseModuleOnce(plan, &error)) return false;  // reported when the stage converts
+  if (!parseModuleOnce(plan)) return false;  // reported when the stage converts
   plan.analyses =
       std::make_unique<AnalysisManager>(*plan.module, plan.front.info, plan.input->path, !options.foldedCopyCrashed);
   return true;
@@ -302,9 +303,8 @@ bool readStage(StagePlan& plan, const TranspileOptions& options) {
 
 bool parseStage(StagePlan& plan, const TranspileOptions& options) {
   const std::string& file = plan.input->path;
-  std::string error;
-  if (!parseModuleOnce(plan, &error)) {
-    plan.diags.error(file, error);
+  if (Status parsed = parseModuleOnce(plan); !parsed) {
+    plan.diags.add(located(parsed.error(), file));
     return false;
   }
   if (plan.spirvInput) {

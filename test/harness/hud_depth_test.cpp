@@ -78,7 +78,9 @@ class HudDepth : public VulkanSuite<> {
     auto module = spirv::Module::parse(words, &error);
     EXPECT_TRUE(module) << error;
     if (!module) return {};
-    EXPECT_TRUE(instrumentForCapture(*module, layout, nullptr, &error)) << error;
+    Result<CaptureLayout> captured = instrumentForCapture(*module);
+    EXPECT_TRUE(captured) << captured.error().message;
+    if (captured) *layout = std::move(*captured);
     CaptureRequest request;
     request.pipeline.stages = {{VK_SHADER_STAGE_VERTEX_BIT, module->encode(), module->entryPointName()}};
     request.pipeline.vertices = hudVertices();

@@ -22,7 +22,7 @@ TEST(CoreResult, AValueOrALocatedError) {
 TEST(CoreResult, AStatusIsDoneOrAFileError) {
   Status done = Done{};
   EXPECT_TRUE(done);
-  Status failed = fileError("cannot write 'out/a.vert'");
+  Status failed = plainError("cannot write 'out/a.vert'");
   ASSERT_FALSE(failed);
   // A whole-file error prints without a line: `file: error: message`.
   EXPECT_EQ(located(failed.error(), "out/a.vert").format(), "out/a.vert: error: cannot write 'out/a.vert'");

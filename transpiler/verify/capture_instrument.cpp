@@ -37,12 +37,9 @@ uint32_t componentsOf(const spirv::Module& m, uint32_t type, bool* isFloat) {
 
 }  // namespace
 
-bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<std::string>* skipped,
-                          std::string* error) {
-  if (m.entryPoints.empty()) {
-    *error = "no entry point";
-    return false;
-  }
+Result<CaptureLayout> instrumentForCapture(spirv::Module& m, std::vector<std::string>* skipped) {
+  if (m.entryPoints.empty()) return plainError("no entry point");
+  CaptureLayout captured, *layout = &captured;
   struct Candidate {
     uint32_t variable;
     bool member;
@@ -83,12 +80,8 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
     if (a.isPosition != b.isPosition) return a.isPosition;
     return a.location < b.location;
   });
-  if (candidates.empty() || !candidates.front().isPosition) {
-    *error = "the shader writes no clip position to capture";
-    return false;
-  }
+  if (candidates.empty() || !candidates.front().isPosition) return plainError("the shader writes no clip position to capture");
   uint32_t offset = 0;
-  layout->fields.clear();
   for (const auto& c : candidates) {
     layout->fields.push_back({c.name, c.location, offset, c.components, c.isPosition, c.isFloat});
     offset += 4 * c.components;
@@ -107,7 +100,7 @@ bool instrumentForCapture(spirv::Module& m, CaptureLayout* layout, std::vector<s
     else
       m.decorate(c.variable, spv::DecorationOffset, {layout->fields[i].offset});
   }
-  return true;
+  return captured;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 // so the harness can read back each output of each vertex. The shader's own code is not touched.
 #pragma once
 
+#include "core/result.h"
 #include "passes/ir/module.h"
 
 #include <string>
@@ -27,9 +28,9 @@ struct CaptureLayout {
 
 // Adds the transform-feedback decorations. The position is always the first field (offset 0);
 // other outputs follow in location order. Outputs that are not 32-bit scalars or vectors (matrices,
-// arrays, structs) are not captured and are listed in `skipped`.
-bool instrumentForCapture(spirv::Module& module, CaptureLayout* layout, std::vector<std::string>* skipped,
-                          std::string* error);
+// arrays, structs) are not captured and are listed in `skipped`. Returns where each captured
+// field is; the error when the module has no entry point or writes no position.
+Result<CaptureLayout> instrumentForCapture(spirv::Module& module, std::vector<std::string>* skipped = nullptr);
 
 // OpenGL SPIR-V (ARB_gl_spirv) cannot run on Vulkan as is: its loose uniforms become members of one
 // std140 uniform block (set 0, binding `blockBinding` — one per stage of a pipeline, since each stage

@@ -207,13 +207,13 @@ void matchInvariance(Module& original, const Module& transpiled) {
 // draws each view on its own, in a copy of the module whose reads of the view index (ViewIndex)
 // read that view's number as a constant (harness-only, like the capture decorations): the shader's
 // code computes exactly what it computes in that view of a view-mask-0b11 draw.
-bool bindViewIndex(Module& m, uint32_t view, std::string* error) {
+Status bindViewIndex(Module& m, uint32_t view) {
   uint32_t variable = 0;
   for (const auto& inst : m.typesValues)
     if (inst.opcode == spv::OpVariable &&
         m.decorationValue(inst.resultId, spv::DecorationBuiltIn) == uint32_t(spv::BuiltInViewIndex))
       variable = inst.resultId;
-  if (!variable) return true;  // this stage does not read the view
+  if (!variable) return Done{};  // this stage does not read the view
   const uint32_t type = m.pointeeType(m.definition(variable)->typeId);
   const Instruction* typeDef = m.definition(type);
   const bool isSigned = typeDef && typeDef->opcode == spv::OpTypeInt && typeDef->operand(1) == 1;
@@ -231,15 +231,13 @@ bool bindViewIndex(Module& m, uint32_t view, std::string* error) {
             ((inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain) && inst.operand(0) == variable) ||
             (inst.opcode == spv::OpFunctionCall &&
              std::find(inst.operands.begin() + 1, inst.operands.end(), variable) != inst.operands.end());
-        if (pointerUse) {
-          *error = "the " + std::string(executionModelName(m.executionModel())) +
-                   " shader reads the view index other than by a load; the harness cannot run it per view";
-          return false;
-        }
+        if (pointerUse)
+          return plainError("the " + std::string(executionModelName(m.executionModel())) +
+                            " shader reads the view index other than by a load; the harness cannot run it per view");
       }
   dropFromInterface(m, variable);
   m.invalidateDefinitions();
-  return true;
+  return Done{};
 }
 
 // Instanced: the vertex stage writes the eye to gl_Layer / gl_ViewportIndex, built-ins that the

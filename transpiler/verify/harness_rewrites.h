@@ -7,6 +7,7 @@
 // conversion's output.
 #pragma once
 
+#include "core/result.h"
 #include "transpiler/verify/stereo_verify.h"
 
 #include <string>
@@ -35,9 +36,9 @@ uint32_t geometryInput(const spirv::Module& geometry, VkPrimitiveTopology* topol
 // Marks Invariant in `original` the outputs `transpiled` marks Invariant.
 void matchInvariance(spirv::Module& original, const spirv::Module& transpiled);
 
-// Multiview: the module's reads of the view index read `view` as a constant. False with *error
-// when the view index is used other than by a load.
-bool bindViewIndex(spirv::Module& m, uint32_t view, std::string* error);
+// Multiview: the module's reads of the view index read `view` as a constant; the error when the
+// view index is used other than by a load.
+Status bindViewIndex(spirv::Module& m, uint32_t view);
 
 // Instanced: the built-in the vertex stage writes the eye to becomes an ordinary output the capture
 // reads; returns its name, empty when the shader writes no such built-in.

@@ -96,7 +96,7 @@ std::string slotName(const char* prefix, const InterfaceSlot& s) {
   return std::string(prefix) + "_" + std::to_string(s.location) + "_" + std::to_string(s.component);
 }
 
-bool compileStage(const std::string& text, Stage stage, const char* label, Module* out, std::string* error) {
+Result<Module> compileStage(const std::string& text, Stage stage, const char* label) {
   TranspileOptions options;
   options.stage = stage;
   options.language = SourceLanguage::Glsl;
@@ -105,15 +105,12 @@ bool compileStage(const std::string& text, Stage stage, const char* label, Modul
   std::string parseError;
   std::optional<Module> m;
   if (result.ok) m = Module::parse(result.spirv, &parseError);
-  if (!m) {
-    *error = std::string("cannot synthesize the ") + label + ": " +
-             (result.ok ? parseError : diags.format().substr(0, diags.format().find('\n')));
-    return false;
-  }
+  if (!m)
+    return plainError(std::string("cannot synthesize the ") + label + ": " +
+                      (result.ok ? parseError : diags.format().substr(0, diags.format().find('\n'))));
   std::string convertError;
   convertOpenGLForVulkan(*m, 15, &convertError);
-  *out = std::move(*m);
-  return true;
+  return std::move(*m);
 }
 
 // Control points the tese needs: its patch arrays' declared size (HLSL InputPatch<T, N>), else
@@ -218,7 +215,7 @@ std::vector<InterfaceSlot> interfaceSlots(const Module& m, spv::StorageClass sto
   return slots;
 }
 
-bool checkStageInterface(const Module& previous, const Module& next, std::string* error) {
+Status checkStageInterface(const Module& previous, const Module& next) {
   const auto outs = interfaceSlots(previous, spv::StorageClassOutput);
   const auto ins = interfaceSlots(next, spv::StorageClassInput);
   const std::string from = executionModelName(previous.executionModel()), to = executionModelName(next.executionModel());
@@ -230,11 +227,9 @@ bool checkStageInterface(const Module& previous, const Module& next, std::string
       std::string t = glslTypeName(m, s.type);
       return (t.empty() ? std::string("a type without a GLSL name") : t) + " '" + s.name + "'";
     };
-    if (!match) {
-      *error = "the " + to + " stage reads location " + std::to_string(in.location) + " (" + spelled(next, in) +
-               ") that the " + from + " stage does not write: the pipeline's stage interfaces do not match";
-      return false;
-    }
+    if (!match)
+      return plainError("the " + to + " stage reads location " + std::to_string(in.location) + " (" + spelled(next, in) +
+                        ") that the " + from + " stage does not write: the pipeline's stage interfaces do not match");
     // Vulkan lets an output vector carry more components than the input reads; anything else
     // must agree in scalar kind and shape.
     const char outKind = scalarKind(previous, match->type), inKind = scalarKind(next, in.type);
@@ -245,27 +240,24 @@ bool checkStageInterface(const Module& previous, const Module& next, std::string
     bool compatible = vectors ? outKind == inKind && outKind != 0 &&
                                     componentCount(previous, match->type) >= componentCount(next, in.type)
                               : glslTypeName(previous, match->type) == glslTypeName(next, in.type);
-    if (!compatible) {
-      *error = "location " + std::to_string(in.location) + ": the " + from + " stage writes " + spelled(previous, *match) +
-               ", the " + to + " stage reads " + spelled(next, in) + ": the pipeline's stage interfaces do not match";
-      return false;
-    }
+    if (!compatible)
+      return plainError("location " + std::to_string(in.location) + ": the " + from + " stage writes " +
+                        spelled(previous, *match) + ", the " + to + " stage reads " + spelled(next, in) +
+                        ": the pipeline's stage interfaces do not match");
   }
-  return true;
+  return Done{};
 }
 
-bool synthesizeLeadingStages(const Module& first, std::vector<Module>* leading, std::vector<std::string>* names,
-                             std::string* error) {
+Result<LeadingStages> synthesizeLeadingStages(const Module& first) {
+  LeadingStages leading;
   const spv::ExecutionModel model = first.executionModel();
-  if (model == spv::ExecutionModelVertex) return true;
+  if (model == spv::ExecutionModelVertex) return leading;
   const auto inputs = interfaceSlots(first, spv::StorageClassInput);
   for (const auto& s : inputs)
-    if (glslTypeName(first, s.type).empty()) {
-      *error = "cannot synthesize the stages in front of the " + std::string(executionModelName(model)) +
-               " shader: its input '" + s.name + "' (location " + std::to_string(s.location) +
-               ") has a type a pass-through stage cannot forward";
-      return false;
-    }
+    if (glslTypeName(first, s.type).empty())
+      return plainError("cannot synthesize the stages in front of the " + std::string(executionModelName(model)) +
+                        " shader: its input '" + s.name + "' (location " + std::to_string(s.location) +
+                        ") has a type a pass-through stage cannot forward");
   // The vertex stage: every per-vertex input of the stage after it, from the seed attribute.
   std::ostringstream vs;
   vs << "#version 450\n// synthesized by stereoshift verify: forwards a seed attribute to every varying\n"
@@ -282,11 +274,11 @@ bool synthesizeLeadingStages(const Module& first, std::vector<Module>* leading, 
   // later matrix (view-like: z < 0 in front) keeps in front of the camera.
   vs << "void main() {\n" << body.str()
      << "  gl_Position = vec4(stereoshiftSeed.xyz, 1.0 - 0.05 * stereoshiftSeed.z);\n}\n";
-  Module vertex;
-  if (!compileStage(vs.str(), Stage::Vertex, "synthesized vertex stage", &vertex, error)) return false;
-  leading->push_back(std::move(vertex));
-  names->push_back("vertex (synthesized pass-through)");
-  if (model != spv::ExecutionModelTessellationEvaluation) return true;
+  Result<Module> vertex = compileStage(vs.str(), Stage::Vertex, "synthesized vertex stage");
+  if (!vertex) return vertex.error();
+  leading.modules.push_back(std::move(*vertex));
+  leading.names.push_back("vertex (synthesized pass-through)");
+  if (model != spv::ExecutionModelTessellationEvaluation) return leading;
 
   // The tessellation-control stage: per-vertex varyings forwarded, patch ones derived from the
   // first control point, tessellation levels 2 (a few vertices per patch, enough to see the shift).
@@ -312,12 +304,11 @@ bool synthesizeLeadingStages(const Module& first, std::vector<Module>* leading, 
       << "    gl_TessLevelOuter[0] = 2.0; gl_TessLevelOuter[1] = 2.0; gl_TessLevelOuter[2] = 2.0;\n"
       << "    gl_TessLevelOuter[3] = 2.0; gl_TessLevelInner[0] = 2.0; gl_TessLevelInner[1] = 2.0;\n"
       << patch.str() << "  }\n}\n";
-  Module control;
-  if (!compileStage(tcs.str(), Stage::TessControl, "synthesized tessellation-control stage", &control, error))
-    return false;
-  leading->push_back(std::move(control));
-  names->push_back("tessellation-control (synthesized pass-through)");
-  return true;
+  Result<Module> control = compileStage(tcs.str(), Stage::TessControl, "synthesized tessellation-control stage");
+  if (!control) return control.error();
+  leading.modules.push_back(std::move(*control));
+  leading.names.push_back("tessellation-control (synthesized pass-through)");
+  return leading;
 }
 
 uint32_t patchControlPoints(const std::vector<Module>& stages) {

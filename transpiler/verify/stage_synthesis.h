@@ -5,6 +5,7 @@
 // is reported by location and name instead of as a failed vkCreateGraphicsPipelines.
 #pragma once
 
+#include "core/result.h"
 #include "passes/ir/module.h"
 
 #include <string>
@@ -33,13 +34,16 @@ std::string glslTypeName(const spirv::Module& module, uint32_t type);
 // for a vertex shader, a pass-through vertex shader for tessellation control and geometry, a
 // vertex and a tessellation-control shader for tessellation evaluation. Each synthesized vertex
 // shader reads one vec4 attribute (location 0) and derives every output from it, so distinct
-// varyings get distinct, plausible values. False with *error when an input cannot be produced.
-bool synthesizeLeadingStages(const spirv::Module& first, std::vector<spirv::Module>* leading,
-                             std::vector<std::string>* names, std::string* error);
+// varyings get distinct, plausible values. The error when an input cannot be produced.
+struct LeadingStages {
+  std::vector<spirv::Module> modules;  // in pipeline order
+  std::vector<std::string> names;      // one per module, for the report
+};
+Result<LeadingStages> synthesizeLeadingStages(const spirv::Module& first);
 
 // Every input of stage `next` at a location must be written by `previous` with a type of the same
-// GLSL spelling; *error says which one is not (stage names, location, variable names, types).
-bool checkStageInterface(const spirv::Module& previous, const spirv::Module& next, std::string* error);
+// GLSL spelling; the error says which one is not (stage names, location, variable names, types).
+Status checkStageInterface(const spirv::Module& previous, const spirv::Module& next);
 
 // The control points per patch the tessellation stages of this pipeline use: the tesc's
 // OutputVertices where there is one, else what the synthesized tesc declares.

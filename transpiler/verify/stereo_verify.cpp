@@ -143,10 +143,10 @@ class StereoCheck {
   // A tessellation-evaluation or geometry shader given alone runs behind synthesized pass-through
   // stages, the same in front of the original and the transpiled one.
   bool addLeadingStages() {
-    std::vector<Module> leading;
-    std::vector<std::string> leadingNames;
-    std::string error;
-    if (!synthesizeLeadingStages(originals_.front(), &leading, &leadingNames, &error)) return stop(error);
+    Result<LeadingStages> synthesized = synthesizeLeadingStages(originals_.front());
+    if (!synthesized) return stop(synthesized.error().message);
+    std::vector<Module>& leading = synthesized->modules;
+    const std::vector<std::string>& leadingNames = synthesized->names;
     originals_.insert(originals_.begin(), leading.begin(), leading.end());
     if (mode_ == EyeSelect::InstanceIndex)
       for (size_t i = 0; i < leading.size(); ++i)
@@ -184,9 +184,8 @@ class StereoCheck {
 
   // Consecutive stages must fit together, and the device must have what the stages need.
   bool checkPipeline() {
-    std::string error;
     for (size_t i = 0; i + 1 < originals_.size(); ++i)
-      if (!checkStageInterface(originals_[i], originals_[i + 1], &error)) return stop(error);
+      if (Status fits = checkStageInterface(originals_[i], originals_[i + 1]); !fits) return stop(fits.error().message);
     for (const auto& m : transpiled_) {
       std::string missing = missingFeature(m, context_.features());
       if (!missing.empty()) return stop(missing);
@@ -222,10 +221,12 @@ class StereoCheck {
   bool instrumentCaptures() {
     // Instanced: the harness's output carrying what the shader writes to the layer / viewport.
     if (mode_ == EyeSelect::InstanceIndex) routeName_ = exposeEyeRoute(transpiled_.back(), settings_.eyeRoute);
-    std::string error;
-    if (!instrumentForCapture(originals_.back(), &layoutA_, nullptr, &error) ||
-        !instrumentForCapture(transpiled_.back(), &layoutB_, nullptr, &error))
-      return stop(error);
+    Result<CaptureLayout> original = instrumentForCapture(originals_.back());
+    if (!original) return stop(original.error().message);
+    Result<CaptureLayout> transpiled = instrumentForCapture(transpiled_.back());
+    if (!transpiled) return stop(transpiled.error().message);
+    layoutA_ = std::move(*original);
+    layoutB_ = std::move(*transpiled);
     inStereo_.assign(layoutA_.stride / 4, UINT32_MAX);
     std::vector<bool> matched(layoutA_.fields.size(), false);
     for (const auto& g : layoutB_.fields) {
@@ -255,29 +256,29 @@ class StereoCheck {
   // Multiview: one copy of the transpiled stages per view, each reading its view's index.
   bool bindViews() {
     if (mode_ != EyeSelect::ViewIndex) return true;
-    std::string error;
     for (uint32_t view = 0; view < 2; ++view) {
       perView_.push_back(transpiled_);
       for (auto& m : perView_.back())
-        if (!bindViewIndex(m, view, &error)) return stop(error);
+        if (Status bound = bindViewIndex(m, view); !bound) return stop(bound.error().message);
     }
     return true;
   }
 
   // Inputs, identical for both runs except for the eye parameters.
   bool buildInputs() {
-    std::string error;
     if (settings_.vertices) {
       base_.vertices = *settings_.vertices;
-    } else if (!buildVertices(originals_.front(), settings_.vertexCount, &base_.vertices, &error)) {
-      return stop(error);
+    } else {
+      Result<VertexBuffer> vertices = buildVertices(originals_.front(), settings_.vertexCount);
+      if (!vertices) return stop(vertices.error().message);
+      base_.vertices = std::move(*vertices);
     }
     for (const auto& m : originals_)
-      if (!buildResources(m, &base_, &error)) return stop(error);
+      if (Status built = buildResources(m, &base_); !built) return stop(built.error().message);
     // The transpiled stages add the eye-parameter block: same inputs plus that one.
     stereoBase_ = base_;
     for (const auto& m : transpiled_)
-      if (!buildResources(m, &stereoBase_, &error)) return stop(error);
+      if (Status built = buildResources(m, &stereoBase_); !built) return stop(built.error().message);
     return true;
   }
 
@@ -342,9 +343,9 @@ class StereoCheck {
   // The transpiled stages run with eyeSign = `eye` (the single-pass modes: a value they must ignore).
   bool captureStereo(std::vector<Module>& modules, float eye, CaptureResult* out) {
     PipelineInputs inputs = stereoBase_;
-    std::string error;
     // A shader without a shift (a 2D one in instanced mode) may have no parameters at all.
-    if (!applyEyeParameters(modules.back(), settings_, eye, &inputs, &error) && settings_.shifted) return stop(error);
+    if (Result<bool> set = applyEyeParameters(modules.back(), settings_, eye, &inputs); !set && settings_.shifted)
+      return stop(set.error().message);
     if (!capture(modules, inputs, out)) return stop("transpiled: " + out->error);
     return true;
   }
@@ -458,8 +459,8 @@ class StereoCheck {
   bool checkIgnoresEyeSign(std::vector<Module>& modules, const CaptureResult& withZero, const std::string& run) {
     {
       PipelineInputs scratch = stereoBase_;
-      std::string ignored;
-      applyEyeParameters(modules.back(), settings_, kJunkEyeSign, &scratch, &ignored, &result_.eyeSignDeclared);
+      if (Result<bool> set = applyEyeParameters(modules.back(), settings_, kJunkEyeSign, &scratch); set && *set)
+        result_.eyeSignDeclared = true;
     }
     if (!result_.eyeSignDeclared) {
       result_.eyeSignIgnored = true;  // nothing to set: the shader cannot read it

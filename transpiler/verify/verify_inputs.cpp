@@ -266,7 +266,9 @@ struct Reflector {
 // a four-component vector is 1. Integer attributes get small values (v + location) mod 4 in the
 // first component (bone and instance indices), 0 or 1 in the others. Matrices take one location
 // per column, arrays one per element, dvec3/dvec4 two, fed as 64-bit formats.
-bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::string* error) {
+Result<VertexBuffer> buildVertices(const Module& m, uint32_t count) {
+  VertexBuffer buffer, *vb = &buffer;
+  std::string error;
   Reflector r{m};
   struct Leaf {
     uint32_t location, type;
@@ -290,7 +292,7 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
     }
     uint32_t size = 0;
     if (r.formatOf(type, &size) == VK_FORMAT_UNDEFINED) {
-      *error = "vertex input '" + name + "' at location " + std::to_string(location) +
+      error = "vertex input '" + name + "' at location " + std::to_string(location) +
                " has a type the harness cannot feed (only 32-bit scalars and vectors, doubles, and "
                "matrices and arrays of them are vertex formats)";
       return false;
@@ -303,9 +305,9 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
     if (!var || var->operand(0) != spv::StorageClassInput || m.hasDecoration(id, spv::DecorationBuiltIn)) continue;
     auto location = m.decorationValue(id, spv::DecorationLocation);
     if (!location) continue;
-    if (!expand(*location, m.pointeeType(var->typeId), m.name(id))) return false;
+    if (!expand(*location, m.pointeeType(var->typeId), m.name(id))) return plainError(error);
   }
-  if (leaves.empty()) return true;  // no vertex inputs (a full-screen triangle from gl_VertexIndex): no buffer
+  if (leaves.empty()) return buffer;  // no vertex inputs (a full-screen triangle from gl_VertexIndex): no buffer
   std::sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) { return a.location < b.location; });
   uint32_t offset = 0;
   for (const Leaf& leaf : leaves) {
@@ -343,7 +345,7 @@ bool buildVertices(const Module& m, uint32_t count, VertexBuffer* vb, std::strin
       }
     }
   }
-  return true;
+  return buffer;
 }
 
 namespace {
@@ -379,8 +381,9 @@ VkFormat imageFormat(uint32_t spirvFormat, char kind) {
 // One image, sampler or texel-buffer descriptor (or array of them) from the OpTypeImage /
 // OpTypeSampledImage / OpTypeSampler it is declared with. Texels: small deterministic images
 // (4 texels a side, 4 layers, 6 faces a cube) of seeded values in [0, 1), integers in [0, 4).
-bool describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t binding, uint32_t count,
-                   const std::string& name, SampledTexture* tex, std::string* error) {
+Result<SampledTexture> describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t binding, uint32_t count,
+                                     const std::string& name) {
+  SampledTexture texture, *tex = &texture;
   const Instruction* d = m.definition(type);
   const std::string where = "'" + name + "' (set " + std::to_string(set) + ", binding " + std::to_string(binding) + ")";
   tex->set = set;
@@ -390,20 +393,18 @@ bool describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t bindin
     tex->type = VK_DESCRIPTOR_TYPE_SAMPLER;
     tex->width = tex->height = 1;
     tex->rgba.assign(4 * count, 0.f);
-    return true;
+    return texture;
   }
   bool combined = d && d->opcode == spv::OpTypeSampledImage;
   if (combined) d = m.definition(d->operand(0));
   if (!d || d->opcode != spv::OpTypeImage) {
-    *error = "resource " + where + " is not a buffer, image or sampler the harness can bind";
-    return false;
+    return plainError("resource " + where + " is not a buffer, image or sampler the harness can bind");
   }
   const Instruction* sampled = m.definition(d->operand(0));
   const char kind = sampled && sampled->opcode == spv::OpTypeInt ? (sampled->operand(1) ? 'i' : 'u') : 'f';
   const uint32_t dim = d->operand(1), arrayed = d->operand(3), multisampled = d->operand(4), usage = d->operand(5);
   if (multisampled) {
-    *error = "multisampled texture " + where + ": the harness binds single-sampled images only";
-    return false;
+    return plainError("multisampled texture " + where + ": the harness binds single-sampled images only");
   }
   const bool storage = usage == 2;
   tex->format = imageFormat(storage ? d->operand(6) : uint32_t(spv::ImageFormatUnknown), kind);
@@ -431,8 +432,7 @@ bool describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t bindin
       tex->type = storage ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
       break;
     default:
-      *error = "texture " + where + " has a dimension the harness cannot bind (subpass inputs are fragment-only)";
-      return false;
+      return plainError("texture " + where + " has a dimension the harness cannot bind (subpass inputs are fragment-only)");
   }
   if (arrayed && dim != spv::DimBuffer) tex->layers *= dim == spv::DimCube ? 2 : 4;
   if (dim != spv::DimBuffer)
@@ -450,20 +450,18 @@ bool describeImage(const Module& m, uint32_t type, uint32_t set, uint32_t bindin
       std::memcpy(&tex->rgba[i], &bits, 4);
     }
   }
-  return true;
+  return texture;
 }
 
 }  // namespace
 
 // Buffers, images, samplers and push constants of one module (merged across stages by the caller:
 // a (set, binding) already present keeps its data).
-bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
+Status buildResources(const Module& m, PipelineInputs* in) {
   Reflector r{m, &in->addressBuffers, traceAddressSources(m)};
-  if (!r.addressSources.problem.empty()) {
-    *error = "the shader reads memory through a buffer device address, and " + r.addressSources.problem +
-             ": the harness cannot give it valid memory, so it is not run";
-    return false;
-  }
+  if (!r.addressSources.problem.empty())
+    return plainError("the shader reads memory through a buffer device address, and " + r.addressSources.problem +
+                      ": the harness cannot give it valid memory, so it is not run");
   for (const auto& inst : m.typesValues) {
     if (inst.opcode != spv::OpVariable) continue;
     auto storage = static_cast<spv::StorageClass>(inst.operand(0));
@@ -492,14 +490,12 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
     if (storage == spv::StorageClassUniformConstant)
       for (auto& t : in->textures)
         if (t.set == set && t.binding == binding) {
-          SampledTexture other;
-          std::string ignored;
           const Instruction* d = m.definition(type);
           uint32_t element = d && (d->opcode == spv::OpTypeArray || d->opcode == spv::OpTypeRuntimeArray) ? d->operand(0) : type;
-          if (describeImage(m, element, set, binding, t.arrayCount, m.name(inst.resultId), &other, &ignored) &&
-              ((t.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE && other.type == VK_DESCRIPTOR_TYPE_SAMPLER) ||
-               (t.type == VK_DESCRIPTOR_TYPE_SAMPLER && other.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE))) {
-            if (t.type == VK_DESCRIPTOR_TYPE_SAMPLER) t = std::move(other);
+          Result<SampledTexture> other = describeImage(m, element, set, binding, t.arrayCount, m.name(inst.resultId));
+          if (other && ((t.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE && other->type == VK_DESCRIPTOR_TYPE_SAMPLER) ||
+                        (t.type == VK_DESCRIPTOR_TYPE_SAMPLER && other->type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE))) {
+            if (t.type == VK_DESCRIPTOR_TYPE_SAMPLER) t = std::move(*other);
             t.type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
           }
         }
@@ -510,11 +506,9 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
       bool clash = false;
       for (const auto& u : in->uniformBuffers) clash |= u.set == set && u.binding == binding && image;
       for (const auto& t : in->textures) clash |= t.set == set && t.binding == binding && !image;
-      if (clash) {
-        *error = "resource '" + m.name(inst.resultId) + "' (set " + std::to_string(set) + ", binding " +
-                 std::to_string(binding) + ") shares its binding with a resource of another kind";
-        return false;
-      }
+      if (clash)
+        return plainError("resource '" + m.name(inst.resultId) + "' (set " + std::to_string(set) + ", binding " +
+                          std::to_string(binding) + ") shares its binding with a resource of another kind");
       continue;
     }
     // A descriptor array: `uniform Light { ... } lights[4]`, `sampler2D shadowMaps[3]`, or a
@@ -526,9 +520,9 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
       element = d->operand(0);
     }
     if (storage == spv::StorageClassUniformConstant) {
-      SampledTexture tex;
-      if (!describeImage(m, element, set, binding, count, m.name(inst.resultId), &tex, error)) return false;
-      in->textures.push_back(std::move(tex));
+      Result<SampledTexture> tex = describeImage(m, element, set, binding, count, m.name(inst.resultId));
+      if (!tex) return tex.error();
+      in->textures.push_back(std::move(*tex));
       continue;
     }
     const bool storageBuffer = storage == spv::StorageClassStorageBuffer || m.hasDecoration(element, spv::DecorationBufferBlock);
@@ -545,12 +539,12 @@ bool buildResources(const Module& m, PipelineInputs* in, std::string* error) {
     }
     in->uniformBuffers.push_back(std::move(ub));
   }
-  return true;
+  return Done{};
 }
 
 // Where the transpiled module reads eyeSign / separation / convergence.
-bool applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign, PipelineInputs* in,
-                        std::string* error, bool* eyeSignFound) {
+Result<bool> applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign, PipelineInputs* in) {
+  bool eyeSignAmong = false, *eyeSignFound = &eyeSignAmong;
   const float values[3] = {eyeSign, s.separation, s.convergence};
   const std::string names[3] = {s.eyeSignName, s.separationName, s.convergenceName};
   bool found = false;
@@ -610,8 +604,8 @@ bool applyEyeParameters(const Module& m, const VerifySettings& s, float eyeSign,
       if (eyeSignFound) *eyeSignFound = true;
     }
   }
-  if (!found) *error = "the transpiled shader has no eye parameters the harness can set";
-  return found;
+  if (!found) return plainError("the transpiled shader has no eye parameters the harness can set");
+  return eyeSignAmong;
 }
 
 uint32_t pushConstantBytes(const Module& m) {
