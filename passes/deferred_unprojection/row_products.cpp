@@ -403,8 +403,11 @@ bool hasCbufferRows(const spirv::Module& m) {
     const Instruction* block = m.definition(m.pointeeType(inst.typeId));
     if (!block || block->opcode != spv::OpTypeStruct) continue;
     for (uint32_t member : block->operands) {
-      const Instruction* array = m.definition(member);
-      if (array && array->opcode == spv::OpTypeArray && isFloat4(m, array->operand(0))) return true;
+      // A float4 array (cb1[30]) or a matrix of float4 rows (a named float4x4, when the dump kept
+      // the game's reflection: `InvViewProj._m00_m10_m20_m30`).
+      const Instruction* rows = m.definition(member);
+      if (rows && (rows->opcode == spv::OpTypeArray || rows->opcode == spv::OpTypeMatrix) && isFloat4(m, rows->operand(0)))
+        return true;
     }
   }
   return false;

@@ -244,6 +244,27 @@ const std::string kDumpMadLighting = kDumpPrologue + R"(  r3.xyzw = cb0[1].xyzw 
   r2.xyz = r3.xyz / r3.www;
 )" + kDumpEpilogue;
 
+// The same rebuild in a dump that kept the game's reflection data: the cbuffer's members by name
+// (a float4x4 and two float4s over the same registers as cb0[7]), the decompiler reading one column
+// of the matrix per `mad` as a swizzle of four of its elements. Column-major, uploaded as kDumpMad's.
+std::string namedMatrixDump() {
+  std::string text = kDumpMadLighting;
+  auto replace = [&](const std::string& from, const std::string& to) {
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  };
+  replace("  float4 cb0[7];\n", "  float4x4 InvViewProj : packoffset(c0);\n  float4 Viewport : packoffset(c4);\n"
+                                 "  float4 LightPos : packoffset(c5);\n  float4 LightColour : packoffset(c6);\n");
+  replace("cbuffer cb0 : register(b0)", "cbuffer PerFrame : register(b0)");
+  for (int column = 0; column < 4; ++column)
+    replace("cb0[" + std::to_string(column) + "].xyzw", "InvViewProj._m0" + std::to_string(column) + "_m1" +
+                                                         std::to_string(column) + "_m2" + std::to_string(column) + "_m3" +
+                                                         std::to_string(column));
+  replace("cb0[4]", "Viewport");
+  replace("cb0[5]", "LightPos");
+  return text;
+}
+
 // Row storage (a row_major matrix): one dp4 per component over cb0[0..3], q.w in another register
 // than q.xyz; the matrix uploaded transposed.
 const std::string kDumpDp4Lighting = kDumpPrologue + R"(  r2.z = r1.x;
@@ -785,6 +806,15 @@ TEST_F(DeferredRender, HlslLightingShaderFixedByExecution) {
 TEST_F(DeferredRender, DumpStyleMadChainFixedInItsTextByExecution) {
   DumpFeed columns{false, false};
   checkRebuiltPositions("0a1b2c3d4e5f6071-ps_replace.txt", kDumpMadLighting.c_str(), "dump mad", &columns);
+}
+
+// The named matrix (namedMatrixDump): the correction reads InvViewProj's elements by name
+// (`InvViewProj[i].x`, HLSL's row i, column 0: the column of NDC x).
+TEST_F(DeferredRender, DumpStyleNamedMatrixFixedInItsTextByExecution) {
+  const std::string text = namedMatrixDump();
+  ASSERT_EQ(text.find("cb0["), std::string::npos) << text;
+  DumpFeed columns{false, false};
+  checkRebuiltPositions("3a4b5c6d7e8f9012-ps_replace.txt", text.c_str(), "dump named matrix", &columns);
 }
 
 TEST_F(DeferredRender, DumpStyleDp4RowsFixedInItsTextByExecution) {
