@@ -34,6 +34,19 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
       std::cout << name << ": " << model << ": copied unchanged (" << why << "), nothing to verify\n";
     return 0;
   }
+  if (converted.record.assembly && !converted.record.assembly->corrections.empty()) {
+    // A pixel shader's corrections: not what verify runs (the shift of a position); saying
+    // "verified" after no run would be a yes to nothing.
+    const std::string why = "its " + std::to_string(converted.record.assembly->corrections.size()) +
+                            " pixel-shader correction(s) are not run by verify, which checks the position shift of "
+                            "vertex, domain and geometry shaders";
+    if (verify.json)
+      std::cout << nlohmann::json{{"file", name}, {"language", "d3d-asm"}, {"shader_model", model}, {"ok", false},
+                                  {"ran", false}, {"verified", false}, {"error", why}}.dump(2)
+                << "\n";
+    std::cerr << name << ": error: nothing to verify: " << why << "\n1 error generated.\n";
+    return 1;
+  }
   d3dasm::AsmVerifyOptions settings;
   const ShiftSpec shift = assemblyShiftSpec(options);
   settings.cutoff = shift.cutoff;
@@ -45,6 +58,10 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
                                   {"error", r.error}}.dump(2)
                 << "\n";
     std::cerr << name << ": error: the assembly interpreter cannot run " << r.error << "\n1 error generated.\n";
+    return 1;
+  }
+  if (r.nothingToVerify) {  // no position output: no run was made, so nothing is verified
+    std::cerr << name << ": error: nothing to verify: the shader writes no position\n1 error generated.\n";
     return 1;
   }
   if (verify.json) {

@@ -237,6 +237,15 @@ json renderStageReport(const StageRecord& record) {
                                                     : "3Dmigoto StereoParams texture (t125, the dump's)";
       report["not_done"] = a.notDone;
     }
+    if (!a.corrections.empty()) {
+      nlohmann::json fixed = nlohmann::json::array();
+      for (const auto& c : a.corrections)
+        fixed.push_back({{"form", c.form}, {"matrix", c.matrix}, {"depth", c.depth}, {"ndc", c.ndc}, {"fix", c.fix},
+                         {"lines", std::to_string(c.firstLine) + "-" + std::to_string(c.lastLine)}});
+      report["corrections"] = {{"deferred-unprojection", std::move(fixed)}};
+      report["eye_params"] = a.declaredStereoParams ? "3Dmigoto StereoParams texture (t125, declared)"
+                                                    : "3Dmigoto StereoParams texture (t125, the dump's)";
+    }
     if (!a.unchangedBecause.empty()) report["unchanged_because"] = a.unchangedBecause;
   }
   if (record.mesa) {

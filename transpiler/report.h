@@ -63,6 +63,12 @@ struct StageRecord {
     bool declaredStereoParams = false;
     std::string unchangedBecause;   // copied as it is: why
     std::vector<std::string> notDone;
+    // A pixel shader: the position rebuilds corrected (d3dasm/asm_unprojection.h).
+    struct Correction {
+      std::string form, matrix, depth, ndc, fix;
+      size_t firstLine = 0, lastLine = 0;
+    };
+    std::vector<Correction> corrections;
   };
   std::optional<Assembly> assembly;
   std::string lifted;  // analysed on a lifted copy (frontend/glsl_lift.h): what was lifted

@@ -21,6 +21,7 @@
 // shader kViewRayFrag rebuilds the view-space point as ray * (linearDepth / -ray.z) with the ray
 // from gl_FragCoord through the inverse projection; the G-buffer's depth of each eye, linearised,
 // is read back, and the rebuilt point of fix and mono baseline is compared with the exact one.
+#include "test/harness/position_rebuild_math.h"
 #include "transpiler/verify/stereo_verify.h"
 #include "transpiler/frontend/front_end.h"
 
@@ -313,45 +314,6 @@ void main()
 
 constexpr uint32_t kSize = 256;
 constexpr float kSeparation = 0.06f, kConvergence = 4.0f;
-constexpr double kUnitRoundoff = 1.0 / (1 << 24);  // fp32, round to nearest
-
-using Mat4 = std::array<double, 16>;  // column-major: m[col * 4 + row]
-
-Mat4 multiply(const Mat4& a, const Mat4& b) {
-  Mat4 r{};
-  for (int c = 0; c < 4; ++c)
-    for (int row = 0; row < 4; ++row)
-      for (int k = 0; k < 4; ++k) r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
-  return r;
-}
-
-// Gauss-Jordan with partial pivoting, in double.
-Mat4 inverse(const Mat4& m) {
-  double a[4][8];
-  for (int row = 0; row < 4; ++row)
-    for (int c = 0; c < 4; ++c) {
-      a[row][c] = m[c * 4 + row];
-      a[row][c + 4] = row == c ? 1.0 : 0.0;
-    }
-  for (int c = 0; c < 4; ++c) {
-    int pivot = c;
-    for (int row = c + 1; row < 4; ++row)
-      if (std::abs(a[row][c]) > std::abs(a[pivot][c])) pivot = row;
-    std::swap(a[c], a[pivot]);
-    double scale = a[c][c];
-    for (double& v : a[c]) v /= scale;
-    for (int row = 0; row < 4; ++row) {
-      if (row == c) continue;
-      double factor = a[row][c];
-      for (int k = 0; k < 8; ++k) a[row][k] -= factor * a[c][k];
-    }
-  }
-  Mat4 r;
-  for (int row = 0; row < 4; ++row)
-    for (int c = 0; c < 4; ++c) r[c * 4 + row] = a[row][c + 4];
-  return r;
-}
-
 // Vulkan clip space (y down, depth 0..1), w = -z_eye; eye != 0 gives the stereo projection.
 Mat4 projection(double eye) {
   const double f = 1.0 / std::tan(0.5), n = 0.1, far = 1000.0;
@@ -374,18 +336,6 @@ Mat4 view() {
   Mat4 rotateX{1, 0, 0, 0, 0, std::cos(pitch), std::sin(pitch), 0, 0, -std::sin(pitch), std::cos(pitch), 0, 0, 0, 0, 1};
   Mat4 translate{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -0.4, -0.6, -0.2, 1};
   return multiply(rotateX, multiply(rotateY, translate));
-}
-
-std::array<float, 16> toFloat(const Mat4& m) {
-  std::array<float, 16> r;
-  for (int i = 0; i < 16; ++i) r[i] = static_cast<float>(m[i]);
-  return r;
-}
-
-Mat4 toDouble(const std::array<float, 16>& m) {
-  Mat4 r;
-  for (int i = 0; i < 16; ++i) r[i] = m[i];
-  return r;
 }
 
 template <class T>
@@ -500,48 +450,6 @@ ImageError compare(const RenderResult& truth, const RenderResult& other) {
     }
   e.mse /= 3.0 * kSize * kSize;
   return e;
-}
-
-// First-order bound (unit roundoff u) on |p - p_exact| for the world position a lighting shader
-// rebuilds on the GPU, per component, from fp32 inputs:
-//   q = fl(A v): each component a 4-term dot product from entries A rounded once from the exact
-//     inverse: |dq_i| <= (gamma_4 + u) * sum_j |A_ij v_j|, gamma_4 = 4u/(1 - 4u) (any summation
-//     order, with or without fused multiply-adds);
-//   the fix adds k = fl(fl(e S) * fl(1 - fl(C q.w))), c = fl(col0 * k), q' = fl(q - c):
-//     |dk| <= |eS| (C |dq_w| + u C |q_w| + u |1 - C q_w|) + 2u |k|,
-//     |dq'_i| <= |dq_i| + |col0_i| |dk| + 2u |col0_i k| + u |q'_i|;
-//   p = fl(q.xyz / q.w): |dp_i| <= (|dq_i| + |p_i| |dq_w|) / |q_w| + u |p_i|.
-// v (pixel-centre NDC and the sampled depth) is exact in fp32. Second-order terms are below
-// 1e-6 of the bound and ignored.
-std::array<double, 3> positionBound(const Mat4& a, const std::array<double, 4>& v, bool fixed, double eye) {
-  const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
-  std::array<double, 4> q{}, dq{};
-  for (int i = 0; i < 4; ++i) {
-    double magnitude = 0;
-    for (int j = 0; j < 4; ++j) {
-      q[i] += a[j * 4 + i] * v[j];
-      magnitude += std::abs(a[j * 4 + i] * v[j]);
-    }
-    dq[i] = (gamma4 + u) * magnitude;
-  }
-  if (fixed) {
-    const double es = eye * kSeparation, c = kConvergence;
-    double k = es * (1 - c * q[3]);
-    double dk = std::abs(es) * (c * dq[3] + u * c * std::abs(q[3]) + u * std::abs(1 - c * q[3])) + 2 * u * std::abs(k);
-    double dw = dq[3];
-    for (int i = 0; i < 4; ++i) {
-      double column0 = a[i];
-      q[i] -= column0 * k;
-      dq[i] += std::abs(column0) * dk + 2 * u * std::abs(column0 * k) + u * std::abs(q[i]);
-    }
-    dq[3] = std::max(dq[3], dw);
-  }
-  std::array<double, 3> bound;
-  for (int i = 0; i < 3; ++i) {
-    double p = q[i] / q[3];
-    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + u * std::abs(p);
-  }
-  return bound;
 }
 
 // How renderLighting() feeds a 3Dmigoto dump: the matrix uploaded as rows when `rows`, and with
@@ -700,8 +608,8 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
-        auto truthBound = positionBound(stereoInverseF, v, false, eye);
-        auto fixBound = positionBound(monoInverseF, v, true, eye);
+        auto truthBound = positionBound(stereoInverseF, v, false, eye * kSeparation, kConvergence);
+        auto fixBound = positionBound(monoInverseF, v, true, eye * kSeparation, kConvergence);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           double p = exact[c] / exact[3];

@@ -362,6 +362,15 @@ bool readDeclaration(const AsmText& text, size_t k, Program::Impl* p, AsmError* 
     if (!mask) return bad("'" + rest + "' is not a mask");
     p->outputMasks[n] |= *mask;
     if (ops.size() > 1 && ops[1].text == "position") p->position = n;
+  } else if (base == "dcl_input_ps" || base == "dcl_input_ps_siv" || base == "dcl_input_ps_sgv") {
+    // `dcl_input_ps linear v1.xy`, `dcl_input_ps_siv linear noperspective v0.xy, position`: the
+    // interpolation words first, then the register, then the system value.
+    size_t reg = 0;
+    while (reg < ops.size() && !numbered("v", reg, &n, &rest)) ++reg;
+    if (reg == ops.size()) return bad("'" + line.text.substr(line.indent.size()) + "' declares no v# input");
+    auto mask = parseMask(rest);
+    if (!mask) return bad("'" + rest + "' is not a mask");
+    p->inputs.push_back({n, *mask, reg + 1 < ops.size() ? ops[reg + 1].text : ""});
   } else if (base.starts_with("dcl_input_ps") || base.starts_with("dcl_hs") || base.starts_with("dcl_gs") ||
              base == "dcl_function_body" || base == "dcl_function_table" || base == "dcl_interface") {
     return bad("'" + base + "' declares what the vertex-shader interpreter does not run");
@@ -417,7 +426,28 @@ struct FlowMatcher {
   }
 };
 
-bool decodeInstruction(const AsmLine& line, Program::Impl* p, AsmError* error) {
+// An instruction the interpreter does not run, for an analysis: its first operand written when it is
+// a register, the others read where they are registers, literals or constant-buffer elements.
+bool decodeOpaque(const AsmLine& line, Program::Impl* p) {
+  Op op;
+  op.code = Code::Opaque;
+  op.line = line.number;
+  AsmError ignored;
+  OperandReader reader{*p, line, &ignored};
+  op.dstCount = 0;
+  op.srcCount = 0;
+  size_t first = 0;
+  if (!line.operands.empty() && reader.readDst(line.operands[0], &op.dst[0])) {
+    op.dstCount = 1;
+    first = 1;
+  }
+  for (size_t k = first; k < line.operands.size() && op.srcCount < 4; ++k)
+    if (reader.readSrc(line.operands[k], &op.src[op.srcCount])) ++op.srcCount;
+  p->ops.push_back(op);
+  return true;
+}
+
+bool decodeInstruction(const AsmLine& line, Program::Impl* p, AsmError* error, DecodeFor purpose) {
   const std::string base = line.baseOpcode();
   Op op;
   op.line = line.number;
@@ -446,6 +476,8 @@ bool decodeInstruction(const AsmLine& line, Program::Impl* p, AsmError* error) {
     return true;
   }
   auto found = opTable().find(base);
+  const bool runs = found != opTable().end() && line.operands.size() == size_t(found->second.dsts) + found->second.srcs;
+  if (!runs && purpose == DecodeFor::Analysis) return decodeOpaque(line, p);
   if (found == opTable().end()) return refuse("'" + base + "' is not an instruction the interpreter runs");
   const OpInfo& info = found->second;
   if (line.operands.size() != size_t(info.dsts) + info.srcs)
@@ -464,12 +496,12 @@ bool decodeInstruction(const AsmLine& line, Program::Impl* p, AsmError* error) {
 
 }  // namespace
 
-std::unique_ptr<Program> Program::decode(const AsmText& text, AsmError* error) {
+std::unique_ptr<Program> Program::decode(const AsmText& text, AsmError* error, DecodeFor purpose) {
   auto impl = std::make_unique<Impl>();
   std::optional<Stage> stage = stageOfShaderModel(text.model);
-  if (stage != Stage::Vertex || text.model.major < 4) {
+  if ((stage != Stage::Vertex && stage != Stage::Fragment) || text.model.major < 4) {
     *error = errorAt(text.lines.empty() ? 0 : text.lines[text.modelLine].number, 1,
-                     text.model.text + ": the interpreter runs SM4 and SM5 vertex shaders");
+                     text.model.text + ": the interpreter runs SM4 and SM5 vertex and pixel shaders");
     return nullptr;
   }
   // Declarations first: an instruction's registers are checked against them.
@@ -478,7 +510,7 @@ std::unique_ptr<Program> Program::decode(const AsmText& text, AsmError* error) {
   FlowMatcher flow;
   for (const AsmLine& line : text.lines) {
     if (line.kind != LineKind::Instruction) continue;
-    if (!decodeInstruction(line, impl.get(), error)) return nullptr;
+    if (!decodeInstruction(line, impl.get(), error, purpose)) return nullptr;
     if (std::string why = flow.add(impl->ops, impl->ops.size() - 1); !why.empty()) {
       *error = errorAt(line.number, line.indent.size() + 1, why);
       return nullptr;

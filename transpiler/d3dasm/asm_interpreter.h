@@ -1,4 +1,4 @@
-// An interpreter of SM4/SM5 vertex-shader assembly, for checking what the assembly route wrote
+// An interpreter of SM4/SM5 vertex- and pixel-shader assembly, for checking what the assembly route wrote
 // where no GPU runs D3D bytecode: this turns the text of a vertex shader into a program that runs
 // on given input registers, constant buffers and textures and yields its output registers, so the
 // original and the converted shader can be run on the same inputs (asm_verify.h).
@@ -58,11 +58,16 @@ struct InputDeclaration {
   std::string systemValue;  // "vertex_id", "instance_id", "" for plain inputs
 };
 
+// What a program is decoded for: to run it (every instruction must be one the interpreter runs), or
+// to analyse it (asm_unprojection.h: an instruction it does not run is kept as an opaque one that
+// writes its destination, and the program is never run).
+enum class DecodeFor { Running, Analysis };
+
 class Program {
  public:
   // Each instruction line decoded once (asm_interpreter_ops.h); null, with the line, the column
   // and why in *error, when the text holds what the interpreter does not run.
-  static std::unique_ptr<Program> decode(const AsmText& text, AsmError* error);
+  static std::unique_ptr<Program> decode(const AsmText& text, AsmError* error, DecodeFor purpose = DecodeFor::Running);
   ~Program();
   RunResult run(Machine& machine) const;
 
@@ -71,6 +76,7 @@ class Program {
   const std::map<uint32_t, uint32_t>& outputMasks() const;   // o register -> mask declared
   std::optional<uint32_t> positionOutput() const;            // dcl_output_siv oN, position
   struct Impl;
+  const Impl& decoded() const { return *impl_; }             // for the analyses (asm_interpreter_ops.h)
 
  private:
   explicit Program(std::unique_ptr<Impl> impl);

@@ -1,7 +1,8 @@
 // The decoded form the interpreter runs (asm_interpreter.h), shared by its two halves: this turns
 // an instruction line into an Op (opcode, destinations with their masks, sources with their
 // swizzles and modifiers) once, in asm_interpreter.cpp, so that asm_interpreter_run.cpp only moves
-// bits. Private to the interpreter.
+// bits. Private to the interpreter and the analyses that read the decoded program
+// (asm_unprojection.h).
 #pragma once
 
 #include "transpiler/d3dasm/asm_interpreter.h"
@@ -20,6 +21,9 @@ enum class Code : uint8_t {
   Countbits, Bfrev,
   IfNz, IfZ, Else, Endif, Loop, Endloop, Break, BreakcNz, BreakcZ, Continue, ContinuecNz, ContinuecZ,
   Ret, RetcNz, RetcZ, Nop, Resource,
+  // Decoded for analysis only (Program::decode's DecodeFor::Analysis): an instruction the
+  // interpreter does not run, kept with the registers it writes and reads, its result unknown.
+  Opaque,
 };
 
 // `[4]`, `[r0.x + 4]`: a register's element, fixed or read from a temporary.

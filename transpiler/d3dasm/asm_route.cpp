@@ -36,7 +36,8 @@ std::string unsupportedOption(const TranspileOptions& options) {
 Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const TranspileOptions& options, StageRecord& record,
                                           Diagnostics& diags) {
   record.file = input.path;
-  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, assemblyShiftSpec(options));
+  d3dasm::AsmShiftResult shifted =
+      d3dasm::shiftAssembly(input.contents, assemblyShiftSpec(options), options.deferredUnprojection);
   if (!shifted.ok) return errorAt(shifted.error.line, shifted.error.column, shifted.error.message);
   const std::optional<Stage> stage = shifted.stage;
   record.stage = stage;
@@ -49,6 +50,18 @@ Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const Transpi
   if (std::string why = unsupportedOption(options); !why.empty()) return errorAt(0, 0, why);
   record.emit.route = "d3d-asm-splice";
   if (shifted.alreadyStereo) diags.warning(input.path, shifted.whyUnchanged + " (copied unchanged)");
+  if (!shifted.corrections.empty()) {
+    // A pixel shader's corrections: per-eye fixes, made whether or not the driver shifts the
+    // vertices (--corrections-only) and whichever stage of a pipeline is shifted.
+    for (const auto& c : shifted.corrections)
+      assembly.corrections.push_back({c.form, c.matrix, c.depth, c.ndc, c.fix, c.firstLine, c.lastLine});
+    assembly.declaredStereoParams = shifted.declaredStereoParams;
+    record.assembly = assembly;
+    record.emit.spliceSites = shifted.sites;
+    record.output = StageRecord::Output::Emitted;
+    record.changed = true;
+    return ConvertedAssembly{std::move(shifted.output), false};
+  }
   if (!shifted.shifted || !options.shiftThisStage || options.correctionsOnly) {
     assembly.unchangedBecause = !shifted.shifted          ? shifted.whyUnchanged
                                 : options.correctionsOnly ? "--corrections-only: the position is left to the driver's shift"

@@ -1,5 +1,8 @@
 #include "transpiler/d3dasm/asm_shift.h"
 
+#include "transpiler/d3dasm/asm_interpreter.h"
+#include "transpiler/d3dasm/asm_unprojection.h"
+
 #include <cfloat>
 #include <charconv>
 #include <cstdio>
@@ -238,9 +241,104 @@ std::vector<std::string> shiftBlock(const std::string& out, const std::string& m
   return shift;
 }
 
+// `count` more temporaries (`why` says what for) and t125 declared unless the dump has it.
+void declareScratch(const AsmText& text, const Declarations& d, uint32_t count, const std::string& why, Edits& edits,
+                    AsmShiftResult& result) {
+  if (d.tempsLine) {
+    edits.replaced[*d.tempsLine] = text.lines[*d.tempsLine].indent + "dcl_temps " + std::to_string(d.temps + count);
+    edits.why[*d.tempsLine] = why;
+  } else {
+    edits.after[d.lastDeclaration].push_back(why);
+    edits.after[d.lastDeclaration].push_back("dcl_temps " + std::to_string(count));
+  }
+  if (!d.stereoParamsLine) {
+    std::vector<std::string>& declare = edits.after[d.lastResourceDeclaration];
+    if (!declare.empty()) {
+      // The same line ends the resources and the declarations: one block with both.
+      declare.front() = "3Dmigoto's StereoParams texture; " + declare.front();
+      declare.insert(declare.begin() + 1, "dcl_resource_texture2d (float,float,float,float) t125");
+    } else {
+      declare = {"3Dmigoto's StereoParams texture", "dcl_resource_texture2d (float,float,float,float) t125"};
+    }
+    result.declaredStereoParams = true;
+  }
+}
+
+// The line of an instruction that reads t125 (a stereo fix already), or 0.
+size_t readsStereoParams(const AsmText& text) {
+  for (const AsmLine& line : text.lines)
+    if (line.kind == LineKind::Instruction && !registerTokenOffsets(line, "t125").empty()) return line.number;
+  return 0;
+}
+
+// The correction of one position rebuild (see asm_shift.h), after the instruction completing q.
+std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::string& rS, bool sm5) {
+  const std::string lines = u.firstLineNumber == u.lastLineNumber
+                                ? "line " + std::to_string(u.lastLineNumber)
+                                : "lines " + std::to_string(u.firstLineNumber) + "-" + std::to_string(u.lastLineNumber);
+  std::vector<std::string> block = {
+      "this eye's position rebuild (" + lines + ": q = InvM * (ndc, depth, 1) over " + u.rows + ")",
+      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      "mad " + rS + ".w, -" + rS + ".y, " + u.q[3] + ", l(1.000000)",
+      "mul " + rS + ".w, " + rS + ".w, " + rS + ".x",
+  };
+  for (size_t i = 0; i < 4; ++i) {
+    if (u.columnScale[i] == 1.0f || u.columnScale[i] == -1.0f) {
+      const char* sign = u.columnScale[i] == 1.0f ? "-" : "";
+      block.push_back("mad " + u.q[i] + ", " + sign + u.column[i] + ", " + rS + ".w, " + u.q[i]);
+    } else {
+      block.push_back("mul " + rS + ".z, " + u.column[i] + ", l(" + floatLiteral(u.columnScale[i]) + ")");
+      block.push_back("mad " + u.q[i] + ", -" + rS + ".z, " + rS + ".w, " + u.q[i]);
+    }
+  }
+  return block;
+}
+
+// A pixel shader: its position rebuilds corrected, or the text as it is with why.
+AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text, AsmShiftResult result) {
+  auto unchanged = [&](std::string why) {
+    result.ok = true;
+    result.output = source;
+    result.whyUnchanged = std::move(why);
+    return result;
+  };
+  Declarations d;
+  if (!readDeclarations(text, &d, &result.error)) return result;
+  if (size_t line = readsStereoParams(text)) {
+    result.alreadyStereo = true;
+    return unchanged("line " + std::to_string(line) + " reads 3Dmigoto's StereoParams (t125): a stereo fix already, left as it is");
+  }
+  AsmError why;
+  std::unique_ptr<Program> program = Program::decode(text, &why, DecodeFor::Analysis);
+  if (!program)
+    return unchanged("the pixel shader was not analysed (line " + std::to_string(why.line) + ": " + why.message +
+                     "): no correction looked for");
+  const std::vector<AsmUnprojection> found = findAsmUnprojections(text, *program);
+  if (found.empty())
+    return unchanged(text.model.text + ": no position rebuilt from depth through constant-buffer rows, nothing to correct");
+  const std::string rS = "r" + std::to_string(d.temps);
+  result.scratchTemp = rS;
+  Edits edits;
+  for (const AsmUnprojection& u : found) {
+    std::vector<std::string>& after = edits.after[u.afterLine];
+    if (!after.empty()) continue;  // two rebuilds completed by one instruction: corrected once
+    after = correctionBlock(u, rS, text.model.major >= 5);
+    std::string fix = "q -= (";
+    for (size_t i = 0; i < 4; ++i) fix += (i ? ", " : "") + u.column[i];
+    fix += ") * s.x*(1 - s.y*q.w) after line " + std::to_string(u.lastLineNumber) + ", before the divide";
+    result.corrections.push_back({"position rebuilt through a matrix held as four constant-buffer " + u.storage, u.rows,
+                                  u.depth, u.ndc, fix, u.firstLineNumber, u.lastLineNumber});
+  }
+  declareScratch(text, d, 1, "a temporary for this eye's position rebuild (" + rS + ")", edits, result);
+  result.sites = static_cast<int>(result.corrections.size());
+  result.output = render(text, edits);
+  result.ok = true;
+  return result;
+}
+
 }  // namespace
 
-AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
+AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec, bool pixelCorrections) {
   AsmShiftResult result;
   Result<AsmText> parsed = parseAssembly(source);
   if (!parsed) {
@@ -258,6 +356,8 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
     return result;
   };
   const std::optional<Stage> stage = result.stage;
+  if (stage == Stage::Fragment && text.model.major >= 4 && pixelCorrections)
+    return correctPixelShader(source, text, std::move(result));
   if (stage != Stage::Vertex && stage != Stage::TessEvaluation && stage != Stage::Geometry)
     return unchanged(text.model.text + ": only vertex, domain and geometry shaders write the clip position");
   // A D3D9 vertex shader copied as it is would be a mono drop-in that looks converted: an error.
@@ -274,11 +374,9 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
   const std::string out = "o" + std::to_string(*d.position);
   // A shader that reads StereoParams already is a stereo fix (3Dmigoto users edit the assembly by
   // hand; stereoshift's own output reads it too): shifting it again would shift twice.
-  for (const AsmLine& line : text.lines) {
-    if (line.kind != LineKind::Instruction || registerTokenOffsets(line, "t125").empty()) continue;
+  if (size_t line = readsStereoParams(text)) {
     result.alreadyStereo = true;
-    return unchanged("line " + std::to_string(line.number) +
-                     " reads 3Dmigoto's StereoParams (t125): a stereo fix already, left as it is");
+    return unchanged("line " + std::to_string(line) + " reads 3Dmigoto's StereoParams (t125): a stereo fix already, left as it is");
   }
   // A position whose w is the literal 1 at every write is a proven 2D shader: the shift's cutoff would
   // keep every vertex mono, so the dump is copied as it is, with the reason (the SPIR-V analyses
@@ -327,24 +425,7 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec) {
   result.sites = static_cast<int>(sites.size());
 
   // Two more temporaries; t125 declared unless the dump has it.
-  if (d.tempsLine) {
-    edits.replaced[*d.tempsLine] = text.lines[*d.tempsLine].indent + "dcl_temps " + std::to_string(d.temps + 2);
-    edits.why[*d.tempsLine] = "two temporaries for the shift (" + rP + ", " + rS + ")";
-  } else {
-    edits.after[d.lastDeclaration].push_back("two temporaries for the shift (" + rP + ", " + rS + ")");
-    edits.after[d.lastDeclaration].push_back("dcl_temps 2");
-  }
-  if (!d.stereoParamsLine) {
-    std::vector<std::string>& declare = edits.after[d.lastResourceDeclaration];
-    if (!declare.empty()) {
-      // The same line ends the resources and the declarations: one block with both.
-      declare.front() = "3Dmigoto's StereoParams texture; " + declare.front();
-      declare.insert(declare.begin() + 1, "dcl_resource_texture2d (float,float,float,float) t125");
-    } else {
-      declare = {"3Dmigoto's StereoParams texture", "dcl_resource_texture2d (float,float,float,float) t125"};
-    }
-    result.declaredStereoParams = true;
-  }
+  declareScratch(text, d, 2, "two temporaries for the shift (" + rP + ", " + rS + ")", edits, result);
   result.output = render(text, edits);
   result.ok = true;
   result.shifted = true;

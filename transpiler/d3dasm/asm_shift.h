@@ -29,6 +29,15 @@
 // Every edit is marked: inserted lines sit between `// ---- stereoshift: ... ----` and
 // `// ---- end stereoshift ----`, and a changed line is kept above its new form as
 // `// stereoshift was: <the line as written>`, so the original text can be recovered exactly.
+//
+// A pixel shader gets the corrections of what it rebuilds from depth instead (asm_unprojection.h):
+// after the instruction that completes q = InvM * (ndc, depth, 1), a marked block reads StereoParams
+// into a scratch temporary (`dcl_temps` raised by one) and corrects each component of q in place:
+//
+//   ld_indexable(texture2d)(float,float,float,float) rS.xyzw, l(0, 0, 0, 0), t125.xyzw
+//   mad rS.w, -rS.y, qW, l(1.000000)      1 - convergence * q.w
+//   mul rS.w, rS.w, rS.x                  d = separation * (1 - convergence * q.w)
+//   mad qI, -cbN[col].c, rS.w, qI         q[i] -= InvM[i][x] * d, for each component
 #pragma once
 
 #include "core/shift_spec.h"
@@ -55,12 +64,19 @@ struct AsmShiftResult {
   int redirectedWrites = 0;     // instructions that wrote the position
   int sites = 0;                // blocks written (returns or emits)
   bool declaredStereoParams = false;  // t125 declared by the edit (false: the dump's own reused)
+  // A pixel shader: the position rebuilds corrected (the output is `output` when any was).
+  struct Correction {
+    std::string form, matrix, depth, ndc, fix;
+    size_t firstLine = 0, lastLine = 0;
+  };
+  std::vector<Correction> corrections;
 };
 
 // The assembly printer of the shift renders the spec's cutoff (core/shift_spec.h) with the eye's sign
 // in 3Dmigoto's separation: branch-free (`movc`), the product and sum as one `mad`, whose fusing D3D
 // leaves to the driver; the spec's form, fused, compensated and names have no assembly spelling.
-AsmShiftResult shiftAssembly(const std::string& text, const ShiftSpec& spec);
+// `pixelCorrections` false: a pixel shader is copied as it is (--no-deferred-unprojection).
+AsmShiftResult shiftAssembly(const std::string& text, const ShiftSpec& spec, bool pixelCorrections = true);
 
 // The original text of an output of shiftAssembly: the marked blocks dropped and each
 // `// stereoshift was:` line restored (the check that the edits are all marked).

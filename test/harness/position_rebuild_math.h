@@ -1,0 +1,107 @@
+// The maths the position-rebuild checks share (deferred_render_test.cpp on lavapipe,
+// asm_unprojection_test.cpp on the assembly interpreter): 4x4 matrices in double, and the
+// first-order rounding bound of a world position an fp32 shader rebuilds from depth, with and
+// without the stereo correction q -= InvM[column 0] * eS * (1 - C q.w).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace stereoshift::harness {
+
+inline constexpr double kUnitRoundoff = 1.0 / (1 << 24);  // fp32, round to nearest
+
+using Mat4 = std::array<double, 16>;  // column-major: m[col * 4 + row]
+
+inline Mat4 multiply(const Mat4& a, const Mat4& b) {
+  Mat4 r{};
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row)
+      for (int k = 0; k < 4; ++k) r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
+  return r;
+}
+
+// Gauss-Jordan with partial pivoting, in double.
+inline Mat4 inverse(const Mat4& m) {
+  double a[4][8];
+  for (int row = 0; row < 4; ++row)
+    for (int c = 0; c < 4; ++c) {
+      a[row][c] = m[c * 4 + row];
+      a[row][c + 4] = row == c ? 1.0 : 0.0;
+    }
+  for (int c = 0; c < 4; ++c) {
+    int pivot = c;
+    for (int row = c + 1; row < 4; ++row)
+      if (std::abs(a[row][c]) > std::abs(a[pivot][c])) pivot = row;
+    std::swap(a[c], a[pivot]);
+    double scale = a[c][c];
+    for (double& v : a[c]) v /= scale;
+    for (int row = 0; row < 4; ++row) {
+      if (row == c) continue;
+      double factor = a[row][c];
+      for (int k = 0; k < 8; ++k) a[row][k] -= factor * a[c][k];
+    }
+  }
+  Mat4 r;
+  for (int row = 0; row < 4; ++row)
+    for (int c = 0; c < 4; ++c) r[c * 4 + row] = a[row][c + 4];
+  return r;
+}
+
+inline std::array<float, 16> toFloat(const Mat4& m) {
+  std::array<float, 16> r;
+  for (int i = 0; i < 16; ++i) r[i] = static_cast<float>(m[i]);
+  return r;
+}
+
+inline Mat4 toDouble(const std::array<float, 16>& m) {
+  Mat4 r;
+  for (int i = 0; i < 16; ++i) r[i] = m[i];
+  return r;
+}
+
+// First-order bound (unit roundoff u) on |p - p_exact| for the world position a lighting shader
+// rebuilds on the GPU, per component, from fp32 inputs:
+//   q = fl(A v): each component a 4-term dot product from entries A rounded once from the exact
+//     inverse: |dq_i| <= (gamma_4 + u) * sum_j |A_ij v_j|, gamma_4 = 4u/(1 - 4u) (any summation
+//     order, with or without fused multiply-adds);
+//   the fix adds k = fl(fl(e S) * fl(1 - fl(C q.w))), c = fl(col0 * k), q' = fl(q - c):
+//     |dk| <= |eS| (C |dq_w| + u C |q_w| + u |1 - C q_w|) + 2u |k|,
+//     |dq'_i| <= |dq_i| + |col0_i| |dk| + 2u |col0_i k| + u |q'_i|;
+//   p = fl(q.xyz / q.w): |dp_i| <= (|dq_i| + |p_i| |dq_w|) / |q_w| + u |p_i|.
+// v (pixel-centre NDC and the sampled depth) is exact in fp32. Second-order terms are below
+// 1e-6 of the bound and ignored.
+inline std::array<double, 3> positionBound(const Mat4& a, const std::array<double, 4>& v, bool fixed, double eyeSeparation,
+                                          double convergence) {
+  const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
+  std::array<double, 4> q{}, dq{};
+  for (int i = 0; i < 4; ++i) {
+    double magnitude = 0;
+    for (int j = 0; j < 4; ++j) {
+      q[i] += a[j * 4 + i] * v[j];
+      magnitude += std::abs(a[j * 4 + i] * v[j]);
+    }
+    dq[i] = (gamma4 + u) * magnitude;
+  }
+  if (fixed) {
+    const double es = eyeSeparation, c = convergence;
+    double k = es * (1 - c * q[3]);
+    double dk = std::abs(es) * (c * dq[3] + u * c * std::abs(q[3]) + u * std::abs(1 - c * q[3])) + 2 * u * std::abs(k);
+    double dw = dq[3];
+    for (int i = 0; i < 4; ++i) {
+      double column0 = a[i];
+      q[i] -= column0 * k;
+      dq[i] += std::abs(column0) * dk + 2 * u * std::abs(column0 * k) + u * std::abs(q[i]);
+    }
+    dq[3] = std::max(dq[3], dw);
+  }
+  std::array<double, 3> bound;
+  for (int i = 0; i < 3; ++i) {
+    double p = q[i] / q[3];
+    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + u * std::abs(p);
+  }
+  return bound;
+}
+
+}  // namespace stereoshift::harness

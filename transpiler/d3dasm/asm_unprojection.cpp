@@ -1,0 +1,521 @@
+// See asm_unprojection.h.
+#include "transpiler/d3dasm/asm_unprojection.h"
+
+#include "transpiler/d3dasm/asm_interpreter_ops.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <set>
+#include <tuple>
+
+namespace stereoshift::d3dasm {
+
+namespace {
+
+// A constant-buffer element: cbN[row].lane.
+struct Element {
+  uint32_t slot = 0, row = 0, lane = 0;
+  auto operator<=>(const Element&) const = default;
+};
+
+// A term's coefficient, or a part without a term: an element times `scale`, or the constant `scale`.
+struct Coefficient {
+  std::optional<Element> element;
+  float scale = 1.0f;
+};
+
+struct Part {
+  int term = -1;  // the value the part multiplies; -1: none (a constant or an element on its own)
+  Coefficient coefficient;
+};
+using Linear = std::vector<Part>;
+
+// What a value was computed from: a lane of an input register, or a texture.
+struct Source {
+  enum Kind : uint8_t { Input, Texel } kind = Input;
+  uint32_t reg = 0, lane = 0;
+  auto operator<=>(const Source&) const = default;
+};
+
+struct Value {
+  Linear form;
+  std::set<Source> sources;
+  size_t op = SIZE_MAX;          // the instruction that wrote it (SIZE_MAX: an input, or unknown)
+  std::optional<std::pair<uint32_t, uint32_t>> at;  // the temporary component it was written to
+};
+
+// An operand's component as the evaluation reads it.
+struct Read {
+  Linear form;
+  std::set<Source> sources;
+  int value = -1;  // the value it is (-1: a literal or a constant-buffer element)
+};
+
+bool isConstant(const Linear& f) { return f.empty() || (f.size() == 1 && f[0].term < 0 && !f[0].coefficient.element); }
+float constantOf(const Linear& f) { return f.empty() ? 0.0f : f[0].coefficient.scale; }
+bool isElement(const Linear& f) { return f.size() == 1 && f[0].term < 0 && f[0].coefficient.element; }
+
+Linear scaled(Linear f, float by) {
+  for (auto& part : f) part.coefficient.scale *= by;
+  return f;
+}
+
+Linear sum(Linear a, const Linear& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  // Constants folded into one part; a zero constant dropped.
+  float constant = 0.0f;
+  bool any = false;
+  Linear folded;
+  for (const auto& part : a) {
+    if (part.term < 0 && !part.coefficient.element) {
+      constant += part.coefficient.scale;
+      any = true;
+    } else {
+      folded.push_back(part);
+    }
+  }
+  if (any && constant != 0.0f) folded.push_back({-1, {std::nullopt, constant}});
+  return folded;
+}
+
+class Evaluator {
+ public:
+  explicit Evaluator(const Program::Impl& program) : p_(program) {}
+
+  void run() {
+    for (size_t k = 0; k < p_.ops.size(); ++k) step(k);
+  }
+  const std::vector<Value>& values() const { return values_; }
+  // The op that last wrote temporary component (reg, lane) at or before op `k`, after `from`.
+  bool writtenBetween(std::pair<uint32_t, uint32_t> at, size_t from, size_t to) const {
+    auto it = writes_.find(at);
+    if (it == writes_.end()) return false;
+    return std::any_of(it->second.begin(), it->second.end(), [&](size_t op) { return op > from && op <= to; });
+  }
+  // Straight-line stretches: ops with the same number have no control flow between them.
+  size_t region(size_t op) const { return regions_[op]; }
+
+ private:
+  int fresh(std::set<Source> sources, size_t op) {
+    const int id = static_cast<int>(values_.size());
+    values_.push_back({{{id, {std::nullopt, 1.0f}}}, std::move(sources), op, std::nullopt});
+    return id;
+  }
+  int make(Linear form, std::set<Source> sources, size_t op) {
+    values_.push_back({std::move(form), std::move(sources), op, std::nullopt});
+    return static_cast<int>(values_.size()) - 1;
+  }
+
+  Read read(const Src& s, uint32_t component) {
+    const uint32_t lane = s.swizzle[component];
+    Read r;
+    switch (s.file) {
+      case File::Temp: {
+        auto it = temps_.find({s.reg, lane});
+        r.value = it != temps_.end() ? it->second : (temps_[{s.reg, lane}] = fresh({}, SIZE_MAX));
+        break;
+      }
+      case File::Input: {
+        auto it = inputs_.find({s.reg, lane});
+        r.value = it != inputs_.end() ? it->second : (inputs_[{s.reg, lane}] = fresh({{Source::Input, s.reg, lane}}, SIZE_MAX));
+        break;
+      }
+      case File::ConstantBuffer:
+        if (s.index.relative) {
+          r.value = fresh({}, SIZE_MAX);
+          break;
+        }
+        r.form = {{-1, {Element{s.reg, static_cast<uint32_t>(s.index.offset), lane}, 1.0f}}};
+        break;
+      case File::Literal: {
+        float f;
+        std::memcpy(&f, &s.literal[lane], 4);
+        if (f != 0.0f) r.form = {{-1, {std::nullopt, f}}};
+        break;
+      }
+      default:
+        r.value = fresh({}, SIZE_MAX);
+    }
+    if (r.value >= 0) {
+      r.form = values_[r.value].form;
+      r.sources = values_[r.value].sources;
+    }
+    if (s.absolute) {
+      if (!isConstant(r.form)) {
+        r.value = fresh(r.sources, SIZE_MAX);
+        r.form = values_[r.value].form;
+      } else if (!r.form.empty()) {
+        r.form[0].coefficient.scale = std::abs(r.form[0].coefficient.scale);
+      }
+    }
+    if (s.negate) {
+      r.form = scaled(r.form, -1.0f);
+      r.value = -1;  // a new value: the negation's
+    }
+    return r;
+  }
+
+  // a * b, looked through when one factor is a constant or one constant-buffer element.
+  std::optional<Linear> product(const Read& a, const Read& b) {
+    if (isConstant(a.form)) return scaled(b.form, constantOf(a.form));
+    if (isConstant(b.form)) return scaled(a.form, constantOf(b.form));
+    for (const auto& [element, other] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+      if (!isElement(element->form)) continue;
+      const Coefficient& e = element->form[0].coefficient;
+      const Linear& f = other->form;
+      if (f.size() == 1 && f[0].term >= 0 && !f[0].coefficient.element)
+        return Linear{{f[0].term, {e.element, e.scale * f[0].coefficient.scale}}};
+      if (other->value >= 0) return Linear{{other->value, e}};
+      return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
+  std::set<Source> joined(std::initializer_list<const Read*> reads) {
+    std::set<Source> all;
+    for (const Read* r : reads) all.insert(r->sources.begin(), r->sources.end());
+    return all;
+  }
+
+  void write(const Dst& d, uint32_t component, int value) {
+    if (d.file != File::Temp) return;
+    const std::pair<uint32_t, uint32_t> at{d.reg, component};
+    temps_[at] = value;
+    writes_[at].push_back(current_);
+    if (values_[value].op == current_ && !values_[value].at) values_[value].at = at;
+  }
+
+  void arithmetic(const Op& op) {
+    const Dst& d = op.dst[0];
+    const bool dot = op.code == Code::Dp2 || op.code == Code::Dp3 || op.code == Code::Dp4;
+    if (dot) {
+      const uint32_t n = op.code == Code::Dp2 ? 2 : op.code == Code::Dp3 ? 3 : 4;
+      std::optional<Linear> total = Linear{};
+      std::set<Source> sources;
+      for (uint32_t k = 0; k < n; ++k) {
+        Read a = read(op.src[0], k), b = read(op.src[1], k);
+        sources.merge(joined({&a, &b}));
+        std::optional<Linear> term = product(a, b);
+        if (!term || !total) total.reset();
+        else total = sum(*total, *term);
+      }
+      const int value = op.saturate || !total ? fresh(sources, current_) : make(*total, sources, current_);
+      for (uint32_t c = 0; c < 4; ++c)
+        if (d.mask & (1u << c)) write(d, c, value);
+      return;
+    }
+    for (uint32_t c = 0; c < 4; ++c) {
+      if (!(d.mask & (1u << c))) continue;
+      Read a = read(op.src[0], c);
+      std::optional<Linear> form;
+      std::set<Source> sources = a.sources;
+      if (op.code == Code::Mov) {
+        if (!op.saturate && a.value >= 0) {
+          write(d, c, a.value);  // the same value in another place
+          continue;
+        }
+        form = a.form;
+      } else {
+        Read b = read(op.src[1], c);
+        sources.merge(joined({&b}));
+        if (op.code == Code::Add) {
+          form = sum(a.form, b.form);
+        } else if (op.code == Code::Mul) {
+          form = product(a, b);
+        } else if (op.code == Code::Div && isConstant(b.form) && constantOf(b.form) != 0.0f) {
+          form = scaled(a.form, 1.0f / constantOf(b.form));
+        } else if (op.code == Code::Mad) {
+          Read e = read(op.src[2], c);
+          sources.merge(joined({&e}));
+          if (auto p = product(a, b)) form = sum(*p, e.form);
+        }
+      }
+      write(d, c, op.saturate || !form ? fresh(sources, current_) : make(*form, sources, current_));
+    }
+  }
+
+  // Any other instruction: each component it writes is a new term made from everything it reads.
+  void opaque(const Op& op, bool texel) {
+    std::set<Source> sources;
+    for (uint8_t s = 0; s < op.srcCount; ++s) {
+      if (op.src[s].file == File::Resource) continue;
+      for (uint32_t c = 0; c < 4; ++c) {
+        Read r = read(op.src[s], c);
+        sources.merge(r.sources);
+      }
+    }
+    if (texel) sources.insert({Source::Texel, op.src[1].reg, 0});
+    for (uint8_t k = 0; k < op.dstCount; ++k)
+      for (uint32_t c = 0; c < 4; ++c)
+        if (op.dst[k].mask & (1u << c)) write(op.dst[k], c, fresh(sources, current_));
+  }
+
+  // What a loop body writes is unknown at its start and after it.
+  void forgetLoopWrites(size_t loop) {
+    int depth = 0;
+    for (size_t k = loop; k < p_.ops.size(); ++k) {
+      const Op& op = p_.ops[k];
+      if (op.code == Code::Loop) ++depth;
+      if (op.code == Code::Endloop && --depth == 0) break;
+      for (uint8_t d = 0; d < op.dstCount; ++d)
+        for (uint32_t c = 0; c < 4; ++c)
+          if (op.dst[d].file == File::Temp && (op.dst[d].mask & (1u << c))) temps_[{op.dst[d].reg, c}] = fresh({}, SIZE_MAX);
+    }
+  }
+
+  // if/else/endif: the state at endif is what both branches agree on; a branch that returned
+  // does not reach it.
+  struct Branch {
+    std::map<std::pair<uint32_t, uint32_t>, int> before, first;
+    bool inElse = false, firstReturned = false;
+  };
+  void merge(Branch& b) {
+    const bool secondReturned = returned_;
+    if (!b.inElse) {  // no else: the other way is the state before the if
+      b.first = temps_;
+      b.firstReturned = secondReturned;
+      temps_ = b.before;
+      returned_ = false;
+    }
+    if (b.firstReturned && !returned_) return;           // only this branch reaches endif
+    if (returned_ && !b.firstReturned) {                 // only the first does
+      temps_ = b.first;
+      returned_ = false;
+      return;
+    }
+    for (auto& [at, value] : temps_) {
+      auto it = b.first.find(at);
+      if (it == b.first.end() || it->second != value) value = fresh({}, SIZE_MAX);
+    }
+    for (const auto& [at, value] : b.first)
+      if (!temps_.count(at)) temps_[at] = fresh({}, SIZE_MAX);
+  }
+
+  void step(size_t k) {
+    current_ = k;
+    const Op& op = p_.ops[k];
+    regions_.push_back(region_);
+    switch (op.code) {
+      case Code::IfNz: case Code::IfZ:
+        ++region_;
+        branches_.push_back({temps_, {}, false, false});
+        returned_ = false;
+        return;
+      case Code::Else:
+        ++region_;
+        if (!branches_.empty()) {
+          branches_.back().first = temps_;
+          branches_.back().firstReturned = returned_;
+          branches_.back().inElse = true;
+          temps_ = branches_.back().before;
+          returned_ = false;
+        }
+        return;
+      case Code::Endif:
+        ++region_;
+        if (!branches_.empty()) {
+          merge(branches_.back());
+          branches_.pop_back();
+        }
+        return;
+      case Code::Loop:
+        ++region_;
+        forgetLoopWrites(k);
+        return;
+      case Code::Endloop:
+        ++region_;
+        return;
+      case Code::Ret:
+        returned_ = true;
+        ++region_;
+        return;
+      case Code::Break: case Code::BreakcNz: case Code::BreakcZ: case Code::Continue: case Code::ContinuecNz:
+      case Code::ContinuecZ: case Code::RetcNz: case Code::RetcZ:
+        ++region_;
+        return;
+      case Code::Nop: return;
+      case Code::Mov: case Code::Add: case Code::Mul: case Code::Mad: case Code::Div: case Code::Dp2: case Code::Dp3:
+      case Code::Dp4:
+        arithmetic(op);
+        return;
+      case Code::Resource: opaque(op, true); return;
+      default: opaque(op, false);
+    }
+  }
+
+  const Program::Impl& p_;
+  std::vector<Value> values_;
+  std::map<std::pair<uint32_t, uint32_t>, int> temps_, inputs_;
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<size_t>> writes_;
+  std::vector<Branch> branches_;
+  std::vector<size_t> regions_;
+  size_t region_ = 0, current_ = 0;
+  bool returned_ = false;
+};
+
+// One component of a candidate q (see the file comment).
+struct Member {
+  int value = -1;
+  std::map<int, Coefficient> byTerm;  // the three terms and their elements
+  Element translation;                // the element added on its own
+  uint32_t index = 0;                 // which component of q
+  std::string matrix;                 // the key of the matrix its elements belong to
+  bool columns = false;
+};
+
+std::optional<Member> memberOf(const std::vector<Value>& values, int id) {
+  Member m;
+  m.value = id;
+  std::optional<Element> translation;
+  for (const Part& part : values[id].form) {
+    if (!part.coefficient.element) return std::nullopt;
+    if (part.term < 0) {
+      if (translation || part.coefficient.scale != 1.0f) return std::nullopt;
+      translation = part.coefficient.element;
+    } else if (!m.byTerm.emplace(part.term, part.coefficient).second) {
+      return std::nullopt;
+    }
+  }
+  if (!translation || m.byTerm.size() != 3) return std::nullopt;  // w = 1: a point
+  m.translation = *translation;
+  std::vector<Element> elements{*translation};
+  for (const auto& [term, c] : m.byTerm) elements.push_back(*c.element);
+  auto all = [&](auto&& same) {
+    return std::all_of(elements.begin(), elements.end(), [&](const Element& e) { return same(e, elements[0]); });
+  };
+  std::set<std::pair<uint32_t, uint32_t>> vectors;
+  for (const Element& e : elements) vectors.insert({e.slot, e.row});
+  const bool oneSlot = all([](const Element& a, const Element& b) { return a.slot == b.slot; });
+  if (oneSlot && all([](const Element& a, const Element& b) { return a.lane == b.lane; }) && vectors.size() == 4) {
+    m.columns = true;
+    m.index = elements[0].lane;
+    m.matrix = "c" + std::to_string(elements[0].slot);
+    for (const auto& [slot, row] : vectors) m.matrix += ":" + std::to_string(row);
+  } else if (vectors.size() == 1) {
+    std::set<uint32_t> lanes;
+    for (const Element& e : elements) lanes.insert(e.lane);
+    if (lanes.size() != 4) return std::nullopt;
+    m.index = elements[0].row;
+    m.matrix = "r" + std::to_string(elements[0].slot);
+  } else {
+    return std::nullopt;
+  }
+  return m;
+}
+
+// Which term is the pixel's x, its y and the depth, from what each was computed from.
+struct Roles {
+  int x = -1, y = -1, depth = -1;
+  uint32_t input = 0, texture = 0;
+};
+std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) {
+  Roles r;
+  for (const auto& [term, c] : m.byTerm) {
+    const auto& sources = values[term].sources;
+    std::optional<uint32_t> texture;
+    std::set<std::pair<uint32_t, uint32_t>> lanes;
+    for (const Source& s : sources) {
+      if (s.kind == Source::Texel) texture = s.reg;
+      else lanes.insert({s.reg, s.lane});
+    }
+    if (texture) {
+      if (r.depth >= 0) return std::nullopt;
+      r.depth = term;
+      r.texture = *texture;
+      continue;
+    }
+    std::set<uint32_t> regs;
+    for (const auto& [reg, lane] : lanes) regs.insert(reg);
+    if (regs.size() != 1) return std::nullopt;
+    const uint32_t reg = *regs.begin();
+    const bool has0 = lanes.count({reg, 0}) > 0, has1 = lanes.count({reg, 1}) > 0;
+    if (has0 == has1) return std::nullopt;
+    if ((r.x >= 0 || r.y >= 0) && r.input != reg) return std::nullopt;  // x and y of one input
+    int& role = has0 ? r.x : r.y;
+    if (role >= 0) return std::nullopt;
+    role = term;
+    r.input = reg;
+  }
+  if (r.x < 0 || r.y < 0 || r.depth < 0) return std::nullopt;
+  return r;
+}
+
+std::string elementText(const Element& e, bool lane = true) {
+  std::string text = "cb" + std::to_string(e.slot) + "[" + std::to_string(e.row) + "]";
+  return lane ? text + "." + "xyzw"[e.lane] : text;
+}
+
+}  // namespace
+
+std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Program& program) {
+  const Program::Impl& p = program.decoded();
+  Evaluator evaluation(p);
+  evaluation.run();
+  const auto& values = evaluation.values();
+  // Candidates grouped by matrix and terms, each group's components by index.
+  std::map<std::string, std::map<uint32_t, Member>> groups;
+  std::map<std::string, Roles> roles;
+  for (int id = 0; id < static_cast<int>(values.size()); ++id) {
+    if (values[id].op == SIZE_MAX || !values[id].at) continue;
+    auto member = memberOf(values, id);
+    if (!member) continue;
+    auto role = rolesOf(values, *member);
+    if (!role) continue;
+    std::string key = member->matrix;
+    for (const auto& [term, c] : member->byTerm) key += "|" + std::to_string(term);
+    groups[key][member->index] = *member;  // a later value of the same component replaces it
+    roles[key] = *role;
+  }
+  std::map<size_t, size_t> lineIndex;  // line number -> index in text.lines
+  for (size_t k = 0; k < text.lines.size(); ++k) lineIndex[text.lines[k].number] = k;
+  std::vector<AsmUnprojection> found;
+  for (const auto& [key, group] : groups) {
+    std::array<const Member*, 4> q{};
+    if (key.front() == 'c') {
+      if (!group.count(3) || group.size() != 4) continue;
+      for (const auto& [index, member] : group) q[index] = &member;
+    } else {
+      if (group.size() != 4 || group.rbegin()->first != group.begin()->first + 3) continue;
+      for (const auto& [index, member] : group) q[index - group.begin()->first] = &member;
+    }
+    const Roles& role = roles.at(key);
+    size_t first = SIZE_MAX, last = 0;
+    for (const Member* m : q) {
+      first = std::min(first, values[m->value].op);
+      last = std::max(last, values[m->value].op);
+    }
+    // Correctable right after `last`: every component still in the register it was written to,
+    // all of them computed in one straight stretch of the program.
+    bool placeable = true;
+    for (const Member* m : q) {
+      const Value& v = values[m->value];
+      placeable &= evaluation.region(v.op) == evaluation.region(last) && !evaluation.writtenBetween(*v.at, v.op, last);
+    }
+    if (!placeable) continue;
+    AsmUnprojection u;
+    u.afterLine = lineIndex.at(p.ops[last].line);
+    u.firstLineNumber = p.ops[first].line;
+    u.lastLineNumber = p.ops[last].line;
+    std::set<Element> rows;  // the matrix's vectors, lane 0 standing for the whole row
+    for (size_t i = 0; i < 4; ++i) {
+      const Value& v = values[q[i]->value];
+      u.q[i] = "r" + std::to_string(v.at->first) + "." + "xyzw"[v.at->second];
+      const Coefficient& column = q[i]->byTerm.at(role.x);
+      u.column[i] = elementText(*column.element);
+      u.columnScale[i] = column.scale;
+      for (const auto& [term, c] : q[i]->byTerm) rows.insert({c.element->slot, c.element->row, 0});
+      rows.insert({q[i]->translation.slot, q[i]->translation.row, 0});
+    }
+    for (const auto& row : rows) u.rows += (u.rows.empty() ? "" : ", ") + elementText(row, false);
+    u.storage = key.front() == 'c' ? "columns (mad)" : "rows (dp4)";
+    u.depth = "t" + std::to_string(role.texture);
+    u.ndc = "v" + std::to_string(role.input);
+    found.push_back(std::move(u));
+  }
+  std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });
+  return found;
+}
+
+}  // namespace stereoshift::d3dasm

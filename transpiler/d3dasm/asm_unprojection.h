@@ -1,0 +1,52 @@
+// The position rebuild of pixel-shader assembly: this turns a deferred-lighting (or SSAO, fog,
+// decal) pixel shader's `q = InvM * (ndc.x, ndc.y, depth, 1)` over four constant-buffer rows, as the
+// D3D compiler writes it in assembly, into a found unprojection: the registers that hold q's
+// components after the instruction that completes it, and InvM's column of NDC x, for the
+// correction the assembly route writes there (asm_shift.h):
+//     q -= InvM[column of x] * s.x * (1 - s.y * q.w)
+// (s: 3Dmigoto's StereoParams texel 0; the maths in docs/3dmigoto.md, "Pixel-shader corrections").
+//
+// How it is found: each register component an instruction writes is a value of its own (the
+// compiler reuses r0..rN for many values), evaluated in program order as a sum of terms, each with a
+// coefficient that is one constant-buffer element times a constant, or a constant. `mul`/`mad`/
+// `add`/`dp2`-`dp4`/`mov` and the `-` modifier are looked through; a product of a value with a
+// constant-buffer element makes that value a term (the pixel's NDC x, however it was computed, is
+// one term); anything else (a texture read, `rcp`, `movc`, an instruction the interpreter does not
+// run) is a new term. Every value remembers what it was computed from: input lanes and textures.
+// A component of q is then a value with exactly three terms and one constant-buffer element as its
+// constant part, the elements of one matrix in either storage:
+//   columns (`mad r1.xyzw, r0.xxxx, cb1[20].xyzw, r1.xyzw`): component i reads lane i of each column;
+//   rows (`dp4 r2.x, r1.xyzw, cb2[32].xyzw`): component i is row k+i.
+// and the terms are the pixel's x (lane 0 of an input, SV_Position or an interpolated coordinate, no
+// texel), its y (lane 1 of the same input) and a depth (read from a texture). A shadow or texture
+// matrix applied to interpolated positions has no texel in it and is not one. Control flow: values
+// written in one branch of an `if` are new terms after its `endif`, a branch that returns does not
+// reach it, and what a loop writes is unknown in and after it.
+#pragma once
+
+#include "transpiler/d3dasm/asm_interpreter.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace stereoshift::d3dasm {
+
+struct AsmUnprojection {
+  size_t afterLine = 0;                 // index in AsmText::lines of the instruction completing q
+  size_t firstLineNumber = 0, lastLineNumber = 0;  // the instructions that compute q's components
+  std::array<std::string, 4> q;         // where each component of q is there: "r2.x"
+  std::array<std::string, 4> column;    // InvM's column of NDC x, one element each: "cb1[20].x"
+  std::array<float, 4> columnScale{1, 1, 1, 1};  // the constant each element is multiplied by
+  std::string rows;                     // "cb1[20], cb1[21], cb1[22], cb1[23]"
+  std::string storage;                  // "columns (mad)" or "rows (dp4)"
+  std::string depth;                    // the texture the depth is read from: "t0"
+  std::string ndc;                      // the input the pixel's x and y come from: "v0"
+};
+
+// Every such unprojection of `program` (decoded with DecodeFor::Analysis from `text`), in program
+// order; none when q's components are not all where the text can correct them right after the
+// instruction completing q (a component overwritten before it, or computed in another block).
+std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Program& program);
+
+}  // namespace stereoshift::d3dasm
