@@ -294,8 +294,10 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
   DecompiledForms forms = findDecompiledForms(*registers, true, ctx.file);
   for (const RowProduct& p : forms.products) {
     ViewDependentUse entry;
-    entry.construct = "matrix in cbuffer rows * vector";
-    entry.form = "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
+    entry.construct = p.fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)" : "matrix in cbuffer rows * vector";
+    entry.form = p.fix.scaledByDepth
+                     ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"
+                     : "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
     entry.matrix = p.rows;
     entry.depth = joined(p.z.textures);
     std::set<std::string> ndc = p.x.inputs;
@@ -309,8 +311,8 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     }
     std::string column;
     for (size_t i = 0; i < 4; ++i) column += (i ? ", " : "") + (p.fix.present[i] ? p.fix.column[i] : std::string("-"));
-    entry.fix = "q - (" + column + ") * s.x*(1 - s.y*q.w) after line " + std::to_string(p.fix.afterLine) +
-                ", before the divide";
+    entry.fix = "q - (" + column + ") * " + (p.fix.scaledByDepth ? "s.x*(|z| - s.y)*sign(z)" : "s.x*(1 - s.y*q.w)") +
+                " after line " + std::to_string(p.fix.afterLine) + ", before the divide";
     facts.fixed.push_back(entry);
     facts.textFixes.push_back(p.fix);
     recorded = true;

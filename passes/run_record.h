@@ -153,6 +153,11 @@ struct RowProductTextFix {
   std::array<std::string, 4> column;
   // Which components the shader computes (w always; a compiler drops the lanes nothing reads).
   std::array<bool, 4> present{true, true, true, true};
+  // The screen-to-world form: q = M * (ndc.x * z, ndc.y * z, z, 1) with z the view depth (the
+  // depth the x and y terms are scaled by), corrected by q -= M[column of x] * s.x*(|z| - s.y)*sign(z);
+  // the statement computing z and z's lane in its value.
+  bool scaledByDepth = false;
+  uint32_t depthLine = 0, depthLane = 0;
 };
 
 // A fix only the source text carries: a view-space x rebuilt from depth one component at a time,

@@ -427,6 +427,11 @@ struct RegisterAnalyses {
       : registers(m), index(m), flow(index, hlsl, {}), d(index), lines(m, mainFile) {}
 };
 
+struct Factors;
+void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth);
+bool texelOnly(const Sources& s);
+bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
+
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const spirv::Module& registers = a.registers;
   SourceAnalysis& flow = a.flow;
@@ -454,16 +459,33 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   for (const auto& q : groupProducts(members)) {
     RowProduct p;
     // Which term is which: the pixel's x (lane 0 of the input), its y (lane 1), the depth.
-    std::optional<Lane> x;
-    bool haveY = false, haveZ = false, other = false;
+    // Or the screen-to-world form: the pixel's x and y each scaled by the depth (q = M * (ndc.x*z,
+    // ndc.y*z, z, 1)), both terms made from the screen and a texel.
+    std::optional<Lane> x, y, z;
+    bool other = false;
+    std::optional<bool> scaled;
+    auto scaledScreen = [](const Sources& s, uint32_t lane) {
+      return (s.fragCoord || s.varying) && s.texel && !s.other && (s.inputLanes & 3u) == lane;
+    };
     for (const auto& [term, c] : q[3]->byTerm) {
       Sources s = flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
-      if (screen(s, 1u) && !x) x = term, p.x = s;
-      else if (screen(s, 2u) && !haveY) haveY = true, p.y = s;
-      else if (s.texel && !s.fragCoord && !s.varying && !s.other && !haveZ) haveZ = true, p.z = s;
+      const bool plainX = screen(s, 1u), plainY = screen(s, 2u), scaledX = scaledScreen(s, 1u), scaledY = scaledScreen(s, 2u);
+      if ((plainX || scaledX) && !x && (!scaled || *scaled == scaledX)) x = term, p.x = s, scaled = scaledX;
+      else if ((plainY || scaledY) && !y && (!scaled || *scaled == scaledY)) y = term, p.y = s, scaled = scaledY;
+      else if (texelOnly(s) && !z) z = term, p.z = s;
       else other = true;
     }
-    if (other || !x || !haveY || !haveZ) continue;
+    if (other || !x || !y || !z) continue;
+    // Scaled terms must be the screen coordinate times that very depth.
+    if (*scaled && (!scaledScreenTerm(d, flow, *x, *z, 1u, a.factorVisits) ||
+                    !scaledScreenTerm(d, flow, *y, *z, 2u, a.factorVisits)))
+      continue;
+    if (*scaled) {
+      p.fix.scaledByDepth = true;
+      p.fix.depthLine = lines.lineOf(z->id);
+      p.fix.depthLane = z->lane;
+      if (!p.fix.depthLine && p.reason.empty()) p.reason = "the depth is computed outside the main file (an #include or a macro)";
+    }
     p.rows = rowsText(registers, q);
     for (uint32_t i = 0; i < 4; ++i) {
       p.fix.present[i] = q[i] != nullptr;
@@ -527,6 +549,26 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
     }
   }
   out.factors.push_back({at, divides});
+}
+
+// Whether `term` is the pixel's coordinate (input lane bit `lane`) times `depth` and constants: its
+// factors are that depth once and otherwise made from the screen alone (`v0.x / v0.w` is two).
+bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits) {
+  Factors f;
+  collectFactors(d, flow, term, false, f, 0);
+  visits += static_cast<size_t>(f.visits);
+  if (f.tooLarge) return false;
+  int depths = 0;
+  uint32_t lanes = 0;
+  const Lane z = d.canonical(depth);
+  for (const auto& [factor, divides] : f.factors) {
+    if (d.constant(factor)) continue;
+    Sources s = flow.value(factor.id, d.isVector(factor.id) ? AccessPath{factor.lane} : AccessPath{});
+    if (!divides && factor == z) ++depths;
+    else if ((s.fragCoord || s.varying) && !s.texel && !s.other) lanes |= s.inputLanes;
+    else return false;
+  }
+  return depths == 1 && (lanes & 3u) == lane;
 }
 
 // One candidate: the pixel's coordinate (axis 0 or 1), the depth factor, the cbuffer element.

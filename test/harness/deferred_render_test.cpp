@@ -277,6 +277,19 @@ const std::string kDumpDp4Lighting = kDumpPrologue + R"(  r2.z = r1.x;
   r2.xyz = r3.xyz / r0.www;
 )" + kDumpEpilogue;
 
+// The screen-to-world form (Unreal's `mul(float4(ScreenPosition * SceneDepth, SceneDepth, 1),
+// ScreenToWorld)`) as a decompiled dump: the NDC scaled by the linear view depth (the G-buffer's
+// positive view depth, set 1 binding 2), then a `mad` chain over the matrix's columns cb0[0..3]
+// mapping (ndc * depth, depth, 1) to the world.
+const std::string kDumpScreenToWorld = kDumpPrologue + R"(  r2.xy = r2.xy * r1.xx;
+  r2.z = r1.x;
+  r3.xyzw = cb0[1].xyzw * r2.yyyy;
+  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;
+  r3.xyzw = r2.zzzz * cb0[2].xyzw + r3.xyzw;
+  r3.xyzw = cb0[3].xyzw + r3.xyzw;
+  r2.xyz = r3.xyz / r3.www;
+)" + kDumpEpilogue;
+
 // The view-ray form as a decompiled dump: the linear depth (the G-buffer's positive view depth, set 1
 // binding 2) times the NDC, times the inverse projection's scales read from the camera rows
 // (cb0[0].x = 1/P00, cb0[1].y = 1/P11), one component per statement; z = -depth.
@@ -555,6 +568,8 @@ class DeferredRender : public ::testing::Test {
   // The view-ray check: the rebuilt view-space point of fix and mono baseline against the exact one.
   void checkViewRay(const char* name, const char* text, const char* tag, const DumpFeed* dump = nullptr);
   void checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix);
+  // The screen-to-world check: truth, fix and baseline of kDumpScreenToWorld against the exact point.
+  void checkScreenToWorld(const char* name, const char* text, const char* tag);
 
   std::unique_ptr<VulkanContext> context_;
   std::vector<uint32_t> gbufferVert_, albedoFrag_, normalFrag_, fullScreenVert_;
@@ -723,6 +738,87 @@ TEST_F(DeferredRender, DumpStyleNamedMatrixFixedInItsTextByExecution) {
   ASSERT_EQ(text.find("cb0["), std::string::npos) << text;
   DumpFeed columns{false, false};
   checkRebuiltPositions("3a4b5c6d7e8f9012-ps_replace.txt", text.c_str(), "dump named matrix", &columns);
+}
+
+// The screen-to-world form: per eye, the G-buffer's depth of that eye made linear (the positive view
+// depth z, in double from the Vulkan depth, stored as fp32), the dump run with ScreenToWorld = the
+// inverse view-projection times the map from (ndc * z, z, 1) to clip space: truth with the eye's own
+// matrix, fix (converted, StereoParams) and baseline with the mono one. The exact position is the
+// eye's exact matrix applied in double to the fp32 inputs; truth and fix must be within
+// screenToWorldBound() of it, the baseline beyond the truth's bound at more than 90 % of the pixels.
+void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag) {
+  const Mat4 mono = projection(0), viewMatrix = view();
+  // (X, Y, Z, 1) = (ndc.x * z, ndc.y * z, z, 1) to clip space: clip.z = -p22 * z + p32, clip.w = z.
+  Mat4 toClip{};
+  toClip[0] = toClip[5] = 1.0;
+  toClip[10] = -mono[10];
+  toClip[11] = 1.0;
+  toClip[14] = mono[14];
+  const Mat4 monoMatrix = multiply(inverse(multiply(mono, viewMatrix)), toClip);
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    GBuffer linear = g;
+    for (size_t i = 0; i < g.depthValues.size(); ++i)
+      linear.depth.rgba[4 * i] = g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (g.depthValues[i] + mono[10]));
+    const Mat4 stereoMatrix = multiply(inverse(multiply(projection(eye), viewMatrix)), toClip);
+    const Mat4 stereoF = toDouble(toFloat(stereoMatrix)), monoF = toDouble(toFloat(monoMatrix));
+    std::array<RenderResult, 3> truth, fixedPosition, baseline;
+    for (int component = 0; component < 3; ++component) {
+      TranspileOptions options;
+      options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
+      auto original = compileOriginal(name, text, options);
+      nlohmann::json pass;
+      std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options, &pass);
+      EXPECT_EQ(pass["fixed"][0].value("construct", ""), "matrix in cbuffer rows * (ndc * depth, depth, 1)") << pass.dump(2);
+      DumpFeed monoFeed{false, false}, stereoFeed{false, true};
+      truth[component] = renderLighting(linear, original, stereoMatrix, nullptr, eye, monoFeed);
+      fixedPosition[component] = renderLighting(linear, fixedDump, monoMatrix, nullptr, eye, stereoFeed);
+      baseline[component] = renderLighting(linear, original, monoMatrix, nullptr, eye, monoFeed);
+      ASSERT_TRUE(truth[component].ok() && fixedPosition[component].ok() && baseline[component].ok());
+    }
+    auto bitsAt = [](const RenderResult& r, size_t pixel) {
+      uint32_t bits = 0;
+      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
+      float f;
+      std::memcpy(&f, &bits, 4);
+      return double(f);
+    };
+    double worstTruth = 0, worstFix = 0;
+    size_t pixels = 0, outside = 0, baselineOutside = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        size_t i = size_t(y) * kSize + x;
+        if (g.depthValues[i] >= 1.0f) continue;
+        ++pixels;
+        const double nx = (x + 0.5) / kSize * 2 - 1, ny = (y + 0.5) / kSize * 2 - 1, z = linear.depth.rgba[4 * i];
+        const std::array<double, 4> v = {nx * z, ny * z, z, 1.0};
+        std::array<double, 4> exact{};
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c < 4; ++c) exact[r] += stereoMatrix[c * 4 + r] * v[c];
+        auto truthBound = screenToWorldBound(stereoF, nx, ny, z, false, 0.0, kConvergence);
+        auto fixBound = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence);
+        bool baselineWrong = false;
+        for (int c = 0; c < 3; ++c) {
+          const double p = exact[c] / exact[3];
+          const double truthError = std::abs(bitsAt(truth[c], i) - p), fixError = std::abs(bitsAt(fixedPosition[c], i) - p);
+          worstTruth = std::max(worstTruth, truthError / truthBound[c]);
+          worstFix = std::max(worstFix, fixError / fixBound[c]);
+          outside += truthError > truthBound[c] || fixError > fixBound[c];
+          baselineWrong |= std::abs(bitsAt(baseline[c], i) - p) > truthBound[c];
+        }
+        baselineOutside += baselineWrong;
+      }
+    std::cout << std::setprecision(3) << "[" << tag << "] eye " << eye << ": world position over " << pixels
+              << " pixels, error / first-order rounding bound: truth " << worstTruth << ", fix " << worstFix
+              << "; mono baseline beyond rounding at " << baselineOutside << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_EQ(outside, 0u) << "eye " << eye << ": a rebuilt position is further from the exact one than rounding allows";
+    EXPECT_GT(baselineOutside, pixels * 9 / 10) << "eye " << eye << ": the mono baseline should be wrong";
+  }
+}
+
+TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {
+  checkScreenToWorld("4a5b6c7d8e9f0123-ps_replace.txt", kDumpScreenToWorld.c_str(), "dump screen to world");
 }
 
 TEST_F(DeferredRender, DumpStyleDp4RowsFixedInItsTextByExecution) {

@@ -104,4 +104,39 @@ inline std::array<double, 3> positionBound(const Mat4& a, const std::array<doubl
   return bound;
 }
 
+// The same bound for the screen-to-world form, q = fl(M v') with v' = (fl(x z), fl(y z), z, 1) for
+// the pixel's NDC x, y (exact in fp32) and the view depth z (as the shader reads it): the two
+// products add u |M_i0 x z| + u |M_i1 y z| to the dot product's (gamma_4 + u) sum_j |M_ij v'_j|.
+// The fix subtracts c = fl(col0 * k) with k = fl(fl(eS) * fl(|z| - C)) * sign(z):
+//     |dk| <= |eS| u ||z| - C| + 2u |k|,  |dq'_i| <= |dq_i| + |col0_i| |dk| + 2u |col0_i k| + u |q'_i|;
+// p = fl(q.xyz / q.w) as above.
+inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double y, double z, bool fixed,
+                                                double eyeSeparation, double convergence) {
+  const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
+  const std::array<double, 4> v = {x * z, y * z, z, 1.0};
+  std::array<double, 4> q{}, dq{};
+  for (int i = 0; i < 4; ++i) {
+    double magnitude = 0;
+    for (int j = 0; j < 4; ++j) {
+      q[i] += a[j * 4 + i] * v[j];
+      magnitude += std::abs(a[j * 4 + i] * v[j]);
+    }
+    dq[i] = (gamma4 + u) * magnitude + u * (std::abs(a[i] * v[0]) + std::abs(a[4 + i] * v[1]));
+  }
+  if (fixed) {
+    const double k = eyeSeparation * (std::abs(z) - convergence) * (z < 0 ? -1.0 : 1.0);
+    const double dk = std::abs(eyeSeparation) * u * std::abs(std::abs(z) - convergence) + 2 * u * std::abs(k);
+    for (int i = 0; i < 4; ++i) {
+      q[i] -= a[i] * k;
+      dq[i] += std::abs(a[i]) * dk + 2 * u * std::abs(a[i] * k) + u * std::abs(q[i]);
+    }
+  }
+  std::array<double, 3> bound;
+  for (int i = 0; i < 3; ++i) {
+    double p = q[i] / q[3];
+    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + u * std::abs(p);
+  }
+  return bound;
+}
+
 }  // namespace stereoshift::harness

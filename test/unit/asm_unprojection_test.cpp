@@ -87,6 +87,31 @@ mov o0.w, l(1.000000)
 ret
 )";
 
+// The screen-to-world form (Unreal's lights): the NDC times the linear view depth (read by ld at the
+// pixel), then (ndc * z, z, 1) through a matrix over the columns cb1[20..23].
+const char* kScreenToWorldPs = R"(ps_5_0
+dcl_globalFlags refactoringAllowed
+dcl_constantbuffer cb0[3], immediateIndexed
+dcl_constantbuffer cb1[24], immediateIndexed
+dcl_resource_texture2d (float,float,float,float) t0
+dcl_input_ps_siv linear noperspective v0.xy, position
+dcl_output o0.xyzw
+dcl_temps 3
+ftoi r0.xy, v0.xyxx
+mov r0.zw, l(0,0,0,0)
+ld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw
+mul r1.xy, v0.xyxx, cb0[2].zwzz
+mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)
+mul r1.xy, r0.zzzz, r1.xyxx
+mul r2.xyzw, r1.yyyy, cb1[21].xyzw
+mad r2.xyzw, r1.xxxx, cb1[20].xyzw, r2.xyzw
+mad r2.xyzw, r0.zzzz, cb1[22].xyzw, r2.xyzw
+add r2.xyzw, r2.xyzw, cb1[23].xyzw
+div o0.xyz, r2.xyzx, r2.wwww
+mov o0.w, l(1.000000)
+ret
+)";
+
 constexpr uint32_t kSize = 256;
 constexpr float kSeparation = 0.06f, kConvergence = 4.0f;
 
@@ -165,17 +190,27 @@ std::unique_ptr<Program> decoded(const std::string& text) {
   return program;
 }
 
-void checkByExecution(const char* shader, bool rows, const char* tag) {
+// `screenToWorld`: the shader reads the linear view depth and multiplies (ndc * z, z, 1) by
+// ScreenToWorld = inverse(P V) * (the map from (ndc * z, z, 1) to clip space).
+void checkByExecution(const char* shader, bool rows, const char* tag, bool screenToWorld = false) {
   AsmShiftResult converted = shiftAssembly(shader, {});
   ASSERT_TRUE(converted.ok) << converted.error.message;
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
   EXPECT_EQ(undoAssemblyEdits(converted.output), shader);  // every edit marked
   auto original = decoded(shader), fixed = decoded(converted.output);
   ASSERT_TRUE(original && fixed);
-  const Mat4 viewMatrix = view();
-  const Mat4 monoInverse = harness::inverse(harness::multiply(projection(0), viewMatrix));
+  const Mat4 viewMatrix = view(), mono = projection(0);
+  Mat4 toClip{};  // (ndc.x * z, ndc.y * z, z, 1) to clip space: clip.z = -p22 * z + p32, clip.w = z
+  toClip[0] = toClip[5] = toClip[11] = 1.0;
+  toClip[10] = -mono[10];
+  toClip[14] = mono[14];
+  auto matrixOf = [&](double eye) {
+    const Mat4 inverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
+    return screenToWorld ? harness::multiply(inverse, toClip) : inverse;
+  };
+  const Mat4 monoInverse = matrixOf(0);
   for (double eye : {-1.0, 1.0}) {
-    const Mat4 stereoInverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
+    const Mat4 stereoInverse = matrixOf(eye);
     const Mat4 monoF = harness::toDouble(harness::toFloat(monoInverse)), stereoF = harness::toDouble(harness::toFloat(stereoInverse));
     const std::vector<Vec4> monoRows = constants(monoInverse, rows), stereoRows = constants(stereoInverse, rows);
     const Vec4 stereoParams = vec(static_cast<float>(eye * kSeparation), kConvergence, static_cast<float>(eye), 0.0f);
@@ -186,18 +221,21 @@ void checkByExecution(const char* shader, bool rows, const char* tag) {
       for (uint32_t px = 4; px < kSize; px += 8) {
         // A view depth per pixel from 1.5 to 60, the depth buffer's fp32 value for it.
         const double w = 1.5 + 58.5 * std::fmod((px * 37 + py * 61) / 997.0, 1.0);
-        const Mat4 p = projection(0);
-        const float depth = static_cast<float>((p[10] * -w + p[14]) / w);
+        const float depth = static_cast<float>(screenToWorld ? w : (mono[10] * -w + mono[14]) / w);
         const Pixel pixel{px + 0.5f, py + 0.5f, depth};
-        const std::array<double, 4> v = {2.0 * pixel.x / kSize - 1.0, 1.0 - 2.0 * pixel.y / kSize, depth, 1.0};
+        const double nx = 2.0 * pixel.x / kSize - 1.0, ny = 1.0 - 2.0 * pixel.y / kSize;
+        const std::array<double, 4> v =
+            screenToWorld ? std::array<double, 4>{nx * depth, ny * depth, depth, 1.0} : std::array<double, 4>{nx, ny, depth, 1.0};
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
         auto truth = rebuild(*original, pixel, stereoRows, {});
         auto fix = rebuild(*fixed, pixel, monoRows, stereoParams);
         auto baseline = rebuild(*original, pixel, monoRows, {});
-        auto truthBound = harness::positionBound(stereoF, v, false, 0.0, kConvergence);
-        auto fixBound = harness::positionBound(monoF, v, true, es, kConvergence);
+        auto truthBound = screenToWorld ? harness::screenToWorldBound(stereoF, nx, ny, depth, false, 0.0, kConvergence)
+                                        : harness::positionBound(stereoF, v, false, 0.0, kConvergence);
+        auto fixBound = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence)
+                                      : harness::positionBound(monoF, v, true, es, kConvergence);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           const double position = exact[c] / exact[3];
@@ -221,6 +259,13 @@ void checkByExecution(const char* shader, bool rows, const char* tag) {
 TEST(AsmUnprojection, MadChainOverColumnsCorrectedByExecution) { checkByExecution(kDeferredMadPs, false, "asm mad"); }
 
 TEST(AsmUnprojection, Dp4RowsAfterAnEarlyReturnCorrectedByExecution) { checkByExecution(kDeferredDp4Ps, true, "asm dp4"); }
+
+TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
+  AsmShiftResult converted = shiftAssembly(kScreenToWorldPs, {});
+  ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
+  EXPECT_NE(converted.output.find("add r3.w, |r0.z|, -r3.y"), std::string::npos) << converted.output;
+  checkByExecution(kScreenToWorldPs, false, "asm screen to world", true);
+}
 
 // What the correction found, and where it put it.
 TEST(AsmUnprojection, FindsTheMatrixTheDepthAndTheRegisters) {

@@ -277,11 +277,22 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
                                 ? "line " + std::to_string(u.lastLineNumber)
                                 : "lines " + std::to_string(u.firstLineNumber) + "-" + std::to_string(u.lastLineNumber);
   std::vector<std::string> block = {
-      "this eye's position rebuild (" + lines + ": q = InvM * (ndc, depth, 1) over " + u.rows + ")",
+      "this eye's position rebuild (" + lines + (u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over " : ": q = InvM * (ndc, depth, 1) over ") +
+          u.rows + ")",
       (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
-      "mad " + rS + ".w, -" + rS + ".y, " + u.q[3] + ", l(1.000000)",
-      "mul " + rS + ".w, " + rS + ".w, " + rS + ".x",
   };
+  if (u.scaledByDepth) {
+    // d = s.x * (|z| - s.y) * sign(z)
+    const std::string& z = u.depthRegister;
+    block.push_back("add " + rS + ".w, |" + z + "|, -" + rS + ".y");
+    block.push_back("mul " + rS + ".w, " + rS + ".w, " + rS + ".x");
+    block.push_back("lt " + rS + ".z, " + z + ", l(0.000000)");
+    block.push_back("movc " + rS + ".w, " + rS + ".z, -" + rS + ".w, " + rS + ".w");
+  } else {
+    // d = s.x * (1 - s.y * q.w)
+    block.push_back("mad " + rS + ".w, -" + rS + ".y, " + u.q[3] + ", l(1.000000)");
+    block.push_back("mul " + rS + ".w, " + rS + ".w, " + rS + ".x");
+  }
   for (size_t i = 0; i < 4; ++i) {
     if (u.columnScale[i] == 1.0f || u.columnScale[i] == -1.0f) {
       const char* sign = u.columnScale[i] == 1.0f ? "-" : "";
@@ -325,9 +336,13 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
     after = correctionBlock(u, rS, text.model.major >= 5);
     std::string fix = "q -= (";
     for (size_t i = 0; i < 4; ++i) fix += (i ? ", " : "") + u.column[i];
-    fix += ") * s.x*(1 - s.y*q.w) after line " + std::to_string(u.lastLineNumber) + ", before the divide";
-    result.corrections.push_back({"position rebuilt through a matrix held as four constant-buffer " + u.storage, u.rows,
-                                  u.depth, u.ndc, fix, u.firstLineNumber, u.lastLineNumber});
+    fix += std::string(") * ") + (u.scaledByDepth ? "s.x*(|z| - s.y)*sign(z), z in " + u.depthRegister + "," : "s.x*(1 - s.y*q.w)") +
+           " after line " + std::to_string(u.lastLineNumber) + ", before the divide";
+    result.corrections.push_back({std::string(u.scaledByDepth ? "position rebuilt through a screen-to-world matrix (ndc * depth, depth, 1) "
+                                                                "held as four constant-buffer "
+                                                              : "position rebuilt through a matrix held as four constant-buffer ") +
+                                      u.storage,
+                                  u.rows, u.depth, u.ndc, fix, u.firstLineNumber, u.lastLineNumber});
   }
   declareScratch(text, d, 1, "a temporary for this eye's position rebuild (" + rS + ")", edits, result);
   result.sites = static_cast<int>(result.corrections.size());

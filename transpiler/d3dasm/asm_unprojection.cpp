@@ -44,6 +44,7 @@ struct Value {
   std::set<Source> sources;
   size_t op = SIZE_MAX;          // the instruction that wrote it (SIZE_MAX: an input, or unknown)
   std::optional<std::pair<uint32_t, uint32_t>> at;  // the temporary component it was written to
+  std::vector<int> factors;      // a product of values (a new term): the values multiplied
 };
 
 // An operand's component as the evaluation reads it.
@@ -224,6 +225,17 @@ class Evaluator {
           form = sum(a.form, b.form);
         } else if (op.code == Code::Mul) {
           form = product(a, b);
+          if (!form && !op.saturate && a.value >= 0 && b.value >= 0) {
+            // A product of two values: a new term that remembers its factors.
+            const int value = fresh(sources, current_);
+            for (int factor : {a.value, b.value}) {
+              const auto& inner = values_[factor].factors;
+              if (inner.empty()) values_[value].factors.push_back(factor);
+              else values_[value].factors.insert(values_[value].factors.end(), inner.begin(), inner.end());
+            }
+            write(d, c, value);
+            continue;
+          }
         } else if (op.code == Code::Div && isConstant(b.form) && constantOf(b.form) != 0.0f) {
           form = scaled(a.form, 1.0f / constantOf(b.form));
         } else if (op.code == Code::Mad) {
@@ -236,10 +248,12 @@ class Evaluator {
     }
   }
 
-  // Any other instruction: each component it writes is a new term made from everything it reads.
+  // Any other instruction: each component it writes is a new term made from everything it reads;
+  // a texture read's from its texture alone (where it is read does not make the texel per pixel
+  // in the sense the roles ask: a depth read at the pixel is a depth).
   void opaque(const Op& op, bool texel) {
     std::set<Source> sources;
-    for (uint8_t s = 0; s < op.srcCount; ++s) {
+    for (uint8_t s = 0; s < op.srcCount && !texel; ++s) {
       if (op.src[s].file == File::Resource) continue;
       for (uint32_t c = 0; c < 4; ++c) {
         Read r = read(op.src[s], c);
@@ -405,40 +419,85 @@ std::optional<Member> memberOf(const std::vector<Value>& values, int id) {
   return m;
 }
 
-// Which term is the pixel's x, its y and the depth, from what each was computed from.
+// Which term is the pixel's x, its y and the depth, from what each was computed from. In the
+// screen-to-world form (q = M * (ndc.x * z, ndc.y * z, z, 1)) x and y are products of the screen
+// coordinate and the depth term itself.
 struct Roles {
   int x = -1, y = -1, depth = -1;
   uint32_t input = 0, texture = 0;
+  bool scaled = false;
 };
+
+// What a value was computed from: the texture (if any) and the input lanes.
+struct Origin {
+  std::optional<uint32_t> texture;
+  std::set<std::pair<uint32_t, uint32_t>> lanes;
+};
+Origin originOf(const Value& v) {
+  Origin o;
+  for (const Source& s : v.sources) {
+    if (s.kind == Source::Texel) o.texture = s.reg;
+    else o.lanes.insert({s.reg, s.lane});
+  }
+  return o;
+}
+
+// The screen axis (0: x, 1: y) and input register of lanes from one input, one of lanes 0 and 1.
+std::optional<std::pair<int, uint32_t>> screenAxis(const std::set<std::pair<uint32_t, uint32_t>>& lanes) {
+  std::set<uint32_t> regs;
+  for (const auto& [reg, lane] : lanes) regs.insert(reg);
+  if (regs.size() != 1) return std::nullopt;
+  const uint32_t reg = *regs.begin();
+  const bool has0 = lanes.count({reg, 0}) > 0, has1 = lanes.count({reg, 1}) > 0;
+  if (has0 == has1) return std::nullopt;
+  return std::pair{has0 ? 0 : 1, reg};
+}
+
 std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) {
   Roles r;
-  for (const auto& [term, c] : m.byTerm) {
-    const auto& sources = values[term].sources;
-    std::optional<uint32_t> texture;
-    std::set<std::pair<uint32_t, uint32_t>> lanes;
-    for (const Source& s : sources) {
-      if (s.kind == Source::Texel) texture = s.reg;
-      else lanes.insert({s.reg, s.lane});
-    }
-    if (texture) {
-      if (r.depth >= 0) return std::nullopt;
-      r.depth = term;
-      r.texture = *texture;
-      continue;
-    }
-    std::set<uint32_t> regs;
-    for (const auto& [reg, lane] : lanes) regs.insert(reg);
-    if (regs.size() != 1) return std::nullopt;
-    const uint32_t reg = *regs.begin();
-    const bool has0 = lanes.count({reg, 0}) > 0, has1 = lanes.count({reg, 1}) > 0;
-    if (has0 == has1) return std::nullopt;
-    if ((r.x >= 0 || r.y >= 0) && r.input != reg) return std::nullopt;  // x and y of one input
-    int& role = has0 ? r.x : r.y;
-    if (role >= 0) return std::nullopt;
+  std::vector<std::pair<int, int>> scaled;  // (term, the texel factor it is scaled by)
+  auto assign = [&](int axis, uint32_t reg, int term) {
+    if ((r.x >= 0 || r.y >= 0) && r.input != reg) return false;  // x and y of one input
+    int& role = axis == 0 ? r.x : r.y;
+    if (role >= 0) return false;
     role = term;
     r.input = reg;
+    return true;
+  };
+  for (const auto& [term, c] : m.byTerm) {
+    const Origin o = originOf(values[term]);
+    if (o.texture && o.lanes.empty()) {
+      if (r.depth >= 0) return std::nullopt;
+      r.depth = term;
+      r.texture = *o.texture;
+      continue;
+    }
+    if (!o.texture) {
+      auto axis = screenAxis(o.lanes);
+      if (!axis || !assign(axis->first, axis->second, term)) return std::nullopt;
+      continue;
+    }
+    // Screen and texel: a product of screen-only factors and one texel-only factor.
+    std::set<std::pair<uint32_t, uint32_t>> lanes;
+    int depth = -1;
+    for (int factor : values[term].factors) {
+      const Origin f = originOf(values[factor]);
+      if (f.texture && f.lanes.empty() && depth < 0) depth = factor;
+      else if (!f.texture) lanes.insert(f.lanes.begin(), f.lanes.end());
+      else return std::nullopt;
+    }
+    auto axis = depth >= 0 ? screenAxis(lanes) : std::nullopt;
+    if (!axis || !assign(axis->first, axis->second, term)) return std::nullopt;
+    scaled.push_back({term, depth});
   }
   if (r.x < 0 || r.y < 0 || r.depth < 0) return std::nullopt;
+  // Both scaled or neither, each by the depth term itself.
+  if (!scaled.empty()) {
+    if (scaled.size() != 2) return std::nullopt;
+    for (const auto& [term, depth] : scaled)
+      if (depth != r.depth) return std::nullopt;
+    r.scaled = true;
+  }
   return r;
 }
 
@@ -493,6 +552,9 @@ std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Pro
       const Value& v = values[m->value];
       placeable &= evaluation.region(v.op) == evaluation.region(last) && !evaluation.writtenBetween(*v.at, v.op, last);
     }
+    // The screen-to-world form reads the depth there too: still in the register it was written to.
+    const Value& z = values[role.depth];
+    if (role.scaled && (!z.at || z.op == SIZE_MAX || evaluation.writtenBetween(*z.at, z.op, last))) placeable = false;
     if (!placeable) continue;
     AsmUnprojection u;
     u.afterLine = lineIndex.at(p.ops[last].line);
@@ -511,6 +573,10 @@ std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Pro
     for (const auto& row : rows) u.rows += (u.rows.empty() ? "" : ", ") + elementText(row, false);
     u.storage = key.front() == 'c' ? "columns (mad)" : "rows (dp4)";
     u.depth = "t" + std::to_string(role.texture);
+    if (role.scaled) {
+      u.scaledByDepth = true;
+      u.depthRegister = "r" + std::to_string(z.at->first) + "." + "xyzw"[z.at->second];
+    }
     u.ndc = "v" + std::to_string(role.input);
     found.push_back(std::move(u));
   }

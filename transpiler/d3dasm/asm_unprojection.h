@@ -18,7 +18,9 @@
 //   columns (`mad r1.xyzw, r0.xxxx, cb1[20].xyzw, r1.xyzw`): component i reads lane i of each column;
 //   rows (`dp4 r2.x, r1.xyzw, cb2[32].xyzw`): component i is row k+i.
 // and the terms are the pixel's x (lane 0 of an input, SV_Position or an interpolated coordinate, no
-// texel), its y (lane 1 of the same input) and a depth (read from a texture). A shadow or texture
+// texel), its y (lane 1 of the same input) and a depth (read from a texture); or, in the
+// screen-to-world form, the pixel's x and y each multiplied by that depth term (a product of two
+// values is a term that remembers its factors). A shadow or texture
 // matrix applied to interpolated positions has no texel in it and is not one. Control flow: values
 // written in one branch of an `if` are new terms after its `endif`, a branch that returns does not
 // reach it, and what a loop writes is unknown in and after it.
@@ -42,6 +44,10 @@ struct AsmUnprojection {
   std::string storage;                  // "columns (mad)" or "rows (dp4)"
   std::string depth;                    // the texture the depth is read from: "t0"
   std::string ndc;                      // the input the pixel's x and y come from: "v0"
+  // The screen-to-world form, q = M * (ndc.x * z, ndc.y * z, z, 1): corrected by
+  // q -= M[column of x] * s.x * (|z| - s.y) * sign(z), z read from `depthRegister` ("r1.x").
+  bool scaledByDepth = false;
+  std::string depthRegister;
 };
 
 // Every such unprojection of `program` (decoded with DecodeFor::Analysis from `text`), in program

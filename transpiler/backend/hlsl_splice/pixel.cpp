@@ -5,6 +5,8 @@
 //     float4 stereoshift_stereo = StereoParams.Load(int3(0, 0, 0));
 //     float stereoshift_d = stereoshift_stereo.x * (1 - stereoshift_stereo.y * <q.w>);
 //     <q.x> -= <InvM[0][0]> * stereoshift_d;  ...  <q.w> -= <InvM[3][0]> * stereoshift_d;
+// (the screen-to-world form q = M * (ndc * z, z, 1) has d = s.x * (|z| - s.y) * sign(z) instead,
+// the pixel's NDC x being off by s.x * (1 - s.y / |z|) and scaled by z),
 // (deferred_unprojection_pass.cpp has the maths: 3Dmigoto's x is the separation with the eye's
 // sign, y the convergence), and 3Dmigoto's `Texture2D<float4> StereoParams : register(t125)` before
 // the entry point unless the file declares it.
@@ -74,6 +76,7 @@ bool reads(const std::string& rhs, const std::string& reg, char c) {
 
 struct Located {
   std::array<std::string, 4> component;  // "r1.x"
+  std::string depth;                      // the screen-to-world form: where the depth z is
   std::string error;
   uint32_t errorLine = 0;
 };
@@ -111,6 +114,22 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
         return fail(l, out.component[i] + " is read before the rebuilt position is complete");
     }
   }
+  if (fix.scaledByDepth) {
+    // The depth the screen coordinates were scaled by, still in its register after q.
+    auto z = assignmentOn(lines.line(fix.depthLine));
+    if (!z || fix.depthLane >= z->mask.size() || fix.depthLine > fix.afterLine)
+      return fail(fix.depthLine, "the statement computing the depth is not one `reg.mask = ...;` on its line");
+    const char c = z->mask[fix.depthLane];
+    out.depth = z->reg + "." + c;
+    for (uint32_t l = fix.depthLine + 1; l <= fix.afterLine; ++l) {
+      std::string text = lines.line(l);
+      if (text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos) continue;
+      auto later = assignmentOn(text);
+      if (!later) return fail(l, "a line between the depth and the rebuilt position is not a plain assignment");
+      if (later->reg == z->reg && later->mask.find(c) != std::string::npos)
+        return fail(l, "register " + out.depth + " (the depth) is written again before the rebuilt position is complete");
+    }
+  }
   return out;
 }
 
@@ -125,10 +144,15 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   std::string lines = first == fix.afterLine ? "line " + std::to_string(first)
                                               : "lines " + std::to_string(first) + "-" + std::to_string(fix.afterLine);
   std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
-                  ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----" + nl;
+                  (fix.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
+                                     : ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----") +
+                  nl;
   t += indent + "{" + nl;
   t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
-  t += in + "float " + d + " = " + s + ".x * (1 - " + s + ".y * " + at.component[3] + ");" + nl;
+  if (fix.scaledByDepth)
+    t += in + "float " + d + " = " + s + ".x * (abs(" + at.depth + ") - " + s + ".y) * sign(" + at.depth + ");" + nl;
+  else
+    t += in + "float " + d + " = " + s + ".x * (1 - " + s + ".y * " + at.component[3] + ");" + nl;
   for (size_t i = 0; i < 4; ++i)
     if (fix.present[i]) t += in + at.component[i] + " -= " + fix.column[i] + " * " + d + ";" + nl;
   t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
