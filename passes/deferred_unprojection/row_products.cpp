@@ -432,6 +432,15 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
 bool texelOnly(const Sources& s);
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 
+// Whether a pixel coordinate term is a screen input read as it is or times one constant or uniform.
+bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
+  const Linear& f = d.form(term);
+  if (f.size() != 1 || !f[0].term) return false;
+  const Lane inner = *f[0].term;
+  Sources s = flow.value(inner.id, d.isVector(inner.id) ? AccessPath{inner.lane} : AccessPath{});
+  return (s.fragCoord || s.varying) && !s.arithmetic;
+}
+
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const spirv::Module& registers = a.registers;
   SourceAnalysis& flow = a.flow;
@@ -480,6 +489,12 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     if (*scaled && (!scaledScreenTerm(d, flow, *x, *z, 1u, a.factorVisits) ||
                     !scaledScreenTerm(d, flow, *y, *z, 2u, a.factorVisits)))
       continue;
+    // A pixel's x that is a screen input as it is, or scaled by one constant or uniform (a UV, a pixel
+    // position), is not known to run from -1 to 1 across the screen: a matrix from UV space has
+    // twice InvM's column where the correction needs InvM's own. Reported, not fixed.
+    if (!*scaled && notKnownNdc(d, flow, *x))
+      p.reason = "the pixel's x is a texture coordinate or pixel position as it is, not NDC (no -1 offset): the "
+                 "matrix may map UV space, whose column is not the correction's; left for a person";
     if (*scaled) {
       p.fix.scaledByDepth = true;
       p.fix.depthLine = lines.lineOf(z->id);

@@ -312,6 +312,17 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   clobbered.replace(clobbered.find("dp4 r1.w"), 0, "mov r0.x, l(0.000000)\n");
   EXPECT_TRUE(shiftAssembly(clobbered, {}).corrections.empty());
 
+  // The pixel's x a UV as it is (no `* 2 - 1`): the matrix may map UV space, whose column is twice
+  // the correction's: left for a person, and said.
+  std::string uv = kDeferredMadPs;
+  const std::string toNdc =
+      "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
+  uv.erase(uv.find(toNdc), toNdc.size());
+  AsmShiftResult u = shiftAssembly(uv, {});
+  EXPECT_TRUE(u.corrections.empty());
+  EXPECT_EQ(u.output, uv);
+  EXPECT_NE(u.whyUnchanged.find("left for a person"), std::string::npos) << u.whyUnchanged;
+
   // --no-deferred-unprojection: copied.
   AsmShiftResult off = shiftAssembly(kDeferredMadPs, {}, false);
   EXPECT_TRUE(off.corrections.empty());

@@ -324,7 +324,13 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
   if (!program)
     return unchanged("the pixel shader was not analysed (line " + std::to_string(why.line) + ": " + why.message +
                      "): no correction looked for");
-  const std::vector<AsmUnprojection> found = findAsmUnprojections(text, *program);
+  const AsmUnprojections all = findAsmUnprojections(text, *program);
+  const std::vector<AsmUnprojection>& found = all.found;
+  if (found.empty() && !all.leftAlone.empty()) {
+    std::string why;
+    for (const auto& left : all.leftAlone) why += (why.empty() ? "" : "; ") + left;
+    return unchanged(text.model.text + ": left for a person: " + why);
+  }
   if (found.empty())
     return unchanged(text.model.text + ": no position rebuilt from depth through constant-buffer rows, nothing to correct");
   const std::string rS = "r" + std::to_string(d.temps);

@@ -506,9 +506,18 @@ std::string elementText(const Element& e, bool lane = true) {
   return lane ? text + "." + "xyzw"[e.lane] : text;
 }
 
+// Whether the pixel's x term is a screen input as it is, or times one constant or element.
+bool notKnownNdc(const std::vector<Value>& values, int term) {
+  const Linear& f = values[term].form;
+  if (f.size() != 1 || f[0].term < 0) return false;
+  const Value& inner = values[f[0].term];
+  return inner.op == SIZE_MAX && !inner.sources.empty() &&
+         std::all_of(inner.sources.begin(), inner.sources.end(), [](const Source& s) { return s.kind == Source::Input; });
+}
+
 }  // namespace
 
-std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Program& program) {
+AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& program) {
   const Program::Impl& p = program.decoded();
   Evaluator evaluation(p);
   evaluation.run();
@@ -529,7 +538,8 @@ std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Pro
   }
   std::map<size_t, size_t> lineIndex;  // line number -> index in text.lines
   for (size_t k = 0; k < text.lines.size(); ++k) lineIndex[text.lines[k].number] = k;
-  std::vector<AsmUnprojection> found;
+  AsmUnprojections result;
+  std::vector<AsmUnprojection>& found = result.found;
   for (const auto& [key, group] : groups) {
     std::array<const Member*, 4> q{};
     if (key.front() == 'c') {
@@ -556,6 +566,12 @@ std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Pro
     const Value& z = values[role.depth];
     if (role.scaled && (!z.at || z.op == SIZE_MAX || evaluation.writtenBetween(*z.at, z.op, last))) placeable = false;
     if (!placeable) continue;
+    if (!role.scaled && notKnownNdc(values, role.x)) {
+      result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
+                                 ": a position rebuilt from a texture coordinate or pixel position as it is, not NDC "
+                                 "(no -1 offset): the matrix may map UV space, whose column is not the correction's");
+      continue;
+    }
     AsmUnprojection u;
     u.afterLine = lineIndex.at(p.ops[last].line);
     u.firstLineNumber = p.ops[first].line;
@@ -581,7 +597,7 @@ std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Pro
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });
-  return found;
+  return result;
 }
 
 }  // namespace stereoshift::d3dasm

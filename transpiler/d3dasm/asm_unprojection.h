@@ -50,9 +50,17 @@ struct AsmUnprojection {
   std::string depthRegister;
 };
 
+struct AsmUnprojections {
+  std::vector<AsmUnprojection> found;
+  // Rebuilds found but not corrected, each with the line and why (left for a person).
+  std::vector<std::string> leftAlone;
+};
+
 // Every such unprojection of `program` (decoded with DecodeFor::Analysis from `text`), in program
 // order; none when q's components are not all where the text can correct them right after the
-// instruction completing q (a component overwritten before it, or computed in another block).
-std::vector<AsmUnprojection> findAsmUnprojections(const AsmText& text, const Program& program);
+// instruction completing q (a component overwritten before it, or computed in another block). A
+// rebuild whose pixel x is a screen input as it is, or times one constant or element (a UV, a pixel
+// position: the matrix may map UV space, whose column is twice the correction's), is left alone.
+AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& program);
 
 }  // namespace stereoshift::d3dasm
