@@ -294,6 +294,17 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
   DecompiledForms forms = findDecompiledForms(*registers, true, ctx.file);
   for (const RowProduct& p : forms.products) {
     ViewDependentUse entry;
+    if (p.interpolated) {
+      entry.construct = "matrix in cbuffer rows * interpolated position";
+      entry.matrix = p.rows;
+      entry.use = "position " + joined(p.x.inputs);
+      if (p.fix.afterLine) entry.line = static_cast<int>(p.fix.afterLine);
+      entry.reason = "a light-space transform of the interpolated position: a shadow-map or projector lookup is the "
+                     "same for both eyes (the map was drawn once) and stays mono; a screen-space lookup of this "
+                     "eye's image would need this eye's projection: left as it is, for a person to check";
+      facts.leftAlone.push_back(entry);
+      continue;
+    }
     entry.construct = p.fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)" : "matrix in cbuffer rows * vector";
     entry.form = p.fix.scaledByDepth
                      ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"

@@ -246,6 +246,7 @@ json renderStageReport(const StageRecord& record) {
       report["eye_params"] = a.declaredStereoParams ? "3Dmigoto StereoParams texture (t125, declared)"
                                                     : "3Dmigoto StereoParams texture (t125, the dump's)";
     }
+    if (!a.leftAlone.empty()) report["left_alone"] = a.leftAlone;
     if (!a.unchangedBecause.empty()) report["unchanged_because"] = a.unchangedBecause;
   }
   if (record.mesa) {

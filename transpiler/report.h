@@ -69,6 +69,7 @@ struct StageRecord {
       size_t firstLine = 0, lastLine = 0;
     };
     std::vector<Correction> corrections;
+    std::vector<std::string> leftAlone;  // seen in a pixel shader and left for a person, with why
   };
   std::optional<Assembly> assembly;
   std::string lifted;  // analysed on a lifted copy (frontend/glsl_lift.h): what was lifted

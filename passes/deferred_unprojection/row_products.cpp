@@ -5,6 +5,7 @@
 
 #include <glslang/SPIRV/GLSL.std.450.h>
 
+#include <bit>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -347,18 +348,23 @@ std::optional<Member> memberOf(Decomposer& d, Lane at) {
 }
 
 std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>& q) {
-  std::set<std::string> vectors;
+  // In numeric order (cb3[8] before cb3[10]): keyed by the root and the path.
+  std::map<std::vector<uint32_t>, std::string> vectors;
   auto add = [&](Coefficient c) {
     c.path.pop_back();  // the element's vector
     c.scale = 1.0f;
-    vectors.insert(elementText(m, c));
+    std::vector<uint32_t> key{c.root};
+    key.insert(key.end(), c.path.begin(), c.path.end());
+    vectors.emplace(std::move(key), elementText(m, c));
   };
   for (const Member* member : q) {
     if (!member) continue;
     add(member->translation);
     for (const auto& [term, c] : member->byTerm) add(c);
   }
-  return joined(vectors);
+  std::string text;
+  for (const auto& [key, vector] : vectors) text += (text.empty() ? "" : ", ") + vector;
+  return text;
 }
 
 // The candidates, grouped into matrices and ordered into q's four components: column storage by
@@ -432,6 +438,20 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
 bool texelOnly(const Sources& s);
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 
+// Whether the three terms are lanes x, y and z of one interpolated input, no texel in them.
+bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<Lane, Coefficient>& terms) {
+  uint32_t lanes = 0;
+  std::set<std::string> inputs;
+  for (const auto& [term, c] : terms) {
+    Sources s = flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
+    if (!s.varying || s.fragCoord || s.texel || s.other || std::popcount(s.inputLanes) != 1 || (lanes & s.inputLanes))
+      return false;
+    lanes |= s.inputLanes;
+    inputs.insert(s.inputs.begin(), s.inputs.end());
+  }
+  return lanes == 7u && inputs.size() == 1;
+}
+
 // Whether a pixel coordinate term is a screen input read as it is or times one constant or uniform.
 bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   const Linear& f = d.form(term);
@@ -484,7 +504,19 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       else if (texelOnly(s) && !z) z = term, p.z = s;
       else other = true;
     }
-    if (other || !x || !y || !z) continue;
+    if (other || !x || !y || !z) {
+      if (interpolatedPosition(flow, d, q[3]->byTerm)) {
+        RowProduct seen;
+        seen.interpolated = true;
+        seen.rows = rowsText(registers, q);
+        for (const auto& [term, c] : q[3]->byTerm)
+          seen.x |= flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
+        for (uint32_t i = 0; i < 4; ++i)
+          if (q[i]) seen.fix.afterLine = std::max(seen.fix.afterLine, lines.lineOf(q[i]->at.id));
+        found.push_back(std::move(seen));
+      }
+      continue;
+    }
     // Scaled terms must be the screen coordinate times that very depth.
     if (*scaled && (!scaledScreenTerm(d, flow, *x, *z, 1u, a.factorVisits) ||
                     !scaledScreenTerm(d, flow, *y, *z, 2u, a.factorVisits)))

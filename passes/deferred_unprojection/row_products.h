@@ -30,6 +30,10 @@ struct RowProduct {
   Sources x, y, z;        // what the pixel's x, y and the depth are computed from
   std::string rows;       // the uniform vectors holding the matrix, as the source names them
   std::string reason;     // empty when every component has a line of the main file
+  // The same product applied to an interpolated position (lanes x, y, z of one input, no texel):
+  // a light-space transform for a shadow-map or projector lookup (or a screen-space one), never
+  // fixed, reported so a person knows it was seen.
+  bool interpolated = false;
 };
 
 // The view-ray form spelled per component (decompiled HLSL): a scalar x that is a product of the

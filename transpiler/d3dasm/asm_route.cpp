@@ -44,6 +44,7 @@ Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const Transpi
   record.stageReason = "shader model line " + shifted.model;
   StageRecord::Assembly assembly;
   assembly.shaderModel = shifted.model;
+  assembly.leftAlone = shifted.leftAlone;
   if (options.stage && stage && *options.stage != *stage)
     return errorAt(shifted.modelLine, 1,
                    "-S " + std::string(stageName(*options.stage)) + " contradicts the shader model line " + shifted.model);

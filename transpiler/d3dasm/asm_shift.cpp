@@ -326,6 +326,7 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
                      "): no correction looked for");
   const AsmUnprojections all = findAsmUnprojections(text, *program);
   const std::vector<AsmUnprojection>& found = all.found;
+  result.leftAlone = all.leftAlone;
   if (found.empty() && !all.leftAlone.empty()) {
     std::string why;
     for (const auto& left : all.leftAlone) why += (why.empty() ? "" : "; ") + left;

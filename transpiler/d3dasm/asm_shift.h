@@ -70,6 +70,7 @@ struct AsmShiftResult {
     size_t firstLine = 0, lastLine = 0;
   };
   std::vector<Correction> corrections;
+  std::vector<std::string> leftAlone;  // a pixel shader: what was seen and left for a person, with why
 };
 
 // The assembly printer of the shift renders the spec's cutoff (core/shift_spec.h) with the eye's sign

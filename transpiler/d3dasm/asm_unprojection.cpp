@@ -506,6 +506,20 @@ std::string elementText(const Element& e, bool lane = true) {
   return lane ? text + "." + "xyzw"[e.lane] : text;
 }
 
+// The input register whose lanes x, y, z the three terms are (one each, no texel), if they are: the
+// product is a light-space transform of an interpolated position.
+std::optional<uint32_t> interpolatedPosition(const std::vector<Value>& values, const Member& m) {
+  std::set<uint32_t> lanes, regs;
+  for (const auto& [term, c] : m.byTerm) {
+    const Origin o = originOf(values[term]);
+    if (o.texture || o.lanes.size() != 1) return std::nullopt;
+    regs.insert(o.lanes.begin()->first);
+    lanes.insert(o.lanes.begin()->second);
+  }
+  if (regs.size() != 1 || lanes != std::set<uint32_t>{0, 1, 2}) return std::nullopt;
+  return *regs.begin();
+}
+
 // Whether the pixel's x term is a screen input as it is, or times one constant or element.
 bool notKnownNdc(const std::vector<Value>& values, int term) {
   const Linear& f = values[term].form;
@@ -525,12 +539,19 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
   // Candidates grouped by matrix and terms, each group's components by index.
   std::map<std::string, std::map<uint32_t, Member>> groups;
   std::map<std::string, Roles> roles;
+  std::map<std::string, std::pair<uint32_t, size_t>> lightSpace;  // matrix -> (input, last line)
   for (int id = 0; id < static_cast<int>(values.size()); ++id) {
     if (values[id].op == SIZE_MAX || !values[id].at) continue;
     auto member = memberOf(values, id);
     if (!member) continue;
     auto role = rolesOf(values, *member);
-    if (!role) continue;
+    if (!role) {
+      if (auto input = interpolatedPosition(values, *member)) {
+        auto& seen = lightSpace[member->matrix];
+        seen = {*input, std::max(seen.second, p.ops[values[id].op].line)};
+      }
+      continue;
+    }
     std::string key = member->matrix;
     for (const auto& [term, c] : member->byTerm) key += "|" + std::to_string(term);
     groups[key][member->index] = *member;  // a later value of the same component replaces it
@@ -597,6 +618,11 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });
+  for (const auto& [matrix, seen] : lightSpace)
+    result.leftAlone.push_back("line " + std::to_string(seen.second) + ": a matrix in constant-buffer rows applied to the "
+                               "interpolated position v" + std::to_string(seen.first) +
+                               ".xyz (light space): a shadow-map or projector lookup stays mono, a screen-space lookup "
+                               "of this eye's image would need this eye's projection");
   return result;
 }
 
