@@ -327,6 +327,18 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     facts.fixed.push_back(entry);
     facts.textFixes.push_back(p.fix);
     recorded = true;
+    for (const CameraTextFix& camera : p.cameras) {
+      ViewDependentUse view;
+      view.construct = "view vector camera - rebuilt position";
+      view.form = "a camera position minus the rebuilt position (specular, Fresnel, reflections)";
+      view.uniform = camera.camera[0].substr(0, camera.camera[0].rfind('.'));
+      view.line = static_cast<int>(camera.line);
+      view.fix = "v + s.x*s.y*(" + camera.columnX[0] + ", " + camera.columnX[1] + ", " + camera.columnX[2] +
+                 ") after line " + std::to_string(camera.line) +
+                 ", where the constant is the camera the matrix shows (checked at run time; a light position is left alone)";
+      facts.fixed.push_back(view);
+      facts.cameraTextFixes.push_back(camera);
+    }
   }
   for (const ComponentRay& r : forms.rays) {
     ViewDependentUse entry;

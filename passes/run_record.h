@@ -170,10 +170,24 @@ struct ViewRayTextFix {
   std::string scale;                      // k as the source names it: "cb0[0].x", "(1 / cb2[6].x)"
 };
 
+// A fix only the source text carries: a view vector `v = c - p` from a camera position c (a cbuffer
+// vector) to the position p = q.xyz / q.w a RowProductTextFix rebuilds, made this eye's by
+// v += s.x * s.y * InvM[column of x].xyz where c is the camera InvM shows (its projection centre,
+// InvM[column of z].xyz / InvM[3][z]); a light position (any other c) is left as it is. Checked at
+// run time, since which constant is the camera is a value, not a name.
+struct CameraTextFix {
+  uint32_t line = 0;                   // the statement computing v (x, y and z on one line)
+  std::array<uint32_t, 3> lanes{};     // the lanes of v.x, v.y, v.z in the statement's value
+  std::array<std::string, 3> camera;   // c, element by element: "cb0[6].x"
+  std::array<std::string, 3> columnX;  // InvM[i][x], i = 0..2
+  std::array<std::string, 4> columnZ;  // InvM[i][z], i = 0..3
+};
+
 struct DeferredFacts {
   std::vector<ViewDependentUse> fixed, leftAlone;
   std::vector<RowProductTextFix> textFixes;  // with PassOptions::sourceTextFixes
   std::vector<ViewRayTextFix> rayTextFixes;  // likewise
+  std::vector<CameraTextFix> cameraTextFixes;  // likewise
   std::string leftAloneWhy;      // the whole shader left alone, and why
   std::string applicationFills;  // an injected parameter the application sets
 };

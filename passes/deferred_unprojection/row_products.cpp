@@ -438,6 +438,63 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
 bool texelOnly(const Sources& s);
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 
+// The view vectors c - p (c a cbuffer vector, p = q.xyz / q.w), x, y and z computed by one statement.
+std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::array<const Member*, 4>& q, Lane x, Lane z) {
+  const spirv::Module& registers = a.registers;
+  Decomposer& d = a.d;
+  struct Hit {
+    uint32_t lane = 0, component = 0;
+    Coefficient camera;
+  };
+  std::map<uint32_t, std::vector<Hit>> byValue;
+  std::set<Lane> seen;
+  spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpFAdd && inst.opcode != spv::OpFSub) return;
+    const uint32_t count = d.lanes(inst.resultId);
+    for (uint32_t lane = 0; lane < count; ++lane) {
+      Lane at = d.canonical({inst.resultId, lane});
+      if (at.id != inst.resultId || !seen.insert(at).second) continue;
+      const Linear& f = d.form(at);
+      if (f.size() != 2) continue;
+      const Part* camera = nullptr;
+      const Part* position = nullptr;
+      for (const Part& part : f) {
+        if (!part.term && part.coefficient.uniform() && part.coefficient.scale == 1.0f && part.coefficient.path.size() >= 2) camera = &part;
+        else if (part.term && !part.coefficient.uniform() && part.coefficient.scale == -1.0f) position = &part;
+      }
+      if (!camera || !position) continue;
+      const Instruction* divide = d.definition(position->term->id);
+      if (!divide || divide->opcode != spv::OpFDiv) continue;
+      auto laneOf = [&](uint32_t id) { return d.canonical({id, d.isVector(id) ? position->term->lane : 0}); };
+      if (laneOf(divide->operand(1)) != q[3]->at) continue;
+      const Lane numerator = laneOf(divide->operand(0));
+      for (uint32_t i = 0; i < 3; ++i)
+        if (numerator == q[i]->at) byValue[inst.resultId].push_back({lane, i, camera->coefficient});
+    }
+  });
+  std::vector<CameraTextFix> found;
+  for (const auto& [id, hits] : byValue) {
+    CameraTextFix fix;
+    std::array<bool, 3> have{};
+    for (const Hit& h : hits) {
+      if (have[h.component]) continue;
+      have[h.component] = true;
+      fix.lanes[h.component] = h.lane;
+      fix.camera[h.component] = elementText(registers, h.camera);
+    }
+    if (!have[0] || !have[1] || !have[2]) continue;
+    fix.line = a.lines.lineOf(id);
+    bool named = fix.line != 0;
+    for (uint32_t i = 0; i < 4; ++i) {
+      if (i < 3) fix.columnX[i] = elementText(registers, q[i]->byTerm.at(x));
+      fix.columnZ[i] = elementText(registers, q[i]->byTerm.at(z));
+      named &= (i == 3 || (!fix.columnX[i].empty() && !fix.camera[i].empty())) && !fix.columnZ[i].empty();
+    }
+    if (named) found.push_back(std::move(fix));
+  }
+  return found;
+}
+
 // Whether the three terms are lanes x, y and z of one interpolated input, no texel in them.
 bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<Lane, Coefficient>& terms) {
   uint32_t lanes = 0;
@@ -460,6 +517,8 @@ bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   Sources s = flow.value(inner.id, d.isVector(inner.id) ? AccessPath{inner.lane} : AccessPath{});
   return (s.fragCoord || s.varying) && !s.arithmetic;
 }
+
+std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::array<const Member*, 4>& q, Lane x, Lane z);
 
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const spirv::Module& registers = a.registers;
@@ -532,6 +591,8 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       p.fix.depthLine = lines.lineOf(z->id);
       p.fix.depthLane = z->lane;
       if (!p.fix.depthLine && p.reason.empty()) p.reason = "the depth is computed outside the main file (an #include or a macro)";
+    } else if (std::all_of(q.begin(), q.end(), [](const Member* m) { return m != nullptr; })) {
+      p.cameras = findCameraVectors(a, q, *x, *z);
     }
     p.rows = rowsText(registers, q);
     for (uint32_t i = 0; i < 4; ++i) {

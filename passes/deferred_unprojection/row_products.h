@@ -34,6 +34,8 @@ struct RowProduct {
   // a light-space transform for a shadow-map or projector lookup (or a screen-space one), never
   // fixed, reported so a person knows it was seen.
   bool interpolated = false;
+  // View vectors from a camera position to the rebuilt position (CameraTextFix), when q is.
+  std::vector<CameraTextFix> cameras;
 };
 
 // The view-ray form spelled per component (decompiled HLSL): a scalar x that is a product of the

@@ -33,6 +33,7 @@
 #include <iomanip>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 
 using namespace stereoshift;
@@ -290,6 +291,23 @@ const std::string kDumpScreenToWorld = kDumpPrologue + R"(  r2.xy = r2.xy * r1.x
   r2.xyz = r3.xyz / r3.www;
 )" + kDumpEpilogue;
 
+// A view vector from the camera (cb0[5]) to the rebuilt position, normalized (specular, Fresnel and
+// reflections start from it), its component VIEW_COMPONENT written as the float's bits.
+const std::string kDumpViewVector = kDumpPrologue + R"(  r3.xyzw = cb0[1].xyzw * r2.yyyy;
+  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;
+  r3.xyzw = r1.xxxx * cb0[2].xyzw + r3.xyzw;
+  r3.xyzw = cb0[3].xyzw + r3.xyzw;
+  r2.xyz = r3.xyz / r3.www;
+  r3.xyz = cb0[5].xyz + -r2.xyz;
+  r0.w = dot(r3.xyz, r3.xyz);
+  r0.w = rsqrt(r0.w);
+  r3.xyz = r3.xyz * r0.www;
+  uiDest.x = asuint(r3[VIEW_COMPONENT]);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+}
+)";
+
 // The view-ray form as a decompiled dump: the linear depth (the G-buffer's positive view depth, set 1
 // binding 2) times the NDC, times the inverse projection's scales read from the camera rows
 // (cb0[0].x = 1/P00, cb0[1].y = 1/P11), one component per statement; z = -depth.
@@ -470,6 +488,7 @@ ImageError compare(const RenderResult& truth, const RenderResult& other) {
 // eyeSign * separation, convergence, eyeSign).
 struct DumpFeed {
   bool rows = false, stereoParams = false;
+  std::optional<std::array<float, 4>> row5;  // cb0[5] instead of the light's position (a camera)
 };
 
 class DeferredRender : public ::testing::Test {
@@ -534,7 +553,8 @@ class DeferredRender : public ::testing::Test {
         for (int r = 0; r < 4; ++r) uploaded[c * 4 + r] = inverseViewProj[r * 4 + c];
     auto inv = toFloat(uploaded);
     const float viewport[4] = {float(kSize), float(kSize), 1.0f / kSize, 1.0f / kSize};
-    const float light[8] = {0.8f, 1.5f, -5.0f, 22.0f, 1.0f, 0.95f, 0.85f, 0.0f};
+    float light[8] = {0.8f, 1.5f, -5.0f, 22.0f, 1.0f, 0.95f, 0.85f, 0.0f};
+    if (dump.row5) std::copy(dump.row5->begin(), dump.row5->end(), light);
     append(frame, inv.data(), 16);
     append(frame, viewport, 4);
     append(frame, light, 8);
@@ -570,6 +590,8 @@ class DeferredRender : public ::testing::Test {
   void checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix);
   // The screen-to-world check: truth, fix and baseline of kDumpScreenToWorld against the exact point.
   void checkScreenToWorld(const char* name, const char* text, const char* tag);
+  // The camera check: the view vector to the rebuilt position from this eye's camera.
+  void checkViewVector(const char* name, const char* text, const char* tag);
 
   std::unique_ptr<VulkanContext> context_;
   std::vector<uint32_t> gbufferVert_, albedoFrag_, normalFrag_, fullScreenVert_;
@@ -815,6 +837,120 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
     EXPECT_EQ(outside, 0u) << "eye " << eye << ": a rebuilt position is further from the exact one than rounding allows";
     EXPECT_GT(baselineOutside, pixels * 9 / 10) << "eye " << eye << ": the mono baseline should be wrong";
   }
+}
+
+// The view vector from the camera to the rebuilt position: the converted dump (position corrected,
+// and the camera made this eye's where cb0[5] is the camera the matrix shows) against the exact
+// normalize(C_eye - p), with C_eye the projection centre of the eye's exact stereo view-projection
+// (computed here on its own, not from the fix's formula). Bound, first order: the rebuilt position's
+// rounding bound (positionBound) and the camera's (4u of |C| + |the offset|), over |C_eye - p|, twice
+// (a normalized vector moves by at most twice the relative change of the vector), plus 8u for the
+// normalization. The position-only fix (the camera block removed) must be beyond the bound at more
+// than 90 % of the pixels: its highlight is the mono camera's. With the light's position in cb0[5]
+// instead (not the camera the matrix shows) the camera block must leave the vector as it is.
+void DeferredRender::checkViewVector(const char* name, const char* text, const char* tag) {
+  const Mat4 viewMatrix = view();
+  const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
+  const Mat4 inverseView = inverse(viewMatrix);
+  const std::array<float, 4> camera = {float(inverseView[12]), float(inverseView[13]), float(inverseView[14]), 0.0f};
+  const double u = kUnitRoundoff;
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    const Mat4 stereoInverse = inverse(multiply(projection(eye), viewMatrix));
+    // The eye's projection centre: the world point whose stereo clip coordinates are (0, 0, p32, 0).
+    const Mat4 stereo = projection(eye);
+    std::array<double, 4> centre{};
+    for (int r = 0; r < 4; ++r) centre[r] = stereoInverse[2 * 4 + r] * stereo[14];
+    const std::array<double, 3> eyeCamera = {centre[0] / centre[3], centre[1] / centre[3], centre[2] / centre[3]};
+    std::array<RenderResult, 3> fixedView, positionOnly, lightKept;
+    for (int component = 0; component < 3; ++component) {
+      TranspileOptions options;
+      options.defines = {"VIEW_COMPONENT=" + std::to_string(component)};
+      nlohmann::json pass;
+      TranspileOptions convert = options;
+      convert.target = TargetLanguage::Hlsl;
+      convert.eyeFrom3DMigoto = true;
+      convert.sourceTextFixes = true;
+      convert.eye.source = EyeSource::UniformBlock;
+      convert.eye.blockName = "stereoshift_StereoParams";
+      TranspileResult r = transpile(SourceFile{name, text}, convert);
+      ASSERT_TRUE(r.ok) << r.diagnostics.format();
+      ASSERT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"].size(), 2u) << r.report.dump(2);
+      EXPECT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"][1].value("construct", ""),
+                "view vector camera - rebuilt position");
+      // The same text without the camera block: the position corrected, the camera mono.
+      std::string withoutCamera = r.output;
+      const size_t from = withoutCamera.find("  // ---- stereoshift: this eye's camera");
+      ASSERT_NE(from, std::string::npos) << r.output;
+      const std::string end = "// ---- end stereoshift ----\n";
+      withoutCamera.erase(from, withoutCamera.find(end, from) + end.size() - from);
+      DumpFeed stereoFeed{false, true, camera}, lightFeed{false, true, std::array<float, 4>{0.8f, 1.5f, -5.0f, 22.0f}};
+      fixedView[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoInverse, nullptr, eye, stereoFeed);
+      positionOnly[component] =
+          renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoInverse, nullptr, eye, stereoFeed);
+      lightKept[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoInverse, nullptr, eye, lightFeed);
+      RenderResult lightWithout =
+          renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoInverse, nullptr, eye, lightFeed);
+      ASSERT_TRUE(fixedView[component].ok() && positionOnly[component].ok() && lightKept[component].ok());
+      EXPECT_EQ(lightKept[component].pixels, lightWithout.pixels) << "a light's position must not be moved per eye";
+    }
+    auto bitsAt = [](const RenderResult& r, size_t pixel) {
+      uint32_t bits = 0;
+      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
+      float f;
+      std::memcpy(&f, &bits, 4);
+      return double(f);
+    };
+    const Mat4 monoF = toDouble(toFloat(monoInverse));
+    double cameraLength = 0, offsetLength = 0;
+    for (int c = 0; c < 3; ++c) {
+      cameraLength += double(camera[c]) * camera[c];
+      offsetLength += std::pow(kSeparation * kConvergence * monoInverse[c], 2);
+    }
+    const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength));
+    double worst = 0;
+    size_t pixels = 0, outside = 0, monoOutside = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        size_t i = size_t(y) * kSize + x;
+        if (g.depthValues[i] >= 1.0f) continue;
+        ++pixels;
+        std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
+        std::array<double, 4> exact{};
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
+        std::array<double, 3> toCamera;
+        double length = 0;
+        for (int c = 0; c < 3; ++c) {
+          toCamera[c] = eyeCamera[c] - exact[c] / exact[3];
+          length += toCamera[c] * toCamera[c];
+        }
+        length = std::sqrt(length);
+        auto positionError = positionBound(monoF, v, true, eye * kSeparation, kConvergence);
+        const double positionLength =
+            std::sqrt(positionError[0] * positionError[0] + positionError[1] * positionError[1] + positionError[2] * positionError[2]);
+        const double bound = 2 * (positionLength + cameraBound) / length + 8 * u;
+        bool monoWrong = false;
+        for (int c = 0; c < 3; ++c) {
+          const double expected = toCamera[c] / length;
+          const double error = std::abs(bitsAt(fixedView[c], i) - expected);
+          worst = std::max(worst, error / bound);
+          outside += error > bound;
+          monoWrong |= std::abs(bitsAt(positionOnly[c], i) - expected) > bound;
+        }
+        monoOutside += monoWrong;
+      }
+    std::cout << std::setprecision(3) << "[" << tag << "] eye " << eye << ": view vector over " << pixels
+              << " pixels, error / first-order bound: fix " << worst << "; mono camera beyond it at " << monoOutside
+              << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_EQ(outside, 0u) << "eye " << eye << ": a view vector is further from this eye's than rounding allows";
+    EXPECT_GT(monoOutside, pixels * 9 / 10) << "eye " << eye << ": the mono camera's view vector should be wrong";
+  }
+}
+
+TEST_F(DeferredRender, DumpStyleViewVectorGetsThisEyesCameraByExecution) {
+  checkViewVector("5a6b7c8d9e0f1234-ps_replace.txt", kDumpViewVector.c_str(), "dump view vector");
 }
 
 TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {

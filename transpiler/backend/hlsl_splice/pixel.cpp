@@ -196,6 +196,37 @@ std::string rayBlock(const ViewRayTextFix& fix, const Located& at, const std::st
   return t;
 }
 
+// Where a camera fix's view vector lives: the statement on its line, x, y and z in its mask.
+Located locateCamera(const Lines& lines, const CameraTextFix& fix) {
+  Located out;
+  auto v = assignmentOn(lines.line(fix.line));
+  if (!v) return failedAt(out, fix.line, "the statement computing the view vector is not one `reg.mask = ...;` on its line");
+  for (size_t i = 0; i < 3; ++i) {
+    if (fix.lanes[i] >= v->mask.size())
+      return failedAt(out, fix.line, "the statement computing the view vector does not write all of x, y and z");
+    out.component[i] = v->reg + "." + v->mask[fix.lanes[i]];
+  }
+  return out;
+}
+
+// v += s.x * s.y * InvM[column of x].xyz, where the constant is the camera InvM shows.
+std::string cameraBlock(const CameraTextFix& fix, const Located& at, const std::string& indent, const std::string& nl) {
+  const std::string s = std::string(kPrefix) + "_stereo", c = std::string(kPrefix) + "_camera", in = indent + "  ";
+  std::string t = indent + "// ---- stereoshift: this eye's camera (line " + std::to_string(fix.line) +
+                  ": v = camera - position, the camera the position's matrix shows) ----" + nl;
+  t += indent + "{" + nl;
+  t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
+  t += in + "float3 " + c + " = float3(" + fix.columnZ[0] + ", " + fix.columnZ[1] + ", " + fix.columnZ[2] + ") / " +
+       fix.columnZ[3] + ";" + nl;
+  t += in + "if (all(abs(float3(" + fix.camera[0] + ", " + fix.camera[1] + ", " + fix.camera[2] + ") - " + c +
+       ") <= 0.0001 * (abs(" + c + ") + 1))) {" + nl;
+  for (size_t i = 0; i < 3; ++i)
+    t += in + "  " + at.component[i] + " += " + s + ".x * " + s + ".y * " + fix.columnX[i] + ";" + nl;
+  t += in + "}" + nl;
+  t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
+  return t;
+}
+
 // Inserts `block` after line `line`, with a line break first when the file's last line has none.
 void insertAfterLine(EditBuffer& edits, const Lines& lines, const std::string& source, uint32_t line, std::string block) {
   size_t end = lines.endOf(line);
@@ -235,6 +266,13 @@ HlslSpliceResult splicePixelCorrections(const std::string& source, const Deferre
     if (!at.error.empty()) return failAt(at, "position rebuild");
     std::string indent = indentOf(lines.line(fix.afterLine));
     insertAfterLine(edits, lines, source, fix.afterLine, correctionBlock(fix, at, indent, edits.newline()));
+    ++result.sites;
+  }
+  for (const auto& fix : facts.cameraTextFixes) {
+    Located at = locateCamera(lines, fix);
+    if (!at.error.empty()) return failAt(at, "camera");
+    std::string indent = indentOf(lines.line(fix.line));
+    insertAfterLine(edits, lines, source, fix.line, cameraBlock(fix, at, indent, edits.newline()));
     ++result.sites;
   }
   for (const auto& fix : facts.rayTextFixes) {
