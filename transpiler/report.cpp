@@ -239,9 +239,12 @@ json renderStageReport(const StageRecord& record) {
     }
     if (!a.corrections.empty()) {
       nlohmann::json fixed = nlohmann::json::array();
-      for (const auto& c : a.corrections)
-        fixed.push_back({{"form", c.form}, {"matrix", c.matrix}, {"depth", c.depth}, {"ndc", c.ndc}, {"fix", c.fix},
-                         {"lines", std::to_string(c.firstLine) + "-" + std::to_string(c.lastLine)}});
+      for (const auto& c : a.corrections) {
+        nlohmann::json entry = {{"form", c.form}, {"depth", c.depth}, {"ndc", c.ndc}, {"fix", c.fix},
+                                {"lines", std::to_string(c.firstLine) + "-" + std::to_string(c.lastLine)}};
+        if (!c.matrix.empty()) entry["matrix"] = c.matrix;
+        fixed.push_back(std::move(entry));
+      }
       report["corrections"] = {{"deferred-unprojection", std::move(fixed)}};
       report["eye_params"] = a.declaredStereoParams ? "3Dmigoto StereoParams texture (t125, declared)"
                                                     : "3Dmigoto StereoParams texture (t125, the dump's)";

@@ -112,6 +112,30 @@ mov o0.w, l(1.000000)
 ret
 )";
 
+// The view-ray form per component: the NDC times the linear view depth, x divided by P00 and y by
+// P11 (cb1[0].x, cb1[1].y), z = -depth.
+const char* kViewRayPs = R"(ps_5_0
+dcl_globalFlags refactoringAllowed
+dcl_constantbuffer cb0[3], immediateIndexed
+dcl_constantbuffer cb1[2], immediateIndexed
+dcl_resource_texture2d (float,float,float,float) t0
+dcl_input_ps_siv linear noperspective v0.xy, position
+dcl_output o0.xyzw
+dcl_temps 3
+ftoi r0.xy, v0.xyxx
+mov r0.zw, l(0,0,0,0)
+ld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw
+mul r1.xy, v0.xyxx, cb0[2].zwzz
+mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)
+mul r1.xy, r0.zzzz, r1.xyxx
+div r2.x, r1.x, cb1[0].x
+div r2.y, r1.y, cb1[1].y
+mov r2.z, -r0.z
+mov o0.xyz, r2.xyzx
+mov o0.w, l(1.000000)
+ret
+)";
+
 constexpr uint32_t kSize = 256;
 constexpr float kSeparation = 0.06f, kConvergence = 4.0f;
 
@@ -265,6 +289,51 @@ TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
   EXPECT_NE(converted.output.find("add r3.w, |r0.z|, -r3.y"), std::string::npos) << converted.output;
   checkByExecution(kScreenToWorldPs, false, "asm screen to world", true);
+}
+
+// The view ray, per eye on 1024 pixel centres with view depths 1.5 to 60: the view-space x of the
+// converted shader (StereoParams) against the exact mono x the pixel shows, (ndc * d - eS (d - C)) / P00
+// (P00 as uploaded), within the first-order bound 2u |ndc d / P00| + 3u |eS (d - C) / P00| + u |x|
+// (one rounding for each product and quotient of x, three in the correction, one in the subtraction);
+// the original beyond it wherever the depth is not within 1 % of the convergence.
+TEST(AsmUnprojection, ViewRayCorrectedByExecution) {
+  AsmShiftResult converted = shiftAssembly(kViewRayPs, {});
+  ASSERT_TRUE(converted.ok) << converted.error.message;
+  ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
+  EXPECT_NE(converted.output.find("div r3.w, r3.w, |cb1[0].x|"), std::string::npos) << converted.output;
+  EXPECT_EQ(undoAssemblyEdits(converted.output), kViewRayPs);
+  auto original = decoded(kViewRayPs), fixed = decoded(converted.output);
+  ASSERT_TRUE(original && fixed);
+  const Mat4 mono = projection(0);
+  const float p00 = static_cast<float>(mono[0]), p11 = static_cast<float>(mono[5]);
+  const std::vector<Vec4> cb1 = {vec(p00, 0, 0, 0), vec(0, p11, 0, 0)};
+  const double u = harness::kUnitRoundoff;
+  for (double eye : {-1.0, 1.0}) {
+    const float es = static_cast<float>(eye * kSeparation);
+    const Vec4 stereoParams = vec(es, kConvergence, static_cast<float>(eye), 0.0f);
+    size_t pixels = 0, outside = 0, baselineOutside = 0, nearConvergence = 0;
+    double worst = 0;
+    for (uint32_t py = 4; py < kSize; py += 8)
+      for (uint32_t px = 4; px < kSize; px += 8) {
+        const float depth = static_cast<float>(1.5 + 58.5 * std::fmod((px * 37 + py * 61) / 997.0, 1.0));
+        const Pixel pixel{px + 0.5f, py + 0.5f, depth};
+        const double ndc = 2.0 * pixel.x / kSize - 1.0;
+        const double exact = (ndc * depth - es * (double(depth) - kConvergence)) / p00;
+        const double bound = 2 * u * std::abs(ndc * depth / p00) + 3 * u * std::abs(es * (depth - kConvergence) / p00) +
+                             u * std::abs(exact);
+        const double fix = rebuild(*fixed, pixel, cb1, stereoParams)[0], baseline = rebuild(*original, pixel, cb1, {})[0];
+        worst = std::max(worst, std::abs(fix - exact) / bound);
+        outside += std::abs(fix - exact) > bound;
+        ++pixels;
+        if (std::abs(depth - kConvergence) < 0.01 * kConvergence) ++nearConvergence;
+        else baselineOutside += std::abs(baseline - exact) > bound;
+      }
+    std::cout << "[asm view ray] eye " << eye << ": " << pixels << " pixels, error / rounding bound: fix " << worst
+              << "; mono baseline beyond the bound at " << baselineOutside << " of " << pixels - nearConvergence
+              << " pixels away from the convergence\n";
+    EXPECT_EQ(outside, 0u) << "eye " << eye;
+    EXPECT_EQ(baselineOutside, pixels - nearConvergence) << "eye " << eye << ": the mono baseline should be wrong";
+  }
 }
 
 // What the correction found, and where it put it.

@@ -305,6 +305,23 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
   return block;
 }
 
+// The correction of one view ray (see asm_unprojection.h), after the instruction computing x.
+std::vector<std::string> rayBlock(const AsmViewRay& r, const std::string& rS, bool sm5) {
+  char scale[48];
+  std::snprintf(scale, sizeof scale, "%s", floatLiteral(std::abs(r.scale)).c_str());
+  std::vector<std::string> block = {
+      "this eye's view-space x (line " + std::to_string(r.lineNumber) + ": x = ndc.x * depth * " +
+          (r.divides ? "(1 / " + r.element + ")" : r.element) + ")",
+      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      "add " + rS + ".w, |" + r.depthRegister + "|, -" + rS + ".y",
+      "mul " + rS + ".w, " + rS + ".w, " + rS + ".x",
+      std::string(r.divides ? "div " : "mul ") + rS + ".w, " + rS + ".w, |" + r.element + "|",
+  };
+  if (std::abs(r.scale) != 1.0f) block.push_back("mul " + rS + ".w, " + rS + ".w, l(" + scale + ")");
+  block.push_back("add " + r.x + ", " + r.x + ", -" + rS + ".w");
+  return block;
+}
+
 // A pixel shader: its position rebuilds corrected, or the text as it is with why.
 AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text, AsmShiftResult result) {
   auto unchanged = [&](std::string why) {
@@ -327,12 +344,12 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
   const AsmUnprojections all = findAsmUnprojections(text, *program);
   const std::vector<AsmUnprojection>& found = all.found;
   result.leftAlone = all.leftAlone;
-  if (found.empty() && !all.leftAlone.empty()) {
+  if (found.empty() && all.rays.empty() && !all.leftAlone.empty()) {
     std::string why;
     for (const auto& left : all.leftAlone) why += (why.empty() ? "" : "; ") + left;
     return unchanged(text.model.text + ": left for a person: " + why);
   }
-  if (found.empty())
+  if (found.empty() && all.rays.empty())
     return unchanged(text.model.text + ": no position rebuilt from depth through constant-buffer rows, nothing to correct");
   const std::string rS = "r" + std::to_string(d.temps);
   result.scratchTemp = rS;
@@ -350,6 +367,17 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
                                                               : "position rebuilt through a matrix held as four constant-buffer ") +
                                       u.storage,
                                   u.rows, u.depth, u.ndc, fix, u.firstLineNumber, u.lastLineNumber});
+  }
+  for (const AsmViewRay& r : all.rays) {
+    std::vector<std::string>& after = edits.after[r.afterLine];
+    if (!after.empty()) continue;
+    after = rayBlock(r, rS, text.model.major >= 5);
+    const std::string k = r.divides ? "1 / " + r.element : r.element;
+    result.corrections.push_back({"view-space position rebuilt from depth one component at a time (view ray)",
+                                  "", r.depth, r.ndc,
+                                  "x - s.x*(|depth| - s.y)*|k|, k = " + k + ", depth in " + r.depthRegister + ", after line " +
+                                      std::to_string(r.lineNumber),
+                                  r.lineNumber, r.lineNumber});
   }
   declareScratch(text, d, 1, "a temporary for this eye's position rebuild (" + rS + ")", edits, result);
   result.sites = static_cast<int>(result.corrections.size());

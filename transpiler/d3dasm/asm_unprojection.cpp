@@ -24,6 +24,7 @@ struct Element {
 struct Coefficient {
   std::optional<Element> element;
   float scale = 1.0f;
+  bool inverse = false;  // the element divides: scale / element
 };
 
 struct Part {
@@ -56,7 +57,9 @@ struct Read {
 
 bool isConstant(const Linear& f) { return f.empty() || (f.size() == 1 && f[0].term < 0 && !f[0].coefficient.element); }
 float constantOf(const Linear& f) { return f.empty() ? 0.0f : f[0].coefficient.scale; }
-bool isElement(const Linear& f) { return f.size() == 1 && f[0].term < 0 && f[0].coefficient.element; }
+bool isElement(const Linear& f) {
+  return f.size() == 1 && f[0].term < 0 && f[0].coefficient.element && !f[0].coefficient.inverse;
+}
 
 Linear scaled(Linear f, float by) {
   for (auto& part : f) part.coefficient.scale *= by;
@@ -238,6 +241,14 @@ class Evaluator {
           }
         } else if (op.code == Code::Div && isConstant(b.form) && constantOf(b.form) != 0.0f) {
           form = scaled(a.form, 1.0f / constantOf(b.form));
+        } else if (op.code == Code::Div && isElement(b.form) && b.form[0].coefficient.scale != 0.0f) {
+          // a / (k * E): a term over one element (the view ray's `x / P00`).
+          const Coefficient& e = b.form[0].coefficient;
+          const Linear& f = a.form;
+          if (f.size() == 1 && f[0].term >= 0 && !f[0].coefficient.element)
+            form = Linear{{f[0].term, {e.element, f[0].coefficient.scale / e.scale, true}}};
+          else if (a.value >= 0)
+            form = Linear{{a.value, {e.element, 1.0f / e.scale, true}}};
         } else if (op.code == Code::Mad) {
           Read e = read(op.src[2], c);
           sources.merge(joined({&e}));
@@ -384,7 +395,7 @@ std::optional<Member> memberOf(const std::vector<Value>& values, int id) {
   m.value = id;
   std::optional<Element> translation;
   for (const Part& part : values[id].form) {
-    if (!part.coefficient.element) return std::nullopt;
+    if (!part.coefficient.element || part.coefficient.inverse) return std::nullopt;
     if (part.term < 0) {
       if (translation || part.coefficient.scale != 1.0f) return std::nullopt;
       translation = part.coefficient.element;
@@ -520,6 +531,32 @@ std::optional<uint32_t> interpolatedPosition(const std::vector<Value>& values, c
   return *regs.begin();
 }
 
+// One axis of a view ray: a value that is one term times one element, the term a product of the
+// screen coordinate (axis 0: x, 1: y) and one texel-only value (the depth).
+struct RayCandidate {
+  int value = -1, term = -1, depth = -1, screen = -1;
+  int axis = 0;
+  uint32_t input = 0;
+  Coefficient k;
+};
+std::optional<RayCandidate> rayCandidate(const std::vector<Value>& values, int id) {
+  const Linear& f = values[id].form;
+  if (f.size() != 1 || f[0].term < 0 || !f[0].coefficient.element) return std::nullopt;
+  RayCandidate c{id, f[0].term, -1, -1, 0, 0, f[0].coefficient};
+  std::set<std::pair<uint32_t, uint32_t>> lanes;
+  for (int factor : values[c.term].factors) {
+    const Origin o = originOf(values[factor]);
+    if (o.texture && o.lanes.empty() && c.depth < 0) c.depth = factor;
+    else if (!o.texture && !o.lanes.empty() && c.screen < 0) c.screen = factor, lanes = o.lanes;
+    else return std::nullopt;
+  }
+  auto axis = c.depth >= 0 && c.screen >= 0 ? screenAxis(lanes) : std::nullopt;
+  if (!axis) return std::nullopt;
+  c.axis = axis->first;
+  c.input = axis->second;
+  return c;
+}
+
 // Whether the pixel's x term is a screen input as it is, or times one constant or element.
 bool notKnownNdc(const std::vector<Value>& values, int term) {
   const Linear& f = values[term].form;
@@ -527,6 +564,41 @@ bool notKnownNdc(const std::vector<Value>& values, int term) {
   const Value& inner = values[f[0].term];
   return inner.op == SIZE_MAX && !inner.sources.empty() &&
          std::all_of(inner.sources.begin(), inner.sources.end(), [](const Source& s) { return s.kind == Source::Input; });
+}
+
+// View rays: the first value per term and axis (a later scaling is per eye through it), an x with a
+// y from the same depth, the depth still in its register at x.
+void collectViewRays(const std::vector<Value>& values, const Evaluator& evaluation, const Program::Impl& p,
+                     const std::map<size_t, size_t>& lineIndex, AsmUnprojections& result) {
+  std::map<std::pair<int, int>, RayCandidate> rays;
+  for (int id = 0; id < static_cast<int>(values.size()); ++id)
+    if (values[id].op != SIZE_MAX && values[id].at)
+      if (auto c = rayCandidate(values, id)) rays.emplace(std::pair{c->term, c->axis}, *c);
+  for (const auto& [key, c] : rays) {
+    if (c.axis != 0) continue;
+    const bool hasY = std::any_of(rays.begin(), rays.end(), [&](const auto& other) {
+      return other.second.axis == 1 && other.second.depth == c.depth && other.second.input == c.input;
+    });
+    const Value& x = values[c.value];
+    const Value& depth = values[c.depth];
+    if (!hasY || !depth.at || depth.op == SIZE_MAX || evaluation.writtenBetween(*depth.at, depth.op, x.op)) continue;
+    if (notKnownNdc(values, c.screen)) {
+      result.leftAlone.push_back("line " + std::to_string(p.ops[x.op].line) +
+                                 ": a view-space x from a texture coordinate or pixel position as it is, not NDC");
+      continue;
+    }
+    AsmViewRay r;
+    r.afterLine = lineIndex.at(p.ops[x.op].line);
+    r.lineNumber = p.ops[x.op].line;
+    r.x = "r" + std::to_string(x.at->first) + "." + "xyzw"[x.at->second];
+    r.depthRegister = "r" + std::to_string(depth.at->first) + "." + "xyzw"[depth.at->second];
+    r.element = elementText(*c.k.element);
+    r.divides = c.k.inverse;
+    r.scale = c.k.scale;
+    r.depth = "t" + std::to_string(originOf(depth).texture.value_or(0));
+    r.ndc = "v" + std::to_string(c.input);
+    result.rays.push_back(std::move(r));
+  }
 }
 
 }  // namespace
@@ -618,6 +690,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });
+  collectViewRays(values, evaluation, p, lineIndex, result);
   for (const auto& [matrix, seen] : lightSpace)
     result.leftAlone.push_back("line " + std::to_string(seen.second) + ": a matrix in constant-buffer rows applied to the "
                                "interpolated position v" + std::to_string(seen.first) +

@@ -50,8 +50,24 @@ struct AsmUnprojection {
   std::string depthRegister;
 };
 
+// The view-ray form spelled per component: a view-space x = ndc.x * depth * k with k one
+// constant-buffer element (1/P00) or divided by one (`div r2.x, r1.x, cb0[6].x`), and its y made
+// the same way from the same depth. Corrected right after the instruction computing x:
+//     x -= s.x * (|depth| - s.y) * |k|
+struct AsmViewRay {
+  size_t afterLine = 0;          // index in AsmText::lines of the instruction computing x
+  size_t lineNumber = 0;
+  std::string x;                 // where x is: "r2.x"
+  std::string depthRegister;     // where the depth factor is: "r1.x"
+  std::string element;           // k's element: "cb0[0].x"
+  bool divides = false;          // k = scale / element
+  float scale = 1.0f;
+  std::string depth, ndc;        // the depth's texture, the NDC's input
+};
+
 struct AsmUnprojections {
   std::vector<AsmUnprojection> found;
+  std::vector<AsmViewRay> rays;
   // Rebuilds found but not corrected, each with the line and why (left for a person).
   std::vector<std::string> leftAlone;
 };
