@@ -437,18 +437,22 @@ Transpiled compileTranspiled(const char* name, const char* text, TranspileOption
   return t;
 }
 
-// A 3Dmigoto dump converted as `stereoshift <hash>-ps_replace.txt --eye-source 3dmigoto` does it:
-// the output is the dump's text with the correction spliced in (route hlsl-pixel-splice), compiled
-// here like the original.
+// The options a 3Dmigoto dump is converted with, as `stereoshift <hash>-ps_replace.txt --eye-source
+// 3dmigoto` does it (StereoParams fed here as a uniform block for lavapipe).
+TranspileOptions dumpConversion(TranspileOptions options) {
+  options.target = TargetLanguage::Hlsl;
+  options.eyeFrom3DMigoto = true;
+  options.sourceTextFixes = true;
+  options.eye.source = EyeSource::UniformBlock;
+  options.eye.blockName = "stereoshift_StereoParams";
+  return options;
+}
+
+// The dump converted: its text with the correction spliced in (route hlsl-pixel-splice), compiled here
+// like the original.
 std::vector<uint32_t> compileDumpFixed(const char* name, const char* text, TranspileOptions options,
                                        nlohmann::json* pass = nullptr) {
-  TranspileOptions convert = options;
-  convert.target = TargetLanguage::Hlsl;
-  convert.eyeFrom3DMigoto = true;
-  convert.sourceTextFixes = true;
-  convert.eye.source = EyeSource::UniformBlock;
-  convert.eye.blockName = "stereoshift_StereoParams";
-  TranspileResult r = transpile(SourceFile{name, text}, convert);
+  TranspileResult r = transpile(SourceFile{name, text}, dumpConversion(options));
   EXPECT_TRUE(r.ok) << r.diagnostics.format();
   EXPECT_EQ(r.report.value("route", std::string()), "hlsl-pixel-splice") << r.report.dump(2);
   EXPECT_NE(r.output.find("StereoParams.Load"), std::string::npos) << r.output;
@@ -481,6 +485,24 @@ ImageError compare(const RenderResult& truth, const RenderResult& other) {
     }
   e.mse /= 3.0 * kSize * kSize;
   return e;
+}
+
+// The float a shader wrote as its bits in the RGBA8 pixel `pixel` (the position checks read back
+// exact values this way).
+double bitsAt(const RenderResult& r, size_t pixel) {
+  uint32_t bits = 0;
+  for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
+  float f;
+  std::memcpy(&f, &bits, 4);
+  return double(f);
+}
+
+// m * v in double.
+std::array<double, 4> times(const Mat4& m, const std::array<double, 4>& v) {
+  std::array<double, 4> r{};
+  for (int row = 0; row < 4; ++row)
+    for (int c = 0; c < 4; ++c) r[row] += m[c * 4 + row] * v[c];
+  return r;
 }
 
 // How renderLighting() feeds a 3Dmigoto dump: the matrix uploaded as rows when `rows`, and with
@@ -627,13 +649,6 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
       }
       ASSERT_TRUE(truth[component].ok() && fixedPosition[component].ok() && baseline[component].ok());
     }
-    auto bitsAt = [](const RenderResult& r, size_t pixel) {
-      uint32_t bits = 0;
-      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
-      float f;
-      std::memcpy(&f, &bits, 4);
-      return double(f);
-    };
     double worstTruth = 0, worstFix = 0, maxFixVsTruth = 0, maxFixError = 0, maxBaselineError = 0;
     size_t pixels = 0, outside = 0, baselineOutside = 0;
     for (uint32_t y = 0; y < kSize; ++y)
@@ -642,9 +657,7 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
         if (g.depthValues[i] >= 1.0f) continue;  // background: nothing rebuilt
         ++pixels;
         std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
-        std::array<double, 4> exact{};
-        for (int r = 0; r < 4; ++r)
-          for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
+        const std::array<double, 4> exact = times(stereoInverse, v);
         auto truthBound = positionBound(stereoInverseF, v, false, eye * kSeparation, kConvergence);
         auto fixBound = positionBound(monoInverseF, v, true, eye * kSeparation, kConvergence);
         bool baselineWrong = false;
@@ -798,13 +811,6 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
       baseline[component] = renderLighting(linear, original, monoMatrix, nullptr, eye, monoFeed);
       ASSERT_TRUE(truth[component].ok() && fixedPosition[component].ok() && baseline[component].ok());
     }
-    auto bitsAt = [](const RenderResult& r, size_t pixel) {
-      uint32_t bits = 0;
-      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
-      float f;
-      std::memcpy(&f, &bits, 4);
-      return double(f);
-    };
     double worstTruth = 0, worstFix = 0;
     size_t pixels = 0, outside = 0, baselineOutside = 0;
     for (uint32_t y = 0; y < kSize; ++y)
@@ -814,9 +820,7 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
         ++pixels;
         const double nx = (x + 0.5) / kSize * 2 - 1, ny = (y + 0.5) / kSize * 2 - 1, z = linear.depth.rgba[4 * i];
         const std::array<double, 4> v = {nx * z, ny * z, z, 1.0};
-        std::array<double, 4> exact{};
-        for (int r = 0; r < 4; ++r)
-          for (int c = 0; c < 4; ++c) exact[r] += stereoMatrix[c * 4 + r] * v[c];
+        const std::array<double, 4> exact = times(stereoMatrix, v);
         auto truthBound = screenToWorldBound(stereoF, nx, ny, z, false, 0.0, kConvergence);
         auto fixBound = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence);
         bool baselineWrong = false;
@@ -866,14 +870,7 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
     for (int component = 0; component < 3; ++component) {
       TranspileOptions options;
       options.defines = {"VIEW_COMPONENT=" + std::to_string(component)};
-      nlohmann::json pass;
-      TranspileOptions convert = options;
-      convert.target = TargetLanguage::Hlsl;
-      convert.eyeFrom3DMigoto = true;
-      convert.sourceTextFixes = true;
-      convert.eye.source = EyeSource::UniformBlock;
-      convert.eye.blockName = "stereoshift_StereoParams";
-      TranspileResult r = transpile(SourceFile{name, text}, convert);
+      TranspileResult r = transpile(SourceFile{name, text}, dumpConversion(options));
       ASSERT_TRUE(r.ok) << r.diagnostics.format();
       ASSERT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"].size(), 2u) << r.report.dump(2);
       EXPECT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"][1].value("construct", ""),
@@ -894,13 +891,6 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
       ASSERT_TRUE(fixedView[component].ok() && positionOnly[component].ok() && lightKept[component].ok());
       EXPECT_EQ(lightKept[component].pixels, lightWithout.pixels) << "a light's position must not be moved per eye";
     }
-    auto bitsAt = [](const RenderResult& r, size_t pixel) {
-      uint32_t bits = 0;
-      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
-      float f;
-      std::memcpy(&f, &bits, 4);
-      return double(f);
-    };
     const Mat4 monoF = toDouble(toFloat(monoInverse));
     double cameraLength = 0, offsetLength = 0;
     for (int c = 0; c < 3; ++c) {
@@ -916,9 +906,7 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
         if (g.depthValues[i] >= 1.0f) continue;
         ++pixels;
         std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
-        std::array<double, 4> exact{};
-        for (int r = 0; r < 4; ++r)
-          for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
+        const std::array<double, 4> exact = times(stereoInverse, v);
         std::array<double, 3> toCamera;
         double length = 0;
         for (int c = 0; c < 3; ++c) {
@@ -1006,13 +994,6 @@ void DeferredRender::checkViewRay(const char* name, const char* text, const char
     ASSERT_TRUE(report.contains("fixed")) << report.dump(2);
     EXPECT_EQ(report["fixed"][0].value("projection_scale", ""), dump ? "1 / cb0[0].x" : "1 / frame.invProjection[0][0]")
         << report.dump(2);
-    auto bitsAt = [](const RenderResult& r, size_t pixel) {
-      uint32_t bits = 0;
-      for (int b = 0; b < 4; ++b) bits |= uint32_t(r.pixels[4 * pixel + b]) << (8 * b);
-      float f;
-      std::memcpy(&f, &bits, 4);
-      return double(f);
-    };
     double worstFix = 0, worstBaseline = 0;
     size_t pixels = 0, baselineWrong = 0;
     for (uint32_t y = 0; y < kSize; ++y)
@@ -1021,9 +1002,7 @@ void DeferredRender::checkViewRay(const char* name, const char* text, const char
         if (g.depthValues[i] >= 1.0f) continue;
         ++pixels;
         std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
-        std::array<double, 4> exact{};
-        for (int r = 0; r < 4; ++r)
-          for (int c = 0; c < 4; ++c) exact[r] += stereoInverseProjection[c * 4 + r] * v[c];
+        const std::array<double, 4> exact = times(stereoInverseProjection, v);
         double length = 0, fixError = 0, baselineError = 0;
         for (int c = 0; c < 3; ++c) {
           double p = exact[c] / exact[3];

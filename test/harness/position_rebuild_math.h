@@ -61,6 +61,16 @@ inline Mat4 toDouble(const std::array<float, 16>& m) {
   return r;
 }
 
+// The bound on p = fl(q.xyz / q.w) from the bounds dq on q: |dp_i| <= (|dq_i| + |p_i| |dq_w|) / |q_w| + u |p_i|.
+inline std::array<double, 3> quotientBound(const std::array<double, 4>& q, const std::array<double, 4>& dq) {
+  std::array<double, 3> bound;
+  for (int i = 0; i < 3; ++i) {
+    const double p = q[i] / q[3];
+    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + kUnitRoundoff * std::abs(p);
+  }
+  return bound;
+}
+
 // First-order bound (unit roundoff u) on |p - p_exact| for the world position a lighting shader
 // rebuilds on the GPU, per component, from fp32 inputs:
 //   q = fl(A v): each component a 4-term dot product from entries A rounded once from the exact
@@ -96,12 +106,7 @@ inline std::array<double, 3> positionBound(const Mat4& a, const std::array<doubl
     }
     dq[3] = std::max(dq[3], dw);
   }
-  std::array<double, 3> bound;
-  for (int i = 0; i < 3; ++i) {
-    double p = q[i] / q[3];
-    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + u * std::abs(p);
-  }
-  return bound;
+  return quotientBound(q, dq);
 }
 
 // The same bound for the screen-to-world form, q = fl(M v') with v' = (fl(x z), fl(y z), z, 1) for
@@ -131,12 +136,7 @@ inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double 
       dq[i] += std::abs(a[i]) * dk + 2 * u * std::abs(a[i] * k) + u * std::abs(q[i]);
     }
   }
-  std::array<double, 3> bound;
-  for (int i = 0; i < 3; ++i) {
-    double p = q[i] / q[3];
-    bound[i] = (dq[i] + std::abs(p) * dq[3]) / std::abs(q[3]) + u * std::abs(p);
-  }
-  return bound;
+  return quotientBound(q, dq);
 }
 
 }  // namespace stereoshift::harness

@@ -89,11 +89,11 @@ ret
 
 // The screen-to-world form (Unreal's lights): the NDC times the linear view depth (read by ld at the
 // pixel), then (ndc * z, z, 1) through a matrix over the columns cb1[20..23].
-const char* kScreenToWorldPs = R"(ps_5_0
-dcl_globalFlags refactoringAllowed
-dcl_constantbuffer cb0[3], immediateIndexed
-dcl_constantbuffer cb1[24], immediateIndexed
-dcl_resource_texture2d (float,float,float,float) t0
+// The declarations and the first instructions both linear-depth shaders share: the linear view depth
+// read by ld at the pixel into r0.z, the NDC times it in r1.xy (`cb1[N]` declared by each).
+std::string linearDepthShader(int cb1Rows, const std::string& rest) {
+  return "ps_5_0\ndcl_globalFlags refactoringAllowed\ndcl_constantbuffer cb0[3], immediateIndexed\n"
+         "dcl_constantbuffer cb1[" + std::to_string(cb1Rows) + "], immediateIndexed\n" + R"(dcl_resource_texture2d (float,float,float,float) t0
 dcl_input_ps_siv linear noperspective v0.xy, position
 dcl_output o0.xyzw
 dcl_temps 3
@@ -103,38 +103,27 @@ ld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw
 mul r1.xy, v0.xyxx, cb0[2].zwzz
 mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)
 mul r1.xy, r0.zzzz, r1.xyxx
-mul r2.xyzw, r1.yyyy, cb1[21].xyzw
+)" + rest;
+}
+
+const std::string kScreenToWorldPs = linearDepthShader(24, R"(mul r2.xyzw, r1.yyyy, cb1[21].xyzw
 mad r2.xyzw, r1.xxxx, cb1[20].xyzw, r2.xyzw
 mad r2.xyzw, r0.zzzz, cb1[22].xyzw, r2.xyzw
 add r2.xyzw, r2.xyzw, cb1[23].xyzw
 div o0.xyz, r2.xyzx, r2.wwww
 mov o0.w, l(1.000000)
 ret
-)";
+)");
 
 // The view-ray form per component: the NDC times the linear view depth, x divided by P00 and y by
 // P11 (cb1[0].x, cb1[1].y), z = -depth.
-const char* kViewRayPs = R"(ps_5_0
-dcl_globalFlags refactoringAllowed
-dcl_constantbuffer cb0[3], immediateIndexed
-dcl_constantbuffer cb1[2], immediateIndexed
-dcl_resource_texture2d (float,float,float,float) t0
-dcl_input_ps_siv linear noperspective v0.xy, position
-dcl_output o0.xyzw
-dcl_temps 3
-ftoi r0.xy, v0.xyxx
-mov r0.zw, l(0,0,0,0)
-ld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw
-mul r1.xy, v0.xyxx, cb0[2].zwzz
-mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)
-mul r1.xy, r0.zzzz, r1.xyxx
-div r2.x, r1.x, cb1[0].x
+const std::string kViewRayPs = linearDepthShader(2, R"(div r2.x, r1.x, cb1[0].x
 div r2.y, r1.y, cb1[1].y
 mov r2.z, -r0.z
 mov o0.xyz, r2.xyzx
 mov o0.w, l(1.000000)
 ret
-)";
+)");
 
 constexpr uint32_t kSize = 256;
 constexpr float kSeparation = 0.06f, kConvergence = 4.0f;
@@ -288,7 +277,7 @@ TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
   AsmShiftResult converted = shiftAssembly(kScreenToWorldPs, {});
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
   EXPECT_NE(converted.output.find("add r3.w, |r0.z|, -r3.y"), std::string::npos) << converted.output;
-  checkByExecution(kScreenToWorldPs, false, "asm screen to world", true);
+  checkByExecution(kScreenToWorldPs.c_str(), false, "asm screen to world", true);
 }
 
 // The view ray, per eye on 1024 pixel centres with view depths 1.5 to 60: the view-space x of the
