@@ -383,6 +383,15 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   EXPECT_EQ(u.output, uv);
   EXPECT_NE(u.whyUnchanged.find("left for a person"), std::string::npos) << u.whyUnchanged;
 
+  // t125 taken by another resource: the correction cannot read StereoParams there; the pixel shader
+  // is copied with the reason, as it was before it could be corrected (not refused).
+  std::string clash = kDeferredMadPs;
+  clash.replace(clash.find("dcl_input_ps_siv"), 0, "dcl_resource_buffer (float,float,float,float) t125\n");
+  AsmShiftResult c = shiftAssembly(clash, {});
+  ASSERT_TRUE(c.ok) << c.error.message;
+  EXPECT_EQ(c.output, clash);
+  EXPECT_NE(c.whyUnchanged.find("not corrected (line"), std::string::npos) << c.whyUnchanged;
+
   // --no-deferred-unprojection: copied.
   AsmShiftResult off = shiftAssembly(kDeferredMadPs, {}, false);
   EXPECT_TRUE(off.corrections.empty());

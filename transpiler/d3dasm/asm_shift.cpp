@@ -307,8 +307,7 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
 
 // The correction of one view ray (see asm_unprojection.h), after the instruction computing x.
 std::vector<std::string> rayBlock(const AsmViewRay& r, const std::string& rS, bool sm5) {
-  char scale[48];
-  std::snprintf(scale, sizeof scale, "%s", floatLiteral(std::abs(r.scale)).c_str());
+  const std::string scale = floatLiteral(std::abs(r.scale));
   std::vector<std::string> block = {
       "this eye's view-space x (line " + std::to_string(r.lineNumber) + ": x = ndc.x * depth * " +
           (r.divides ? "(1 / " + r.element + ")" : r.element) + ")",
@@ -330,8 +329,12 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
     result.whyUnchanged = std::move(why);
     return result;
   };
+  // A pixel shader was always copied before it could be corrected: a declaration the edit could not
+  // work with (t125 declared as another resource) leaves it copied, with the reason, not refused.
   Declarations d;
-  if (!readDeclarations(text, &d, &result.error)) return result;
+  AsmError declarationError;
+  if (!readDeclarations(text, &d, &declarationError))
+    return unchanged("not corrected (line " + std::to_string(declarationError.line) + ": " + declarationError.message + ")");
   if (size_t line = readsStereoParams(text)) {
     result.alreadyStereo = true;
     return unchanged("line " + std::to_string(line) + " reads 3Dmigoto's StereoParams (t125): a stereo fix already, left as it is");
