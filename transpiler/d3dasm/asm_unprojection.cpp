@@ -84,6 +84,8 @@ Linear sum(Linear a, const Linear& b) {
   return folded;
 }
 
+constexpr size_t kMaxFactors = 8;
+
 class Evaluator {
  public:
   explicit Evaluator(const Program::Impl& program) : p_(program) {}
@@ -229,13 +231,16 @@ class Evaluator {
         } else if (op.code == Code::Mul) {
           form = product(a, b);
           if (!form && !op.saturate && a.value >= 0 && b.value >= 0) {
-            // A product of two values: a new term that remembers its factors.
+            // A product of two values: a new term that remembers its factors (a handful at most: a
+            // chain that squares a value again and again stays linear in size, its product an atom).
             const int value = fresh(sources, current_);
+            std::vector<int> factors;
             for (int factor : {a.value, b.value}) {
               const auto& inner = values_[factor].factors;
-              if (inner.empty()) values_[value].factors.push_back(factor);
-              else values_[value].factors.insert(values_[value].factors.end(), inner.begin(), inner.end());
+              if (inner.empty()) factors.push_back(factor);
+              else factors.insert(factors.end(), inner.begin(), inner.end());
             }
+            if (factors.size() <= kMaxFactors) values_[value].factors = std::move(factors);
             write(d, c, value);
             continue;
           }
