@@ -36,8 +36,18 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
     const SourceInfo& info = r.context.source;
     HlslSpliceResult spliced = splicePixelCorrections(r.input.contents, r.context.record.deferred, info.entryPoint);
     if (!spliced.ok) {
-      diags.error(r.input.path, spliced.line, spliced.column, spliced.error);
-      result.status = EmitResult::Failed;
+      // The shader is fine in mono, and was copied before it could be corrected: a correction the
+      // text cannot carry leaves it as it is, said where (a person can place it by hand), never
+      // loses it from a tree conversion.
+      diags.add(Diagnostic{Severity::Warning, r.input.path, spliced.line, spliced.column,
+                           spliced.error + "; the pixel shader is copied unchanged (mono), for a person to correct"});
+      result.output = r.input.contents;
+      result.copied = true;
+      facts.route = name();
+      // The deferred pass's entries say what was found; the note says none of it was written.
+      facts.notes.push_back("not corrected: " + spliced.error + " (line " + std::to_string(spliced.line) +
+                            "); the corrections listed under deferred-unprojection were not written");
+      result.status = EmitResult::Emitted;
       return result;
     }
     result.output = std::move(spliced.text);
