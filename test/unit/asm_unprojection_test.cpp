@@ -325,6 +325,100 @@ TEST(AsmUnprojection, ViewRayCorrectedByExecution) {
   }
 }
 
+// The view vector from a camera (cb1[24]) to the rebuilt position, normalized: the same deferred
+// pass as kDeferredMadPs, its output the vector specular and reflections start from.
+const std::string kViewVectorPs = [] {
+  std::string text = kDeferredMadPs;
+  const std::string divide = "div o0.xyz, r1.xyzx, r1.wwww\nmov o0.w, l(1.000000)\n";
+  text.replace(text.find(divide), divide.size(),
+               "div r1.xyz, r1.xyzx, r1.wwww\nadd r1.xyz, -r1.xyzx, cb1[24].xyzx\ndp3 r0.w, r1.xyzx, r1.xyzx\n"
+               "rsq r0.w, r0.w\nmul o0.xyz, r0.wwww, r1.xyzx\nmov o0.w, l(1.000000)\n");
+  text.replace(text.find("cb1[24], immediateIndexed"), 25, "cb1[25], immediateIndexed");
+  return text;
+}();
+
+// This eye's camera in assembly, per eye on 1024 pixel centres: the converted shader (mono matrix,
+// StereoParams, cb1[24] the mono camera) against normalize(C_eye - p) with C_eye the projection
+// centre of the eye's exact stereo matrix (computed here on its own), within the first-order bound
+// of the Vulkan check (2 (|dp| + |dC|) / |C_eye - p| + 8u); the position-only correction (the camera
+// block dropped) beyond it at every pixel; with a light's position in cb1[24] instead, the output
+// bit for bit the position-only one.
+TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) {
+  AsmShiftResult converted = shiftAssembly(kViewVectorPs, {});
+  ASSERT_TRUE(converted.ok) << converted.error.message;
+  ASSERT_EQ(converted.corrections.size(), 2u) << converted.whyUnchanged;
+  EXPECT_EQ(undoAssemblyEdits(converted.output), kViewVectorPs);
+  std::string positionOnly = converted.output;
+  const size_t from = positionOnly.find("// ---- stereoshift: this eye's camera");
+  ASSERT_NE(from, std::string::npos) << converted.output;
+  const std::string end = "// ---- end stereoshift ----\n";
+  positionOnly.erase(from, positionOnly.find(end, from) + end.size() - from);
+  auto fixed = decoded(converted.output), withoutCamera = decoded(positionOnly);
+  ASSERT_TRUE(fixed && withoutCamera);
+  const Mat4 viewMatrix = view(), monoInverse = harness::inverse(harness::multiply(projection(0), viewMatrix));
+  const Mat4 inverseView = harness::inverse(viewMatrix);
+  const Vec4 camera = vec(float(inverseView[12]), float(inverseView[13]), float(inverseView[14]), 0.0f);
+  const Vec4 light = vec(0.8f, 1.5f, -5.0f, 0.0f);
+  const Mat4 monoF = harness::toDouble(harness::toFloat(monoInverse));
+  const double u = harness::kUnitRoundoff;
+  for (double eye : {-1.0, 1.0}) {
+    const Mat4 stereoInverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
+    // The eye's projection centre: the world point whose stereo clip coordinates are (0, 0, p32, 0).
+    std::array<double, 3> eyeCamera;
+    for (int c = 0; c < 3; ++c) eyeCamera[c] = stereoInverse[8 + c] / stereoInverse[11];
+    const float es = static_cast<float>(eye * kSeparation);
+    const Vec4 stereoParams = vec(es, kConvergence, static_cast<float>(eye), 0.0f);
+    double cameraLength = 0, offsetLength = 0;
+    for (int c = 0; c < 3; ++c) {
+      cameraLength += std::pow(floatOf(camera[c]), 2);
+      offsetLength += std::pow(kSeparation * kConvergence * monoInverse[c], 2);
+    }
+    const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength));
+    size_t pixels = 0, outside = 0, monoOutside = 0, lightMoved = 0;
+    double worst = 0;
+    std::vector<Vec4> cb1 = constants(monoInverse, false);
+    cb1.push_back(camera);
+    std::vector<Vec4> withLight = cb1;
+    withLight[24] = light;
+    for (uint32_t py = 4; py < kSize; py += 8)
+      for (uint32_t px = 4; px < kSize; px += 8) {
+        const double w = 1.5 + 58.5 * std::fmod((px * 37 + py * 61) / 997.0, 1.0);
+        const Mat4 monoProjection = projection(0);
+        const float depth = static_cast<float>((monoProjection[10] * -w + monoProjection[14]) / w);
+        const Pixel pixel{px + 0.5f, py + 0.5f, depth};
+        const std::array<double, 4> v = {2.0 * pixel.x / kSize - 1.0, 1.0 - 2.0 * pixel.y / kSize, depth, 1.0};
+        std::array<double, 4> exact{};
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
+        std::array<double, 3> toCamera;
+        double length = 0;
+        for (int c = 0; c < 3; ++c) {
+          toCamera[c] = eyeCamera[c] - exact[c] / exact[3];
+          length += toCamera[c] * toCamera[c];
+        }
+        length = std::sqrt(length);
+        auto positionError = harness::positionBound(monoF, v, true, es, kConvergence);
+        const double bound = 2 * (std::hypot(positionError[0], positionError[1], positionError[2]) + cameraBound) / length + 8 * u;
+        auto fix = rebuild(*fixed, pixel, cb1, stereoParams), mono = rebuild(*withoutCamera, pixel, cb1, stereoParams);
+        bool monoWrong = false;
+        for (int c = 0; c < 3; ++c) {
+          const double expected = toCamera[c] / length;
+          worst = std::max(worst, std::abs(fix[c] - expected) / bound);
+          outside += std::abs(fix[c] - expected) > bound;
+          monoWrong |= std::abs(mono[c] - expected) > bound;
+        }
+        monoOutside += monoWrong;
+        lightMoved += rebuild(*fixed, pixel, withLight, stereoParams) != rebuild(*withoutCamera, pixel, withLight, stereoParams);
+        ++pixels;
+      }
+    std::cout << "[asm view vector] eye " << eye << ": " << pixels << " pixels, error / first-order bound: fix " << worst
+              << "; mono camera beyond it at " << monoOutside << " pixels\n";
+    EXPECT_EQ(outside, 0u) << "eye " << eye;
+    EXPECT_EQ(monoOutside, pixels) << "eye " << eye << ": the mono camera's view vector should be wrong";
+    EXPECT_EQ(lightMoved, 0u) << "eye " << eye << ": a light's position must not be moved per eye";
+  }
+}
+
 // What the correction found, and where it put it.
 TEST(AsmUnprojection, FindsTheMatrixTheDepthAndTheRegisters) {
   AsmShiftResult mad = shiftAssembly(kDeferredMadPs, {});

@@ -321,6 +321,34 @@ std::vector<std::string> rayBlock(const AsmViewRay& r, const std::string& rS, bo
   return block;
 }
 
+// This eye's camera for a view vector to a rebuilt position (see asm_unprojection.h), after the
+// instruction computing it: rT.xyz the camera InvM shows, each compared with c (within 1e-4 of
+// |camera| + 1), and v += s.x * s.y * InvM[column of x] where all three agree.
+std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojection::Camera& c, const std::string& rS,
+                                     const std::string& rT, bool sm5) {
+  std::vector<std::string> block = {
+      "this eye's camera (line " + std::to_string(c.lineNumber) +
+          ": v = camera - position, the camera the position's matrix shows)",
+      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+  };
+  const char lanes[] = "xyz";
+  for (int i = 0; i < 3; ++i) {
+    const std::string t = rT + "." + lanes[i];
+    block.push_back("div " + t + ", " + c.columnZ[i] + ", " + c.columnZ[3]);
+    block.push_back("add " + rT + ".w, " + c.camera[i] + ", -" + t);
+    block.push_back("mad " + rS + ".z, |" + t + "|, l(0.000100), l(0.000100)");
+    block.push_back("ge " + t + ", " + rS + ".z, |" + rT + ".w|");
+  }
+  block.push_back("and " + rT + ".x, " + rT + ".x, " + rT + ".y");
+  block.push_back("and " + rT + ".x, " + rT + ".x, " + rT + ".z");
+  block.push_back("mul " + rS + ".z, " + rS + ".x, " + rS + ".y");
+  for (int i = 0; i < 3; ++i) {
+    block.push_back("mad " + rT + ".w, " + rS + ".z, " + u.column[i] + ", " + c.v[i]);
+    block.push_back("movc " + c.v[i] + ", " + rT + ".x, " + rT + ".w, " + c.v[i]);
+  }
+  return block;
+}
+
 // A pixel shader: its position rebuilds corrected, or the text as it is with why.
 AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text, AsmShiftResult result) {
   auto unchanged = [&](std::string why) {
@@ -354,9 +382,10 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
   }
   if (found.empty() && all.rays.empty())
     return unchanged(text.model.text + ": no position rebuilt from depth through constant-buffer rows, nothing to correct");
-  const std::string rS = "r" + std::to_string(d.temps);
+  const std::string rS = "r" + std::to_string(d.temps), rT = "r" + std::to_string(d.temps + 1);
   result.scratchTemp = rS;
   Edits edits;
+  bool cameras = false;
   for (const AsmUnprojection& u : found) {
     std::vector<std::string>& after = edits.after[u.afterLine];
     if (!after.empty()) continue;  // two rebuilds completed by one instruction: corrected once
@@ -370,6 +399,18 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
                                                               : "position rebuilt through a matrix held as four constant-buffer ") +
                                       u.storage,
                                   u.rows, u.depth, u.ndc, fix, u.firstLineNumber, u.lastLineNumber});
+    for (const auto& c : u.cameras) {
+      std::vector<std::string>& at = edits.after[c.afterLine];
+      if (!at.empty()) continue;
+      at = cameraBlock(u, c, rS, rT, text.model.major >= 5);
+      cameras = true;
+      result.corrections.push_back({"view vector camera - rebuilt position (specular, Fresnel, reflections)", u.rows, u.depth,
+                                    u.ndc,
+                                    "v + s.x*s.y*(" + u.column[0] + ", " + u.column[1] + ", " + u.column[2] + ") after line " +
+                                        std::to_string(c.lineNumber) + ", where " + c.camera[0].substr(0, c.camera[0].rfind('.')) +
+                                        " is the camera the matrix shows (checked at run time)",
+                                    c.lineNumber, c.lineNumber});
+    }
   }
   for (const AsmViewRay& r : all.rays) {
     std::vector<std::string>& after = edits.after[r.afterLine];
@@ -382,7 +423,10 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
                                       std::to_string(r.lineNumber),
                                   r.lineNumber, r.lineNumber});
   }
-  declareScratch(text, d, 1, "a temporary for this eye's position rebuild (" + rS + ")", edits, result);
+  declareScratch(text, d, cameras ? 2 : 1,
+                 cameras ? "two temporaries for this eye's position rebuild and camera (" + rS + ", " + rT + ")"
+                         : "a temporary for this eye's position rebuild (" + rS + ")",
+                 edits, result);
   result.sites = static_cast<int>(result.corrections.size());
   result.output = render(text, edits);
   result.ok = true;

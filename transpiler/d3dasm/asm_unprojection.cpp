@@ -46,6 +46,7 @@ struct Value {
   size_t op = SIZE_MAX;          // the instruction that wrote it (SIZE_MAX: an input, or unknown)
   std::optional<std::pair<uint32_t, uint32_t>> at;  // the temporary component it was written to
   std::vector<int> factors;      // a product of values (a new term): the values multiplied
+  std::pair<int, int> quotient{-1, -1};  // a division of two values: numerator, denominator
 };
 
 // An operand's component as the evaluation reads it.
@@ -254,6 +255,13 @@ class Evaluator {
             form = Linear{{f[0].term, {e.element, f[0].coefficient.scale / e.scale, true}}};
           else if (a.value >= 0)
             form = Linear{{a.value, {e.element, 1.0f / e.scale, true}}};
+        } else if (op.code == Code::Div && !op.saturate && a.value >= 0 && b.value >= 0 && !isConstant(b.form)) {
+          // A quotient of two values (the perspective divide `q.xyz / q.w`): a new term that
+          // remembers them.
+          const int value = fresh(sources, current_);
+          values_[value].quotient = {a.value, b.value};
+          write(d, c, value);
+          continue;
         } else if (op.code == Code::Mad) {
           Read e = read(op.src[2], c);
           sources.merge(joined({&e}));
@@ -571,6 +579,56 @@ bool notKnownNdc(const std::vector<Value>& values, int term) {
          std::all_of(inner.sources.begin(), inner.sources.end(), [](const Source& s) { return s.kind == Source::Input; });
 }
 
+// The view vectors c - q.xyz / q.w of a rebuild (AsmUnprojection::Camera): x, y and z written by
+// one instruction, each a constant-buffer element minus the quotient of q's component by q.w.
+std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values, const Program::Impl& p,
+                                               const std::map<size_t, size_t>& lineIndex,
+                                               const std::array<const Member*, 4>& q, const Roles& role) {
+  // InvM's columns of x and z must be plain elements (no constant folded into them).
+  std::array<std::string, 4> columnZ;
+  for (size_t i = 0; i < 4; ++i) {
+    const Coefficient& x = q[i]->byTerm.at(role.x);
+    const Coefficient& z = q[i]->byTerm.at(role.depth);
+    if (x.scale != 1.0f || z.scale != 1.0f || x.inverse || z.inverse) return {};
+    columnZ[i] = elementText(*z.element);
+  }
+  std::map<size_t, std::array<int, 3>> byOp;  // op -> the value of v.x, v.y, v.z it wrote
+  for (int id = 0; id < static_cast<int>(values.size()); ++id) {
+    const Value& v = values[id];
+    if (v.op == SIZE_MAX || !v.at || v.form.size() != 2) continue;
+    const Part* camera = nullptr;
+    const Part* position = nullptr;
+    for (const Part& part : v.form) {
+      if (part.term < 0 && part.coefficient.element && !part.coefficient.inverse && part.coefficient.scale == 1.0f) camera = &part;
+      else if (part.term >= 0 && !part.coefficient.element && part.coefficient.scale == -1.0f) position = &part;
+    }
+    if (!camera || !position) continue;
+    const auto [numerator, denominator] = values[position->term].quotient;
+    if (denominator != q[3]->value) continue;
+    for (int i = 0; i < 3; ++i)
+      if (numerator == q[i]->value) {
+        auto [it, inserted] = byOp.try_emplace(v.op, std::array<int, 3>{-1, -1, -1});
+        it->second[i] = id;
+      }
+  }
+  std::vector<AsmUnprojection::Camera> cameras;
+  for (const auto& [op, ids] : byOp) {
+    if (std::find(ids.begin(), ids.end(), -1) != ids.end()) continue;
+    AsmUnprojection::Camera c;
+    c.lineNumber = p.ops[op].line;
+    c.afterLine = lineIndex.at(c.lineNumber);
+    c.columnZ = columnZ;
+    for (int i = 0; i < 3; ++i) {
+      const Value& v = values[ids[i]];
+      c.v[i] = "r" + std::to_string(v.at->first) + "." + "xyzw"[v.at->second];
+      for (const Part& part : v.form)
+        if (part.term < 0) c.camera[i] = elementText(*part.coefficient.element);
+    }
+    cameras.push_back(std::move(c));
+  }
+  return cameras;
+}
+
 // View rays: the first value per term and axis (a later scaling is per eye through it), an x with a
 // y from the same depth, the depth still in its register at x.
 void collectViewRays(const std::vector<Value>& values, const Evaluator& evaluation, const Program::Impl& p,
@@ -692,6 +750,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
       u.depthRegister = "r" + std::to_string(z.at->first) + "." + "xyzw"[z.at->second];
     }
     u.ndc = "v" + std::to_string(role.input);
+    if (!role.scaled) u.cameras = camerasOf(values, p, lineIndex, q, role);
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });

@@ -48,6 +48,16 @@ struct AsmUnprojection {
   // q -= M[column of x] * s.x * (|z| - s.y) * sign(z), z read from `depthRegister` ("r1.x").
   bool scaledByDepth = false;
   std::string depthRegister;
+  // A view vector v = c - p from a camera position c (one constant-buffer vector) to the rebuilt
+  // position p = q.xyz / q.w, x, y and z written by one instruction: made this eye's by
+  // v += s.x * s.y * InvM[column of x].xyz where c is the camera InvM shows (its projection centre
+  // InvM[column of z].xyz / InvM[3][z], checked at run time; a light's position is left alone).
+  struct Camera {
+    size_t afterLine = 0, lineNumber = 0;
+    std::array<std::string, 3> v, camera;  // "r0.x"; "cb1[24].x"
+    std::array<std::string, 4> columnZ;    // InvM[i][z]
+  };
+  std::vector<Camera> cameras;
 };
 
 // The view-ray form spelled per component: a view-space x = ndc.x * depth * k with k one
