@@ -91,6 +91,19 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
     printErrorSummary(1);
     return 1;
   }
+  // A shader given to build is not a manifest: said so, not parsed as TOML.
+  if (manifestMode && fs::path(build.source).extension() != ".toml") {
+    std::cerr << build.source << ": error: build takes a source directory or a scene manifest (.toml), not a shader; "
+              << "convert one shader with `stereoshift " << build.source << " -o OUTPUT`\n";
+    printErrorSummary(1);
+    return 1;
+  }
+  // An output that is a file stops the build before anything is converted.
+  if (fs::exists(outDir, ec) && !fs::is_directory(outDir, ec)) {
+    std::cerr << outDir.string() << ": error: the output must be a directory, and this is a file; nothing was converted\n";
+    printErrorSummary(1);
+    return 1;
+  }
 
   // 1. plan
   Plan plan = manifestMode ? planManifest(build.source, outDir, base) : planDirectory(build.source, outDir, base);

@@ -144,6 +144,25 @@ std::optional<std::string> notAnInjectableName(const std::string& name) {
 
 namespace {
 
+// --target-version must be a version of the output language (of any of the three source languages
+// when the output is the input's own): 7 or 333 would reach the back end and fail there, or worse
+// be written into the output.
+std::optional<std::string> targetVersionProblem(TargetLanguage target, std::optional<int> version) {
+  static const std::set<int> glsl = {110, 120, 130, 140, 150, 330, 400, 410, 420, 430, 440, 450, 460};
+  static const std::set<int> essl = {100, 300, 310, 320};
+  static const std::set<int> hlsl = {40, 41, 50, 51, 60, 61, 62, 63, 64, 65, 66, 67};
+  if (!version) return std::nullopt;
+  const int v = *version;
+  const bool ok = target == TargetLanguage::Glsl   ? glsl.count(v) > 0
+                  : target == TargetLanguage::Essl ? essl.count(v) > 0
+                  : target == TargetLanguage::Hlsl ? hlsl.count(v) > 0
+                  : target == TargetLanguage::Auto ? glsl.count(v) + essl.count(v) + hlsl.count(v) > 0
+                                                   : true;  // MSL and SPIR-V versions are the back end's to check
+  if (ok) return std::nullopt;
+  return "--target-version " + std::to_string(v) + " is no version of the output language (GLSL 110-460, ESSL 100, " +
+         "300, 310, 320, HLSL shader models 40, 41, 50, 51, 60-67)";
+}
+
 std::string unknownValue(const std::string& option, const std::string& value) {
   return "unknown " + option + " '" + value + "' " + validValues(option);
 }
@@ -258,6 +277,7 @@ std::optional<std::string> finishShiftOptions(CliOptions& o) {
   o.t.eye.hlslRegister = o.hlslRegister;
   o.t.eye.glBinding = o.glBinding;
   o.t.targetVersion = o.targetVersion;
+  if (auto problem = targetVersionProblem(o.t.target, o.targetVersion)) return problem;
   for (const auto& p : o.t.onlyPasses)
     if (!findPass(p)) return unknownValue("--pass", p);
   return std::nullopt;

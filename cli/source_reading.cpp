@@ -4,6 +4,11 @@
 #include "cli/test_hook.h"
 #include "transpiler/source/file_io.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -11,6 +16,23 @@
 namespace fs = std::filesystem;
 
 namespace stereoshift {
+
+namespace {
+
+// Why `path` cannot be read, in the words the system uses.
+std::string unreadableBecause(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) return "no such file";
+  if (fs::is_directory(status)) return "it is a directory";
+  errno = 0;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::strerror(errno);
+  ::close(fd);
+  return "reading it failed";
+}
+
+}  // namespace
 
 int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* sources, std::ostream& log) {
   int failed = 0;
@@ -26,7 +48,7 @@ int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* 
       text << std::cin.rdbuf();
       s.contents = text.str();
     } else if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
-      log << p << ": error: cannot read file\n";
+      log << p << ": error: cannot read file: " << unreadableBecause(p) << "\n";
       ++failed;
       continue;
     }
