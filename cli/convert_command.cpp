@@ -7,6 +7,8 @@
 #include "cli/unified_diff.h"
 #include "transpiler/source/file_io.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -76,6 +78,23 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
   };
   std::vector<std::string> outputs;
   for (size_t i = 0; i < paths.size(); ++i) outputs.push_back(outputFor(i));
+  const bool shaderOnStdout = std::any_of(outputs.begin(), outputs.end(), [](const std::string& out) {
+    return out.empty() || out == "-";
+  });
+  // Two things on standard output cannot be told apart by whoever reads it.
+  if (shaderOnStdout && o.reportPath == "-" && !o.diff) {
+    std::cerr << "stereoshift: error: the converted shader and the report (--report -) would both go to standard "
+                 "output: give -o FILE or --report FILE\n";
+    printErrorSummary(1);
+    return 2;
+  }
+  // SPIR-V words on a terminal are no use to anyone and can upset it.
+  if (shaderOnStdout && o.t.target == TargetLanguage::Spirv && !o.diff && ::isatty(STDOUT_FILENO)) {
+    std::cerr << "stereoshift: error: binary SPIR-V would be written to the terminal: give -o FILE, redirect standard "
+                 "output, or use --target spirv-asm\n";
+    printErrorSummary(1);
+    return 2;
+  }
   if (!o.depfile.empty()) outputs.push_back(o.depfile);
   if (!o.reportPath.empty()) outputs.push_back(o.reportPath);
   if (auto clash = outputThatIsAnInput(outputs, paths)) {

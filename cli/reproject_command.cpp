@@ -301,7 +301,7 @@ int runReprojectCommand(const ReprojectCliOptions& c) {
   if (!parsed.problems.empty()) {
     for (const auto& p : parsed.problems) std::cerr << "stereoshift: error: " << p << "\n";
     printErrorSummary(static_cast<int>(parsed.problems.size()));
-    return 1;
+    return 2;  // a usage error, as an unknown flag is
   }
   return generateAndWrite(c, parsed.base, parsed.targets);
 }
