@@ -107,11 +107,19 @@ class Evaluator {
  private:
   int fresh(std::set<Source> sources, size_t op) {
     const int id = static_cast<int>(values_.size());
-    values_.push_back({{{id, {std::nullopt, 1.0f}}}, std::move(sources), op, std::nullopt});
+    Value v;
+    v.form = {{id, {std::nullopt, 1.0f}}};
+    v.sources = std::move(sources);
+    v.op = op;
+    values_.push_back(std::move(v));
     return id;
   }
   int make(Linear form, std::set<Source> sources, size_t op) {
-    values_.push_back({std::move(form), std::move(sources), op, std::nullopt});
+    Value v;
+    v.form = std::move(form);
+    v.sources = std::move(sources);
+    v.op = op;
+    values_.push_back(std::move(v));
     return static_cast<int>(values_.size()) - 1;
   }
 
@@ -637,7 +645,8 @@ void collectViewRays(const std::vector<Value>& values, const Evaluator& evaluati
   for (int id = 0; id < static_cast<int>(values.size()); ++id)
     if (values[id].op != SIZE_MAX && values[id].at)
       if (auto c = rayCandidate(values, id)) rays.emplace(std::pair{c->term, c->axis}, *c);
-  for (const auto& [key, c] : rays) {
+  for (const auto& entry : rays) {
+    const RayCandidate& c = entry.second;  // a named reference: a lambda below captures it
     if (c.axis != 0) continue;
     const bool hasY = std::any_of(rays.begin(), rays.end(), [&](const auto& other) {
       return other.second.axis == 1 && other.second.depth == c.depth && other.second.input == c.input;
