@@ -906,25 +906,15 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
         if (g.depthValues[i] >= 1.0f) continue;
         ++pixels;
         std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
-        const std::array<double, 4> exact = times(stereoInverse, v);
-        std::array<double, 3> toCamera;
-        double length = 0;
-        for (int c = 0; c < 3; ++c) {
-          toCamera[c] = eyeCamera[c] - exact[c] / exact[3];
-          length += toCamera[c] * toCamera[c];
-        }
-        length = std::sqrt(length);
-        auto positionError = positionBound(monoF, v, true, eye * kSeparation, kConvergence);
-        const double positionLength =
-            std::sqrt(positionError[0] * positionError[0] + positionError[1] * positionError[1] + positionError[2] * positionError[2]);
-        const double bound = 2 * (positionLength + cameraBound) / length + 8 * u;
+        const ViewVector expected = viewVectorTo(eyeCamera, times(stereoInverse, v),
+                                                 positionBound(monoF, v, true, eye * kSeparation, kConvergence), cameraBound);
+        const double bound = expected.bound;
         bool monoWrong = false;
         for (int c = 0; c < 3; ++c) {
-          const double expected = toCamera[c] / length;
-          const double error = std::abs(bitsAt(fixedView[c], i) - expected);
+          const double error = std::abs(bitsAt(fixedView[c], i) - expected.direction[c]);
           worst = std::max(worst, error / bound);
           outside += error > bound;
-          monoWrong |= std::abs(bitsAt(positionOnly[c], i) - expected) > bound;
+          monoWrong |= std::abs(bitsAt(positionOnly[c], i) - expected.direction[c]) > bound;
         }
         monoOutside += monoWrong;
       }

@@ -139,4 +139,23 @@ inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double 
   return quotientBound(q, dq);
 }
 
+// The view vector from `eyeCamera` to the exact rebuilt point `exact` (homogeneous), normalized,
+// and the first-order bound on a shader's normalized vector to it: the rebuilt position's bound
+// `positionError` and the camera's `cameraError`, over the distance, twice (a normalized vector moves
+// by at most twice the relative change of the vector), plus 8u for the normalization.
+struct ViewVector {
+  std::array<double, 3> direction;
+  double bound = 0;
+};
+inline ViewVector viewVectorTo(const std::array<double, 3>& eyeCamera, const std::array<double, 4>& exact,
+                               const std::array<double, 3>& positionError, double cameraError) {
+  std::array<double, 3> toCamera;
+  for (int c = 0; c < 3; ++c) toCamera[c] = eyeCamera[c] - exact[c] / exact[3];
+  const double length = std::hypot(toCamera[0], toCamera[1], toCamera[2]);
+  ViewVector v;
+  for (int c = 0; c < 3; ++c) v.direction[c] = toCamera[c] / length;
+  v.bound = 2 * (std::hypot(positionError[0], positionError[1], positionError[2]) + cameraError) / length + 8 * kUnitRoundoff;
+  return v;
+}
+
 }  // namespace stereoshift::harness

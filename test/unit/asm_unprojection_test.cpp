@@ -390,19 +390,13 @@ TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) {
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
-        std::array<double, 3> toCamera;
-        double length = 0;
-        for (int c = 0; c < 3; ++c) {
-          toCamera[c] = eyeCamera[c] - exact[c] / exact[3];
-          length += toCamera[c] * toCamera[c];
-        }
-        length = std::sqrt(length);
-        auto positionError = harness::positionBound(monoF, v, true, es, kConvergence);
-        const double bound = 2 * (std::hypot(positionError[0], positionError[1], positionError[2]) + cameraBound) / length + 8 * u;
+        const harness::ViewVector expectedVector =
+            harness::viewVectorTo(eyeCamera, exact, harness::positionBound(monoF, v, true, es, kConvergence), cameraBound);
+        const double bound = expectedVector.bound;
         auto fix = rebuild(*fixed, pixel, cb1, stereoParams), mono = rebuild(*withoutCamera, pixel, cb1, stereoParams);
         bool monoWrong = false;
         for (int c = 0; c < 3; ++c) {
-          const double expected = toCamera[c] / length;
+          const double expected = expectedVector.direction[c];
           worst = std::max(worst, std::abs(fix[c] - expected) / bound);
           outside += std::abs(fix[c] - expected) > bound;
           monoWrong |= std::abs(mono[c] - expected) > bound;
