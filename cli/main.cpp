@@ -80,6 +80,21 @@ static int runCommandLine(int argc, char** argv) {
       printErrorSummary(1);
       return 2;
     }
+    // verify writes nothing but its verdict: --report and --diff (shared with the conversion's
+    // options) would be silently ignored, so they are refused (-o and --depfile are not verify
+    // options at all; --target is read: the conversion it checks is the one to that language).
+    std::vector<std::string> ignored;
+    if (!v.reportPath.empty()) ignored.push_back("--report");
+    if (v.diff) ignored.push_back("--diff");
+    if (!ignored.empty()) {
+      std::string list;
+      for (const auto& option : ignored) list += (list.empty() ? "" : ", ") + option;
+      std::cerr << "stereoshift: error: verify writes no output (it runs the conversion as SPIR-V on the device and "
+                   "prints its verdict; --json for a machine-readable one): "
+                << list << " would be ignored; convert with `stereoshift FILE ...` for those\n";
+      printErrorSummary(1);
+      return 2;
+    }
     std::vector<SourceFile> sources;
     if (int failed = readSources(v.inputs, &sources, std::cerr)) {
       printErrorSummary(failed);
