@@ -253,6 +253,11 @@ class LineMap {
   std::map<uint32_t, uint32_t> lines_;
 };
 
+// What one lane of a value is computed from (a vector's lane, a scalar whole).
+Sources sourcesOf(SourceAnalysis& flow, const Decomposer& d, Lane at) {
+  return flow.value(at.id, d.isVector(at.id) ? AccessPath{at.lane} : AccessPath{});
+}
+
 // A uniform element as the source names it: "cb1[20].x" (an HLSL cbuffer's members are global
 // names), with the coefficient's sign or scale.
 std::string elementText(const spirv::Module& m, const Coefficient& c) {
@@ -500,7 +505,7 @@ bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<La
   uint32_t lanes = 0;
   std::set<std::string> inputs;
   for (const auto& [term, c] : terms) {
-    Sources s = flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
+    Sources s = sourcesOf(flow, d, term);
     if (!s.varying || s.fragCoord || s.texel || s.other || std::popcount(s.inputLanes) != 1 || (lanes & s.inputLanes))
       return false;
     lanes |= s.inputLanes;
@@ -514,7 +519,7 @@ bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   const Linear& f = d.form(term);
   if (f.size() != 1 || !f[0].term) return false;
   const Lane inner = *f[0].term;
-  Sources s = flow.value(inner.id, d.isVector(inner.id) ? AccessPath{inner.lane} : AccessPath{});
+  Sources s = sourcesOf(flow, d, inner);
   return (s.fragCoord || s.varying) && !s.arithmetic;
 }
 
@@ -556,7 +561,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       return (s.fragCoord || s.varying) && s.texel && !s.other && (s.inputLanes & 3u) == lane;
     };
     for (const auto& [term, c] : q[3]->byTerm) {
-      Sources s = flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
+      Sources s = sourcesOf(flow, d, term);
       const bool plainX = screen(s, 1u), plainY = screen(s, 2u), scaledX = scaledScreen(s, 1u), scaledY = scaledScreen(s, 2u);
       if ((plainX || scaledX) && !x && (!scaled || *scaled == scaledX)) x = term, p.x = s, scaled = scaledX;
       else if ((plainY || scaledY) && !y && (!scaled || *scaled == scaledY)) y = term, p.y = s, scaled = scaledY;
@@ -569,7 +574,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
         seen.interpolated = true;
         seen.rows = rowsText(registers, q);
         for (const auto& [term, c] : q[3]->byTerm)
-          seen.x |= flow.value(term.id, d.isVector(term.id) ? AccessPath{term.lane} : AccessPath{});
+          seen.x |= sourcesOf(flow, d, term);
         for (uint32_t i = 0; i < 4; ++i)
           if (q[i]) seen.fix.afterLine = std::max(seen.fix.afterLine, lines.lineOf(q[i]->at.id));
         found.push_back(std::move(seen));
@@ -636,7 +641,7 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
   at = d.canonical(at);
   const Instruction* def = d.definition(at.id);
   auto lane = [&](uint32_t id) { return Lane{id, d.isVector(id) ? at.lane : 0}; };
-  bool whole = texelOnly(flow.value(at.id, d.isVector(at.id) ? AccessPath{at.lane} : AccessPath{}));
+  bool whole = texelOnly(sourcesOf(flow, d, at));
   if (def && depth < 16 && !whole) {
     switch (def->opcode) {
       case spv::OpFMul: case spv::OpFDiv:
@@ -671,7 +676,7 @@ bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth
   const Lane z = d.canonical(depth);
   for (const auto& [factor, divides] : f.factors) {
     if (d.constant(factor)) continue;
-    Sources s = flow.value(factor.id, d.isVector(factor.id) ? AccessPath{factor.lane} : AccessPath{});
+    Sources s = sourcesOf(flow, d, factor);
     if (!divides && factor == z) ++depths;
     else if ((s.fragCoord || s.varying) && !s.texel && !s.other) lanes |= s.inputLanes;
     else return false;
@@ -704,7 +709,7 @@ std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, La
       c.divides = divides;
       continue;
     }
-    Sources s = flow.value(factor.id, d.isVector(factor.id) ? AccessPath{factor.lane} : AccessPath{});
+    Sources s = sourcesOf(flow, d, factor);
     bool pixel = (s.fragCoord || s.varying) && !s.texel && !s.other;
     if (pixel && !divides && ((s.inputLanes & 3u) == 1u || (s.inputLanes & 3u) == 2u)) {
       if (++screens > 1) return std::nullopt;

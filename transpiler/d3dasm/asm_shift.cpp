@@ -213,13 +213,19 @@ bool readDeclarations(const AsmText& text, Declarations* d, AsmError* error) {
   return true;
 }
 
+// 3Dmigoto's StereoParams texel 0 into `rS` (x: separation with the eye's sign, y: convergence);
+// SM4.x has no ld_indexable.
+std::string stereoParamsLoad(const std::string& rS, bool sm5) {
+  return (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw";
+}
+
 // The block before each return or emit: read StereoParams into rS, shift rP.x into rS.x where the
 // cutoff lets it, write the position out.
 std::vector<std::string> shiftBlock(const std::string& out, const std::string& mask, const std::string& rP,
                                     const std::string& rS, bool sm5, const ShiftSpec& spec) {
   std::vector<std::string> shift = {
       "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)",
-      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      stereoParamsLoad(rS, sm5),
       "add " + rS + ".w, " + rP + ".w, -" + rS + ".y",
       "mad " + rS + ".w, " + rS + ".x, " + rS + ".w, " + rP + ".x",
       "ne " + rS + ".x, " + rS + ".x, l(0.000000)",
@@ -279,7 +285,7 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
   std::vector<std::string> block = {
       "this eye's position rebuild (" + lines + (u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over " : ": q = InvM * (ndc, depth, 1) over ") +
           u.rows + ")",
-      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      stereoParamsLoad(rS, sm5),
   };
   if (u.scaledByDepth) {
     // d = s.x * (|z| - s.y) * sign(z)
@@ -311,7 +317,7 @@ std::vector<std::string> rayBlock(const AsmViewRay& r, const std::string& rS, bo
   std::vector<std::string> block = {
       "this eye's view-space x (line " + std::to_string(r.lineNumber) + ": x = ndc.x * depth * " +
           (r.divides ? "(1 / " + r.element + ")" : r.element) + ")",
-      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      stereoParamsLoad(rS, sm5),
       "add " + rS + ".w, |" + r.depthRegister + "|, -" + rS + ".y",
       "mul " + rS + ".w, " + rS + ".w, " + rS + ".x",
       std::string(r.divides ? "div " : "mul ") + rS + ".w, " + rS + ".w, |" + r.element + "|",
@@ -329,7 +335,7 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
   std::vector<std::string> block = {
       "this eye's camera (line " + std::to_string(c.lineNumber) +
           ": v = camera - position, the camera the position's matrix shows)",
-      (sm5 ? "ld_indexable(texture2d)(float,float,float,float) " : "ld ") + rS + ".xyzw, l(0, 0, 0, 0), t125.xyzw",
+      stereoParamsLoad(rS, sm5),
   };
   const char lanes[] = "xyz";
   for (int i = 0; i < 3; ++i) {

@@ -49,6 +49,9 @@ struct Value {
   std::pair<int, int> quotient{-1, -1};  // a division of two values: numerator, denominator
 };
 
+// A temporary's component as the text names it: "r2.x".
+std::string registerText(std::pair<uint32_t, uint32_t> at) { return "r" + std::to_string(at.first) + "." + "xyzw"[at.second]; }
+
 // An operand's component as the evaluation reads it.
 struct Read {
   Linear form;
@@ -71,17 +74,15 @@ Linear sum(Linear a, const Linear& b) {
   a.insert(a.end(), b.begin(), b.end());
   // Constants folded into one part; a zero constant dropped.
   float constant = 0.0f;
-  bool any = false;
   Linear folded;
   for (const auto& part : a) {
     if (part.term < 0 && !part.coefficient.element) {
       constant += part.coefficient.scale;
-      any = true;
     } else {
       folded.push_back(part);
     }
   }
-  if (any && constant != 0.0f) folded.push_back({-1, {std::nullopt, constant}});
+  if (constant != 0.0f) folded.push_back({-1, {std::nullopt, constant}});
   return folded;
 }
 
@@ -95,12 +96,15 @@ class Evaluator {
     for (size_t k = 0; k < p_.ops.size(); ++k) step(k);
   }
   const std::vector<Value>& values() const { return values_; }
-  // The op that last wrote temporary component (reg, lane) at or before op `k`, after `from`.
+  // Whether temporary component `at` is written by an op after `from`, up to and including `to`.
   bool writtenBetween(std::pair<uint32_t, uint32_t> at, size_t from, size_t to) const {
     auto it = writes_.find(at);
     if (it == writes_.end()) return false;
     return std::any_of(it->second.begin(), it->second.end(), [&](size_t op) { return op > from && op <= to; });
   }
+  // Whether `v` is still in the temporary it was written to when op `at` runs (written by an
+  // instruction, not rewritten since).
+  bool stillIn(const Value& v, size_t at) const { return v.at && v.op != SIZE_MAX && !writtenBetween(*v.at, v.op, at); }
   // Straight-line stretches: ops with the same number have no control flow between them.
   size_t region(size_t op) const { return regions_[op]; }
 
@@ -407,8 +411,7 @@ struct Member {
   std::map<int, Coefficient> byTerm;  // the three terms and their elements
   Element translation;                // the element added on its own
   uint32_t index = 0;                 // which component of q
-  std::string matrix;                 // the key of the matrix its elements belong to
-  bool columns = false;
+  std::string matrix;                 // the key of the matrix its elements belong to ("c..." columns, "r..." rows)
 };
 
 std::optional<Member> memberOf(const std::vector<Value>& values, int id) {
@@ -435,7 +438,6 @@ std::optional<Member> memberOf(const std::vector<Value>& values, int id) {
   for (const Element& e : elements) vectors.insert({e.slot, e.row});
   const bool oneSlot = all([](const Element& a, const Element& b) { return a.slot == b.slot; });
   if (oneSlot && all([](const Element& a, const Element& b) { return a.lane == b.lane; }) && vectors.size() == 4) {
-    m.columns = true;
     m.index = elements[0].lane;
     m.matrix = "c" + std::to_string(elements[0].slot);
     for (const auto& [slot, row] : vectors) m.matrix += ":" + std::to_string(row);
@@ -628,7 +630,7 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     c.columnZ = columnZ;
     for (int i = 0; i < 3; ++i) {
       const Value& v = values[ids[i]];
-      c.v[i] = "r" + std::to_string(v.at->first) + "." + "xyzw"[v.at->second];
+      c.v[i] = registerText(*v.at);
       for (const Part& part : v.form)
         if (part.term < 0) c.camera[i] = elementText(*part.coefficient.element);
     }
@@ -653,7 +655,7 @@ void collectViewRays(const std::vector<Value>& values, const Evaluator& evaluati
     });
     const Value& x = values[c.value];
     const Value& depth = values[c.depth];
-    if (!hasY || !depth.at || depth.op == SIZE_MAX || evaluation.writtenBetween(*depth.at, depth.op, x.op)) continue;
+    if (!hasY || !evaluation.stillIn(depth, x.op)) continue;
     if (notKnownNdc(values, c.screen)) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[x.op].line) +
                                  ": a view-space x from a texture coordinate or pixel position as it is, not NDC");
@@ -662,8 +664,8 @@ void collectViewRays(const std::vector<Value>& values, const Evaluator& evaluati
     AsmViewRay r;
     r.afterLine = lineIndex.at(p.ops[x.op].line);
     r.lineNumber = p.ops[x.op].line;
-    r.x = "r" + std::to_string(x.at->first) + "." + "xyzw"[x.at->second];
-    r.depthRegister = "r" + std::to_string(depth.at->first) + "." + "xyzw"[depth.at->second];
+    r.x = registerText(*x.at);
+    r.depthRegister = registerText(*depth.at);
     r.element = elementText(*c.k.element);
     r.divides = c.k.inverse;
     r.scale = c.k.scale;
@@ -725,11 +727,11 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     bool placeable = true;
     for (const Member* m : q) {
       const Value& v = values[m->value];
-      placeable &= evaluation.region(v.op) == evaluation.region(last) && !evaluation.writtenBetween(*v.at, v.op, last);
+      placeable &= evaluation.region(v.op) == evaluation.region(last) && evaluation.stillIn(v, last);
     }
     // The screen-to-world form reads the depth there too: still in the register it was written to.
     const Value& z = values[role.depth];
-    if (role.scaled && (!z.at || z.op == SIZE_MAX || evaluation.writtenBetween(*z.at, z.op, last))) placeable = false;
+    if (role.scaled && !evaluation.stillIn(z, last)) placeable = false;
     if (!placeable) continue;
     if (!role.scaled && notKnownNdc(values, role.x)) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
@@ -744,7 +746,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     std::set<Element> rows;  // the matrix's vectors, lane 0 standing for the whole row
     for (size_t i = 0; i < 4; ++i) {
       const Value& v = values[q[i]->value];
-      u.q[i] = "r" + std::to_string(v.at->first) + "." + "xyzw"[v.at->second];
+      u.q[i] = registerText(*v.at);
       const Coefficient& column = q[i]->byTerm.at(role.x);
       u.column[i] = elementText(*column.element);
       u.columnScale[i] = column.scale;
@@ -756,7 +758,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     u.depth = "t" + std::to_string(role.texture);
     if (role.scaled) {
       u.scaledByDepth = true;
-      u.depthRegister = "r" + std::to_string(z.at->first) + "." + "xyzw"[z.at->second];
+      u.depthRegister = registerText(*z.at);
     }
     u.ndc = "v" + std::to_string(role.input);
     if (!role.scaled) u.cameras = camerasOf(values, p, lineIndex, q, role);

@@ -88,6 +88,40 @@ Located failedAt(Located out, uint32_t line, std::string why) {
   return out;
 }
 
+// Whether a line holds no code (blank, or a comment only).
+bool blankCode(const std::string& text) {
+  return text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos;
+}
+
+// Where the depth a fix reads lives: the statement on `depthLine` assigns `reg.mask = ...;`, and no
+// line after it up to `until` is anything but a plain assignment or rewrites that component. `what`
+// names the fix's value ("the rebuilt position"), `done` the moment it must last to ("the rebuilt
+// position is complete"). The component ("r1.x"), or the failure in `out`.
+std::optional<std::string> locateDepth(const Lines& lines, uint32_t depthLine, uint32_t depthLane, uint32_t until,
+                                       const std::string& what, const std::string& done, Located& out) {
+  auto depth = assignmentOn(lines.line(depthLine));
+  if (!depth || depthLane >= depth->mask.size() || depthLine > until) {
+    out = failedAt(out, depthLine, "the statement computing the depth is not one `reg.mask = ...;` on its line");
+    return std::nullopt;
+  }
+  const char c = depth->mask[depthLane];
+  const std::string component = depth->reg + "." + c;
+  for (uint32_t l = depthLine + 1; l <= until; ++l) {
+    std::string text = lines.line(l);
+    if (blankCode(text)) continue;
+    auto later = assignmentOn(text);
+    if (!later) {
+      out = failedAt(out, l, "a line between the depth and " + what + " is not a plain assignment");
+      return std::nullopt;
+    }
+    if (later->reg == depth->reg && later->mask.find(c) != std::string::npos) {
+      out = failedAt(out, l, "register " + component + " (the depth) is written again before " + done);
+      return std::nullopt;
+    }
+  }
+  return component;
+}
+
 Located locate(const Lines& lines, const RowProductTextFix& fix) {
   Located out;
   auto fail = [&](uint32_t line, std::string why) { return failedAt(out, line, std::move(why)); };
@@ -102,8 +136,7 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
     out.component[i] = a->reg + "." + c;
     for (uint32_t l = fix.lines[i] + 1; l <= fix.afterLine; ++l) {
       std::string text = lines.line(l);
-      std::string code = text.substr(0, text.find("//"));
-      if (code.find_first_not_of(" \t") == std::string::npos) continue;
+      if (blankCode(text)) continue;
       auto later = assignmentOn(text);
       if (!later) return fail(l, "a line between the rebuilt position's statements is not a plain assignment");
       bool partOfQ = false;
@@ -116,19 +149,10 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
   }
   if (fix.scaledByDepth) {
     // The depth the screen coordinates were scaled by, still in its register after q.
-    auto z = assignmentOn(lines.line(fix.depthLine));
-    if (!z || fix.depthLane >= z->mask.size() || fix.depthLine > fix.afterLine)
-      return fail(fix.depthLine, "the statement computing the depth is not one `reg.mask = ...;` on its line");
-    const char c = z->mask[fix.depthLane];
-    out.depth = z->reg + "." + c;
-    for (uint32_t l = fix.depthLine + 1; l <= fix.afterLine; ++l) {
-      std::string text = lines.line(l);
-      if (text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos) continue;
-      auto later = assignmentOn(text);
-      if (!later) return fail(l, "a line between the depth and the rebuilt position is not a plain assignment");
-      if (later->reg == z->reg && later->mask.find(c) != std::string::npos)
-        return fail(l, "register " + out.depth + " (the depth) is written again before the rebuilt position is complete");
-    }
+    auto z = locateDepth(lines, fix.depthLine, fix.depthLane, fix.afterLine, "the rebuilt position",
+                         "the rebuilt position is complete", out);
+    if (!z) return out;
+    out.depth = *z;
   }
   return out;
 }
@@ -165,22 +189,14 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
 Located locateRay(const Lines& lines, const ViewRayTextFix& fix) {
   Located out;
   auto fail = [&](uint32_t line, std::string why) { return failedAt(out, line, std::move(why)); };
-  auto x = assignmentOn(lines.line(fix.line)), depth = assignmentOn(lines.line(fix.depthLine));
+  auto x = assignmentOn(lines.line(fix.line));
   if (!x || fix.lane >= x->mask.size())
     return fail(fix.line, "the statement computing the view-space x is not one `reg.mask = ...;` on its line");
-  if (!depth || fix.depthLane >= depth->mask.size() || fix.depthLine > fix.line)
-    return fail(fix.depthLine, "the statement computing the depth is not one `reg.mask = ...;` on its line");
   out.component[0] = x->reg + "." + x->mask[fix.lane];
-  char c = depth->mask[fix.depthLane];
-  out.component[1] = depth->reg + "." + c;
-  for (uint32_t l = fix.depthLine + 1; l <= fix.line; ++l) {
-    std::string text = lines.line(l);
-    if (text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos) continue;
-    auto later = assignmentOn(text);
-    if (!later) return fail(l, "a line between the depth and the view-space x is not a plain assignment");
-    if (later->reg == depth->reg && later->mask.find(c) != std::string::npos)
-      return fail(l, "register " + out.component[1] + " (the depth) is written again before the view-space x is corrected");
-  }
+  auto depth = locateDepth(lines, fix.depthLine, fix.depthLane, fix.line, "the view-space x",
+                           "the view-space x is corrected", out);
+  if (!depth) return out;
+  out.component[1] = *depth;
   return out;
 }
 
