@@ -70,5 +70,27 @@ TEST(HlslLift, MatrixSwizzlesOfSeveralComponentsAreReadOneComponentAtATime) {
     EXPECT_EQ(liftHlslIdioms(other), other) << other;
 }
 
+TEST(HlslLift, UnnamedParametersAreNamedForTheParse) {
+  std::string text =
+      "struct S { float4 p : SV_Position; };\n"
+      "S main(float3 p : POSITION, float3 : NORMAL, in uint : SV_VertexID,\n"
+      "       vector<float, 4> /* unused */ : COLOR1, out float4 o : TEXCOORD0) : SV_Target\n"
+      "{ float x = b ? p.x : p.y; S s; return s; }\n";
+  std::string what;
+  std::string lifted = liftHlslIdioms(text, &what);
+  EXPECT_EQ(lifted,
+            "struct S { float4 p : SV_Position; };\n"
+            "S main(float3 p : POSITION, float3 stereoshift_unnamed0 : NORMAL, in uint stereoshift_unnamed1 : SV_VertexID,\n"
+            "       vector<float, 4> stereoshift_unnamed2 /* unused */ : COLOR1, out float4 o : TEXCOORD0) : SV_Target\n"
+            "{ float x = b ? p.x : p.y; S s; return s; }\n");
+  EXPECT_EQ(what, "3 parameter(s) declared without a name given one");
+  // Named parameters, struct members, register bindings, ternaries and case labels stay as they are.
+  for (std::string other : {"float4 main(float4 pos : POSITION, uint id : SV_VertexID) : SV_Position { return pos; }\n",
+                            "Texture2D t : register(t0);\nstruct V { float4 c : COLOR; };\n",
+                            "float f(float a, bool b) { switch (a) { case 1: return b ? a : 0; } return 0; }\n",
+                            "static const float k = g(a ? b : c, d);\n"})
+    EXPECT_EQ(liftHlslIdioms(other), other) << other;
+}
+
 }  // namespace
 }  // namespace stereoshift

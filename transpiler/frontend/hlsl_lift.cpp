@@ -117,6 +117,49 @@ bool startsAssignment(const source::LexedText& lexed, size_t k) {
              : false;
 }
 
+// Parameter modifiers that may stand between a parameter list's `(` or `,` and the type.
+bool isParameterModifier(std::string_view word) {
+  for (std::string_view m : {"in", "out", "inout", "uniform", "const", "precise", "linear", "centroid",
+                             "nointerpolation", "noperspective", "sample", "point", "line", "triangle",
+                             "lineadj", "triangleadj", "vertices", "primitives", "indices", "payload"})
+    if (word == m) return true;
+  return false;
+}
+
+// The non-comment token before `k`, or lexed.size() when there is none.
+size_t tokenBefore(const source::LexedText& lexed, size_t k) {
+  while (k > 0) {
+    --k;
+    if (lexed[k].kind != source::TokenKind::Comment) return k;
+  }
+  return lexed.size();
+}
+
+// For the `:` at `colon` inside a function's parameter list: the token that ends the type of a
+// parameter declared without a name (`float3 : NORMAL`, `in uint : SV_VertexID`,
+// `vector<float, 4> : COLOR`), or lexed.size() when the parameter has a name.
+size_t unnamedParameterType(const source::LexedText& lexed, size_t colon) {
+  size_t typeEnd = tokenBefore(lexed, colon), typeBegin = typeEnd;
+  if (typeEnd >= lexed.size()) return lexed.size();
+  if (lexed.isPunct(typeEnd, '>')) {
+    int depth = 0;
+    for (size_t k = typeEnd;; k = tokenBefore(lexed, k)) {
+      if (k >= lexed.size()) return lexed.size();
+      if (lexed.isPunct(k, '>')) ++depth;
+      if (lexed.isPunct(k, '<') && --depth == 0) {
+        typeBegin = tokenBefore(lexed, k);
+        break;
+      }
+    }
+  }
+  if (typeBegin >= lexed.size() || !lexed.isIdentifier(typeBegin)) return lexed.size();
+  size_t before = tokenBefore(lexed, typeBegin);
+  if (before >= lexed.size()) return lexed.size();
+  bool opensParameter = lexed.isPunct(before, '(') || lexed.isPunct(before, ',') ||
+                        (lexed.isIdentifier(before) && isParameterModifier(lexed.text(before)));
+  return opensParameter ? typeEnd : lexed.size();
+}
+
 std::string upperCase(std::string_view s) {
   std::string u(s);
   for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -130,7 +173,8 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
   bool mayHaveCmp = text.find("cmp") != std::string::npos;
   bool mayHaveIndexedSystemValue = text.find("SV_") != std::string::npos || text.find("sv_") != std::string::npos;
   bool mayHaveMatrixSwizzle = text.find("._") != std::string::npos;
-  if (!mayHaveCmp && !mayHaveIndexedSystemValue && !mayHaveMatrixSwizzle) return text;
+  bool maySemantics = text.find(':') != std::string::npos;
+  if (!mayHaveCmp && !mayHaveIndexedSystemValue && !mayHaveMatrixSwizzle && !maySemantics) return text;
   source::LexedText lexed(text);
   struct Edit {
     size_t begin, end;
@@ -141,7 +185,14 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
   bool cmp = false;
   std::map<std::string, std::string, std::less<>> matrixScalars;
   bool matricesRead = false;
+  int braceDepth = 0, parenDepth = 0;  // of the program text
+  size_t unnamedParameters = 0;
   for (size_t k = 0; k < lexed.size(); ++k) {
+    if (lexed[k].isCode() && lexed[k].kind == source::TokenKind::Punctuation) {
+      char c = lexed.text(k)[0];
+      braceDepth += c == '{' ? 1 : c == '}' ? -1 : 0;
+      parenDepth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    }
     // `M._m00_m10_m20_m30` read -> `float4(M._m00, M._m10, M._m20, M._m30)`: glslang's HLSL front end
     // gives a swizzle of several matrix components a constant 0 of the wrong type, which makes
     // invalid SPIR-V (and crashes it or the optimizer when the value is a call's argument); single
@@ -169,6 +220,16 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
       edits.push_back({lexed[begin].begin, lexed[k].end, with + ")"});
       if (matrixSwizzle.empty()) matrixSwizzle = std::string(receiver) + "." + std::string(lexed.text(k));
       continue;
+    }
+    // `float3 : NORMAL` in a function's parameter list -> `float3 stereoshift_unnamed0 : NORMAL`:
+    // HLSL lets a parameter go unnamed (an input the entry point does not read, kept for its place
+    // in the signature) and glslang's HLSL parser crashes on it. Outside every brace (not a struct
+    // member or packoffset), inside parentheses (not the return semantic or a register binding).
+    if (lexed.isPunct(k, ':') && lexed[k].isCode() && braceDepth == 0 && parenDepth > 0) {
+      size_t typeEnd = unnamedParameterType(lexed, k);
+      if (typeEnd < lexed.size())
+        edits.push_back({lexed[typeEnd].end, lexed[typeEnd].end,
+                         " stereoshift_unnamed" + std::to_string(unnamedParameters++)});
     }
     // `: SV_POSITION0` -> `: SV_POSITION ` (the same columns after it).
     if (lexed.isPunct(k, ':') && !lexed[k].inDirective()) {
@@ -207,6 +268,9 @@ std::string liftHlslIdioms(const std::string& text, std::string* what) {
     if (!matrixSwizzle.empty())
       *what += std::string(what->empty() ? "" : "; ") + "swizzles of several matrix components (" + matrixSwizzle +
                ") read one component at a time";
+    if (unnamedParameters)
+      *what += std::string(what->empty() ? "" : "; ") + std::to_string(unnamedParameters) +
+               " parameter(s) declared without a name given one";
   }
   return out;
 }
