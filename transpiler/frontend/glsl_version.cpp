@@ -78,6 +78,7 @@ VersionLine findVersion(const std::string& text) {
     std::string profile = source::spelledString(text, words[2]);
     if (profile == "es" || profile == "core" || profile == "compatibility") {
       v.es = profile == "es";
+      v.compatibility = profile == "compatibility";
       v.end = words[2].end;
       // The profile the language allows at this version (GLSL 4.60 and ESSL 3.20, "Version and
       // profile"): none before 1.50 and in ESSL 1.00, only `es` at 300-320, never `es` elsewhere.

@@ -15,6 +15,7 @@ namespace stereoshift {
 struct VersionLine {
   int version = 110;  // GLSL's default without #version
   bool es = false;
+  bool compatibility = false;  // `#version N compatibility`
   size_t begin = std::string::npos, end = std::string::npos;  // span of the directive's text
   std::string problem;                        // empty: the directive (or its absence) is fine
   size_t problemAt = std::string::npos;       // offset in `text` the problem is reported at

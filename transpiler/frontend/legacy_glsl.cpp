@@ -365,8 +365,11 @@ LegacyDialect decideLegacyDialect(const std::string& text, const VersionLine& ve
     d.versionWritten = true;
     d.version = version.version;
     d.es = version.es;
-    d.legacy = d.es ? d.version < 300 : d.version < 330;
-    d.reason = "#version " + std::to_string(d.version) + (d.es && d.version != 100 ? " es" : "");
+    // The compatibility profile at any version: glslang makes no SPIR-V from it (and refuses its
+    // built-ins), so the same translation to core, at the shader's own version from 330 on.
+    d.legacy = d.es ? d.version < 300 : d.version < 330 || version.compatibility;
+    d.reason = "#version " + std::to_string(d.version) + (d.es && d.version != 100 ? " es" : "") +
+               (version.compatibility ? " compatibility" : "");
     return d;
   }
   // No #version: GLSL's default is 110, ESSL's 100; what the text uses decides between them.
@@ -517,7 +520,7 @@ class LegacyTranslator {
   void rewriteDirectives() {
     for (const auto& d : scan_.directives) {
       if (d.kind == source::DirectiveKind::Version) {
-        edits_.push_back({d.begin, d.end, es_ ? "#version 310 es" : "#version 330"});
+        edits_.push_back({d.begin, d.end, es_ ? "#version 310 es" : "#version " + std::to_string(coreVersion())});
       } else if (d.kind == source::DirectiveKind::Extension && es_ && isCoreInEssl300(extensionName(d.rest))) {
         edits_.push_back({d.begin, d.end, ""});  // core in ESSL 300: the line stays, empty
       }
@@ -606,6 +609,10 @@ class LegacyTranslator {
     return decls;
   }
 
+  // The core version the translation is parsed at: 330, or the shader's own from there on (a
+  // compatibility-profile shader of a later version).
+  int coreVersion() const { return std::max(330, dialect_.version); }
+
   std::string applyEdits() {
     // By offset; an insertion goes before a replacement that starts where it is inserted.
     std::stable_sort(edits_.begin(), edits_.end(), [](const Edit& a, const Edit& b) {
@@ -614,7 +621,8 @@ class LegacyTranslator {
     });
     std::string out;
     size_t pos = 0;
-    if (!dialect_.versionWritten) out += es_ ? "#version 310 es\n#line 1\n" : "#version 330\n#line 1\n";
+    if (!dialect_.versionWritten)
+      out += es_ ? "#version 310 es\n#line 1\n" : "#version " + std::to_string(coreVersion()) + "\n#line 1\n";
     for (const auto& e : edits_) {
       if (e.begin < pos) continue;  // overlapping (inside a replaced call): the first one wins
       out.append(text_, pos, e.begin - pos);

@@ -1,5 +1,6 @@
-// Legacy GLSL: this turns ESSL 100 (WebGL1, GL ES 2.0) and desktop GLSL 110-150 into a faithful
-// ESSL 310 / GLSL 330 translation that glslang can make SPIR-V from, for analysis only: the passes
+// Legacy GLSL: this turns ESSL 100 (WebGL1, GL ES 2.0), desktop GLSL 110-150 and the compatibility
+// profile of any version into a faithful ESSL 310 / GLSL 330 (or, past 330, the shader's own core
+// version) translation that glslang can make SPIR-V from, for analysis only: the passes
 // read it, and the same-language output is the original text with the shift spliced in
 // (transpiler/backend/glsl_splice.h). The rewrite is token by token and keeps every line of the
 // user's text where it was, so glslang's diagnostics point at what the user wrote:
@@ -30,8 +31,8 @@ namespace stereoshift {
 
 // The dialect a GLSL text is written in, as far as the legacy route cares.
 struct LegacyDialect {
-  bool legacy = false;  // ESSL 100 or desktop GLSL below 330: takes this translation
-  int version = 0;      // the original (or decided) version: 100, 110, 120, 130, 140, 150
+  bool legacy = false;  // ESSL 100, desktop GLSL below 330 or any compatibility profile: takes this translation
+  int version = 0;      // the original (or decided) version: 100, 110 ... 150, or a compatibility profile's
   bool es = false;
   bool versionWritten = false;  // false: no #version, the version was decided from the text
   std::string reason;           // why this dialect, for the report
