@@ -482,6 +482,7 @@ class LegacyTranslator {
 
   LegacyTranslation run() {
     rewriteDirectives();
+    blankBuiltInBlockRedeclarations();
     if (es_) userBuiltins_ = builtinFunctionsDefined(scan_);
     for (const Token& t : scan_.identifiers)
       if (auto error = rewriteIdentifier(t)) return failed(*error);
@@ -524,6 +525,39 @@ class LegacyTranslator {
       } else if (d.kind == source::DirectiveKind::Extension && es_ && isCoreInEssl300(extensionName(d.rest))) {
         edits_.push_back({d.begin, d.end, ""});  // core in ESSL 300: the line stays, empty
       }
+    }
+  }
+
+  // `out gl_PerVertex { vec4 gl_Position; vec4 gl_FrontColor; };` (and `in ... gl_in[];`) with a
+  // compatibility member blanked, line breaks kept: that member is no core member (the translation
+  // declares it on its own), and the core built-ins it names exist without the block. One of core
+  // members only stays (the lifted copy raises the version for it). The output keeps it as written.
+  void blankBuiltInBlockRedeclarations() {
+    const source::LexedText& lexed = scan_.lexed;
+    for (size_t k = 0; k < lexed.size(); ++k) {
+      if (!lexed.isIdentifier(k) || !lexed[k].isCode() || lexed.text(k) != "gl_PerVertex" || k == 0) continue;
+      size_t storage = k - 1;
+      while (storage > 0 && lexed[storage].kind == source::TokenKind::Comment) --storage;
+      size_t open = lexed.nextNonComment(k);
+      if (!lexed.isIdentifier(storage) || (lexed.text(storage) != "in" && lexed.text(storage) != "out") ||
+          !lexed.isPunct(open, '{'))
+        continue;
+      size_t end = open;
+      int depth = 0;
+      for (; end < lexed.size(); ++end) {
+        if (lexed.isPunct(end, '{')) ++depth;
+        if (lexed.isPunct(end, '}') && --depth == 0) break;
+      }
+      bool compatibilityMember = false;
+      for (size_t m = open; m < end; ++m) compatibilityMember |= lexed.isIdentifier(m) && compat_.count(std::string(lexed.text(m)));
+      while (end < lexed.size() && !lexed.isPunct(end, ';')) ++end;
+      if (end >= lexed.size()) return;  // unterminated: glslang says so
+      if (!compatibilityMember) continue;
+      std::string blank = text_.substr(lexed[storage].begin, lexed[end].end - lexed[storage].begin);
+      for (char& c : blank)
+        if (c != '\n' && c != '\r') c = ' ';
+      edits_.push_back({lexed[storage].begin, lexed[end].end, blank});
+      k = end;
     }
   }
 
