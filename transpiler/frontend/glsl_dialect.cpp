@@ -27,6 +27,15 @@ void reportVersionProblem(const SourceFile& input, const VersionLine& v, Diagnos
 
 // The client from the #version line: desktop >= 400 and ES >= 310 may be Vulkan GLSL (tried first)
 // or OpenGL GLSL with loose uniforms (the fallback); older dialects are OpenGL.
+// Whether glslang's Vulkan rules refused something OpenGL GLSL may write (a uniform outside a
+// block, a user varying without a location).
+bool refusesOpenGLStyleForVulkan(const Diagnostics& diags) {
+  const auto& all = diags.all();
+  return std::any_of(all.begin(), all.end(), [](const Diagnostic& d) {
+    return d.severity == Severity::Error && d.message.find("not allowed when using GLSL for Vulkan") != std::string::npos;
+  });
+}
+
 class GlslDialect final : public FrontEndDialect {
  public:
   const char* name() const override { return "glsl"; }
@@ -107,7 +116,11 @@ class GlslDialect final : public FrontEndDialect {
         best = std::move(a);
         break;
       }
-      if (!best || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
+      // Both refused: the fewer errors, except that a Vulkan attempt refusing the interface as
+      // OpenGL writes it ("... when using GLSL for Vulkan") says nothing of the shader's real error,
+      // which the OpenGL attempt then names (a double vertex input below GLSL 410, not the loose uniform).
+      bool bestRefusedOpenGLStyle = best && client == Client::OpenGL && refusesOpenGLStyleForVulkan(best->diags);
+      if (!best || bestRefusedOpenGLStyle || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
     }
     if ((!best || !best->ok) && vulkanButOpenGLStyle) {
       best = std::move(vulkanButOpenGLStyle);
