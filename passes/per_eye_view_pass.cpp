@@ -123,10 +123,32 @@ OutputUses useOfOutputs(const PassContext& ctx, const Module& folded, const View
   return uses;
 }
 
+// How many elements of the array `slot` is an element of are subtracted from a varying point
+// (`slot` included); 0 when its last index is not an array's (a loose uniform, a struct member).
+size_t arrayElementsSubtracted(const Module& m, const Slot& slot, const std::map<Slot, std::vector<Subtraction>>& all) {
+  if (slot.indices.empty() || slot.inverseTranslation) return 0;
+  uint32_t type = m.pointeeType(m.definition(slot.variable)->typeId);
+  for (size_t k = 0; k + 1 < slot.indices.size(); ++k) {
+    const Instruction* def = m.definition(type);
+    if (!def) return 0;
+    type = def->opcode == spv::OpTypeStruct ? def->operand(slot.indices[k]) : def->operand(0);
+  }
+  const Instruction* container = m.definition(type);
+  if (!container || container->opcode != spv::OpTypeArray) return 0;
+  size_t count = 0;
+  for (const auto& entry : all) {
+    const Slot& other = entry.first;
+    count += other.variable == slot.variable && !other.inverseTranslation && other.indices.size() == slot.indices.size() &&
+             std::equal(other.indices.begin(), other.indices.end() - 1, slot.indices.begin());
+  }
+  return count;
+}
+
 // The decision for one uniform a view vector is subtracted from: the camera (with the reason), or
-// left alone (with what it is used for and why).
+// left alone (with what it is used for and why). `all`: every slot's subtractions.
 void decideSlot(const PassContext& ctx, ViewVectorFlow& flow, const Slot& slot, const std::vector<Subtraction>& subs,
-                Cameras& cameras, std::vector<ViewDependentUse>& leftAlone) {
+                const std::map<Slot, std::vector<Subtraction>>& all, Cameras& cameras,
+                std::vector<ViewDependentUse>& leftAlone) {
   const Module& folded = flow.module();
   std::string name = slotName(folded, slot);
   NameHint hint = nameHint(name);
@@ -136,6 +158,14 @@ void decideSlot(const PassContext& ctx, ViewVectorFlow& flow, const Slot& slot, 
   auto leave = [&](const std::string& use, const std::string& reason) { leftAlone.push_back(note(name, hint, use, reason)); };
   if (slotMatchesName(folded, slot, ctx.options.cameraUniform)) {
     cameras[slot] = "forced by --camera-uniform";
+    return;
+  }
+  // There is one camera: several elements of one array each subtracted from the surface point
+  // are points of the scene (an area light's polygon, a set of lights or probes), whatever a
+  // direction from them then reaches.
+  if (size_t points = arrayElementsSubtracted(folded, slot, all); points >= 2) {
+    leave("one of " + std::to_string(points) + " elements of an array each subtracted from the surface point",
+          "points of the scene (an area light's polygon, lights, probes), not the one camera; --camera-uniform forces it");
     return;
   }
   bool offsetsHere = sinks.texcoord & kOffset;
@@ -356,7 +386,7 @@ class PerEyeViewPass final : public Pass {
     const Module& folded = flow->module();
     auto subtractions = findSubtractions(*flow);
     Cameras cameras;
-    for (const auto& [slot, subs] : subtractions) decideSlot(ctx, *flow, slot, subs, cameras, facts.leftAlone);
+    for (const auto& [slot, subs] : subtractions) decideSlot(ctx, *flow, slot, subs, subtractions, cameras, facts.leftAlone);
     findForcedCamera(ctx, folded, cameras);
     decidePassedCameras(ctx, *flow, subtractions, cameras, facts.leftAlone);
     noteOtherViewDependentUses(folded, subtractions, cameras, facts.leftAlone);
