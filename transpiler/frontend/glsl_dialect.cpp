@@ -45,6 +45,42 @@ class GlslDialect final : public FrontEndDialect {
     if (what) *what = copy.lifted ? copy.what : std::string();
     return copy.lifted ? copy.text : text;
   }
+  // The text parsed under each client in turn (Vulkan first where it may be): the first that takes
+  // it, else the attempt whose errors say most about the shader.
+  static std::optional<Attempt> parseUnderEachClient(const SourceFile& input, const std::string& text, Stage stage,
+                                                     const std::vector<Client>& clients, const std::string& glslEntry,
+                                                     const FrontEndOptions& parseOptions, bool targetEnvGiven,
+                                                     FrontEndResult& result) {
+    std::optional<Attempt> best;
+    std::optional<Attempt> vulkanButOpenGLStyle;
+    for (Client client : clients) {
+      Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, glslEntry, parseOptions);
+      if (a.ok) {
+        a.info.vulkan = client == Client::Vulkan;
+        // Valid as Vulkan GLSL only through the auto-mapping, with an interface written the OpenGL
+        // way: OpenGL GLSL, if OpenGL rules take it (else Vulkan after all: `set`, push constants).
+        if (client == Client::Vulkan && !a.openGLStyleInterface.empty() && !targetEnvGiven) {
+          result.dialectReason = "Vulkan GLSL only with locations and bindings made up: its " + a.openGLStyleInterface +
+                                 ", as OpenGL code writes it, so OpenGL GLSL";
+          vulkanButOpenGLStyle = std::move(a);
+          continue;
+        }
+        best = std::move(a);
+        break;
+      }
+      // Both refused: the fewer errors, except that a Vulkan attempt refusing the interface as
+      // OpenGL writes it ("... when using GLSL for Vulkan") says nothing of the shader's real error,
+      // which the OpenGL attempt then names (a double vertex input below GLSL 410, not the loose uniform).
+      bool bestRefusedOpenGLStyle = best && client == Client::OpenGL && refusesOpenGLStyleForVulkan(best->diags);
+      if (!best || bestRefusedOpenGLStyle || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
+    }
+    if ((!best || !best->ok) && vulkanButOpenGLStyle) {
+      best = std::move(vulkanButOpenGLStyle);
+      result.dialectReason.clear();
+    }
+    return best;
+  }
+
   void compile(const SourceFile& input, const FrontEndOptions& options, Stage stage, const LanguageDecision& decided,
                FrontEndResult& result, Diagnostics& diags) const override {
     VersionLine v = findVersion(input.contents);
@@ -99,33 +135,8 @@ class GlslDialect final : public FrontEndDialect {
 
     // -e NAME: the function glslang compiles as `main` (glslangValidator's --source-entrypoint).
     const std::string glslEntry = options.entryPoint.empty() ? "main" : options.entryPoint;
-    std::optional<Attempt> best;
-    std::optional<Attempt> vulkanButOpenGLStyle;
-    for (Client client : clients) {
-      Attempt a = compileGlslangOnce(input, text, stage, SourceLanguage::Glsl, client, glslEntry, parseOptions);
-      if (a.ok) {
-        a.info.vulkan = client == Client::Vulkan;
-        // Valid as Vulkan GLSL only through the auto-mapping, with an interface written the OpenGL
-        // way: OpenGL GLSL, if OpenGL rules take it (else Vulkan after all: `set`, push constants).
-        if (client == Client::Vulkan && !a.openGLStyleInterface.empty() && !options.targetEnv) {
-          result.dialectReason = "Vulkan GLSL only with locations and bindings made up: its " + a.openGLStyleInterface +
-                                 ", as OpenGL code writes it, so OpenGL GLSL";
-          vulkanButOpenGLStyle = std::move(a);
-          continue;
-        }
-        best = std::move(a);
-        break;
-      }
-      // Both refused: the fewer errors, except that a Vulkan attempt refusing the interface as
-      // OpenGL writes it ("... when using GLSL for Vulkan") says nothing of the shader's real error,
-      // which the OpenGL attempt then names (a double vertex input below GLSL 410, not the loose uniform).
-      bool bestRefusedOpenGLStyle = best && client == Client::OpenGL && refusesOpenGLStyleForVulkan(best->diags);
-      if (!best || bestRefusedOpenGLStyle || a.diags.errorCount() < best->diags.errorCount()) best = std::move(a);
-    }
-    if ((!best || !best->ok) && vulkanButOpenGLStyle) {
-      best = std::move(vulkanButOpenGLStyle);
-      result.dialectReason.clear();
-    }
+    std::optional<Attempt> best = parseUnderEachClient(input, text, stage, clients, glslEntry, parseOptions,
+                                                       options.targetEnv.has_value(), result);
     // Refused as written: a lifted copy (glsl_lift.h) for the analysis, with OpenGL rules.
     std::string lifted;
     if (!best->ok) {
