@@ -407,6 +407,32 @@ class PerEyeViewPass final : public Pass {
   }
 
  private:
+  // The camera and its offset as the source text names them, for a splice (run_record.h).
+  static void recordCameraText(const Module& m, const Slot& camera, const OffsetSource& source, PerEyeViewFacts& facts) {
+    CameraText text;
+    auto access = slotSourceAccess(m, camera);
+    const Instruction* type = m.definition(slotType(m, camera));
+    if (!access || !type || type->opcode != spv::OpTypeVector) {
+      facts.cameraTextMissing = "the camera " + slotName(m, camera) + " has no name the source reads it by";
+      return;
+    }
+    text.access = *access;
+    text.components = type->operand(1);
+    text.offset = source.kind == OffsetSource::InverseViewProjection ? CameraText::InverseViewProjection
+                  : source.kind == OffsetSource::InvertedClipMatrices ? CameraText::InvertedClipMatrices
+                                                                      : CameraText::EyeOffsetParams;
+    text.columnVectors = source.columnVectors;
+    for (const Slot& matrix : source.matrices) {
+      auto named = slotSourceAccess(m, matrix);
+      if (!named) {
+        facts.cameraTextMissing = "the matrix " + slotName(m, matrix) + " has no name the source reads it by";
+        return;
+      }
+      text.matrices.push_back(*named);
+    }
+    facts.cameraTexts.push_back(std::move(text));
+  }
+
   // Each camera's loads become the per-eye centre; the module changes from here on.
   static PassResult fixCameras(PassContext& ctx, const Module& folded, ViewVectorFlow& flow,
                                std::map<Slot, std::vector<Subtraction>>& subtractions, const Cameras& cameras) {
@@ -428,6 +454,7 @@ class PerEyeViewPass final : public Pass {
       entry.loadsReplaced = loads;
       entry.eyeCentre = name + " + " + source.description;
       facts.fixed.push_back(entry);
+      recordCameraText(ctx.module, slot, source, facts);
       if (source.kind == OffsetSource::EyeOffsetParams)
         facts.application =
             "fill " + ctx.eye.names[kEyeOffsetX] + "/" + ctx.eye.names[kEyeOffsetY] + "/" + ctx.eye.names[kEyeOffsetZ] +

@@ -131,8 +131,22 @@ struct ShiftFacts {
 };
 
 // per-eye-view.
+// A per-eye camera as the shader's own text can carry it (a source splice): every read of the
+// camera there becomes `camera + offset`, the offset written from these.
+struct CameraText {
+  std::string access;         // the camera as the source reads it: `viewPos`, `ubo.camPos`, `camPos` (anonymous block)
+  uint32_t components = 3;    // vec3 or vec4 (a vec4's w is not moved)
+  enum Offset { InverseViewProjection, InvertedClipMatrices, EyeOffsetParams } offset = EyeOffsetParams;
+  std::vector<std::string> matrices;  // as the source reads them, in product order
+  bool columnVectors = true;          // M * v (true) or v * M
+};
+
 struct PerEyeViewFacts {
   std::vector<ViewDependentUse> fixed, leftAlone;
+  // One per fixed camera the text can name, in the order of `fixed`; `cameraTextMissing` says why
+  // one cannot (an array element, the translation of an inverse view, a renamed built-in).
+  std::vector<CameraText> cameraTexts;
+  std::string cameraTextMissing;
   std::string skipped;
   std::string forcedCameraNotFound;
   std::set<std::string> perEyeOutputs;  // outputs that differ between the eyes by design

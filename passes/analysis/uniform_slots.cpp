@@ -92,6 +92,25 @@ std::string slotName(const Module& m, const Slot& slot) {
   return slot.inverseTranslation ? "inverse(" + text + ")[3]" : text;
 }
 
+std::optional<std::string> slotSourceAccess(const Module& m, const Slot& slot) {
+  if (slot.inverseTranslation) return std::nullopt;
+  const Instruction* var = m.definition(slot.variable);
+  if (!var) return std::nullopt;
+  std::string text = m.name(slot.variable);
+  uint32_t type = m.pointeeType(var->typeId);
+  for (uint32_t index : slot.indices) {
+    const Instruction* def = m.definition(type);
+    if (!def || def->opcode != spv::OpTypeStruct) return std::nullopt;
+    std::string member = m.memberName(type, index);
+    if (member.empty()) return std::nullopt;
+    text += (text.empty() ? "" : ".") + member;
+    type = def->operand(index);
+  }
+  bool madeUp = text.empty() || text.starts_with("gl_") || text.find("stereoshift_") != std::string::npos;
+  if (madeUp) return std::nullopt;
+  return text;
+}
+
 // The innermost name of a slot: the member name, or the loose uniform's name.
 std::string slotLeafName(const Module& m, const Slot& slot) {
   Slot plain = slot;

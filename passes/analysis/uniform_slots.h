@@ -55,6 +55,10 @@ uint32_t slotType(const spirv::Module& m, const Slot& slot);
 // "instance.member" (block type name when the instance is unnamed, as in HLSL cbuffers), or the
 // loose uniform's name. Array and vector indices are written as [i].
 std::string slotName(const spirv::Module& m, const Slot& slot);
+// The slot as GLSL source reads it: `viewPos`, `ubo.camPos`, `camPos` (a member of an anonymous
+// block), `cam.pos` (a uniform struct); none for an array element, the translation column of an
+// inverse, or a name the front end made (`gl_`, `stereoshift_`).
+std::optional<std::string> slotSourceAccess(const spirv::Module& m, const Slot& slot);
 // The innermost name of a slot: the member name, or the loose uniform's name.
 std::string slotLeafName(const spirv::Module& m, const Slot& slot);
 // Whether `wanted` (--camera-uniform) names the slot: its full name, its leaf or "Block.member".

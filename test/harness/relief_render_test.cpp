@@ -493,13 +493,15 @@ struct TutorialCase {
 constexpr double kMaxDifferingFraction = 5.0 / 10000.0;
 const double kPsnrFloor = 10.0 * std::log10(1.0 / kMaxDifferingFraction);
 
-void renderTutorialCase(VulkanContext& context, const TutorialCase& c) {
-  SCOPED_TRACE(c.name);
+// `spliced`: the pipeline converted to its own language, the vertex stage by the source splice (the
+// camera's reads wrapped in the text), each output compiled as a driver would; else to SPIR-V.
+void renderTutorialCase(VulkanContext& context, const TutorialCase& c, bool spliced = false) {
+  SCOPED_TRACE(c.name + (spliced ? " (spliced text)" : ""));
   std::vector<SourceFile> sources;
   for (const auto& f : c.files) sources.push_back({CORPUS_DIR "/relief-tutorial/" + f, {}});
   for (auto& s : sources) ASSERT_TRUE(readFile(s.path, &s.contents)) << s.path;
   TranspileOptions options;
-  options.target = TargetLanguage::Spirv;
+  options.target = spliced ? TargetLanguage::Auto : TargetLanguage::Spirv;
   options.validateEach = true;
 
   std::vector<TranspileResult> converted = transpilePipeline(sources, options);
@@ -508,6 +510,15 @@ void renderTutorialCase(VulkanContext& context, const TutorialCase& c) {
   // The tutorial form is fixed in the vertex stage (in front of a geometry stage too): the later
   // stages only pass on or read the varyings.
   ASSERT_EQ(converted[0].report["passes"]["per-eye-view"]["result"], "changed") << converted[0].report.dump(2);
+  if (spliced) {
+    ASSERT_EQ(converted[0].report.value("route", ""), "glsl-source-splice") << converted[0].report.dump(2);
+    for (size_t i = 0; i < sources.size(); ++i) {
+      Diagnostics diags;
+      FrontEndResult text = compileToSpirv(SourceFile{sources[i].path, converted[i].output}, options, diags);
+      ASSERT_TRUE(text.ok) << diags.format() << converted[i].output;
+      converted[i].output.assign(reinterpret_cast<const char*>(text.spirv.data()), text.spirv.size() * 4);
+    }
+  }
 
   // Original and fixed modules, each through the harness's OpenGL-to-Vulkan rewrite (loose uniforms
   // into one block per stage, a no-op for Vulkan GLSL and HLSL).
@@ -662,6 +673,32 @@ TEST(ReliefRender, TutorialFormMatchesGroundTruth) {
                    },
                    {{"gHeightScale", floats({kHeightScale})}, {"gMinSamples", integer(8)}, {"gMaxSamples", integer(32)}}});
   for (const auto& c : cases) renderTutorialCase(*context, c);
+}
+
+// The same scenes with the vertex stage spliced into its own text (GLSL 330 loose uniforms, Vulkan
+// GLSL with a vec4 camera in a block): the wrapped camera reads give the same images as the IR fix.
+TEST(ReliefRender, TutorialFormSplicedTextMatchesGroundTruth) {
+  std::string error;
+  auto context = VulkanContext::create(&error);
+  ASSERT_TRUE(context) << error;
+  const M identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  auto vulkanCamera = [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
+    return std::map<std::string, Words>{{"projection", floats(proj)},
+                                        {"view", floats(view)},
+                                        {"model", floats(identity)},
+                                        {"lightPos", floats({kLight[0], kLight[1], kLight[2], 1})},
+                                        {"cameraPos", floats({camera[0], camera[1], camera[2], 1})}};
+  };
+  std::vector<TutorialCase> cases = {
+      {"gl330_parallax_mapping", {"gl330/parallax_mapping.vert", "gl330/parallax_mapping.frag"}, looseCamera,
+       {{"heightScale", floats({kHeightScale})}}},
+      {"gl330_steep_parallax", {"gl330/steep_parallax.vert", "gl330/steep_parallax.frag"}, looseCamera,
+       {{"heightScale", floats({kHeightScale})}}},
+      {"vk450_parallax_occlusion", {"vk450/parallax.vert", "vk450/parallax.frag"}, vulkanCamera,
+       {{"heightScale", floats({kHeightScale})}, {"parallaxBias", floats({-0.02})}, {"numLayers", floats({48})},
+        {"mappingMode", integer(3)}}},
+  };
+  for (const auto& c : cases) renderTutorialCase(*context, c, true);
 }
 
 }  // namespace

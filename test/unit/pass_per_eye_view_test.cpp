@@ -188,7 +188,10 @@ TEST(PerEyeViewPipeline, CameraPassedToTheNextStageIsPerEyeWhereTheFragmentStage
   // The eye centre from the matrices that take the written world point to the clip position.
   EXPECT_NE(pass["fixed"][0]["eye_centre"].get<std::string>().find("inverse(projection * view)"), std::string::npos);
   EXPECT_FALSE(pass.contains("application"));  // nothing for the application to fill
-  EXPECT_NE(results[0].output.find("eyeWorld + (inverse(projection * view)"), std::string::npos) << results[0].output;
+  // Spliced into the vertex shader's own text: the camera's reads go through the per-eye helper.
+  EXPECT_NE(results[0].output.find("stereoshift_eye_eyeWorld(eyeWorld)"), std::string::npos) << results[0].output;
+  EXPECT_NE(results[0].output.find("return stereoshift_camera + (inverse(projection * view)"), std::string::npos)
+      << results[0].output;
   EXPECT_TRUE(results[1].copiedThrough);  // the fragment shader is not touched
 }
 

@@ -168,6 +168,100 @@ bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::strin
   return true;
 }
 
+// Per-eye cameras: every read of a camera in a function body wrapped as `function(camera)`, the
+// helper's prototype before each top-level function that reads it. Refused where the text is not
+// plain enough to be sure every read is the camera's: a read in a macro, a local, parameter or
+// other declaration of the same name, a struct holding the camera used whole.
+bool wrapCameraReads(const std::string& source, const std::vector<Word>& w,
+                     const std::vector<GlslSpliceOptions::CameraWrap>& cameras, std::string& text, std::string& error) {
+  std::map<size_t, std::string> inserts;  // offset -> text inserted there
+  for (const auto& camera : cameras) {
+    std::vector<std::string> parts;
+    for (size_t from = 0;;) {
+      size_t dot = camera.access.find('.', from);
+      parts.push_back(camera.access.substr(from, dot - from));
+      if (dot == std::string::npos) break;
+      from = dot + 1;
+    }
+    const std::string prototype = "/* ---- stereoshift ---- */ " + camera.type + " " + camera.function + "(" +
+                                  camera.type + " stereoshift_camera); /* ---- end stereoshift ---- */ ";
+    size_t itemStart = 0, reads = 0;
+    int depth = 0, parens = 0;
+    std::vector<bool> functionBody;  // per open brace: whether it opens a function body
+    bool inBody = false;
+    for (size_t k = 0; k < w.size(); ++k) {
+      const std::string& t = w[k].text;
+      if (!w[k].inDefine && t == "{") {
+        functionBody.push_back(depth == 0 && k > 0 && w[k - 1].text == ")");
+        inBody = inBody || functionBody.back();
+        ++depth;
+        continue;
+      }
+      if (!w[k].inDefine && t == "}" && depth > 0) {
+        --depth;
+        bool body = functionBody.back();
+        functionBody.pop_back();
+        if (body) inBody = false;
+        if (depth == 0 && body) itemStart = k + 1;
+        continue;
+      }
+      if (!w[k].inDefine && t == ";" && depth == 0) itemStart = k + 1;
+      if (!w[k].inDefine && (t == "(" || t == ")")) parens += t == "(" ? 1 : -1;
+      if (t != parts[0] || (k > 0 && w[k - 1].text == ".")) continue;
+      if (w[k].inDefine) {
+        error = "the camera '" + camera.access + "' is named inside a macro";
+        return false;
+      }
+      // A declaration of the name: the camera's own (a global, a block member), a struct's member
+      // (read through `.`, never the camera), or a local or parameter that hides the camera.
+      bool declared = k > 0 && isIdentifierStart(w[k - 1].text[0]) && w[k - 1].text != "return";
+      if (declared && (inBody || (depth == 0 && parens > 0))) {
+        error = "a local or parameter named '" + parts[0] + "' hides the camera '" + camera.access + "'";
+        return false;
+      }
+      if (declared || !inBody) continue;
+      size_t last = k;
+      bool whole = true;
+      for (size_t j = 1; j < parts.size() && whole; ++j) {
+        whole = last + 2 < w.size() && w[last + 1].text == "." && w[last + 2].text == parts[j];
+        if (whole) last += 2;
+      }
+      if (!whole) {
+        if (k + 1 < w.size() && w[k + 1].text == ".") continue;  // another member
+        error = "'" + parts[0] + "', which holds the camera '" + camera.access + "', is used whole";
+        return false;
+      }
+      inserts[w[k].begin] += camera.function + "(";
+      inserts[w[last].end] = ")" + inserts[w[last].end];
+      size_t at = w[itemStart].begin;
+      if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
+      ++reads;
+    }
+    if (reads == 0) {
+      error = "the camera '" + camera.access + "' is not read in a function of the text";
+      return false;
+    }
+  }
+  size_t pos = 0;
+  for (const auto& [at, insert] : inserts) {
+    text.append(source, pos, at - pos);
+    text += insert;
+    pos = at;
+  }
+  text.append(source, pos, std::string::npos);
+  return true;
+}
+
+std::string cameraDefinitions(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
+  std::string t;
+  for (const auto& c : o.cameras) {
+    std::string offset = c.type == "vec4" ? "vec4(" + c.offset + ", 0.0)" : c.offset;
+    t += c.type + " " + c.function + "(" + c.type + " stereoshift_camera)" + nl + "{" + nl + ind +
+         "return stereoshift_camera + " + offset + ";" + nl + "}" + nl;
+  }
+  return t;
+}
+
 }  // namespace
 
 std::string glslFloatLiteral(float value) {
@@ -198,9 +292,22 @@ std::vector<std::string> exactPositionCopies(const std::string& source) {
   return out;
 }
 
-GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOptions& options) {
+GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceOptions& options) {
   GlslSpliceResult result;
-  std::string nl = source.find("\r\n") != std::string::npos ? "\r\n" : "\n";
+  std::string nl = original.find("\r\n") != std::string::npos ? "\r\n" : "\n";
+  for (const auto& word : words(original))
+    for (const auto& camera : options.cameras)
+      if (word.text == camera.function) {
+        result.error = "the shader already uses the name `" + camera.function + "` (is it converted already?)";
+        return result;
+      }
+  // The camera reads first: every later edit reads the text with them (they add no `main`, no emit).
+  std::string source;
+  if (options.cameras.empty()) {
+    source = original;
+  } else if (!wrapCameraReads(original, words(original), options.cameras, source, result.error)) {
+    return result;
+  }
   std::vector<Word> w = words(source);
   const std::string& entry = options.entryPoint;
   const std::string monoMain = entry + kMonoSuffix;
@@ -217,7 +324,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
     if (!wrapEmits(source, w, text, result)) return result;
     if (!text.empty() && text.back() != '\n') t += nl;
     t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
-    t += declarationText(options, nl);
+    t += declarationText(options, nl) + cameraDefinitions(options, ind, nl);
     t += std::string("void ") + kShiftHelper + "()" + nl + "{" + nl + shiftStatements(options, ind, nl) + "}" + nl;
   } else {
     size_t pos = 0;
@@ -236,7 +343,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& source, const GlslSpliceOpt
     result.sites = 1;
     if (!text.empty() && text.back() != '\n') t += nl;
     t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
-    t += declarationText(options, nl);
+    t += declarationText(options, nl) + cameraDefinitions(options, ind, nl);
     t += "void " + entry + "()" + nl + "{" + nl + ind + monoMain + "();" + nl + shiftStatements(options, ind, nl) + "}" + nl;
   }
   t += "// ---- end stereoshift ----" + nl;

@@ -13,6 +13,9 @@
 //     `{ stereoshift_shiftPosition(); EmitVertex(); }` (the shift of the vertex about to be
 //     emitted), with a prototype of the helper before each function that emits and its definition
 //     appended at the end of the file;
+//   - per-eye cameras (per-eye-view): every read of the camera in a function body becomes
+//     `stereoshift_eye_<camera>(camera)`, with the helper's prototype before each function that
+//     reads it and its definition (`camera + this eye's offset`) in the appended block;
 //   - appended with it: the eye parameters, as the passes declared them (`declarations`: a uniform
 //     block with its layout, or loose uniforms when none are given).
 //
@@ -50,6 +53,16 @@ struct GlslSpliceOptions : ShiftSpec {
   std::vector<std::string> declarations;
   // Outputs (as written in the source) that are exact copies of gl_Position: given the shifted value.
   std::vector<std::string> haloCopies;
+  // Camera positions made this eye's (per-eye-view): every read of `access` in a function body
+  // becomes `<function>(access)`, the function's prototype goes before each function that reads it
+  // and its definition, `camera + offset`, into the appended block.
+  struct CameraWrap {
+    std::string access;    // `viewPos`, `ubo.camPos`
+    std::string type;      // vec3 or vec4 (w not moved)
+    std::string function;  // stereoshift_eye_<access, `.` as `_`>
+    std::string offset;    // a vec3 expression of the eye parameters and the shader's own matrices
+  };
+  std::vector<CameraWrap> cameras;
 };
 
 struct GlslSpliceResult {

@@ -59,7 +59,11 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
   if (names.size() < 3) names = {spec.eyeSignName, spec.separationName, spec.convergenceName};
   switch (ctx.eye.source) {
     case EyeSource::LooseUniforms:
-      return true;  // `uniform float <name>;` (the splice's default)
+      // `uniform float <name>;` (the splice's default for the three of the shift), each one declared
+      // when the passes declared more (a per-eye camera's offset).
+      if (facts.names.size() > 3)
+        for (const auto& name : facts.names) spec.declarations.push_back("uniform float " + name + ";");
+      return true;
     case EyeSource::SpecConstant: {
       if (!info.vulkan) {
         why = "specialization constants exist only in Vulkan GLSL";
@@ -109,6 +113,55 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
   }
 }
 
+// Eye parameter `which` as the splice's text reads it (`eyeOffsetX`, `stereo.eyeOffsetX`).
+std::string eyeParamText(const EmitRequest& r, const GlslSpliceOptions& spec, int which) {
+  const std::vector<std::string>& names = r.context.record.eyeParams.names;
+  std::string name = which < static_cast<int>(names.size()) ? names[static_cast<size_t>(which)] : std::string();
+  size_t dot = spec.eyeSignName.find('.');
+  return dot == std::string::npos ? name : spec.eyeSignName.substr(0, dot + 1) + name;
+}
+
+// The per-eye cameras the passes made, as the splice writes them (glsl_splice.h); false with `why`
+// set when one cannot be written in the text.
+bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& why) {
+  const PerEyeViewFacts& facts = r.context.record.perEyeView;
+  if (facts.fixed.empty()) return true;
+  if (facts.cameraTexts.size() != facts.fixed.size()) {
+    why = facts.cameraTextMissing.empty() ? "a per-eye camera has no name in the text" : facts.cameraTextMissing;
+    return false;
+  }
+  const SourceInfo& info = r.context.source;
+  for (const CameraText& c : facts.cameraTexts) {
+    GlslSpliceOptions::CameraWrap wrap;
+    wrap.access = c.access;
+    wrap.type = c.components == 4 ? "vec4" : "vec3";
+    wrap.function = "stereoshift_eye_" + c.access;
+    std::replace(wrap.function.begin(), wrap.function.end(), '.', '_');
+    if (c.offset == CameraText::EyeOffsetParams) {
+      wrap.offset = "vec3(" + eyeParamText(r, spec, kEyeOffsetX) + ", " + eyeParamText(r, spec, kEyeOffsetY) + ", " +
+                    eyeParamText(r, spec, kEyeOffsetZ) + ")";
+    } else {
+      if (c.offset == CameraText::InvertedClipMatrices && (info.es ? info.version < 300 : info.version < 140)) {
+        why = "the per-eye camera inverts the clip matrices, and inverse() needs GLSL 140 / ESSL 300";
+        return false;
+      }
+      // InvVP * (e*S*C, 0, 0, 0): the clip-space direction of the shift at zero depth, in world space.
+      std::string matrix;
+      for (const auto& m : c.matrices) matrix += (matrix.empty() ? "" : " * ") + m;
+      if (c.offset == CameraText::InvertedClipMatrices)
+        matrix = "inverse(" + matrix + ")";
+      else if (c.matrices.size() > 1)
+        matrix = "(" + matrix + ")";
+      std::string direction = "vec4((" + spec.eyeSignName + " * " + spec.separationName + ") * " +
+                              spec.convergenceName + ", 0.0, 0.0, 0.0)";
+      wrap.offset = (c.columnVectors ? "(" + matrix + " * " + direction + ")" : "(" + direction + " * " + matrix + ")") +
+                    ".xyz";
+    }
+    spec.cameras.push_back(std::move(wrap));
+  }
+  return true;
+}
+
 // The halo outputs the passes shifted, as the source names them, when each is an exact copy of
 // gl_Position the splice can re-copy; empty with `why` set when one is not.
 bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::string& why) {
@@ -155,7 +208,7 @@ class GlslSpliceRoute final : public BackEndRoute {
       return RouteDecision::decline("not a GLSL pre-rasterisation stage kept in its own dialect");
     if (ctx.options.eye.select != EyeSelect::Parameter)
       return RouteDecision::decline(fallbackNote("the single-pass stereo modes are written by SPIRV-Cross"), true);
-    auto beyond = ctx.record.passesWithEditsBeyond(kGlslSpliceRenders);
+    auto beyond = ctx.record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera);
     if (!beyond.empty())
       return RouteDecision::decline(fallbackNote("the splice cannot carry what the " + beyond.front() + " pass changed"),
                                     true);
@@ -185,7 +238,7 @@ class GlslSpliceRoute final : public BackEndRoute {
     splice.stage = ctx.source.stage;
     if (!r.entryPointOption.empty()) splice.entryPoint = r.entryPointOption;
     std::string why;
-    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why)) {
+    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why) || !perEyeCameras(r, splice, why)) {
       result.status = EmitResult::Declined;
       result.declinedBecause = fallbackNote(why);
       return result;

@@ -1,7 +1,7 @@
 // --camera-uniform NAME forces a uniform with a name no hint recognises (and a use structure alone
 // cannot decide in a vertex shader alone) to be the camera: every load becomes the per-eye centre.
-// Without the option the shader only gets the shift (spliced into its own text); with it, the
-// per-eye-view change needs SPIRV-Cross's re-emit, which the report's notes say.
+// Without the option the shader only gets the shift; with it, the camera's reads also go through a
+// helper that adds this eye's offset. Both spliced into the shader's own text.
 // RUN: %stereoshift --camera-uniform uP0 --validate-each --verify %s -o %t.out.vert --report %t.json
 // RUN: %rmchecks %t.out.vert | FileCheck %s
 // RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
@@ -13,16 +13,16 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 0) out vec3 outRay;
 void main() {
   outRay = inPosition - g.uP0;
-// CHECK: outRay = inPosition - (g.uP0 + (inverse(g.uVP) * vec4((stereo.eyeSign * stereo.separation) * stereo.convergence, 0.0, 0.0, 0.0)).xyz);
+// CHECK: outRay = inPosition - stereoshift_eye_g_uP0(g.uP0);
+// CHECK: return stereoshift_camera + (inverse(g.uVP) * vec4((stereo.eyeSign * stereo.separation) * stereo.convergence, 0.0, 0.0, 0.0)).xyz;
 // PLAIN: outRay = inPosition - g.uP0;
 // PLAIN-NOT: inverse(
 // PLAIN: main_stereoshift_mono();
 // PLAIN-NEXT: if (stereo.eyeSign != 0.0 && abs(gl_Position.w - 1.0) >
   gl_Position = g.uVP * vec4(inPosition, 1.0);
 }
-// REPORT: "notes": [
-// REPORT-NEXT: "GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: the splice cannot carry what the per-eye-view pass changed"
-// REPORT-NEXT: ],
+// REPORT-NOT: re-emitted
 // REPORT: "uniform": "g.uP0",
 // REPORT-NEXT: "why": "forced by --camera-uniform"
 // REPORT: "result": "changed"
+// REPORT: "route": "glsl-source-splice"
