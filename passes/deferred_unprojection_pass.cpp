@@ -43,6 +43,7 @@
 // application sets it to P00) and the report says so, except for an interpolated ray: without a
 // projection in the shader it cannot be told from a colour or normal scaled by a texel, and is
 // reported, not fixed.
+#include "passes/analysis/uniform_slots.h"
 #include "passes/deferred_unprojection/row_products.h"
 #include "passes/deferred_unprojection/unprojection.h"
 #include "passes/eye_param_emitter.h"
@@ -224,6 +225,29 @@ void decideViewRays(PassContext& ctx, const ValueFlow& index, SourceAnalysis& be
                                                                                           : ctx.options.eye.projScaleXName));
     found.fixableRays.push_back(&r);
   }
+}
+
+// The rewrites as source text can carry them (run_record.h, UnprojectionText): only unprojections
+// `M * v` through a matrix the text names plainly.
+void recordUnprojectionTexts(const spirv::Module& m, const std::vector<Product>& products, const Findings& found,
+                             DeferredFacts& facts) {
+  if (!found.fixableRays.empty() || !found.reprojections.empty()) {
+    facts.unprojectionTextMissing = "a view ray's or a re-projection's fix";
+    return;
+  }
+  std::vector<UnprojectionText> texts;
+  for (const auto& p : products) {
+    if (!p.recognised) continue;
+    auto slot = analysis::loadedSlot(m, p.matrix);
+    auto access = slot ? analysis::slotSourceAccess(m, *slot) : std::nullopt;
+    if (p.vectorTimesMatrix || !access) {
+      facts.unprojectionTextMissing = p.vectorTimesMatrix ? "an unprojection written `v * M`"
+                                                          : "an unprojection through a matrix the text does not name plainly";
+      return;
+    }
+    texts.push_back({*access});
+  }
+  facts.unprojectionTexts = std::move(texts);
 }
 
 // Each matrix product: an unprojection (fixed), a re-projection of a fixed view-ray position
@@ -419,6 +443,7 @@ class DeferredUnprojectionPass final : public Pass {
       facts.applicationFills = ctx.eye.names[kProjScaleX] +
                                " = P[0][0], the x scale of the projection the G-buffer was drawn with "
                                "(no projection matrix in the shader to take it from)";
+    recordUnprojectionTexts(m, products, found, facts);
     for (const auto& p : products)
       if (p.recognised) rewrite(ctx, p);
     for (const RayProduct* r : found.fixableRays) rewriteRay(ctx, *r);

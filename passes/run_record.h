@@ -197,8 +197,19 @@ struct CameraTextFix {
   std::array<std::string, 4> columnZ;  // InvM[i][z], i = 0..3
 };
 
+// An unprojection `InvM * v` of source text (GLSL) as a splice can carry it: the product, found in
+// the text as `<matrix> * <operand>`, goes through a helper that returns q' (deferred_unprojection
+// _pass.cpp's rewrite).
+struct UnprojectionText {
+  std::string matrix;  // as the source reads it: `uInvViewProj`, `frame.invViewProj`
+};
+
 struct DeferredFacts {
   std::vector<ViewDependentUse> fixed, leftAlone;
+  // Every rewrite of the module as source text carries it, or why not (a view ray, a
+  // re-projection, a matrix without a plain name, `v * M`): see UnprojectionText.
+  std::vector<UnprojectionText> unprojectionTexts;
+  std::string unprojectionTextMissing;
   std::vector<RowProductTextFix> textFixes;  // with PassOptions::sourceTextFixes
   std::vector<ViewRayTextFix> rayTextFixes;  // likewise
   std::vector<CameraTextFix> cameraTextFixes;  // likewise

@@ -141,7 +141,7 @@ def unwrap_calls(text, prefix):
 
 def undo_inline_edits(text):
     """The splices' edits inside lines undone: renamed entry points, wrapped emits, returns and out
-    parameters, attributes moved to a wrapper, per-eye camera reads, one-line marked insertions."""
+    parameters, attributes moved to a wrapper, per-eye camera reads and unprojections, one-line marked insertions."""
     text = re.sub(r"/\* ---- stereoshift ---- \*/.*?/\* ---- end stereoshift ---- \*/ ", "", text)
     text = re.sub(r"/\* stereoshift: moved to the wrapper: (.*?) \*/", r"\1", text)
     text = re.sub(r"\{ stereoshift_shiftPosition\(\); (.*?) \}", r"\1", text)
@@ -152,6 +152,7 @@ def undo_inline_edits(text):
     text = re.sub(r"(?:\w+ = stereoshift_shift_\w+\(\w+\); )+(?=\})", "", text)
     text = unwrap_calls(text, "stereoshift_shift_")
     text = unwrap_calls(text, "stereoshift_eye_")  # a per-eye camera read through its helper
+    text = unwrap_calls(text, "stereoshift_unproject_")  # an unprojection through its helper
     return re.sub(r"\b(\w+)_stereoshift_mono\b", r"\1", text)
 
 

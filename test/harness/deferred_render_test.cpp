@@ -422,14 +422,22 @@ struct Transpiled {
   nlohmann::json report;
 };
 
-Transpiled compileTranspiled(const char* name, const char* text, TranspileOptions options) {
-  options.target = TargetLanguage::Spirv;
+// `splicedText`: converted to its own language (the GLSL splice wraps the product in its helper),
+// and that text compiled here as a driver would; else converted to SPIR-V.
+Transpiled compileTranspiled(const char* name, const char* text, TranspileOptions options, bool splicedText = false) {
+  options.target = splicedText ? TargetLanguage::Auto : TargetLanguage::Spirv;
   TranspileResult r = transpile(SourceFile{name, text}, options);
   EXPECT_TRUE(r.ok) << r.diagnostics.format();
   EXPECT_TRUE(r.changed) << "the lighting shader was not fixed";
   Transpiled t;
-  t.spirv.resize(r.output.size() / 4);
-  std::memcpy(t.spirv.data(), r.output.data(), t.spirv.size() * 4);
+  if (splicedText) {
+    EXPECT_EQ(r.report.value("route", std::string()), "glsl-source-splice") << r.report.dump(2);
+    EXPECT_NE(r.output.find("stereoshift_unproject_"), std::string::npos) << r.output;
+    t.spirv = compileOriginal(name, r.output.c_str(), options);
+  } else {
+    t.spirv.resize(r.output.size() / 4);
+    std::memcpy(t.spirv.data(), r.output.data(), t.spirv.size() * 4);
+  }
   const auto& eye = r.report["passes"]["eye-params"];
   t.eyeSet = eye.value("set", 0u);
   t.eyeBinding = eye.value("binding", 0u);
@@ -615,6 +623,7 @@ class DeferredRender : public ::testing::Test {
   // The camera check: the view vector to the rebuilt position from this eye's camera.
   void checkViewVector(const char* name, const char* text, const char* tag);
 
+  bool splicedText_ = false;  // the fix through the GLSL splice's text (compileTranspiled)
   std::unique_ptr<VulkanContext> context_;
   std::vector<uint32_t> gbufferVert_, albedoFrag_, normalFrag_, fullScreenVert_;
   VertexBuffer vertices_;
@@ -642,7 +651,7 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
         fixedPosition[component] = renderLighting(g, fixedDump, monoInverse, nullptr, eye, stereo);
         baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye, mono);
       } else {
-        Transpiled transpiled = compileTranspiled(name, text, options);
+        Transpiled transpiled = compileTranspiled(name, text, options, splicedText_);
         truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye);
         fixedPosition[component] = renderLighting(g, transpiled.spirv, monoInverse, &transpiled, eye);
         baseline[component] = renderLighting(g, original, monoInverse, nullptr, eye);
@@ -732,6 +741,13 @@ void DeferredRender::checkLitImage(const char* name, const char* text, const cha
 
 TEST_F(DeferredRender, RebuiltPositionWithinRoundingOfTheTruePosition) {
   checkRebuiltPositions("deferred_light.frag", kLightingFrag, "deferred");
+}
+
+// The same check with the fix spliced into the shader's own GLSL text: the product wrapped in
+// stereoshift_unproject_frame_invViewProj(), the rest as written, compiled as a driver would.
+TEST_F(DeferredRender, SplicedGlslTextWithinRoundingOfTheTruePosition) {
+  splicedText_ = true;
+  checkRebuiltPositions("deferred_light.frag", kLightingFrag, "deferred spliced");
 }
 
 TEST_F(DeferredRender, LitImageMatchesTruthWithTheFixNotWithTheMonoInverse) {

@@ -172,42 +172,124 @@ bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::strin
 // helper's prototype before each top-level function that reads it. Refused where the text is not
 // plain enough to be sure every read is the camera's: a read in a macro, a local, parameter or
 // other declaration of the same name, a struct holding the camera used whole.
-bool wrapCameraReads(const std::string& source, const std::vector<Word>& w,
-                     const std::vector<GlslSpliceOptions::CameraWrap>& cameras, std::string& text, std::string& error) {
-  std::map<size_t, std::string> inserts;  // offset -> text inserted there
-  for (const auto& camera : cameras) {
-    std::vector<std::string> parts;
-    for (size_t from = 0;;) {
-      size_t dot = camera.access.find('.', from);
-      parts.push_back(camera.access.substr(from, dot - from));
-      if (dot == std::string::npos) break;
-      from = dot + 1;
+using Inserts = std::map<size_t, std::string>;  // offset -> text inserted there
+
+// Splits `a.b.c` into its names.
+std::vector<std::string> accessParts(const std::string& access) {
+  std::vector<std::string> parts;
+  for (size_t from = 0;;) {
+    size_t dot = access.find('.', from);
+    parts.push_back(access.substr(from, dot - from));
+    if (dot == std::string::npos) return parts;
+    from = dot + 1;
+  }
+}
+
+// The last word of `parts` (`a . b . c`) read from `k` on, or npos when the words there are not it.
+size_t accessEnd(const std::vector<Word>& w, size_t k, const std::vector<std::string>& parts) {
+  if (w[k].text != parts[0]) return std::string::npos;
+  size_t last = k;
+  for (size_t j = 1; j < parts.size(); ++j) {
+    if (last + 2 >= w.size() || w[last + 1].text != "." || w[last + 2].text != parts[j]) return std::string::npos;
+    last += 2;
+  }
+  return last;
+}
+
+// The word that closes the bracket opened at `open` (`(`, `[`), or npos.
+size_t closing(const std::vector<Word>& w, size_t open) {
+  const std::string opener = w[open].text, closer = opener == "(" ? ")" : "]";
+  int depth = 0;
+  for (size_t k = open; k < w.size() && !w[k].inDefine; ++k) {
+    if (w[k].text == opener) ++depth;
+    if (w[k].text == closer && --depth == 0) return k;
+  }
+  return std::string::npos;
+}
+
+// The last word of the postfix expression starting at `k` (a name, a call or constructor, a
+// parenthesised expression, then member accesses, swizzles and indices), or npos.
+size_t postfixEnd(const std::vector<Word>& w, size_t k) {
+  if (k >= w.size() || w[k].inDefine) return std::string::npos;
+  size_t end;
+  if (w[k].text == "(") {
+    end = closing(w, k);
+  } else if (isIdentifierStart(w[k].text[0])) {
+    end = k + 1 < w.size() && w[k + 1].text == "(" ? closing(w, k + 1) : k;
+  } else {
+    return std::string::npos;
+  }
+  while (end != std::string::npos && end + 1 < w.size()) {
+    if (w[end + 1].text == "." && end + 2 < w.size() && isIdentifierStart(w[end + 2].text[0]))
+      end += 2;
+    else if (w[end + 1].text == "[")
+      end = closing(w, end + 1);
+    else
+      break;
+  }
+  return end;
+}
+
+// Where each top-level item starts and whether a word is inside a function body, for the wraps.
+struct Scopes {
+  std::vector<size_t> itemStart;  // per word: the first word of the top-level declaration it is in
+  std::vector<bool> inBody, parameter;  // per word: in a function body; in a parameter list at file scope
+};
+
+Scopes scopesOf(const std::vector<Word>& w) {
+  Scopes s;
+  size_t itemStart = 0;
+  int depth = 0, parens = 0;
+  std::vector<bool> functionBody;  // per open brace: whether it opens a function body
+  bool inBody = false;
+  for (size_t k = 0; k < w.size(); ++k) {
+    const std::string& t = w[k].text;
+    s.itemStart.push_back(itemStart);
+    s.inBody.push_back(inBody);
+    s.parameter.push_back(depth == 0 && parens > 0);
+    if (w[k].inDefine) continue;
+    if (t == "{") {
+      functionBody.push_back(depth == 0 && k > 0 && w[k - 1].text == ")");
+      inBody = inBody || functionBody.back();
+      ++depth;
+    } else if (t == "}" && depth > 0) {
+      --depth;
+      bool body = functionBody.back();
+      functionBody.pop_back();
+      if (body) inBody = false;
+      if (depth == 0 && body) itemStart = k + 1;
+    } else if (t == ";" && depth == 0) {
+      itemStart = k + 1;
+    } else if (t == "(" || t == ")") {
+      parens += t == "(" ? 1 : -1;
     }
-    const std::string prototype = "/* ---- stereoshift ---- */ " + camera.type + " " + camera.function + "(" +
-                                  camera.type + " stereoshift_camera); /* ---- end stereoshift ---- */ ";
-    size_t itemStart = 0, reads = 0;
-    int depth = 0, parens = 0;
-    std::vector<bool> functionBody;  // per open brace: whether it opens a function body
-    bool inBody = false;
+  }
+  return s;
+}
+
+// `function(` before word `first`, `)` after word `last`, the prototype before the item.
+void wrap(const std::vector<Word>& w, const Scopes& scopes, size_t first, size_t last, const std::string& function,
+          const std::string& prototype, Inserts& inserts) {
+  inserts[w[first].begin] += function + "(";
+  inserts[w[last].end] = ")" + inserts[w[last].end];
+  size_t at = w[scopes.itemStart[first]].begin;
+  if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
+}
+
+std::string markedPrototype(const std::string& declaration) {
+  return "/* ---- stereoshift ---- */ " + declaration + "; /* ---- end stereoshift ---- */ ";
+}
+
+bool wrapCameraReads(const std::vector<Word>& w, const Scopes& scopes, const GlslSpliceOptions& o, Inserts& inserts,
+                     std::string& error) {
+  const std::string highp = o.es ? "highp " : "";
+  for (const auto& camera : o.cameras) {
+    std::vector<std::string> parts = accessParts(camera.access);
+    const std::string type = highp + camera.type;
+    const std::string prototype = markedPrototype(type + " " + camera.function + "(" + type + " stereoshift_camera)");
+    size_t reads = 0;
     for (size_t k = 0; k < w.size(); ++k) {
-      const std::string& t = w[k].text;
-      if (!w[k].inDefine && t == "{") {
-        functionBody.push_back(depth == 0 && k > 0 && w[k - 1].text == ")");
-        inBody = inBody || functionBody.back();
-        ++depth;
-        continue;
-      }
-      if (!w[k].inDefine && t == "}" && depth > 0) {
-        --depth;
-        bool body = functionBody.back();
-        functionBody.pop_back();
-        if (body) inBody = false;
-        if (depth == 0 && body) itemStart = k + 1;
-        continue;
-      }
-      if (!w[k].inDefine && t == ";" && depth == 0) itemStart = k + 1;
-      if (!w[k].inDefine && (t == "(" || t == ")")) parens += t == "(" ? 1 : -1;
-      if (t != parts[0] || (k > 0 && w[k - 1].text == ".")) continue;
+      if (w[k].text != parts[0] || (k > 0 && w[k - 1].text == ".")) continue;
       if (w[k].inDefine) {
         error = "the camera '" + camera.access + "' is named inside a macro";
         return false;
@@ -215,26 +297,18 @@ bool wrapCameraReads(const std::string& source, const std::vector<Word>& w,
       // A declaration of the name: the camera's own (a global, a block member), a struct's member
       // (read through `.`, never the camera), or a local or parameter that hides the camera.
       bool declared = k > 0 && isIdentifierStart(w[k - 1].text[0]) && w[k - 1].text != "return";
-      if (declared && (inBody || (depth == 0 && parens > 0))) {
+      if (declared && (scopes.inBody[k] || scopes.parameter[k])) {
         error = "a local or parameter named '" + parts[0] + "' hides the camera '" + camera.access + "'";
         return false;
       }
-      if (declared || !inBody) continue;
-      size_t last = k;
-      bool whole = true;
-      for (size_t j = 1; j < parts.size() && whole; ++j) {
-        whole = last + 2 < w.size() && w[last + 1].text == "." && w[last + 2].text == parts[j];
-        if (whole) last += 2;
-      }
-      if (!whole) {
+      if (declared || !scopes.inBody[k]) continue;
+      size_t last = accessEnd(w, k, parts);
+      if (last == std::string::npos) {
         if (k + 1 < w.size() && w[k + 1].text == ".") continue;  // another member
         error = "'" + parts[0] + "', which holds the camera '" + camera.access + "', is used whole";
         return false;
       }
-      inserts[w[k].begin] += camera.function + "(";
-      inserts[w[last].end] = ")" + inserts[w[last].end];
-      size_t at = w[itemStart].begin;
-      if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
+      wrap(w, scopes, k, last, camera.function, prototype, inserts);
       ++reads;
     }
     if (reads == 0) {
@@ -242,6 +316,48 @@ bool wrapCameraReads(const std::string& source, const std::vector<Word>& w,
       return false;
     }
   }
+  return true;
+}
+
+// Unprojections: every `<matrix> * <operand>` in a function body wrapped, as many as the analysis
+// fixed through that matrix (else the text and the analysis disagree on which product is which).
+bool wrapUnprojections(const std::vector<Word>& w, const Scopes& scopes, const GlslSpliceOptions& o, Inserts& inserts,
+                       std::string& error) {
+  const std::string type = o.es ? "highp vec4" : "vec4";
+  for (const auto& u : o.unprojections) {
+    std::vector<std::string> parts = accessParts(u.matrix);
+    const std::string prototype = markedPrototype(type + " " + u.function + "(" + type + " stereoshift_q)");
+    int found = 0;
+    std::vector<std::pair<size_t, size_t>> spans;
+    for (size_t k = 0; k < w.size(); ++k) {
+      if (w[k].text != parts[0] || (k > 0 && (w[k - 1].text == "." || w[k - 1].text == "*" || w[k - 1].text == "/")))
+        continue;
+      size_t last = accessEnd(w, k, parts);
+      if (last == std::string::npos || last + 1 >= w.size() || w[last + 1].text != "*") continue;
+      if (w[k].inDefine || !scopes.inBody[k]) {
+        error = "the product through '" + u.matrix + "' is written in a macro or outside a function";
+        return false;
+      }
+      size_t end = postfixEnd(w, last + 2);
+      if (end == std::string::npos) {
+        error = "the operand of the product through '" + u.matrix + "' is not a plain expression";
+        return false;
+      }
+      spans.push_back({k, end});
+      ++found;
+    }
+    if (found != u.products) {
+      error = "the text has " + std::to_string(found) + " product(s) `" + u.matrix + " * ...`, the analysis fixed " +
+              std::to_string(u.products);
+      return false;
+    }
+    for (const auto& [first, last] : spans) wrap(w, scopes, first, last, u.function, prototype, inserts);
+  }
+  return true;
+}
+
+std::string applyInserts(const std::string& source, const Inserts& inserts) {
+  std::string text;
   size_t pos = 0;
   for (const auto& [at, insert] : inserts) {
     text.append(source, pos, at - pos);
@@ -249,15 +365,21 @@ bool wrapCameraReads(const std::string& source, const std::vector<Word>& w,
     pos = at;
   }
   text.append(source, pos, std::string::npos);
-  return true;
+  return text;
 }
 
-std::string cameraDefinitions(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
+std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
+  const std::string highp = o.es ? "highp " : "";
   std::string t;
   for (const auto& c : o.cameras) {
     std::string offset = c.type == "vec4" ? "vec4(" + c.offset + ", 0.0)" : c.offset;
-    t += c.type + " " + c.function + "(" + c.type + " stereoshift_camera)" + nl + "{" + nl + ind +
+    t += highp + c.type + " " + c.function + "(" + highp + c.type + " stereoshift_camera)" + nl + "{" + nl + ind +
          "return stereoshift_camera + " + offset + ";" + nl + "}" + nl;
+  }
+  for (const auto& u : o.unprojections) {
+    std::string d = "(" + o.eyeSignName + " * " + o.separationName + ") * (1.0 - " + o.convergenceName + " * stereoshift_q.w)";
+    t += highp + "vec4 " + u.function + "(" + highp + "vec4 stereoshift_q)" + nl + "{" + nl + ind + "return " +
+         o.eyeSignName + " != 0.0 ? stereoshift_q - " + u.matrix + "[0] * (" + d + ") : stereoshift_q;" + nl + "}" + nl;
   }
   return t;
 }
@@ -295,17 +417,31 @@ std::vector<std::string> exactPositionCopies(const std::string& source) {
 GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceOptions& options) {
   GlslSpliceResult result;
   std::string nl = original.find("\r\n") != std::string::npos ? "\r\n" : "\n";
-  for (const auto& word : words(original))
-    for (const auto& camera : options.cameras)
-      if (word.text == camera.function) {
-        result.error = "the shader already uses the name `" + camera.function + "` (is it converted already?)";
-        return result;
-      }
-  // The camera reads first: every later edit reads the text with them (they add no `main`, no emit).
-  std::string source;
-  if (options.cameras.empty()) {
-    source = original;
-  } else if (!wrapCameraReads(original, words(original), options.cameras, source, result.error)) {
+  std::vector<Word> originalWords = words(original);
+  std::set<std::string> helpers;
+  for (const auto& c : options.cameras) helpers.insert(c.function);
+  for (const auto& u : options.unprojections) helpers.insert(u.function);
+  for (const auto& word : originalWords)
+    if (helpers.count(word.text)) {
+      result.error = "the shader already uses the name `" + word.text + "` (is it converted already?)";
+      return result;
+    }
+  // The wraps first: every later edit reads the text with them (they add no `main`, no emit).
+  std::string source = original;
+  if (!helpers.empty()) {
+    Scopes scopes = scopesOf(originalWords);
+    Inserts inserts;
+    if (!wrapCameraReads(originalWords, scopes, options, inserts, result.error) ||
+        !wrapUnprojections(originalWords, scopes, options, inserts, result.error))
+      return result;
+    source = applyInserts(original, inserts);
+  }
+  if (!options.shift) {
+    std::string t = source.empty() || source.back() == '\n' ? "" : nl;
+    t += "// ---- stereoshift: stereo parameters and per-eye helpers (injected) ----" + nl;
+    t += declarationText(options, nl) + helperDefinitions(options, "    ", nl) + "// ---- end stereoshift ----" + nl;
+    result.text = source + t;
+    result.ok = true;
     return result;
   }
   std::vector<Word> w = words(source);
@@ -324,7 +460,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
     if (!wrapEmits(source, w, text, result)) return result;
     if (!text.empty() && text.back() != '\n') t += nl;
     t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
-    t += declarationText(options, nl) + cameraDefinitions(options, ind, nl);
+    t += declarationText(options, nl) + helperDefinitions(options, ind, nl);
     t += std::string("void ") + kShiftHelper + "()" + nl + "{" + nl + shiftStatements(options, ind, nl) + "}" + nl;
   } else {
     size_t pos = 0;
@@ -343,7 +479,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
     result.sites = 1;
     if (!text.empty() && text.back() != '\n') t += nl;
     t += "// ---- stereoshift: stereo parameters and clip-space shift (injected) ----" + nl;
-    t += declarationText(options, nl) + cameraDefinitions(options, ind, nl);
+    t += declarationText(options, nl) + helperDefinitions(options, ind, nl);
     t += "void " + entry + "()" + nl + "{" + nl + ind + monoMain + "();" + nl + shiftStatements(options, ind, nl) + "}" + nl;
   }
   t += "// ---- end stereoshift ----" + nl;

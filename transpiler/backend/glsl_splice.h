@@ -1,5 +1,7 @@
 // GLSL source splice: this turns a GLSL / ESSL vertex, tessellation-evaluation or geometry shader
-// of any version into its stereo version in the same dialect, drop-in: the original text with a
+// of any version into its stereo version in the same dialect, drop-in (and a stage that gets no
+// shift, a fragment shader say, into its per-eye version where the passes fixed a camera or an
+// unprojection): the original text with a
 // few marked edits. The passes decided what to change (for ESSL 100 / GLSL 1xx on the analysis
 // translation, transpiler/frontend/legacy_glsl.h); their decisions are rendered into the user's own
 // text, so every declaration, layout, qualifier, struct or block varying, #version line, #extension,
@@ -16,6 +18,8 @@
 //   - per-eye cameras (per-eye-view): every read of the camera in a function body becomes
 //     `stereoshift_eye_<camera>(camera)`, with the helper's prototype before each function that
 //     reads it and its definition (`camera + this eye's offset`) in the appended block;
+//   - unprojections (deferred-unprojection, any stage): every `InvM * v` the analysis fixed becomes
+//     `stereoshift_unproject_<InvM>(InvM * v)`, likewise with a prototype and a definition;
 //   - appended with it: the eye parameters, as the passes declared them (`declarations`: a uniform
 //     block with its layout, or loose uniforms when none are given).
 //
@@ -63,6 +67,18 @@ struct GlslSpliceOptions : ShiftSpec {
     std::string offset;    // a vec3 expression of the eye parameters and the shader's own matrices
   };
   std::vector<CameraWrap> cameras;
+  // Unprojections made this eye's (deferred-unprojection): every `<matrix> * <operand>` in a function
+  // body becomes `<function>(<matrix> * <operand>)`, the helper returning
+  // q - matrix[0] * (eyeSign*separation)*(1 - convergence*q.w) (q itself when eyeSign is 0).
+  struct UnprojectionWrap {
+    std::string matrix;    // `uInvViewProj`, `frame.invViewProj`
+    std::string function;  // stereoshift_unproject_<matrix, `.` as `_`>
+    int products = 1;      // how many products through it the analysis fixed: the text must have as many
+  };
+  std::vector<UnprojectionWrap> unprojections;
+  // false: the stage gets no shift (a fragment shader, a stage before the one that rasterises): no
+  // `main` renamed, the appended block holds the eye parameters and the helpers only.
+  bool shift = true;
 };
 
 struct GlslSpliceResult {

@@ -24,7 +24,8 @@
 namespace stereoshift {
 
 bool takesGlslSpliceRoute(const SourceInfo& info, TargetLanguage target, const BackEndOptions& options) {
-  bool stage = info.stage == Stage::Vertex || info.stage == Stage::TessEvaluation || info.stage == Stage::Geometry;
+  bool stage = info.stage == Stage::Vertex || info.stage == Stage::TessEvaluation || info.stage == Stage::Geometry ||
+               info.stage == Stage::Fragment;  // a fragment shader for its per-eye fixes only
   return info.language == SourceLanguage::Glsl && stage &&
          target == (info.es ? TargetLanguage::Essl : TargetLanguage::Glsl) && !options.targetVersion &&
          !options.forceReemit;
@@ -57,12 +58,16 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
   const EyeParamFacts& facts = ctx.record.eyeParams;
   std::vector<std::string> names = facts.names;
   if (names.size() < 3) names = {spec.eyeSignName, spec.separationName, spec.convergenceName};
+  // An ESSL fragment shader's default float precision may be mediump; a uniform the vertex stage
+  // declares too must have the same precision in both (highp there by default), or the program
+  // does not link.
+  const std::string highp = info.es && info.stage == Stage::Fragment ? "highp " : "";
   switch (ctx.eye.source) {
     case EyeSource::LooseUniforms:
       // `uniform float <name>;` (the splice's default for the three of the shift), each one declared
       // when the passes declared more (a per-eye camera's offset).
-      if (facts.names.size() > 3)
-        for (const auto& name : facts.names) spec.declarations.push_back("uniform float " + name + ";");
+      if (facts.names.size() > 3 || !highp.empty())
+        for (const auto& name : names) spec.declarations.push_back("uniform " + highp + "float " + name + ";");
       return true;
     case EyeSource::SpecConstant: {
       if (!info.vulkan) {
@@ -103,7 +108,7 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
       for (const auto& q : layout) qualifiers += (qualifiers.empty() ? "" : ", ") + q;
       spec.declarations.push_back("layout(" + qualifiers + ") uniform " + block);
       spec.declarations.push_back("{");
-      for (const auto& name : names) spec.declarations.push_back("    float " + name + ";");
+      for (const auto& name : names) spec.declarations.push_back("    " + highp + "float " + name + ";");
       spec.declarations.push_back("} " + instance + ";");
       spec.eyeSignName = instance + "." + names[0];
       spec.separationName = instance + "." + names[1];
@@ -162,6 +167,32 @@ bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
   return true;
 }
 
+// The unprojections the passes made per eye, as the splice writes them; false with `why` set when
+// one of deferred-unprojection's rewrites cannot be written in the text.
+bool unprojections(const EmitRequest& r, GlslSpliceOptions& spec, std::string& why) {
+  const DeferredFacts& facts = r.context.record.deferred;
+  if (!r.context.record.madeEdit(EditKind::UnprojectionCorrection)) return true;
+  if (!facts.unprojectionTextMissing.empty() || facts.unprojectionTexts.empty()) {
+    why = "the splice cannot write " +
+          (facts.unprojectionTextMissing.empty() ? std::string("deferred-unprojection's fix") : facts.unprojectionTextMissing);
+    return false;
+  }
+  for (const UnprojectionText& u : facts.unprojectionTexts) {
+    auto same = std::find_if(spec.unprojections.begin(), spec.unprojections.end(),
+                             [&](const GlslSpliceOptions::UnprojectionWrap& w) { return w.matrix == u.matrix; });
+    if (same != spec.unprojections.end()) {
+      ++same->products;
+      continue;
+    }
+    GlslSpliceOptions::UnprojectionWrap wrap;
+    wrap.matrix = u.matrix;
+    wrap.function = "stereoshift_unproject_" + u.matrix;
+    std::replace(wrap.function.begin(), wrap.function.end(), '.', '_');
+    spec.unprojections.push_back(std::move(wrap));
+  }
+  return true;
+}
+
 // The halo outputs the passes shifted, as the source names them, when each is an exact copy of
 // gl_Position the splice can re-copy; empty with `why` set when one is not.
 bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::string& why) {
@@ -208,7 +239,8 @@ class GlslSpliceRoute final : public BackEndRoute {
       return RouteDecision::decline("not a GLSL pre-rasterisation stage kept in its own dialect");
     if (ctx.options.eye.select != EyeSelect::Parameter)
       return RouteDecision::decline(fallbackNote("the single-pass stereo modes are written by SPIRV-Cross"), true);
-    auto beyond = ctx.record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera);
+    auto beyond =
+        ctx.record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera | EditKind::UnprojectionCorrection);
     if (!beyond.empty())
       return RouteDecision::decline(fallbackNote("the splice cannot carry what the " + beyond.front() + " pass changed"),
                                     true);
@@ -217,7 +249,11 @@ class GlslSpliceRoute final : public BackEndRoute {
     bool shifted = std::any_of(ctx.record.passes.begin(), ctx.record.passes.end(), [](const PassStatus& p) {
       return hasEdit(p.edits, EditKind::PositionShift);
     });
-    if (!ctx.shiftPosition || !shifted)
+    // A stage without the shift (a fragment shader, a vertex shader before a geometry stage) takes
+    // the splice for its per-eye helpers alone.
+    bool helpersOnly = !shifted && (ctx.record.madeEdit(EditKind::PerEyeCamera) ||
+                                    ctx.record.madeEdit(EditKind::UnprojectionCorrection));
+    if ((!ctx.shiftPosition || !shifted) && !helpersOnly)
       return RouteDecision::decline(fallbackNote("the stage changed but its clip position is not shifted"), true);
     ShiftSpec spec = shiftSpec(ctx);
     if (spec.compensated)
@@ -238,7 +274,9 @@ class GlslSpliceRoute final : public BackEndRoute {
     splice.stage = ctx.source.stage;
     if (!r.entryPointOption.empty()) splice.entryPoint = r.entryPointOption;
     std::string why;
-    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why) || !perEyeCameras(r, splice, why)) {
+    splice.shift = ctx.shiftPosition && ctx.record.madeEdit(EditKind::PositionShift);
+    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why) || !perEyeCameras(r, splice, why) ||
+        !unprojections(r, splice, why)) {
       result.status = EmitResult::Declined;
       result.declinedBecause = fallbackNote(why);
       return result;

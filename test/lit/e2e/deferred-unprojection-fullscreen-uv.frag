@@ -15,14 +15,14 @@ void main() {
   vec3 worldPos = q.xyz / q.w;
   fragColor = vec4(vec3(1.0 / (1.0 + length(uLightPos - worldPos))), 1.0);
 }
+// CHECK: vec4 q = stereoshift_unproject_uInvViewProj(uInvViewProj * vec4(vUV * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0));
+// CHECK-NEXT: vec3 worldPos = q.xyz / q.w;
 // CHECK: uniform float eyeSign;
 // CHECK-NEXT: uniform float separation;
 // CHECK-NEXT: uniform float convergence;
-// CHECK: vec4 [[Q:_[0-9]+]] = uInvViewProj * vec4((vUV * 2.0) - vec2(1.0), (depth * 2.0) - 1.0, 1.0);
-// CHECK-NEXT: vec4 [[FIXED:_[0-9]+]] = [[Q]] - (uInvViewProj[0] * ((eyeSign * separation) * (1.0 - (convergence * [[Q]].w))));
-// CHECK-NEXT: bvec4 [[STEREO:_[0-9]+]] = bvec4(eyeSign != 0.0);
-// CHECK-NEXT: vec4 q = vec4([[STEREO]].x ? [[FIXED]].x : [[Q]].x,
-// CHECK-NEXT: vec3 worldPos = q.xyz / vec3(q.w);
+// CHECK-NEXT: vec4 stereoshift_unproject_uInvViewProj(vec4 stereoshift_q)
+// CHECK-NEXT: {
+// CHECK-NEXT: return eyeSign != 0.0 ? stereoshift_q - uInvViewProj[0] * ((eyeSign * separation) * (1.0 - convergence * stereoshift_q.w)) : stereoshift_q;
 
 // REPORT: "depth": "uDepth",
 // REPORT-NEXT: "depth_range": "remapped in the shader (e.g. depth * 2 - 1)",

@@ -4,7 +4,7 @@
 // RUN: %stereoshift --validate-each %t.once.frag --report %t.json -o %t.twice.frag
 // RUN: cmp %t.once.frag %t.twice.frag
 // RUN: FileCheck %s --input-file %t.json
-// RUN: FileCheck %s --check-prefix=ONCE --input-file %t.once.frag
+// RUN: %rmchecks %t.once.frag | FileCheck %s --check-prefix=ONCE
 #version 450
 layout(set = 0, binding = 0) uniform Frame { mat4 invViewProj; } frame;
 layout(set = 0, binding = 1) uniform sampler2D gDepth;

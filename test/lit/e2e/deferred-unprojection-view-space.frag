@@ -15,9 +15,8 @@ void main() {
   vec4 q = camera.invProj * vec4(toNdc(inUV), sampleDepth(inUV), 1.0);
   outViewPos = vec4(q.xyz / q.w, 1.0);
 }
-// CHECK: vec4 [[Q:_[0-9]+]] = camera.invProj * vec4(
-// CHECK-NEXT: vec4 q = mix([[Q]], [[Q]] - (camera.invProj[0] * ((stereo.eyeSign * stereo.separation) * (1.0 - (stereo.convergence * [[Q]].w)))), bvec4(stereo.eyeSign != 0.0));
-// CHECK-NEXT: outViewPos = vec4(q.xyz / vec3(q.w), 1.0);
+// CHECK: vec4 q = stereoshift_unproject_camera_invProj(camera.invProj * vec4(toNdc(inUV), sampleDepth(inUV), 1.0));
+// CHECK: return stereo.eyeSign != 0.0 ? stereoshift_q - camera.invProj[0] * ((stereo.eyeSign * stereo.separation) * (1.0 - stereo.convergence * stereoshift_q.w)) : stereoshift_q;
 
 // REPORT: "depth": "sceneDepth",
 // REPORT-NEXT: "depth_range": "as sampled ([0, 1])",

@@ -11,6 +11,7 @@ layout(set = 0, binding = 1) uniform sampler2D heightMap;
 layout(location = 0) in vec2 inUV;
 layout(location = 1) in vec3 inWorldPos;
 layout(location = 0) out vec4 outColor;
+// CHECK: normalize(inWorldPos - stereoshift_eye_frame_origin(frame.origin))
 // CHECK: layout(set = 0, binding = 2, std140) uniform StereoParams
 // CHECK-NEXT: {
 // CHECK-NEXT: float eyeSign;
@@ -23,7 +24,9 @@ layout(location = 0) out vec4 outColor;
 // CHECK-NEXT: } stereo;
 void main() {
   vec3 toEye = normalize(inWorldPos - frame.origin);
-// CHECK: normalize(inWorldPos - (frame.origin + vec3(stereo.eyeOffsetX, stereo.eyeOffsetY, stereo.eyeOffsetZ)))
+// CHECK-NEXT: vec3 stereoshift_eye_frame_origin(vec3 stereoshift_camera)
+// CHECK-NEXT: {
+// CHECK-NEXT: return stereoshift_camera + vec3(stereo.eyeOffsetX, stereo.eyeOffsetY, stereo.eyeOffsetZ);
   float h = texture(heightMap, inUV).r;
   outColor = texture(heightMap, inUV + toEye.xz * h * frame.heightScale);
 }

@@ -16,6 +16,7 @@ layout(location = 0) in vec2 inUV;
 layout(location = 1) in vec3 inWorldPos;
 layout(location = 2) in mat3 inWorldToTangent;
 layout(location = 0) out vec4 outColor;
+// CHECK: vec3 v = normalize(inWorldToTangent * (stereoshift_eye_camera_position(camera.position).xyz - inWorldPos));
 // CHECK: uniform StereoParams
 // CHECK-NEXT: {
 // CHECK-NEXT: float eyeSign;
@@ -24,7 +25,9 @@ layout(location = 0) out vec4 outColor;
 // CHECK-NEXT: } stereo;
 void main() {
   vec3 v = normalize(inWorldToTangent * (camera.position.xyz - inWorldPos));
-// CHECK: vec3 v = normalize(inWorldToTangent * ((camera.position + vec4((camera.invViewProj * vec4((stereo.eyeSign * stereo.separation) * stereo.convergence, 0.0, 0.0, 0.0)).xyz, 0.0)).xyz - inWorldPos));
+// CHECK-NEXT: vec4 stereoshift_eye_camera_position(vec4 stereoshift_camera)
+// CHECK-NEXT: {
+// CHECK-NEXT: return stereoshift_camera + vec4((camera.invViewProj * vec4((stereo.eyeSign * stereo.separation) * stereo.convergence, 0.0, 0.0, 0.0)).xyz, 0.0);
   vec2 step = -v.xy / max(v.z, 0.05) * 0.04 / 16.0;
   vec2 uv = inUV;
   for (int i = 0; i < 16 && texture(heightMap, uv).r < 1.0 - float(i) / 16.0; ++i)

@@ -9,8 +9,11 @@
 // REPORT: "uniform": "viewPosition",
 // REPORT: "use": "one of 4 elements of an array each subtracted from the surface point"
 // REPORT: "result": "changed"
-// CHECK: normalize((viewPosition + vec3(eyeOffsetX, eyeOffsetY, eyeOffsetZ)) - fragWorldPos)
-// CHECK-NOT: quad[{{[0-3]}}] + vec3(eyeOffsetX
+// CHECK-NOT: stereoshift_eye_quad
+// CHECK: normalize(stereoshift_eye_viewPosition(viewPosition) - fragWorldPos)
+// CHECK-NOT: stereoshift_eye_quad
+// CHECK: return stereoshift_camera + vec3(eyeOffsetX, eyeOffsetY, eyeOffsetZ);
+// CHECK-NOT: stereoshift_eye_quad
 #version 330
 uniform vec3 viewPosition;
 uniform vec3 quad[4];

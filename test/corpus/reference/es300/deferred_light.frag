@@ -1,36 +1,43 @@
 #version 300 es
+// stereoshift-expect: deferred-unproject
+// Deferred lighting fragment shader: world position from sampled depth and the full-screen UV through uInvViewProj.
+
 precision mediump float;
-precision highp int;
+
+in highp vec2 vUV;
 
 uniform highp sampler2D uDepthTex;
+uniform sampler2D uAlbedoRough;
+uniform sampler2D uNormalMetal;
 uniform highp mat4 uInvViewProj;
-uniform mediump sampler2D uAlbedoRough;
-uniform mediump sampler2D uNormalMetal;
 uniform highp vec3 uPointLightPos;
-uniform float uPointLightRadius;
 uniform vec3 uPointLightColor;
+uniform float uPointLightRadius;
+
+out vec4 fragColor;
+
+/* ---- stereoshift ---- */ highp vec4 stereoshift_unproject_uInvViewProj(highp vec4 stereoshift_q); /* ---- end stereoshift ---- */ void main()
+{
+    highp float depth = texture(uDepthTex, vUV).r;
+    highp vec4 q = stereoshift_unproject_uInvViewProj(uInvViewProj * vec4(vUV * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0));
+    highp vec3 worldPos = q.xyz / q.w;
+
+    vec4 albedoRough = texture(uAlbedoRough, vUV);
+    vec3 n = normalize(texture(uNormalMetal, vUV).xyz * 2.0 - 1.0);
+
+    highp vec3 toLight = uPointLightPos - worldPos;
+    float dist = length(toLight);
+    float atten = clamp(1.0 - dist / uPointLightRadius, 0.0, 1.0);
+    atten *= atten;
+    float ndl = max(dot(n, toLight / dist), 0.0);
+    fragColor = vec4(albedoRough.rgb * uPointLightColor * ndl * atten, 1.0);
+}
+// ---- stereoshift: stereo parameters and per-eye helpers (injected) ----
 uniform highp float eyeSign;
 uniform highp float separation;
 uniform highp float convergence;
-
-in highp vec2 vUV;
-out vec4 fragColor;
-
-void main()
+highp vec4 stereoshift_unproject_uInvViewProj(highp vec4 stereoshift_q)
 {
-    highp float depth = texture(uDepthTex, vUV).x;
-    highp vec4 _41 = uInvViewProj * vec4((vUV * 2.0) - vec2(1.0), (depth * 2.0) - 1.0, 1.0);
-    highp vec4 _126 = _41 - (uInvViewProj[0] * ((eyeSign * separation) * (1.0 - (convergence * _41.w))));
-    bvec4 _128 = bvec4(eyeSign != 0.0);
-    highp vec4 q = vec4(_128.x ? _126.x : _41.x, _128.y ? _126.y : _41.y, _128.z ? _126.z : _41.z, _128.w ? _126.w : _41.w);
-    highp vec3 worldPos = q.xyz / vec3(q.w);
-    vec4 albedoRough = texture(uAlbedoRough, vUV);
-    vec3 n = normalize((texture(uNormalMetal, vUV).xyz * 2.0) - vec3(1.0));
-    highp vec3 toLight = uPointLightPos - worldPos;
-    float dist = length(toLight);
-    float atten = clamp(1.0 - (dist / uPointLightRadius), 0.0, 1.0);
-    atten *= atten;
-    float ndl = max(dot(n, toLight / vec3(dist)), 0.0);
-    fragColor = vec4(((albedoRough.xyz * uPointLightColor) * ndl) * atten, 1.0);
+    return eyeSign != 0.0 ? stereoshift_q - uInvViewProj[0] * ((eyeSign * separation) * (1.0 - convergence * stereoshift_q.w)) : stereoshift_q;
 }
-
+// ---- end stereoshift ----
