@@ -84,7 +84,9 @@ def recompile_entry_points(glslang, path, entry_points):
         for name, facts in sorted(entry_points.items()):
             if facts.get("stage") not in STAGE_OF:
                 continue
-            cmd = [glslang, "-D", "-V", "-S", facts["stage"], "-e", name, "-o", os.devnull, f.name]
+            # The techniques-blanked copy lives elsewhere: its #includes resolve from the output's folder.
+            cmd = [glslang, "-D", "-V", "-I" + os.path.dirname(os.path.abspath(path)), "-S", facts["stage"], "-e", name,
+                   "-o", os.devnull, f.name]
             run = subprocess.run(cmd, capture_output=True, text=True)
             ok &= run.returncode == 0
             logs.append(run.stdout + run.stderr)

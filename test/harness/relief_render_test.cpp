@@ -511,7 +511,8 @@ void renderTutorialCase(VulkanContext& context, const TutorialCase& c, bool spli
   // stages only pass on or read the varyings.
   ASSERT_EQ(converted[0].report["passes"]["per-eye-view"]["result"], "changed") << converted[0].report.dump(2);
   if (spliced) {
-    ASSERT_EQ(converted[0].report.value("route", ""), "glsl-source-splice") << converted[0].report.dump(2);
+    std::string route = converted[0].report.value("route", "");
+    ASSERT_TRUE(route == "glsl-source-splice" || route == "hlsl-source-splice") << converted[0].report.dump(2);
     for (size_t i = 0; i < sources.size(); ++i) {
       Diagnostics diags;
       FrontEndResult text = compileToSpirv(SourceFile{sources[i].path, converted[i].output}, options, diags);
@@ -676,7 +677,8 @@ TEST(ReliefRender, TutorialFormMatchesGroundTruth) {
 }
 
 // The same scenes with the vertex stage spliced into its own text (GLSL 330 loose uniforms, Vulkan
-// GLSL with a vec4 camera in a block): the wrapped camera reads give the same images as the IR fix.
+// GLSL with a vec4 camera in a block, D3D-style HLSL): the wrapped camera reads give the same images
+// as the IR fix.
 TEST(ReliefRender, TutorialFormSplicedTextMatchesGroundTruth) {
   std::string error;
   auto context = VulkanContext::create(&error);
@@ -697,6 +699,15 @@ TEST(ReliefRender, TutorialFormSplicedTextMatchesGroundTruth) {
       {"vk450_parallax_occlusion", {"vk450/parallax.vert", "vk450/parallax.frag"}, vulkanCamera,
        {{"heightScale", floats({kHeightScale})}, {"parallaxBias", floats({-0.02})}, {"numLayers", floats({48})},
         {"mappingMode", integer(3)}}},
+      // HLSL: the camera's offset through the inverse of gViewProj, which the splice writes as its
+      // own cofactor inverse (HLSL has none).
+      {"hlsl_parallax_occlusion", {"hlsl/parallax.vert.hlsl", "hlsl/parallax.frag.hlsl"},
+       [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
+         return std::map<std::string, Words>{{"gWorld", floats(identity)},
+                                             {"gViewProj", floats(rt::multiply(proj, view))},
+                                             {"gEyePosW", floats({camera[0], camera[1], camera[2]})}};
+       },
+       {{"gHeightScale", floats({kHeightScale})}, {"gMinSamples", integer(8)}, {"gMaxSamples", integer(32)}}},
   };
   for (const auto& c : cases) renderTutorialCase(*context, c, true);
 }

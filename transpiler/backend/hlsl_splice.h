@@ -75,6 +75,19 @@ struct HlslSpliceOptions : ShiftSpec {
   // --corrections-only (vertex shaders): the driver shifts the clip position itself; only the halo
   // copies of it (`vertexEntries[].copies`) are shifted, the position is returned as it is.
   bool correctionsOnly = false;
+  // Vertex shaders: camera positions made this eye's (per-eye-view). Every read of `access` in a
+  // function body becomes `<function>(access)`, the helper (`camera + offset`) defined in the
+  // preamble, which then holds every eye parameter of `extraParams` too. `inverse`: the offset calls
+  // `stereoshift_inverse(float4x4)` (HLSL has no inverse), defined there as well.
+  struct CameraWrap {
+    std::string access;    // `gEyePosW`
+    std::string type;      // float3 or float4 (w not moved)
+    std::string function;  // stereoshift_eye_<access>
+    std::string offset;    // a float3 expression of the eye parameters and the shader's matrices
+  };
+  std::vector<CameraWrap> cameras;
+  bool inverse = false;
+  std::vector<std::string> extraParams;  // eye parameters after the three of the shift, in order
   // The epsilon is printed with 9 significant digits (round-trips a float); `precise` computes the
   // shifted x into a `precise float` temporary.
 };

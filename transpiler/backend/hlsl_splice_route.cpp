@@ -27,7 +27,12 @@ namespace {
 // shader, halo copies that are the clip position itself. What any other pass changed lives only in
 // the IR, which this route throws away, so a change there is refused rather than lost.
 std::string spliceBlocker(const RunRecord& record, Stage stage) {
-  for (const auto& pass : record.passesWithEditsBeyond(EditKind::EyeParameters | EditKind::PositionShift)) {
+  // A per-eye camera the text names plainly (a vertex shader's, hlslCameras) is the splice's too.
+  EditSet rendered = EditKind::EyeParameters | EditKind::PositionShift;
+  if (stage == Stage::Vertex && !record.perEyeView.fixed.empty() &&
+      record.perEyeView.cameraTexts.size() == record.perEyeView.fixed.size())
+    rendered = rendered | EditKind::PerEyeCamera;
+  for (const auto& pass : record.passesWithEditsBeyond(rendered)) {
     if (record.status(pass)->edits == editSet(EditKind::DerivedOutputShift) && stage == Stage::Vertex) {
       if (record.halo.derivedOutputs.empty()) continue;  // copies of the clip position: the splice shifts them too
       return "the " + pass + " pass changed the output '" + record.halo.derivedOutputs.front() +
@@ -36,6 +41,37 @@ std::string spliceBlocker(const RunRecord& record, Stage stage) {
     return "it cannot carry what the " + pass + " pass changed";
   }
   return {};
+}
+
+// The per-eye cameras as the HLSL splice writes them (a vertex shader's, cbuffer eye parameters):
+// the camera and its offset in HLSL, where SPIR-V's `v * M` is `mul(M, v)` and a product of SPIR-V
+// matrices S1 * S2 the HLSL mul(M2, M1) (glslang's matrices are HLSL's transposed).
+void hlslCameras(const PassContext& ctx, HlslSpliceOptions& splice) {
+  const std::vector<std::string>& names = ctx.record.eyeParams.names;
+  for (size_t k = 3; k < names.size(); ++k) splice.extraParams.push_back(names[k]);
+  auto param = [&](int which) { return which < static_cast<int>(names.size()) ? names[static_cast<size_t>(which)] : ""; };
+  for (const CameraText& c : ctx.record.perEyeView.cameraTexts) {
+    HlslSpliceOptions::CameraWrap wrap;
+    wrap.access = c.access;
+    wrap.type = c.components == 4 ? "float4" : "float3";
+    wrap.function = "stereoshift_eye_" + c.access;
+    std::replace(wrap.function.begin(), wrap.function.end(), '.', '_');
+    if (c.offset == CameraText::EyeOffsetParams) {
+      wrap.offset = "float3(" + param(kEyeOffsetX) + ", " + param(kEyeOffsetY) + ", " + param(kEyeOffsetZ) + ")";
+    } else {
+      std::string matrix;
+      for (const auto& m : c.matrices) matrix = matrix.empty() ? m : "mul(" + m + ", " + matrix + ")";
+      if (c.offset == CameraText::InvertedClipMatrices) {
+        matrix = "stereoshift_inverse(" + matrix + ")";
+        splice.inverse = true;
+      }
+      std::string direction = "float4((" + splice.eyeSignName + " * " + splice.separationName + ") * " +
+                              splice.convergenceName + ", 0.0f, 0.0f, 0.0f)";
+      wrap.offset = (c.columnVectors ? "mul(" + direction + ", " + matrix + ")" : "mul(" + matrix + ", " + direction + ")") +
+                    ".xyz";
+    }
+    splice.cameras.push_back(std::move(wrap));
+  }
 }
 
 // The entry point `name` to shift with the halo copies its passes found, named as the source names
@@ -191,6 +227,7 @@ class HlslSpliceRoute final : public BackEndRoute {
     splice.cbufferRegister = module.decorationValue(ctx.eye.variable, spv::DecorationBinding).value_or(0);
     if (r.options.eyeFrom3DMigoto) useStereoParamsTexture(splice);
     splice.correctionsOnly = ctx.options.correctionsOnly;
+    if (splice.vertex && !splice.stereoParamsTexture) hlslCameras(ctx, splice);
     HlslSpliceResult spliced = spliceHlslStereo(r.input.contents, splice);
     if (!spliced.ok) {
       diags.error(r.input.path, spliced.line, spliced.column, "cannot splice the stereo shift: " + spliced.error);

@@ -82,9 +82,39 @@ std::vector<std::string> shiftedXStatements(const ShiftSpec& spec, const std::st
 }  // namespace
 
 std::string cbufferText(const HlslSpliceOptions& opt, const std::string& nl) {
+  std::string extra;
+  for (const auto& name : opt.extraParams) extra += "    float " + name + ";" + nl;
   return "cbuffer " + opt.cbufferName + " : register(b" + std::to_string(opt.cbufferRegister) + ")" + nl + "{" + nl +
          "    float " + opt.eyeSignName + ";" + nl + "    float " + opt.separationName + ";" + nl + "    float " +
-         opt.convergenceName + ";" + nl + "};" + nl;
+         opt.convergenceName + ";" + nl + extra + "};" + nl;
+}
+
+// The inverse of a 4x4 matrix by cofactors (HLSL has no intrinsic): the 2x2 minors of rows 0-1
+// (s) and rows 2-3 (c), the determinant from them, each element of the adjugate over it.
+std::string inverseFunctionText(const std::string& nl) {
+  const char* lines[] = {
+      "float4x4 stereoshift_inverse(float4x4 m)",
+      "{",
+      "    float s0 = m[0][0] * m[1][1] - m[1][0] * m[0][1], s1 = m[0][0] * m[1][2] - m[1][0] * m[0][2];",
+      "    float s2 = m[0][0] * m[1][3] - m[1][0] * m[0][3], s3 = m[0][1] * m[1][2] - m[1][1] * m[0][2];",
+      "    float s4 = m[0][1] * m[1][3] - m[1][1] * m[0][3], s5 = m[0][2] * m[1][3] - m[1][2] * m[0][3];",
+      "    float c5 = m[2][2] * m[3][3] - m[3][2] * m[2][3], c4 = m[2][1] * m[3][3] - m[3][1] * m[2][3];",
+      "    float c3 = m[2][1] * m[3][2] - m[3][1] * m[2][2], c2 = m[2][0] * m[3][3] - m[3][0] * m[2][3];",
+      "    float c1 = m[2][0] * m[3][2] - m[3][0] * m[2][2], c0 = m[2][0] * m[3][1] - m[3][0] * m[2][1];",
+      "    float d = 1.0f / (s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0);",
+      "    return float4x4(",
+      "        ( m[1][1] * c5 - m[1][2] * c4 + m[1][3] * c3) * d, (-m[0][1] * c5 + m[0][2] * c4 - m[0][3] * c3) * d,",
+      "        ( m[3][1] * s5 - m[3][2] * s4 + m[3][3] * s3) * d, (-m[2][1] * s5 + m[2][2] * s4 - m[2][3] * s3) * d,",
+      "        (-m[1][0] * c5 + m[1][2] * c2 - m[1][3] * c1) * d, ( m[0][0] * c5 - m[0][2] * c2 + m[0][3] * c1) * d,",
+      "        (-m[3][0] * s5 + m[3][2] * s2 - m[3][3] * s1) * d, ( m[2][0] * s5 - m[2][2] * s2 + m[2][3] * s1) * d,",
+      "        ( m[1][0] * c4 - m[1][1] * c2 + m[1][3] * c0) * d, (-m[0][0] * c4 + m[0][1] * c2 - m[0][3] * c0) * d,",
+      "        ( m[3][0] * s4 - m[3][1] * s2 + m[3][3] * s0) * d, (-m[2][0] * s4 + m[2][1] * s2 - m[2][3] * s0) * d,",
+      "        (-m[1][0] * c3 + m[1][1] * c1 - m[1][2] * c0) * d, ( m[0][0] * c3 - m[0][1] * c1 + m[0][2] * c0) * d,",
+      "        (-m[3][0] * s3 + m[3][1] * s1 - m[3][2] * s0) * d, ( m[2][0] * s3 - m[2][1] * s1 + m[2][2] * s0) * d);",
+      "}"};
+  std::string t;
+  for (const char* line : lines) t += std::string(line) + nl;
+  return t;
 }
 
 std::string shiftFunctionText(const HlslSpliceOptions& spec, const ShiftHelper& helper, const std::string& nl) {
@@ -135,6 +165,12 @@ std::string preambleText(const HlslSpliceOptions& options, const std::vector<Shi
   else if (options.declareStereoParams)
     t += "Texture2D<float4> StereoParams : register(t125);" + nl + nl;
   for (size_t k = 0; k < helpers.size(); ++k) t += (k ? nl : "") + shiftFunctionText(options, helpers[k], nl);
+  if (options.inverse) t += inverseFunctionText(nl);
+  for (const auto& c : options.cameras) {
+    std::string offset = c.type == "float4" ? "float4(" + c.offset + ", 0.0f)" : c.offset;
+    t += c.type + " " + c.function + "(" + c.type + " stereoshift_camera)" + nl + "{" + nl +
+         "    return stereoshift_camera + " + offset + ";" + nl + "}" + nl;
+  }
   t += "// ---- end stereoshift ----" + nl;
   return t;
 }

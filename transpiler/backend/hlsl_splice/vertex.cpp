@@ -55,10 +55,38 @@ class VertexRewriter : Rewriter {
     for (const auto& plan : plans) {
       if (auto err = rewriteReturns(*plan.f, plan.returnShift, plan.outShifts)) return err;
     }
+    for (const auto& camera : opt_.cameras)
+      if (auto err = wrapCameraReads(camera, first)) return err;
     return std::nullopt;
   }
 
  private:
+  // Every read of the camera in a function body wrapped in its helper, which the preamble (at
+  // `preamble`) defines: a read before it, a local or parameter hiding the camera's name, a name
+  // inside a macro or a camera it does not name plainly is refused (the IR's re-emit carries it).
+  std::optional<SpliceError> wrapCameraReads(const HlslSpliceOptions::CameraWrap& camera, size_t preamble) {
+    int reads = 0;
+    for (const Function& f : functions_) {
+      for (const Param& p : f.params)
+        if (p.name == camera.access) return errAt(p.nameTok, "a parameter named '" + camera.access + "' hides the camera");
+      for (size_t t = f.bodyOpen + 1; t < f.bodyClose; ++t) {
+        if (!isWord(t, camera.access) || isPunct(t - 1, '.')) continue;
+        if (isIdent(t - 1) && text(t - 1) != "return")
+          return errAt(t, "a local named '" + camera.access + "' hides the camera");
+        if (toks_[t].begin < preamble) return errAt(t, "the camera '" + camera.access + "' is read before the entry point");
+        addEdit(toks_[t].begin, 0, camera.function + "(");
+        addEdit(toks_[t].end, 0, ")");
+        ++reads;
+      }
+    }
+    for (const auto& d : directives_)
+      for (const Token& t : d.body)
+        if (s_.compare(t.begin, t.end - t.begin, camera.access) == 0)
+          return SpliceError{d.begin, "the camera '" + camera.access + "' is named in a macro", false};
+    if (reads == 0) return SpliceError{npos, "the camera '" + camera.access + "' is not read in a function of the text", false};
+    return std::nullopt;
+  }
+
   struct EntryPlan {
     std::optional<SpliceError> error;
     std::string returnShift;
