@@ -25,7 +25,9 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                  "Read files ending in .EXT as STAGE shaders: --stage-ext EXT=STAGE (repeatable; e.g. vp=vert)")
       ->allow_extra_args(false);
   app.add_option("--target-env", o.targetEnv,
-                 "SPIR-V environment, as glslc: vulkan1.0 (default), vulkan1.1, vulkan1.2, vulkan1.3, opengl, opengl4.5");
+                 "SPIR-V environment, as glslc: vulkan1.0, vulkan1.1, vulkan1.2, vulkan1.3, opengl, opengl4.5 (default: the "
+                 "source's: Vulkan 1.0 for Vulkan GLSL and HLSL, OpenGL for OpenGL GLSL; a Vulkan environment refuses "
+                 "OpenGL GLSL, whose SPIR-V is OpenGL's)");
   app.add_option("--target-spv", o.targetSpv,
                  "SPIR-V version to make, as glslc: spv1.0 ... spv1.6 (default: the environment's; SPIR-V input keeps its own)");
   app.add_option("-e,--entry-point,--source-entrypoint", o.t.entryPoint,

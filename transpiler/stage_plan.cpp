@@ -489,6 +489,19 @@ bool validateForRoutes(StagePlan& plan, EmitRequest& request) {
     return false;
   request.inheritedInvalid = inherited;
   plan.record.frontEndSpirvInvalid = inherited;
+  // --target-env vulkan1.0 asked for explicitly: HLSL's cbuffer packing needs the relaxed block
+  // layout Vulkan 1.0 has only as an extension.
+  TargetLanguage target = *plan.record.target;
+  if ((target == TargetLanguage::Spirv || target == TargetLanguage::SpirvAsm) &&
+      plan.options.targetEnv == TargetEnv::Vulkan1_0) {
+    if (std::string strict = vulkan10StrictLayoutErrors(request.finalWords); !strict.empty()) {
+      plan.diags.error(plan.input->path,
+                       "--target-env vulkan1.0: the SPIR-V needs the relaxed block layout (VK_KHR_relaxed_block_layout, "
+                       "core from Vulkan 1.1) for its buffers as HLSL packs them (" +
+                           strict.substr(0, strict.find('\n')) + "); use --target-env vulkan1.1 or later");
+      return false;
+    }
+  }
   return true;
 }
 
@@ -499,8 +512,27 @@ void noteDecline(StagePlan& plan, const std::string& note) {
 
 }  // namespace
 
+// SPIR-V for a Vulkan environment from OpenGL GLSL: glslang makes OpenGL's SPIR-V of it (uniforms
+// outside a block, no descriptor sets), which a Vulkan validator and driver refuse. Refused with
+// the reason rather than written under the environment the user asked for.
+bool checkVulkanEnvironment(StagePlan& plan) {
+  const auto& env = plan.options.targetEnv;
+  TargetLanguage target = *plan.record.target;
+  bool spirv = target == TargetLanguage::Spirv || target == TargetLanguage::SpirvAsm;
+  if (!spirv || !env || *env == TargetEnv::OpenGL45 || plan.info.vulkan || plan.info.language != SourceLanguage::Glsl)
+    return true;
+  plan.diags.error(plan.input->path,
+                   "--target-env " + std::string(targetEnvName(*env)) +
+                       ": this is OpenGL GLSL (glslang takes it only under OpenGL's rules), whose SPIR-V is OpenGL's "
+                       "and does not validate for Vulkan; use --target-env opengl, or give "
+                       "the shader Vulkan GLSL's interface (uniforms in blocks with set and binding, locations on every "
+                       "input and output)");
+  return false;
+}
+
 bool emitStage(StagePlan& plan) {
   const std::string& file = plan.input->path;
+  if (!checkVulkanEnvironment(plan)) return false;
   EmitRequest request{*plan.input, *plan.context, plan.options, *plan.record.target, plan.changed};
   request.entryPointOption = plan.options.entryPoint;
   bool validated = false;

@@ -29,6 +29,28 @@ spv_target_env environmentFor(const SourceInfo& info, uint32_t version) {
 
 }  // namespace
 
+namespace {
+
+std::string errorsUnder(const std::vector<uint32_t>& words, spv_target_env env, bool relaxLayout) {
+  spvtools::SpirvTools tools(env);
+  std::string messages;
+  tools.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* message) {
+    if (level <= SPV_MSG_ERROR) messages += std::string(message) + "\n";
+  });
+  spvtools::ValidatorOptions options;
+  options.SetRelaxBlockLayout(relaxLayout);
+  if (tools.Validate(words.data(), words.size(), options)) return "";
+  while (!messages.empty() && messages.back() == '\n') messages.pop_back();
+  return messages.empty() ? "the validator refused the module without a message" : messages;
+}
+
+}  // namespace
+
+std::string vulkan10StrictLayoutErrors(const std::vector<uint32_t>& words) {
+  if (!errorsUnder(words, SPV_ENV_VULKAN_1_0, true).empty()) return "";
+  return errorsUnder(words, SPV_ENV_VULKAN_1_0, false);
+}
+
 std::string validationErrors(const std::vector<uint32_t>& words, const SourceInfo& info) {
   uint32_t version = words.size() > 1 ? words[1] : 0;
   spvtools::SpirvTools tools(environmentFor(info, version));

@@ -28,4 +28,9 @@ bool validateSpirv(const std::vector<uint32_t>& words, const SourceInfo& info, c
 // The validator's error messages for `words` ("" when they validate).
 std::string validationErrors(const std::vector<uint32_t>& words, const SourceInfo& info);
 
+// The errors Vulkan 1.0's strict block layout finds that the relaxed one (VK_KHR_relaxed_block_layout,
+// core from Vulkan 1.1) does not: HLSL's cbuffer packing (a float3 right after a float) in a module
+// otherwise valid for Vulkan 1.0. "" when there are none.
+std::string vulkan10StrictLayoutErrors(const std::vector<uint32_t>& words);
+
 }  // namespace stereoshift
