@@ -3,6 +3,7 @@
 #include "passes/shift_emitter.h"
 
 #include "passes/eye_param_emitter.h"
+#include "passes/eye_select.h"
 #include "passes/ir/builder.h"
 #include "passes/pass.h"
 
@@ -172,9 +173,19 @@ uint32_t emitCutoffCondition(PassContext& context, const ShiftSpec& spec, std::v
     uint32_t absDiff = b.add(spv::OpExtInst, f, {glsl, GLSLstd450FAbs, diff});
     b.addAs(far, spv::OpFOrdGreaterThan, boolType, {absDiff, m.constantFloat(spec.epsilon)});
   }
-  // An infinite w is not shifted either: separation 0 times infinity would be NaN.
-  uint32_t infinite = b.add(spv::OpIsInf, boolType, {w});
-  uint32_t finite = b.add(spv::OpLogicalNot, boolType, {infinite});
+  // An infinite w is not shifted either: separation 0 times infinity would be NaN. GLSL below 130
+  // and ESSL 100 have no isinf: there `|w| <= FLT_MAX` (false for inf and NaN alike; a NaN w fails
+  // the ordered comparison above anyway), as the text routes write it.
+  TargetLanguage target = outputLanguage(context);
+  bool hasIsinf = !glslOutput(target) || glslOutputVersion(context, target) >= (target == TargetLanguage::Essl ? 300 : 130);
+  uint32_t finite;
+  if (hasIsinf) {
+    uint32_t infinite = b.add(spv::OpIsInf, boolType, {w});
+    finite = b.add(spv::OpLogicalNot, boolType, {infinite});
+  } else {
+    uint32_t absW = b.add(spv::OpExtInst, f, {m.extInstImport("GLSL.std.450"), GLSLstd450FAbs, w});
+    finite = b.add(spv::OpFOrdLessThanEqual, boolType, {absW, m.constantFloat(3.40282347e+38f)});
+  }
   uint32_t farAndFinite = b.add(spv::OpLogicalAnd, boolType, {far, finite});
   return b.add(spv::OpLogicalAnd, boolType, {stereo, farAndFinite});
 }

@@ -2,6 +2,7 @@
 #include "passes/per_eye_view/eye_offset.h"
 
 #include "passes/eye_param_emitter.h"
+#include "passes/eye_select.h"
 #include "passes/ir/builder.h"
 #include "passes/ir/walker.h"
 #include "passes/pass.h"
@@ -408,7 +409,10 @@ OffsetSource chooseOffsetSource(const PassContext& ctx, const Module& f, const S
     source.description = apply(slotName(f, *inverse)) + "  [inverse view-projection by name]";
     return source;
   }
-  if (chain && !product.empty()) {
+  // GLSL below 140 and ESSL 100 have no inverse(): there the application's eye-offset parameters.
+  TargetLanguage target = outputLanguage(ctx);
+  bool hasInverse = !glslOutput(target) || glslOutputVersion(ctx, target) >= (target == TargetLanguage::Essl ? 300 : 140);
+  if (chain && !product.empty() && hasInverse) {
     bool allMat4 = std::all_of(product.begin(), product.end(),
                                [&](const Slot& s) { return isMat4(f, slotType(f, s)); });
     if (allMat4) {

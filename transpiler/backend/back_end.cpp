@@ -118,6 +118,18 @@ EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& i
           for (spv::Capability c : compiler.get_declared_capabilities())
             if (c == spv::CapabilityShaderViewportIndexLayerEXT) compiler.require_extension("GL_ARB_shader_viewport_layer_array");
         compiler.set_common_options(o);
+        // OpenGL GLSL has no separate textures and samplers (HLSL's Texture2D + SamplerState, Vulkan
+        // GLSL's texture2D + sampler): each pair used together becomes one combined sampler named
+        // <texture>_<sampler>, a texel fetch without a sampler reads through a dummy one.
+        if (!o.vulkan_semantics) {
+          uint32_t dummy = compiler.build_dummy_sampler_for_combined_images();
+          compiler.build_combined_image_samplers();
+          for (const auto& pair : compiler.get_combined_image_samplers()) {
+            std::string image = compiler.get_name(pair.image_id), sampler = compiler.get_name(pair.sampler_id);
+            bool alone = pair.sampler_id == dummy || sampler.empty();
+            compiler.set_name(pair.combined_id, alone ? image : image + "_" + sampler);
+          }
+        }
         result.text = compiler.compile();
         result.vulkanSemantics = o.vulkan_semantics;
         break;
