@@ -25,12 +25,15 @@ int convert(const std::vector<SourceFile>& sources, const CliOptions& o, const s
                                              ? std::vector<TranspileResult>{transpile(sources[0], o.t)}
                                              : transpilePipeline(sources, o.t);
   int errors = 0;
+  // A stage that failed without an error of its own failed with the pipeline (another stage's
+  // error stopped it): counted once, not once more per stage.
+  bool anyError = std::any_of(results.begin(), results.end(), [](const TranspileResult& r) { return r.diagnostics.hasErrors(); });
   for (size_t i = 0; i < results.size(); ++i) {
     auto& r = results[i];
     int diagnosticErrors = printDiagnostics(r.diagnostics, log);
     if (!r.passLog.empty()) log << r.passLog;
     if (!r.ok) {
-      errors += std::max(1, diagnosticErrors);
+      errors += diagnosticErrors > 0 ? diagnosticErrors : (anyError ? 0 : 1);
       r.report["ok"] = false;
       reports.push_back(r.report);
       continue;

@@ -75,6 +75,32 @@ bool definesMain(const SourceFile& input) {
   return false;
 }
 
+// A pipeline has one shader per stage; OpenGL may link one stage from several compilation units,
+// of which one defines `main`. Two GLSL units of one stage that each define `main` are two shaders
+// (`--pipeline a.vert,b.vert`): the second would be left mono without a word. Refused: every stage
+// fails, the error on the second unit.
+std::optional<std::vector<TranspileResult>> twoShadersOfOneStage(const std::vector<SourceFile>& stages,
+                                                                 const std::vector<std::unique_ptr<StagePlan>>& plans) {
+  for (size_t j = 0; j < plans.size(); ++j)
+    for (size_t i = 0; i < j; ++i) {
+      const StagePlan& a = *plans[i];
+      const StagePlan& b = *plans[j];
+      bool glsl = a.kind == InputKind::Source && b.kind == InputKind::Source && a.info.language == SourceLanguage::Glsl &&
+                  b.info.language == SourceLanguage::Glsl;
+      if (!glsl || !a.stage || !b.stage || !a.stage->stage || a.stage->stage != b.stage->stage ||
+          !definesMain(stages[i]) || !definesMain(stages[j]))
+        continue;
+      std::vector<TranspileResult> results(stages.size());
+      results[j].diagnostics.error(stages[j].path, std::string("--pipeline: ") + stages[i].path + " and " +
+                                                       stages[j].path + " are both -S " + stageName(*a.stage->stage) +
+                                                       " shaders with their own main; a pipeline has one shader per "
+                                                       "stage (linked from several units, only one defines main): "
+                                                       "convert them in pipelines of their own");
+      return results;
+    }
+  return std::nullopt;
+}
+
 // Pipeline order of the stages that come before rasterization; 0 for the others (tessellation
 // control, fragment, compute, task: never shifted).
 int shiftRank(std::optional<Stage> stage) {
@@ -231,6 +257,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     }
     plans.push_back(std::move(plan));
   }
+  if (auto refused = twoShadersOfOneStage(stages, plans)) return std::move(*refused);
   pipelineOptions = pipelineBinding(plans, pipelineOptions);
   handOnNextStageFacts(plans, pipelineOptions, last);
   std::vector<TranspileResult> results;
