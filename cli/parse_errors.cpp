@@ -97,7 +97,21 @@ std::vector<std::string> usageErrors(const CLI::App& app, const CLI::ParseError&
       // "--job-timout 5": the word after an unknown option is taken to be its value, not another error.
       if (arg.find('=') == std::string::npos && i + 1 < extras.size() && extras[i + 1].rfind("-", 0) != 0) ++i;
       std::string message = "unknown option '" + arg + "'";
-      if (auto nearest = nearestOption(apps, arg)) message += "; did you mean '" + *nearest + "'?";
+      std::string spelled = arg.substr(0, arg.find('='));
+      // A subcommand's own options first: a name close to the conversion's is no help there.
+      std::vector<const CLI::App*> own = apps.size() > 1 ? std::vector<const CLI::App*>{apps.back()} : apps;
+      auto nearest = nearestOption(own, arg);
+      if (auto anywhere = nearestOption(apps, arg); apps.size() > 1 && anywhere && *anywhere == spelled) {
+        // The name is right, the place is not: an option of the conversion given to a subcommand
+        // that does not read it (`verify --pipeline a.vert,a.frag`).
+        const std::string sub = apps.back()->get_name();
+        message = "option '" + spelled + "' is not one of " + sub + "'s (it belongs to the conversion: stereoshift " +
+                  spelled + " ...)";
+        if (sub == "verify" && spelled == "--pipeline")
+          message += "; verify takes the stages of a pipeline as its inputs: stereoshift verify a.vert a.frag";
+      } else if (nearest) {
+        message += "; did you mean '" + *nearest + "'?";
+      }
       messages.push_back(message);
     }
     if (!messages.empty()) return messages;

@@ -14,6 +14,13 @@ namespace stereoshift {
 
 namespace {
 
+// The verified shader or pipeline as its messages name it: every stage, in the order given.
+std::string joinedPaths(const std::vector<SourceFile>& sources) {
+  std::string names;
+  for (const auto& source : sources) names += (names.empty() ? "" : ", ") + source.path;
+  return names;
+}
+
 // D3D shader assembly does not run on Vulkan: it is converted by the same route `stereoshift`
 // takes (the assembly route, d3dasm/asm_route.h) and both texts are run on the assembly interpreter instead.
 int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, const VerifyCommandOptions& verify) {
@@ -118,7 +125,7 @@ int verifyInThisProcess(const std::vector<SourceFile>& sources, const TranspileO
     std::cerr << errors << (errors == 1 ? " error" : " errors") << " generated.\n";
     return 1;
   }
-  const std::string name = sources.back().path;
+  const std::string name = joinedPaths(sources);
   // Instanced mode rewrites 2D vertex shaders too (they draw once per eye): their instance reads and
   // eye routes are checked, with x left as it is.
   const bool rewrittenWithoutShift =
@@ -239,7 +246,7 @@ int runVerifyCommand(const std::vector<SourceFile>& sources, const TranspileOpti
       },
       0);
   if (outcome.completed && (outcome.payload == "0" || outcome.payload == "1")) return std::stoi(outcome.payload);
-  const std::string name = sources.empty() ? std::string("verify") : sources.back().path;
+  const std::string name = sources.empty() ? std::string("verify") : joinedPaths(sources);
   std::cerr << name << ": error: the verification run " << (outcome.completed ? "answered garbage" : outcome.failure)
             << (outcome.phase.empty() ? "" : " in " + outcome.phase)
             << "; a crash while the shaders run on the device means they read memory outside the buffers the "
