@@ -122,8 +122,15 @@ class TreeWalk {
         continue;
       }
       if (isDirectory) {
-        // An output directory inside the source tree is not part of the source.
+        // An output directory inside the source tree is not part of the source: this build's, or
+        // an earlier build's (`build tree -o tree/out`, then `-o elsewhere`), known by the cache
+        // file or the report a build leaves there.
         if (fs::weakly_canonical(path, entryError) == outCanonical_) continue;
+        if (const char* mark = earlierOutputMark(path)) {
+          plan_.warnings.push_back(path.string() + ": warning: an earlier stereoshift build's output (it holds " +
+                                   mark + "); not read as sources");
+          continue;
+        }
         plan_.extraDependencies.push_back(path);
         if (!it->is_symlink(entryError)) walk(path, files);
       } else if (isFile && mayBeShader(path)) {
@@ -154,6 +161,14 @@ class TreeWalk {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return extension == ".glsl" || extension == ".hlsl" || extension == ".fx";
+  }
+
+  // The file a build leaves in its output directory, when `dir` holds one.
+  static const char* earlierOutputMark(const fs::path& dir) {
+    std::error_code ec;
+    for (const char* mark : {kCacheFile, "stereoshift-report.json"})
+      if (fs::exists(dir / mark, ec)) return mark;
+    return nullptr;
   }
 
   Plan& plan_;
