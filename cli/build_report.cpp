@@ -56,15 +56,18 @@ BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& result
                                results[i].dependencies.end());
     for (size_t k = 0; k < results[i].reportTexts.size(); ++k)  // up to date
       addEntry(results[i].reportFacts[k], report.upToDate, results[i].reportTexts[k]);
-    for (const auto& r : results[i].reports)
-      addEntry(reportFacts(r), convertsShaders(plan.jobs[i].mode) ? report.converted : report.copied,
-               reportEntryText(r));
+    for (const auto& r : results[i].reports) {
+      bool converts = convertsShaders(plan.jobs[i].mode);
+      addEntry(reportFacts(r), converts ? report.converted : report.copied, reportEntryText(r));
+      if (converts && r.value("ok", false) && r.value("output", "") == "copied") ++report.unchanged;
+    }
   }
   nlohmann::json summary;
   summary["tool"] = std::string("stereoshift ") + version();
   summary["source"] = source;
   summary["summary"] = {{"pipelines", plan.jobs.size()}, {"shaders", report.shaders},
-                        {"converted", report.converted}, {"up_to_date", report.upToDate},
+                        {"converted", report.converted}, {"converted_unchanged", report.unchanged},
+                        {"up_to_date", report.upToDate},
                         {"copied_by_pass", report.copied}, {"failed", report.failed},
                         {"removed_stale_outputs", removed}};
   // The #include files copied into the output tree (copyIncludedFiles), relative to it.
@@ -90,6 +93,8 @@ void printSummaryLine(const BuildReport& report, const std::string& source, cons
   if (report.copied) std::cerr << ", " << report.copied << " copied (mono/post/UI passes)";
   if (report.failed) std::cerr << ", " << report.failed << " failed";
   if (report.removed) std::cerr << ", " << report.removed << " stale outputs removed";
+  // Converted, but nothing to inject (2D, fragment, already stereo): written as they were.
+  if (report.unchanged) std::cerr << "; " << report.unchanged << " of the converted unchanged (written as they were)";
   std::cerr << "\n";
 }
 

@@ -29,6 +29,7 @@ struct BuildReport {
   std::vector<std::string> dependencies;  // every input and included file, and the plan's extras
   size_t shaders = 0;
   int converted = 0, upToDate = 0, copied = 0, failed = 0, removed = 0;
+  int unchanged = 0;  // of `converted`: nothing to inject, the output is the input byte for byte
 };
 
 // The report of a run over `plan`; `results` are per job, `removed` the stale outputs deleted,

@@ -86,7 +86,8 @@ void drawProgress(size_t done, size_t total, const std::string& what) {
   int filled = total ? static_cast<int>(width * done / total) : width;
   std::string bar(static_cast<size_t>(filled), '=');
   if (filled < width) bar += '>' + std::string(static_cast<size_t>(width - filled - 1), ' ');
-  std::cerr << "\r[" << bar << "] " << done << "/" << total << " " << what << "\x1b[K" << std::flush;
+  // Pipelines, as the jobs run (a pipeline's stages convert together); the summary counts shaders.
+  std::cerr << "\r[" << bar << "] " << done << "/" << total << " pipelines " << what << "\x1b[K" << std::flush;
 }
 
 // The result of a job whose worker did not send one back (crashed, timed out, garbled).
