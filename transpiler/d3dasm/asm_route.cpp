@@ -1,5 +1,6 @@
 #include "transpiler/d3dasm/asm_route.h"
 
+#include "transpiler/d3dasm/asm_wellformed.h"
 
 namespace stereoshift {
 
@@ -36,6 +37,9 @@ std::string unsupportedOption(const TranspileOptions& options) {
 Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const TranspileOptions& options, StageRecord& record,
                                           Diagnostics& diags) {
   record.file = input.path;
+  // What the assembler would refuse when 3Dmigoto loads the dump is refused here, located.
+  if (Result<d3dasm::AsmText> parsed = d3dasm::parseAssembly(input.contents); parsed.ok() && parsed->model.major >= 4)
+    if (auto error = d3dasm::findAssemblerError(*parsed)) return errorAt(error->line, error->column, error->message);
   d3dasm::AsmShiftResult shifted =
       d3dasm::shiftAssembly(input.contents, assemblyShiftSpec(options), options.deferredUnprojection);
   if (!shifted.ok) return errorAt(shifted.error.line, shifted.error.column, shifted.error.message);
