@@ -354,4 +354,25 @@ nlohmann::json describeOptions(const TranspileOptions& t) {
   return description;
 }
 
+std::vector<std::string> glslcSpellings(int argc, char** argv, bool* depfileBesideOutput) {
+  std::vector<std::string> args;
+  for (int i = 0; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (i > 0 && arg.starts_with("-fshader-stage=")) {
+      args.insert(args.end(), {"-S", arg.substr(15)});
+    } else if (i > 0 && arg.starts_with("-fentry-point=")) {
+      args.insert(args.end(), {"-e", arg.substr(14)});
+    } else if (i > 0 && arg == "-MF") {
+      args.push_back("--depfile");
+    } else if (i > 0 && arg == "-MD") {
+      *depfileBesideOutput = true;
+    } else if (i > 0 && arg == "-c") {
+      // glslc's "compile only, no link": what every conversion is.
+    } else {
+      args.push_back(arg);
+    }
+  }
+  return args;
+}
+
 }  // namespace stereoshift

@@ -37,7 +37,17 @@ struct CliOptions {
   // 300, like `build --job-timeout`: far beyond any real shader, but an input that never finishes
   // (an include cycle, a pathological expression) still ends with an error.
   double timeoutSeconds = 300;
+  // glslc's spellings (the main command): -w drops warnings, -Werror makes them errors (the
+  // shader is not written), -MD writes a depfile beside the output.
+  bool noWarnings = false;
+  std::string warningsAs;  // -W<value>: "error"
+  bool depfileBesideOutput = false;
 };
+
+// glslc's spellings CLI11 cannot take as they are, rewritten before the parse: -fshader-stage=S
+// (-S S), -fentry-point=F (-e F), -MF FILE (--depfile FILE), -MD, and -c (compile only: all this
+// tool does) dropped.
+std::vector<std::string> glslcSpellings(int argc, char** argv, bool* depfileBesideOutput);
 
 // Registers the conversion options (shared by the main command, `build` and `verify`) on `app`.
 void addConversionOptions(CLI::App& app, CliOptions& o);

@@ -17,6 +17,24 @@ namespace fs = std::filesystem;
 
 namespace stereoshift {
 
+// -w drops the warnings; -Werror turns them into errors, and a stage with one is not written.
+static void applyWarningOptions(const CliOptions& o, TranspileResult& r) {
+  if (!o.noWarnings && o.warningsAs != "error") return;
+  Diagnostics kept;
+  bool promoted = false;
+  for (Diagnostic d : r.diagnostics.all()) {
+    if (d.severity == Severity::Warning) {
+      if (o.noWarnings) continue;
+      d.severity = Severity::Error;
+      d.message += " [-Werror]";
+      promoted = true;
+    }
+    kept.add(std::move(d));
+  }
+  r.diagnostics = std::move(kept);
+  if (promoted) r.ok = false;
+}
+
 // Converts one list of stages (a single shader is a pipeline of one); the outputs are only
 // collected: the caller writes all of them or, when a stage failed, none.
 int convert(const std::vector<SourceFile>& sources, const CliOptions& o, const std::function<std::string(size_t)>& outputFor,
@@ -28,6 +46,7 @@ int convert(const std::vector<SourceFile>& sources, const CliOptions& o, const s
   // A stage that failed without an error of its own failed with the pipeline (another stage's
   // error stopped it): counted once, not once more per stage.
   bool anyError = std::any_of(results.begin(), results.end(), [](const TranspileResult& r) { return r.diagnostics.hasErrors(); });
+  for (auto& r : results) applyWarningOptions(o, r);
   for (size_t i = 0; i < results.size(); ++i) {
     auto& r = results[i];
     int diagnosticErrors = printDiagnostics(r.diagnostics, log);

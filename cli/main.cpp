@@ -43,6 +43,8 @@ static int runCommandLine(int argc, char** argv) {
                  "Write the outputs' dependencies (the inputs and every #included file) as a Makefile-style depfile");
   app.add_option("--timeout", o.timeoutSeconds, "Seconds the conversion may take before it is stopped and reported (0: no limit)")
       ->capture_default_str();
+  app.add_flag("-w", o.noWarnings, "Suppress warnings (as glslc)");
+  app.add_option("-W", o.warningsAs, "-Werror: treat warnings as errors, nothing written (as glslc)")->check(CLI::IsMember({"error"}));
   ServiceOptions serviceOptions;
   addServiceOptions(app, serviceOptions);
 
@@ -66,8 +68,12 @@ static int runCommandLine(int argc, char** argv) {
   ReprojectCliOptions reprojectOptions;
   auto* reproject = addReprojectCommand(app, reprojectOptions);
 
+  // glslc's spellings (-fshader-stage=vert, -MD, -MF FILE, -c) into this tool's.
+  std::vector<std::string> spelled = glslcSpellings(argc, argv, &o.depfileBesideOutput);
+  std::vector<char*> args;
+  for (auto& a : spelled) args.push_back(a.data());
   try {
-    app.parse(argc, argv);
+    app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
     return reportParseError(app, e, std::cerr);
   }
@@ -122,6 +128,8 @@ static int runCommandLine(int argc, char** argv) {
     printErrorSummary(1);
     return 2;
   }
+  // -MD: glslc's depfile beside the output, <output>.d.
+  if (o.depfileBesideOutput && o.depfile.empty() && !o.output.empty() && o.output != "-") o.depfile = o.output + ".d";
   std::vector<std::string> paths = o.pipeline.empty() ? o.inputs : splitCommas(o.pipeline);
   if (!o.pipeline.empty()) paths.insert(paths.end(), o.inputs.begin(), o.inputs.end());
   if (paths.empty()) {
