@@ -57,6 +57,10 @@ TranspileResult convertStage(StagePlan& plan, const TranspileOptions& options) {
   result.originalSpirv = plan.words;
   result.source = plan.info;
   result.report = renderStageReport(plan.record);
+  // The errors and warnings as they were printed, for a tool that reads the report alone.
+  for (const Diagnostic& d : result.diagnostics.all())
+    if (d.severity == Severity::Error || d.severity == Severity::Warning)
+      result.report[d.severity == Severity::Error ? "errors" : "warnings"].push_back(d.format());
   result.record = std::move(plan.record);
   return result;
 }
