@@ -26,6 +26,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <set>
 
 namespace fs = std::filesystem;
 
@@ -65,6 +66,26 @@ void printTreeDiffs(const Plan& plan, const std::vector<JobResult>& results) {
   std::cout.flush();
 }
 
+// --dry-run: what the build would do, one line per stage on standard output, nothing written.
+int printDryRun(const Plan& plan, const std::vector<size_t>& toConvert) {
+  std::set<size_t> converting(toConvert.begin(), toConvert.end());
+  size_t shaders = 0, convert = 0, upToDate = 0, copy = 0;
+  for (size_t i = 0; i < plan.jobs.size(); ++i) {
+    const BuildJob& job = plan.jobs[i];
+    const bool copies = !convertsShaders(job.mode);
+    const char* what = copies ? "copy" : converting.count(i) ? "convert" : "up to date";
+    for (size_t k = 0; k < job.stages.size(); ++k) {
+      std::cout << what << ": " << job.stages[k].string() << " -> "
+                << (k < job.outputs.size() ? job.outputs[k].string() : std::string("?")) << "\n";
+      ++shaders;
+      ++(copies ? copy : converting.count(i) ? convert : upToDate);
+    }
+  }
+  std::cerr << "stereoshift: dry run: " << shaders << " shaders in " << plan.jobs.size() << " pipelines: " << convert
+            << " would be converted, " << upToDate << " up to date, " << copy << " copied; nothing written\n";
+  return 0;
+}
+
 }  // namespace
 
 void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
@@ -75,6 +96,9 @@ void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
   build.add_option("-j,--jobs", o.jobs, "Worker processes (default: one per core); the output does not depend on it");
   build.add_option("--depfile", o.depfile, "Write the dependencies of the report (every input and included file) as a depfile");
   build.add_flag("--no-cache", o.noCache, "Convert every shader, even those the incremental cache says are up to date");
+  build.add_flag("--dry-run", o.dryRun,
+                 "List each pipeline, its stages and outputs and whether it would be converted, is up to date or is "
+                 "copied; convert and write nothing");
   build.add_option("--job-timeout", o.jobTimeoutSeconds, "Seconds one pipeline may take before it is stopped and reported (0: no limit)")
       ->capture_default_str();
   build.add_option("--job-memory", o.jobMemoryMiB,
@@ -126,6 +150,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   Cache next;
   std::vector<JobResult> results(plan.jobs.size());
   const std::vector<size_t> toConvert = reuseUpToDate(plan, tool, !build.noCache, previous, next, results);
+  if (build.dryRun) return printDryRun(plan, toConvert);
 
   // 3. schedule
   copyThroughPasses(plan, results);

@@ -16,6 +16,7 @@ struct BuildCommandOptions {
   bool noCache = false;            // convert everything, ignoring the incremental cache
   double jobTimeoutSeconds = 300;  // a pipeline that takes longer is killed and reported
   uint64_t jobMemoryMiB = 4096;    // a worker that maps more is stopped and its pipeline reported (0: none)
+  bool dryRun = false;             // list what would be done (converted, up to date, copied); write nothing
 };
 
 // Registers the build-specific options on the `build` subcommand.
