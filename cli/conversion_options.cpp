@@ -91,6 +91,38 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                "goes to standard output), to review them like a patch");
   app.add_flag("--force-reemit", o.t.forceReemit, "Re-emit shaders that need no change instead of copying them");
   app.add_option("--report", o.reportPath, "Write a JSON report of what was done ('-': standard output)");
+  groupConversionOptions(app);
+}
+
+void groupConversionOptions(CLI::App& app) {
+  // The help in sections, not one wall: each option under what it is about.
+  static const std::map<std::string, const char*> groups = {
+      {"stage", "Input"}, {"language", "Input"}, {"stage-ext", "Input"}, {"target-env", "Input"},
+      {"target-spv", "Input"}, {"entry-point", "Input"}, {"D", "Input"}, {"I", "Input"},
+      {"target", "Output"}, {"target-version", "Output"}, {"force-reemit", "Output"}, {"diff", "Output"},
+      {"report", "Output"}, {"verify", "Output"}, {"output", "Output"}, {"pipeline", "Input"},
+      {"depfile", "Output"}, {"w", "Output"}, {"W", "Output"}, {"timeout", "Output"},
+      {"eye-source", "Eye parameters"}, {"multiview-params", "Eye parameters"}, {"swap-eyes", "Eye parameters"},
+      {"eye-route", "Eye parameters"}, {"eye-varying-location", "Eye parameters"}, {"block-name", "Eye parameters"},
+      {"instance-name", "Eye parameters"}, {"set", "Eye parameters"}, {"binding", "Eye parameters"},
+      {"hlsl-register", "Eye parameters"}, {"gl-binding", "Eye parameters"}, {"spec-id-base", "Eye parameters"},
+      {"cutoff-epsilon", "The shift"}, {"no-cutoff", "The shift"}, {"shift-form", "The shift"},
+      {"fused-shift", "The shift"}, {"compensated-shift", "The shift"}, {"no-invariant", "The shift"},
+      {"no-halo", "The shift"}, {"corrections-only", "The shift"},
+      {"no-per-eye-view", "Per-eye fixes"}, {"per-eye-specular", "Per-eye fixes"}, {"camera-uniform", "Per-eye fixes"},
+      {"no-deferred-unprojection", "Per-eye fixes"}, {"hud-at-depth", "Per-eye fixes"},
+      {"pass", "Analysis and debugging"}, {"print-all", "Analysis and debugging"},
+      {"validate-each", "Analysis and debugging"}, {"require-analysis", "Analysis and debugging"},
+      {"unchecked-text-route", "Analysis and debugging"},
+      {"service", "Conversion service"}, {"no-service", "Conversion service"}, {"service-idle", "Conversion service"},
+      {"jobs", "Build"}, {"no-cache", "Build"}, {"job-timeout", "Build"}, {"job-memory", "Build"}, {"dry-run", "Build"},
+      {"separation", "Verify"}, {"convergence", "Verify"}, {"json", "Verify"}};
+  for (CLI::Option* option : app.get_options()) {
+    std::string name = !option->get_lnames().empty() ? option->get_lnames().front()
+                       : !option->get_snames().empty() ? option->get_snames().front()
+                                                        : std::string();
+    if (auto it = groups.find(name); it != groups.end()) option->group(it->second);
+  }
 }
 
 namespace {

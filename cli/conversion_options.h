@@ -51,6 +51,9 @@ std::vector<std::string> glslcSpellings(int argc, char** argv, bool* depfileBesi
 
 // Registers the conversion options (shared by the main command, `build` and `verify`) on `app`.
 void addConversionOptions(CLI::App& app, CliOptions& o);
+// Puts the options `app` has so far into the help's sections (Input, Output, Eye parameters, The
+// shift, Per-eye fixes, Analysis and debugging); the others stay under "Options".
+void groupConversionOptions(CLI::App& app);
 // Turns the parsed strings into TranspileOptions; an error message when one is invalid.
 std::optional<std::string> finishOptions(CliOptions& o);
 

@@ -47,6 +47,7 @@ static int runCommandLine(int argc, char** argv) {
   app.add_option("-W", o.warningsAs, "-Werror: treat warnings as errors, nothing written (as glslc)")->check(CLI::IsMember({"error"}));
   ServiceOptions serviceOptions;
   addServiceOptions(app, serviceOptions);
+  groupConversionOptions(app);  // the main command's own options (-o, --pipeline, -w...) into the sections
 
   CliOptions b;
   BuildCommandOptions buildOptions;
@@ -54,6 +55,7 @@ static int runCommandLine(int argc, char** argv) {
       "build", "Convert a whole shader tree (stages grouped into pipelines by base name) or a scene manifest");
   addConversionOptions(*build, b);
   addBuildOptions(*build, buildOptions);
+  groupConversionOptions(*build);
 
   CliOptions v;
   VerifyCommandOptions verifyOptions;
@@ -64,6 +66,7 @@ static int runCommandLine(int argc, char** argv) {
   verify->add_option("--separation", verifyOptions.separation, "Separation used for the check")->capture_default_str();
   verify->add_option("--convergence", verifyOptions.convergence, "Convergence used for the check")->capture_default_str();
   verify->add_flag("--json", verifyOptions.json, "Machine-readable result");
+  groupConversionOptions(*verify);
 
   ReprojectCliOptions reprojectOptions;
   auto* reproject = addReprojectCommand(app, reprojectOptions);
