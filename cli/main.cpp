@@ -28,6 +28,55 @@
 namespace fs = std::filesystem;
 using namespace stereoshift;
 
+// The output file for `input` in the directory `dir`: its own name, with the extension of another
+// output language appended (a.vert -> a.vert.spv, as glslc names it).
+static std::string outputInDirectory(const std::string& dir, const std::string& input, const TranspileOptions& t) {
+  std::string name = std::filesystem::path(input).filename().string();
+  switch (t.target) {
+    case TargetLanguage::Spirv: name += ".spv"; break;
+    case TargetLanguage::SpirvAsm: name += ".spvasm"; break;
+    case TargetLanguage::Msl: name += ".metal"; break;
+    case TargetLanguage::Hlsl: if (!name.ends_with(".hlsl")) name += ".hlsl"; break;
+    default: break;
+  }
+  return (std::filesystem::path(dir) / name).string();
+}
+
+// `stereoshift verify`: its options checked, its inputs read, the verdict printed.
+static int runVerify(CliOptions& v, const VerifyCommandOptions& verifyOptions) {
+  if (auto error = finishOptions(v)) {
+    std::cerr << "stereoshift: error: " << *error << "\n";
+    printErrorSummary(1);
+    return 2;
+  }
+  // verify writes nothing but its verdict: --report and --diff (shared with the conversion's
+  // options) would be silently ignored, so they are refused (-o and --depfile are not verify
+  // options at all; --target is read: the conversion it checks is the one to that language).
+  std::vector<std::string> ignored;
+  if (!v.reportPath.empty()) ignored.push_back("--report");
+  if (v.diff) ignored.push_back("--diff");
+  if (!ignored.empty()) {
+    std::string list;
+    for (const auto& option : ignored) list += (list.empty() ? "" : ", ") + option;
+    std::cerr << "stereoshift: error: verify writes no output (it runs the conversion as SPIR-V on the device and "
+                 "prints its verdict; --json for a machine-readable one): "
+              << list << " would be ignored; convert with `stereoshift FILE ...` for those\n";
+    printErrorSummary(1);
+    return 2;
+  }
+  std::vector<SourceFile> sources;
+  if (int failed = readSources(v.inputs, &sources, std::cerr)) {
+    printErrorSummary(failed);
+    return 1;
+  }
+  if (sources.empty()) {
+    std::cerr << "stereoshift: error: no input file (see verify --help)\n";
+    printErrorSummary(1);
+    return 2;
+  }
+  return runVerifyCommand(sources, v.t, verifyOptions);
+}
+
 // The command line, run in this process: what main() ends in (directly, through @params files or the
 // persistent worker) and what a conversion-service worker runs for each request (cli/service_server.h).
 static int runCommandLine(int argc, char** argv) {
@@ -83,39 +132,7 @@ static int runCommandLine(int argc, char** argv) {
 
   if (*reproject) return runReprojectCommand(reprojectOptions);
 
-  if (*verify) {
-    if (auto error = finishOptions(v)) {
-      std::cerr << "stereoshift: error: " << *error << "\n";
-      printErrorSummary(1);
-      return 2;
-    }
-    // verify writes nothing but its verdict: --report and --diff (shared with the conversion's
-    // options) would be silently ignored, so they are refused (-o and --depfile are not verify
-    // options at all; --target is read: the conversion it checks is the one to that language).
-    std::vector<std::string> ignored;
-    if (!v.reportPath.empty()) ignored.push_back("--report");
-    if (v.diff) ignored.push_back("--diff");
-    if (!ignored.empty()) {
-      std::string list;
-      for (const auto& option : ignored) list += (list.empty() ? "" : ", ") + option;
-      std::cerr << "stereoshift: error: verify writes no output (it runs the conversion as SPIR-V on the device and "
-                   "prints its verdict; --json for a machine-readable one): "
-                << list << " would be ignored; convert with `stereoshift FILE ...` for those\n";
-      printErrorSummary(1);
-      return 2;
-    }
-    std::vector<SourceFile> sources;
-    if (int failed = readSources(v.inputs, &sources, std::cerr)) {
-      printErrorSummary(failed);
-      return 1;
-    }
-    if (sources.empty()) {
-      std::cerr << "stereoshift: error: no input file (see verify --help)\n";
-      printErrorSummary(1);
-      return 2;
-    }
-    return runVerifyCommand(sources, v.t, verifyOptions);
-  }
+  if (*verify) return runVerify(v, verifyOptions);
 
   if (*build) {
     if (auto error = finishOptions(b)) {
@@ -140,10 +157,31 @@ static int runCommandLine(int argc, char** argv) {
     printErrorSummary(1);
     return 2;
   }
-  if (paths.size() > 1 && o.pipeline.empty()) {
-    std::cerr << "stereoshift: error: several inputs need --pipeline (or use 'stereoshift build')\n";
+  // -o DIRECTORY/ (or an existing directory): each input converted on its own into it, as glslc
+  // does with several files.
+  std::error_code ec;
+  const bool outputIsDirectory = o.pipeline.empty() && !o.output.empty() && o.output != "-" &&
+                                 (o.output.back() == '/' || std::filesystem::is_directory(o.output, ec));
+  if (paths.size() > 1 && o.pipeline.empty() && !outputIsDirectory) {
+    std::cerr << "stereoshift: error: several inputs need --pipeline (one pipeline), or -o DIRECTORY/ (each converted "
+                 "on its own), or 'stereoshift build' (a tree)\n";
     printErrorSummary(1);
     return 2;
+  }
+  if (outputIsDirectory) {
+    if (!o.depfile.empty() && paths.size() > 1) {
+      std::cerr << "stereoshift: error: --depfile names one file; with several inputs use -MD (one beside each output)\n";
+      printErrorSummary(1);
+      return 2;
+    }
+    int status = 0;
+    for (const std::string& path : paths) {
+      CliOptions one = o;
+      one.output = outputInDirectory(o.output, path, o.t);
+      if (o.depfileBesideOutput && o.depfile.empty()) one.depfile = one.output + ".d";
+      status = std::max(status, runConvertCommand(one, {path}));
+    }
+    return status;
   }
   if (serviceWanted(serviceOptions))
     if (auto status = runThroughService(argc, argv, serviceOptions, o, &runCommandLine)) return *status;
