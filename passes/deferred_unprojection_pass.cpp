@@ -230,7 +230,7 @@ void decideViewRays(PassContext& ctx, const ValueFlow& index, SourceAnalysis& be
 // The rewrites as source text can carry them (run_record.h, UnprojectionText): only unprojections
 // `M * v` through a matrix the text names plainly.
 void recordUnprojectionTexts(const spirv::Module& m, const std::vector<Product>& products, const Findings& found,
-                             DeferredFacts& facts) {
+                             bool hlsl, DeferredFacts& facts) {
   if (!found.fixableRays.empty() || !found.reprojections.empty()) {
     facts.unprojectionTextMissing = "a view ray's or a re-projection's fix";
     return;
@@ -240,12 +240,13 @@ void recordUnprojectionTexts(const spirv::Module& m, const std::vector<Product>&
     if (!p.recognised) continue;
     auto slot = analysis::loadedSlot(m, p.matrix);
     auto access = slot ? analysis::slotSourceAccess(m, *slot) : std::nullopt;
-    if (p.vectorTimesMatrix || !access) {
+    // HLSL writes its products mul(M, v), which glslang makes v * M; GLSL's v * M stays the IR's.
+    if ((p.vectorTimesMatrix && !hlsl) || !access) {
       facts.unprojectionTextMissing = p.vectorTimesMatrix ? "an unprojection written `v * M`"
                                                           : "an unprojection through a matrix the text does not name plainly";
       return;
     }
-    texts.push_back({*access});
+    texts.push_back({*access, hlsl});
   }
   facts.unprojectionTexts = std::move(texts);
 }
@@ -443,7 +444,7 @@ class DeferredUnprojectionPass final : public Pass {
       facts.applicationFills = ctx.eye.names[kProjScaleX] +
                                " = P[0][0], the x scale of the projection the G-buffer was drawn with "
                                "(no projection matrix in the shader to take it from)";
-    recordUnprojectionTexts(m, products, found, facts);
+    recordUnprojectionTexts(m, products, found, ctx.source.language == SourceLanguage::Hlsl, facts);
     for (const auto& p : products)
       if (p.recognised) rewrite(ctx, p);
     for (const RayProduct* r : found.fixableRays) rewriteRay(ctx, *r);

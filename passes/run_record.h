@@ -197,11 +197,12 @@ struct CameraTextFix {
   std::array<std::string, 4> columnZ;  // InvM[i][z], i = 0..3
 };
 
-// An unprojection `InvM * v` of source text (GLSL) as a splice can carry it: the product, found in
-// the text as `<matrix> * <operand>`, goes through a helper that returns q' (deferred_unprojection
+// An unprojection `InvM * v` of source text as a splice can carry it: the product, found in the
+// text as `<matrix> * <operand>` (GLSL) or `mul(<matrix>, <operand>)` (HLSL), goes through a helper that returns q' (deferred_unprojection
 // _pass.cpp's rewrite).
 struct UnprojectionText {
   std::string matrix;  // as the source reads it: `uInvViewProj`, `frame.invViewProj`
+  bool hlslMul = false;  // HLSL's `mul(matrix, v)` (SPIR-V's v * M), not GLSL's `matrix * v`
 };
 
 struct DeferredFacts {

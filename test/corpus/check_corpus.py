@@ -120,7 +120,7 @@ def recompile(glslang, path, rel, language, reported_stage=None):
     return run.returncode == 0, run.stdout + run.stderr
 
 
-SPLICE_ROUTES = {"glsl-source-splice", "hlsl-source-splice"}
+SPLICE_ROUTES = {"glsl-source-splice", "hlsl-source-splice", "hlsl-pixel-source-splice"}
 
 
 def unwrap_calls(text, prefix):

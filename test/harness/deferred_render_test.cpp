@@ -431,7 +431,8 @@ Transpiled compileTranspiled(const char* name, const char* text, TranspileOption
   EXPECT_TRUE(r.changed) << "the lighting shader was not fixed";
   Transpiled t;
   if (splicedText) {
-    EXPECT_EQ(r.report.value("route", std::string()), "glsl-source-splice") << r.report.dump(2);
+    std::string route = r.report.value("route", std::string());
+    EXPECT_TRUE(route == "glsl-source-splice" || route == "hlsl-pixel-source-splice") << r.report.dump(2);
     EXPECT_NE(r.output.find("stereoshift_unproject_"), std::string::npos) << r.output;
     t.spirv = compileOriginal(name, r.output.c_str(), options);
   } else {
@@ -769,6 +770,13 @@ TEST_F(DeferredRender, HlslLightingShaderFixedByExecution) {
   EXPECT_FALSE(pass.contains("left_alone")) << pass.dump(2);
   checkRebuiltPositions("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl");
   checkLitImage("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl", "deferred_hlsl");
+}
+
+// The HLSL lighting shader with its fix spliced into its own text (`mul(InvViewProj, ...)` wrapped in
+// stereoshift_unproject_InvViewProj(), the cbuffer beside it), compiled as a driver would.
+TEST_F(DeferredRender, SplicedHlslTextWithinRoundingOfTheTruePosition) {
+  splicedText_ = true;
+  checkRebuiltPositions("deferred_light.frag.hlsl", kLightingHlsl, "deferred hlsl spliced");
 }
 
 // The dump-style lighting shaders (kDumpMadLighting, kDumpDp4Lighting), converted as text with

@@ -55,7 +55,7 @@ TEST(BackEndRoutes, AskedInThisOrderWithTheReemitLast) {
   std::vector<std::string> names;
   for (const auto& r : routes()) names.push_back(r->name());
   EXPECT_EQ(names, (std::vector<std::string>{"copy-through", "spirv", "spirv-asm", "hlsl-source-splice",
-                                              "hlsl-pixel-splice", "legacy-glsl-source-splice",
+                                              "hlsl-pixel-splice", "hlsl-pixel-source-splice", "legacy-glsl-source-splice",
                                               "glsl-source-splice", "spirv-cross"}));
   EXPECT_FALSE(route("hlsl-pixel-splice").needsValidModule());
   EXPECT_FALSE(route("copy-through").needsValidModule());

@@ -6,7 +6,10 @@
 // made in the module) is not this route's: it declines, and the re-emit takes the stage.
 #include "transpiler/backend/splice_routes.h"
 
+#include "passes/shift_emitter.h"
 #include "transpiler/backend/hlsl_splice.h"
+
+#include <algorithm>
 
 namespace stereoshift {
 
@@ -69,8 +72,84 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
   }
 };
 
+// An HLSL shader kept as HLSL that gets no shift but whose position rebuild the deferred pass
+// fixed in the module (a lighting pixel shader of an engine, not a dump): the fix written into its
+// own text (`mul(InvM, ...)` wrapped in a per-eye helper) instead of SPIRV-Cross's re-emit.
+class HlslUnprojectionSpliceRoute final : public BackEndRoute {
+ public:
+  const char* name() const override { return "hlsl-pixel-source-splice"; }
+
+  RouteDecision accepts(const EmitRequest& r) const override {
+    const PassContext& ctx = r.context;
+    const DeferredFacts& deferred = ctx.record.deferred;
+    if (ctx.source.language != SourceLanguage::Hlsl || r.target != TargetLanguage::Hlsl ||
+        ctx.source.stage != Stage::Fragment || !ctx.record.madeEdit(EditKind::UnprojectionCorrection))
+      return RouteDecision::decline("not an HLSL pixel shader whose unprojection was fixed");
+    if (r.options.eyeFrom3DMigoto || ctx.eye.source != EyeSource::UniformBlock)
+      return RouteDecision::decline("the eye parameters are not a cbuffer the splice declares");
+    if (!ctx.record.passesWithEditsBeyond(EditKind::EyeParameters | EditKind::UnprojectionCorrection).empty() ||
+        !deferred.unprojectionTextMissing.empty() || deferred.unprojectionTexts.empty())
+      return RouteDecision::decline(
+          "HLSL pixel shader re-emitted by SPIRV-Cross instead of spliced into its own text: the splice cannot write " +
+              (deferred.unprojectionTextMissing.empty() ? std::string("what the passes changed") : deferred.unprojectionTextMissing),
+          true);
+    return RouteDecision::accept();
+  }
+
+  EmitResult emit(const EmitRequest& r, EmitFacts& facts, Diagnostics&) const override {
+    EmitResult result;
+    const PassContext& ctx = r.context;
+    const spirv::Module& module = ctx.module;
+    HlslUnprojectionOptions options;
+    options.cbufferName = module.name(module.pointeeType(module.definition(ctx.eye.variable)->typeId));
+    options.cbufferRegister = module.decorationValue(ctx.eye.variable, spv::DecorationBinding).value_or(0);
+    ShiftSpec spec = shiftSpec(ctx);
+    options.eyeSignName = spec.eyeSignName;
+    options.separationName = spec.separationName;
+    options.convergenceName = spec.convergenceName;
+    for (const UnprojectionText& u : ctx.record.deferred.unprojectionTexts) {
+      auto same = std::find_if(options.wraps.begin(), options.wraps.end(),
+                               [&](const HlslUnprojectionOptions::Wrap& w) { return w.matrix == u.matrix; });
+      if (same != options.wraps.end()) {
+        ++same->products;
+        continue;
+      }
+      std::string function = "stereoshift_unproject_" + u.matrix;
+      std::replace(function.begin(), function.end(), '.', '_');
+      options.wraps.push_back({u.matrix, function, 1});
+    }
+    HlslSpliceResult spliced = spliceHlslUnprojections(r.input.contents, options);
+    if (!spliced.ok) {
+      result.status = EmitResult::Declined;
+      result.declinedBecause =
+          "HLSL pixel shader re-emitted by SPIRV-Cross instead of spliced into its own text: " + spliced.error;
+      return result;
+    }
+    result.output = std::move(spliced.text);
+    facts.route = name();
+    facts.spliceSites = spliced.sites;
+    CompileCheck check;
+    check.text = result.output;
+    check.language = SourceLanguage::Hlsl;
+    check.stage = Stage::Fragment;
+    check.entryPoint = ctx.source.entryPoint;
+    check.vulkanSemantics = true;
+    check.blankEffects = true;
+    check.includeFrom = r.input.path;
+    check.failure = "the stereo HLSL of pixel shader '" + ctx.source.entryPoint + "' does not compile";
+    result.checks.push_back(std::move(check));
+    result.declineIfChecksFail = true;
+    result.reportsVerified = r.options.verify;
+    result.status = EmitResult::Emitted;
+    return result;
+  }
+};
+
 }  // namespace
 
 std::unique_ptr<BackEndRoute> createHlslPixelSpliceRoute() { return std::make_unique<HlslPixelSpliceRoute>(); }
+std::unique_ptr<BackEndRoute> createHlslUnprojectionSpliceRoute() {
+  return std::make_unique<HlslUnprojectionSpliceRoute>();
+}
 
 }  // namespace stereoshift

@@ -111,6 +111,23 @@ HlslSpliceResult spliceHlslStereo(const std::string& source, const HlslSpliceOpt
 HlslSpliceResult splicePixelCorrections(const std::string& source, const DeferredFacts& facts,
                                         const std::string& entryPoint);
 
+// Pixel (and other unshifted) shaders with the deferred pass's unprojections: every
+// `mul(<matrix>, <operand>)` the analysis fixed becomes `stereoshift_unproject_<matrix>(mul(...))`, the
+// helper (q - M's column of NDC x * e*S*(1 - C*q.w), q when eyeSign is 0) and the eye parameters'
+// cbuffer in a marked block before the first function that calls it (hlsl_splice/unprojections.cpp).
+struct HlslUnprojectionOptions {
+  std::string cbufferName = "StereoParams";
+  uint32_t cbufferRegister = 0;
+  std::string eyeSignName = "eyeSign", separationName = "separation", convergenceName = "convergence";
+  struct Wrap {
+    std::string matrix;    // `InvViewProj`
+    std::string function;  // stereoshift_unproject_<matrix>
+    int products = 1;      // the text must have exactly as many `mul(<matrix>, ...)`
+  };
+  std::vector<Wrap> wraps;
+};
+HlslSpliceResult spliceHlslUnprojections(const std::string& source, const HlslUnprojectionOptions& options);
+
 // Sets `options` up for 3Dmigoto's StereoParams texture (see stereoParamsTexture).
 void useStereoParamsTexture(HlslSpliceOptions& options);
 

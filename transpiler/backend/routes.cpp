@@ -110,6 +110,7 @@ const std::vector<std::unique_ptr<BackEndRoute>>& routes() {
     l.push_back(std::make_unique<SpirvAssemblyRoute>());
     l.push_back(createHlslSpliceRoute());
     l.push_back(createHlslPixelSpliceRoute());
+    l.push_back(createHlslUnprojectionSpliceRoute());
     l.push_back(createLegacyGlslRoute());
     l.push_back(createGlslSpliceRoute());
     l.push_back(createReemitRoute());  // takes every stage the others decline

@@ -21,6 +21,8 @@ std::unique_ptr<BackEndRoute> createHlslSpliceRoute();
 // HLSL pixel shaders kept as HLSL whose corrections only the text carries (the deferred pass's
 // text fixes, with 3Dmigoto's StereoParams): hlsl_pixel_splice_route.cpp.
 std::unique_ptr<BackEndRoute> createHlslPixelSpliceRoute();
+// An engine's HLSL pixel shader whose unprojection the deferred pass fixed: the fix in its own text.
+std::unique_ptr<BackEndRoute> createHlslUnprojectionSpliceRoute();
 std::unique_ptr<BackEndRoute> createLegacyGlslRoute();
 std::unique_ptr<BackEndRoute> createGlslSpliceRoute();
 

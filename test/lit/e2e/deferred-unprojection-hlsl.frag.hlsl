@@ -20,9 +20,13 @@ float4 PSMain(PSInput input) : SV_Target
     float4 q = mul(InvViewProj, float4(ndc, depth, 1.0));
     return float4(q.xyz / q.w, 1.0);
 }
+// The HLSL text keeps its own: the product wrapped in the per-eye helper, which reads InvM's column
+// of NDC x element by element (M[i][0]), beside the eye parameters' cbuffer.
 // CHECK: cbuffer StereoParams : register(b1)
-// CHECK: float4 [[Q:_[0-9]+]] = mul(InvViewProj, float4(ndc, depth, 1.0f));
-// CHECK-NEXT: float4 [[FIXED:_[0-9]+]] = [[Q]] - (float4(InvViewProj[0].x, InvViewProj[1].x, InvViewProj[2].x, InvViewProj[3].x) * ((eyeSign * separation) * (1.0f - (convergence * [[Q]].w))));
+// CHECK: float4 stereoshift_unproject_InvViewProj(float4 stereoshift_q)
+// CHECK-NEXT: {
+// CHECK-NEXT: return eyeSign != 0.0f ? stereoshift_q - float4(InvViewProj[0][0], InvViewProj[1][0], InvViewProj[2][0], InvViewProj[3][0]) * ((eyeSign * separation) * (1.0f - convergence * stereoshift_q.w)) : stereoshift_q;
+// CHECK: float4 q = stereoshift_unproject_InvViewProj(mul(InvViewProj, float4(ndc, depth, 1.0)));
 
 // SPIRV: [[M:%[0-9]+]] = OpLoad %mat4v4float
 // SPIRV-NEXT: [[Q:%[0-9]+]] = OpVectorTimesMatrix %v4float {{%[0-9]+}} [[M]]
