@@ -410,7 +410,11 @@ class PerEyeViewPass final : public Pass {
   // The camera and its offset as the source text names them, for a splice (run_record.h).
   static void recordCameraText(const Module& m, const Slot& camera, const OffsetSource& source, PerEyeViewFacts& facts) {
     CameraText text;
-    auto access = slotSourceAccess(m, camera);
+    // inverse(view)[3]: the text names the matrix; its inverse is what the splice moves.
+    Slot named = camera;
+    named.inverseTranslation = false;
+    text.inverseOf = camera.inverseTranslation;
+    auto access = slotSourceAccess(m, named);
     const Instruction* type = m.definition(slotType(m, camera));
     if (!access || !type || type->opcode != spv::OpTypeVector) {
       facts.cameraTextMissing = "the camera " + slotName(m, camera) + " has no name the source reads it by";

@@ -139,6 +139,9 @@ struct CameraText {
   enum Offset { InverseViewProjection, InvertedClipMatrices, EyeOffsetParams } offset = EyeOffsetParams;
   std::vector<std::string> matrices;  // as the source reads them, in product order
   bool columnVectors = true;          // M * v (true) or v * M
+  // The camera is the translation of `inverse(access)` (a view matrix inverted in the shader):
+  // the text's `inverse(access)` is what moves, its column 3 by the offset.
+  bool inverseOf = false;
 };
 
 struct PerEyeViewFacts {

@@ -285,11 +285,25 @@ bool wrapCameraReads(const std::vector<Word>& w, const Scopes& scopes, const Gls
   const std::string highp = o.es ? "highp " : "";
   for (const auto& camera : o.cameras) {
     std::vector<std::string> parts = accessParts(camera.access);
-    const std::string type = highp + camera.type;
+    const std::string type = highp + (camera.inverseOf ? std::string("mat4") : camera.type);
     const std::string prototype = markedPrototype(type + " " + camera.function + "(" + type + " stereoshift_camera)");
     size_t reads = 0;
     for (size_t k = 0; k < w.size(); ++k) {
       if (w[k].text != parts[0] || (k > 0 && w[k - 1].text == ".")) continue;
+      if (camera.inverseOf) {
+        // `inverse(<matrix>)`: the call is wrapped; other reads of the matrix stay the mono view.
+        size_t last = accessEnd(w, k, parts);
+        bool call = k >= 2 && w[k - 1].text == "(" && w[k - 2].text == "inverse" && last != std::string::npos &&
+                    last + 1 < w.size() && w[last + 1].text == ")";
+        if (w[k].inDefine && call) {
+          error = "inverse(" + camera.access + ") is written inside a macro";
+          return false;
+        }
+        if (!call || !scopes.inBody[k]) continue;
+        wrap(w, scopes, k - 2, last + 1, camera.function, prototype, inserts);
+        ++reads;
+        continue;
+      }
       if (w[k].inDefine) {
         error = "the camera '" + camera.access + "' is named inside a macro";
         return false;
@@ -372,6 +386,13 @@ std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind
   const std::string highp = o.es ? "highp " : "";
   std::string t;
   for (const auto& c : o.cameras) {
+    if (c.inverseOf) {
+      // The inverse view's translation column is the camera centre: moved to this eye's.
+      t += highp + "mat4 " + c.function + "(" + highp + "mat4 stereoshift_camera)" + nl + "{" + nl + ind +
+           "stereoshift_camera[3] = stereoshift_camera[3] + vec4(" + c.offset + ", 0.0);" + nl + ind +
+           "return stereoshift_camera;" + nl + "}" + nl;
+      continue;
+    }
     std::string offset = c.type == "vec4" ? "vec4(" + c.offset + ", 0.0)" : c.offset;
     t += highp + c.type + " " + c.function + "(" + highp + c.type + " stereoshift_camera)" + nl + "{" + nl + ind +
          "return stereoshift_camera + " + offset + ";" + nl + "}" + nl;

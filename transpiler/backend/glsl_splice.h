@@ -65,6 +65,9 @@ struct GlslSpliceOptions : ShiftSpec {
     std::string type;      // vec3 or vec4 (w not moved)
     std::string function;  // stereoshift_eye_<access, `.` as `_`>
     std::string offset;    // a vec3 expression of the eye parameters and the shader's own matrices
+    // `inverse(access)` is wrapped instead (a camera taken from an inverted view matrix): the helper
+    // takes and returns the mat4 and moves its column 3.
+    bool inverseOf = false;
   };
   std::vector<CameraWrap> cameras;
   // Unprojections made this eye's (deferred-unprojection): every `<matrix> * <operand>` in a function

@@ -140,7 +140,8 @@ bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
     GlslSpliceOptions::CameraWrap wrap;
     wrap.access = c.access;
     wrap.type = c.components == 4 ? "vec4" : "vec3";
-    wrap.function = "stereoshift_eye_" + c.access;
+    wrap.function = std::string(c.inverseOf ? "stereoshift_eye_inverse_" : "stereoshift_eye_") + c.access;
+    wrap.inverseOf = c.inverseOf;
     std::replace(wrap.function.begin(), wrap.function.end(), '.', '_');
     if (c.offset == CameraText::EyeOffsetParams) {
       wrap.offset = "vec3(" + eyeParamText(r, spec, kEyeOffsetX) + ", " + eyeParamText(r, spec, kEyeOffsetY) + ", " +

@@ -29,7 +29,9 @@ namespace {
 std::string spliceBlocker(const RunRecord& record, Stage stage) {
   // A per-eye camera the text names plainly (a vertex shader's, hlslCameras) is the splice's too.
   EditSet rendered = EditKind::EyeParameters | EditKind::PositionShift;
-  if (stage == Stage::Vertex && !record.perEyeView.fixed.empty() &&
+  bool inverseOf = std::any_of(record.perEyeView.cameraTexts.begin(), record.perEyeView.cameraTexts.end(),
+                               [](const CameraText& c) { return c.inverseOf; });  // HLSL has no inverse() to wrap
+  if (stage == Stage::Vertex && !record.perEyeView.fixed.empty() && !inverseOf &&
       record.perEyeView.cameraTexts.size() == record.perEyeView.fixed.size())
     rendered = rendered | EditKind::PerEyeCamera;
   for (const auto& pass : record.passesWithEditsBeyond(rendered)) {
