@@ -629,25 +629,34 @@ std::map<std::string, Words> looseCamera(const M& view, const M& proj, const rt:
           {"lightPos", floats({kLight[0], kLight[1], kLight[2]})}};
 }
 
+const M kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+// Vulkan GLSL: one block with the matrices and `cameraPos` (a vec4 used as .xyz); the fragment
+// block selects plain (1) or occlusion (3) parallax.
+std::map<std::string, Words> vulkanCamera(const M& view, const M& proj, const rt::Vec3<double>& camera) {
+  return {{"projection", floats(proj)},
+          {"view", floats(view)},
+          {"model", floats(kIdentity)},
+          {"lightPos", floats({kLight[0], kLight[1], kLight[2], 1})},
+          {"cameraPos", floats({camera[0], camera[1], camera[2], 1})}};
+}
+
+// D3D-style HLSL: one cbuffer with the world and view-projection matrices and the eye position.
+std::map<std::string, Words> hlslCamera(const M& view, const M& proj, const rt::Vec3<double>& camera) {
+  return {{"gWorld", floats(kIdentity)},
+          {"gViewProj", floats(rt::multiply(proj, view))},
+          {"gEyePosW", floats({camera[0], camera[1], camera[2]})}};
+}
+
 TEST(ReliefRender, TutorialFormMatchesGroundTruth) {
   std::string error;
   auto context = VulkanContext::create(&error);
   ASSERT_TRUE(context) << error;
-  const M identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   std::vector<TutorialCase> cases = {
       {"gl330_parallax_mapping", {"gl330/parallax_mapping.vert", "gl330/parallax_mapping.frag"}, looseCamera,
        {{"heightScale", floats({kHeightScale})}}},
       {"gl330_steep_parallax", {"gl330/steep_parallax.vert", "gl330/steep_parallax.frag"}, looseCamera,
        {{"heightScale", floats({kHeightScale})}}},
-  };
-  // Vulkan GLSL: one block with the matrices and `cameraPos` (a vec4 used as .xyz); the fragment
-  // block selects plain (1) or occlusion (3) parallax.
-  auto vulkanCamera = [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
-    return std::map<std::string, Words>{{"projection", floats(proj)},
-                                        {"view", floats(view)},
-                                        {"model", floats(identity)},
-                                        {"lightPos", floats({kLight[0], kLight[1], kLight[2], 1})},
-                                        {"cameraPos", floats({camera[0], camera[1], camera[2], 1})}};
   };
   // Through a geometry stage (the LearnOpenGL "explode" effect, GLSL 330): at time = -pi/2 the
   // triangles are not pushed out (sin = -1), so the truth is the same floor.
@@ -667,11 +676,7 @@ TEST(ReliefRender, TutorialFormMatchesGroundTruth) {
   // an output struct; the pixel shader ray-marches with SampleGrad.
   cases.push_back({"hlsl_parallax_occlusion",
                    {"hlsl/parallax.vert.hlsl", "hlsl/parallax.frag.hlsl"},
-                   [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
-                     return std::map<std::string, Words>{{"gWorld", floats(identity)},
-                                                         {"gViewProj", floats(rt::multiply(proj, view))},
-                                                         {"gEyePosW", floats({camera[0], camera[1], camera[2]})}};
-                   },
+                   hlslCamera,
                    {{"gHeightScale", floats({kHeightScale})}, {"gMinSamples", integer(8)}, {"gMaxSamples", integer(32)}}});
   for (const auto& c : cases) renderTutorialCase(*context, c);
 }
@@ -683,14 +688,6 @@ TEST(ReliefRender, TutorialFormSplicedTextMatchesGroundTruth) {
   std::string error;
   auto context = VulkanContext::create(&error);
   ASSERT_TRUE(context) << error;
-  const M identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  auto vulkanCamera = [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
-    return std::map<std::string, Words>{{"projection", floats(proj)},
-                                        {"view", floats(view)},
-                                        {"model", floats(identity)},
-                                        {"lightPos", floats({kLight[0], kLight[1], kLight[2], 1})},
-                                        {"cameraPos", floats({camera[0], camera[1], camera[2], 1})}};
-  };
   std::vector<TutorialCase> cases = {
       {"gl330_parallax_mapping", {"gl330/parallax_mapping.vert", "gl330/parallax_mapping.frag"}, looseCamera,
        {{"heightScale", floats({kHeightScale})}}},
@@ -701,12 +698,7 @@ TEST(ReliefRender, TutorialFormSplicedTextMatchesGroundTruth) {
         {"mappingMode", integer(3)}}},
       // HLSL: the camera's offset through the inverse of gViewProj, which the splice writes as its
       // own cofactor inverse (HLSL has none).
-      {"hlsl_parallax_occlusion", {"hlsl/parallax.vert.hlsl", "hlsl/parallax.frag.hlsl"},
-       [identity](const M& view, const M& proj, const rt::Vec3<double>& camera) {
-         return std::map<std::string, Words>{{"gWorld", floats(identity)},
-                                             {"gViewProj", floats(rt::multiply(proj, view))},
-                                             {"gEyePosW", floats({camera[0], camera[1], camera[2]})}};
-       },
+      {"hlsl_parallax_occlusion", {"hlsl/parallax.vert.hlsl", "hlsl/parallax.frag.hlsl"}, hlslCamera,
        {{"gHeightScale", floats({kHeightScale})}, {"gMinSamples", integer(8)}, {"gMaxSamples", integer(32)}}},
   };
   for (const auto& c : cases) renderTutorialCase(*context, c, true);

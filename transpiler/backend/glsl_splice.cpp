@@ -101,13 +101,28 @@ std::string declarationText(const GlslSpliceOptions& o, const std::string& nl) {
   return t;
 }
 
+using Inserts = std::map<size_t, std::string>;  // offset -> text inserted there
+
+// `source` with each insertion made at its offset.
+std::string applyInserts(const std::string& source, const Inserts& inserts) {
+  std::string text;
+  size_t pos = 0;
+  for (const auto& [at, insert] : inserts) {
+    text.append(source, pos, at - pos);
+    text += insert;
+    pos = at;
+  }
+  text.append(source, pos, std::string::npos);
+  return text;
+}
+
 bool isEmit(const std::string& word) { return word == "EmitVertex" || word == "EmitStreamVertex"; }
 
 // Geometry shaders: the statements `EmitVertex();` / `EmitStreamVertex(n);` wrapped as
 // `{ stereoshift_shiftPosition(); ... }`, and the helper's prototype before every top-level
 // function that emits (each #if branch that defines one gets its own). Line numbers do not move.
 bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::string& text, GlslSpliceResult& result) {
-  std::map<size_t, std::string> inserts;  // offset -> text inserted there
+  Inserts inserts;
   const std::string prototype = std::string("/* ---- stereoshift ---- */ void ") + kShiftHelper +
                                 "(); /* ---- end stereoshift ---- */ ";
   size_t itemStart = 0;  // the word that starts the top-level declaration being read
@@ -158,13 +173,7 @@ bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::strin
     result.error = "the shader calls neither EmitVertex nor EmitStreamVertex in its own text";
     return false;
   }
-  size_t pos = 0;
-  for (const auto& [at, insert] : inserts) {
-    text.append(source, pos, at - pos);
-    text += insert;
-    pos = at;
-  }
-  text.append(source, pos, std::string::npos);
+  text = applyInserts(source, inserts);
   return true;
 }
 
@@ -172,7 +181,6 @@ bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::strin
 // helper's prototype before each top-level function that reads it. Refused where the text is not
 // plain enough to be sure every read is the camera's: a read in a macro, a local, parameter or
 // other declaration of the same name, a struct holding the camera used whole.
-using Inserts = std::map<size_t, std::string>;  // offset -> text inserted there
 
 // Splits `a.b.c` into its names.
 std::vector<std::string> accessParts(const std::string& access) {
@@ -370,17 +378,6 @@ bool wrapUnprojections(const std::vector<Word>& w, const Scopes& scopes, const G
   return true;
 }
 
-std::string applyInserts(const std::string& source, const Inserts& inserts) {
-  std::string text;
-  size_t pos = 0;
-  for (const auto& [at, insert] : inserts) {
-    text.append(source, pos, at - pos);
-    text += insert;
-    pos = at;
-  }
-  text.append(source, pos, std::string::npos);
-  return text;
-}
 
 std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
   const std::string highp = o.es ? "highp " : "";

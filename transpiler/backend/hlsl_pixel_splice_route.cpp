@@ -15,6 +15,20 @@ namespace stereoshift {
 
 namespace {
 
+// The stereo pixel shader re-compiled as a driver reads it: its own text, entry point and #includes.
+CompileCheck pixelShaderCheck(const EmitRequest& r, const std::string& text, const std::string& entryPoint) {
+  CompileCheck check;
+  check.text = text;
+  check.language = SourceLanguage::Hlsl;
+  check.stage = Stage::Fragment;
+  check.entryPoint = entryPoint;
+  check.vulkanSemantics = true;
+  check.blankEffects = true;
+  check.includeFrom = r.input.path;
+  check.failure = "the stereo HLSL of pixel shader '" + entryPoint + "' does not compile";
+  return check;
+}
+
 class HlslPixelSpliceRoute final : public BackEndRoute {
  public:
   const char* name() const override { return "hlsl-pixel-splice"; }
@@ -56,16 +70,7 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
     result.output = std::move(spliced.text);
     facts.route = name();
     facts.spliceSites = spliced.sites;
-    CompileCheck check;
-    check.text = result.output;
-    check.language = SourceLanguage::Hlsl;
-    check.stage = Stage::Fragment;
-    check.entryPoint = info.entryPoint;
-    check.vulkanSemantics = true;
-    check.blankEffects = true;
-    check.includeFrom = r.input.path;
-    check.failure = "the stereo HLSL of pixel shader '" + info.entryPoint + "' does not compile";
-    result.checks.push_back(std::move(check));
+    result.checks.push_back(pixelShaderCheck(r, result.output, info.entryPoint));
     result.reportsVerified = r.options.verify;
     result.status = EmitResult::Emitted;
     return result;
@@ -128,16 +133,7 @@ class HlslUnprojectionSpliceRoute final : public BackEndRoute {
     result.output = std::move(spliced.text);
     facts.route = name();
     facts.spliceSites = spliced.sites;
-    CompileCheck check;
-    check.text = result.output;
-    check.language = SourceLanguage::Hlsl;
-    check.stage = Stage::Fragment;
-    check.entryPoint = ctx.source.entryPoint;
-    check.vulkanSemantics = true;
-    check.blankEffects = true;
-    check.includeFrom = r.input.path;
-    check.failure = "the stereo HLSL of pixel shader '" + ctx.source.entryPoint + "' does not compile";
-    result.checks.push_back(std::move(check));
+    result.checks.push_back(pixelShaderCheck(r, result.output, ctx.source.entryPoint));
     result.declineIfChecksFail = true;
     result.reportsVerified = r.options.verify;
     result.status = EmitResult::Emitted;

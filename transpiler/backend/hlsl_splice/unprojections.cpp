@@ -6,6 +6,8 @@
 // as many as the analysis fixed, none in a macro).
 #include "transpiler/backend/hlsl_splice.h"
 
+#include "transpiler/backend/hlsl_splice/edit_buffer.h"
+
 #include "transpiler/source/lexer.h"
 
 #include <algorithm>
@@ -137,16 +139,10 @@ HlslSpliceResult spliceHlslUnprojections(const std::string& source, const HlslUn
     return result;
   }
   inserts[lineStart] = helperText(o, nl) + inserts[lineStart];
-  std::string text;
-  size_t pos = 0;
-  for (const auto& [at, insert] : inserts) {
-    text.append(source, pos, at - pos);
-    text += insert;
-    pos = at;
-  }
-  text.append(source, pos, std::string::npos);
+  hlsl_splice::EditBuffer edits(source);
+  for (const auto& [at, insert] : inserts) edits.add(at, 0, insert);
   result.ok = true;
-  result.text = std::move(text);
+  result.text = edits.apply();
   result.sites = static_cast<int>(o.wraps.size());
   return result;
 }
