@@ -32,13 +32,8 @@ using namespace stereoshift;
 // output language appended (a.vert -> a.vert.spv, as glslc names it).
 static std::string outputInDirectory(const std::string& dir, const std::string& input, const TranspileOptions& t) {
   std::string name = std::filesystem::path(input).filename().string();
-  switch (t.target) {
-    case TargetLanguage::Spirv: name += ".spv"; break;
-    case TargetLanguage::SpirvAsm: name += ".spvasm"; break;
-    case TargetLanguage::Msl: name += ".metal"; break;
-    case TargetLanguage::Hlsl: if (!name.ends_with(".hlsl")) name += ".hlsl"; break;
-    default: break;
-  }
+  std::string extension = defaultOutputExtension(SourceFile{input, {}}, t);  // the input's own for GLSL
+  if (!name.ends_with(extension)) name += extension;
   return (std::filesystem::path(dir) / name).string();
 }
 

@@ -118,56 +118,95 @@ std::string applyInserts(const std::string& source, const Inserts& inserts) {
 
 bool isEmit(const std::string& word) { return word == "EmitVertex" || word == "EmitStreamVertex"; }
 
-// Geometry shaders: the statements `EmitVertex();` / `EmitStreamVertex(n);` wrapped as
-// `{ stereoshift_shiftPosition(); ... }`, and the helper's prototype before every top-level
-// function that emits (each #if branch that defines one gets its own). Line numbers do not move.
-bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::string& text, GlslSpliceResult& result) {
-  Inserts inserts;
-  const std::string prototype = std::string("/* ---- stereoshift ---- */ void ") + kShiftHelper +
-                                "(); /* ---- end stereoshift ---- */ ";
-  size_t itemStart = 0;  // the word that starts the top-level declaration being read
-  int depth = 0;
+// Where each top-level item starts and whether a word is inside a function body, for the wraps.
+struct Scopes {
+  std::vector<size_t> itemStart;  // per word: the first word of the top-level declaration it is in
+  std::vector<bool> inBody, parameter;  // per word: in a function body; in a parameter list at file scope
+};
+
+Scopes scopesOf(const std::vector<Word>& w) {
+  Scopes s;
+  size_t itemStart = 0;
+  int depth = 0, parens = 0;
   std::vector<bool> functionBody;  // per open brace: whether it opens a function body
+  bool inBody = false;
   for (size_t k = 0; k < w.size(); ++k) {
-    if (w[k].inDefine) {
-      if (isEmit(w[k].text)) {
-        result.error = "the shader emits vertices inside a macro";
-        return false;
-      }
-      continue;
-    }
     const std::string& t = w[k].text;
+    s.itemStart.push_back(itemStart);
+    s.inBody.push_back(inBody);
+    s.parameter.push_back(depth == 0 && parens > 0);
+    if (w[k].inDefine) continue;
     if (t == "{") {
-      size_t before = k;
+      size_t before = k;  // a macro's words between `)` and `{` are not the function's
       while (before > 0 && w[before - 1].inDefine) --before;
       functionBody.push_back(depth == 0 && before > 0 && w[before - 1].text == ")");
+      inBody = inBody || functionBody.back();
       ++depth;
     } else if (t == "}" && depth > 0) {
       --depth;
       bool body = functionBody.back();
       functionBody.pop_back();
+      if (body) inBody = false;
       if (depth == 0 && body) itemStart = k + 1;
     } else if (t == ";" && depth == 0) {
       itemStart = k + 1;
-    } else if (isEmit(t) && k + 1 < w.size() && w[k + 1].text == "(" && !(k > 0 && w[k - 1].text == ".")) {
-      int parens = 0;
-      size_t close = k + 1;
-      for (; close < w.size() && !w[close].inDefine; ++close) {
-        if (w[close].text == "(") ++parens;
-        if (w[close].text == ")" && --parens == 0) break;
-      }
-      if (depth == 0 || close + 1 >= w.size() || w[close].text != ")" || w[close + 1].text != ";" ||
-          w[close + 1].inDefine) {
-        result.error = "`" + t + "` is not called as a statement of its own";
-        return false;
-      }
-      inserts[w[k].begin] += std::string("{ ") + kShiftHelper + "(); ";
-      inserts[w[close + 1].end] += " }";
-      size_t at = w[itemStart].begin;
-      if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
-      ++result.sites;
-      k = close + 1;
+    } else if (t == "(" || t == ")") {
+      parens += t == "(" ? 1 : -1;
     }
+  }
+  return s;
+}
+
+// `prototype` before the top-level item that holds word `k`, once per item.
+void addPrototype(const std::vector<Word>& w, const Scopes& scopes, size_t k, const std::string& prototype,
+                  Inserts& inserts) {
+  size_t at = w[scopes.itemStart[k]].begin;
+  if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
+}
+
+// `function(` before word `first`, `)` after word `last`, the prototype before the item.
+void wrap(const std::vector<Word>& w, const Scopes& scopes, size_t first, size_t last, const std::string& function,
+          const std::string& prototype, Inserts& inserts) {
+  inserts[w[first].begin] += function + "(";
+  inserts[w[last].end] = ")" + inserts[w[last].end];
+  addPrototype(w, scopes, first, prototype, inserts);
+}
+
+std::string markedPrototype(const std::string& declaration) {
+  return "/* ---- stereoshift ---- */ " + declaration + "; /* ---- end stereoshift ---- */ ";
+}
+
+// Geometry shaders: the statements `EmitVertex();` / `EmitStreamVertex(n);` wrapped as
+// `{ stereoshift_shiftPosition(); ... }`, and the helper's prototype before every top-level
+// function that emits (each #if branch that defines one gets its own). Line numbers do not move.
+bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::string& text, GlslSpliceResult& result) {
+  Inserts inserts;
+  const std::string prototype = markedPrototype(std::string("void ") + kShiftHelper + "()");
+  const Scopes scopes = scopesOf(w);
+  for (size_t k = 0; k < w.size(); ++k) {
+    const std::string& t = w[k].text;
+    if (!isEmit(t)) continue;
+    if (w[k].inDefine) {
+      result.error = "the shader emits vertices inside a macro";
+      return false;
+    }
+    if (k + 1 >= w.size() || w[k + 1].text != "(" || (k > 0 && w[k - 1].text == ".")) continue;
+    int parens = 0;
+    size_t close = k + 1;
+    for (; close < w.size() && !w[close].inDefine; ++close) {
+      if (w[close].text == "(") ++parens;
+      if (w[close].text == ")" && --parens == 0) break;
+    }
+    if (!scopes.inBody[k] || close + 1 >= w.size() || w[close].text != ")" || w[close + 1].text != ";" ||
+        w[close + 1].inDefine) {
+      result.error = "`" + t + "` is not called as a statement of its own";
+      return false;
+    }
+    inserts[w[k].begin] += std::string("{ ") + kShiftHelper + "(); ";
+    inserts[w[close + 1].end] += " }";
+    addPrototype(w, scopes, k, prototype, inserts);
+    ++result.sites;
+    k = close + 1;
   }
   if (result.sites == 0) {
     result.error = "the shader calls neither EmitVertex nor EmitStreamVertex in its own text";
@@ -176,11 +215,6 @@ bool wrapEmits(const std::string& source, const std::vector<Word>& w, std::strin
   text = applyInserts(source, inserts);
   return true;
 }
-
-// Per-eye cameras: every read of a camera in a function body wrapped as `function(camera)`, the
-// helper's prototype before each top-level function that reads it. Refused where the text is not
-// plain enough to be sure every read is the camera's: a read in a macro, a local, parameter or
-// other declaration of the same name, a struct holding the camera used whole.
 
 // Splits `a.b.c` into its names.
 std::vector<std::string> accessParts(const std::string& access) {
@@ -238,56 +272,10 @@ size_t postfixEnd(const std::vector<Word>& w, size_t k) {
   return end;
 }
 
-// Where each top-level item starts and whether a word is inside a function body, for the wraps.
-struct Scopes {
-  std::vector<size_t> itemStart;  // per word: the first word of the top-level declaration it is in
-  std::vector<bool> inBody, parameter;  // per word: in a function body; in a parameter list at file scope
-};
-
-Scopes scopesOf(const std::vector<Word>& w) {
-  Scopes s;
-  size_t itemStart = 0;
-  int depth = 0, parens = 0;
-  std::vector<bool> functionBody;  // per open brace: whether it opens a function body
-  bool inBody = false;
-  for (size_t k = 0; k < w.size(); ++k) {
-    const std::string& t = w[k].text;
-    s.itemStart.push_back(itemStart);
-    s.inBody.push_back(inBody);
-    s.parameter.push_back(depth == 0 && parens > 0);
-    if (w[k].inDefine) continue;
-    if (t == "{") {
-      functionBody.push_back(depth == 0 && k > 0 && w[k - 1].text == ")");
-      inBody = inBody || functionBody.back();
-      ++depth;
-    } else if (t == "}" && depth > 0) {
-      --depth;
-      bool body = functionBody.back();
-      functionBody.pop_back();
-      if (body) inBody = false;
-      if (depth == 0 && body) itemStart = k + 1;
-    } else if (t == ";" && depth == 0) {
-      itemStart = k + 1;
-    } else if (t == "(" || t == ")") {
-      parens += t == "(" ? 1 : -1;
-    }
-  }
-  return s;
-}
-
-// `function(` before word `first`, `)` after word `last`, the prototype before the item.
-void wrap(const std::vector<Word>& w, const Scopes& scopes, size_t first, size_t last, const std::string& function,
-          const std::string& prototype, Inserts& inserts) {
-  inserts[w[first].begin] += function + "(";
-  inserts[w[last].end] = ")" + inserts[w[last].end];
-  size_t at = w[scopes.itemStart[first]].begin;
-  if (inserts[at].find(prototype) == std::string::npos) inserts[at] = prototype + inserts[at];
-}
-
-std::string markedPrototype(const std::string& declaration) {
-  return "/* ---- stereoshift ---- */ " + declaration + "; /* ---- end stereoshift ---- */ ";
-}
-
+// Per-eye cameras: every read of a camera in a function body wrapped as `function(camera)`, the
+// helper's prototype before each top-level function that reads it. Refused where the text is not
+// plain enough to be sure every read is the camera's: a read in a macro, a local, parameter or
+// other declaration of the same name, a struct holding the camera used whole.
 bool wrapCameraReads(const std::vector<Word>& w, const Scopes& scopes, const GlslSpliceOptions& o, Inserts& inserts,
                      std::string& error) {
   const std::string highp = o.es ? "highp " : "";
