@@ -155,7 +155,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   // 3. schedule
   copyThroughPasses(plan, results);
   setWorkerMemoryLimit(build.jobMemoryMiB << 20);
-  convertInWorkers(plan, toConvert, tool, {build.jobs, build.jobTimeoutSeconds}, results, next);
+  convertInWorkers(plan, toConvert, tool, {build.jobs, build.jobTimeoutSeconds, !base.messages.quiet}, results, next);
   const int removed = removeStaleOutputs(plan, previous, outDir);
   // The #include files the copied and spliced outputs still name: the output tree builds on its own
   // (after the stale outputs went, so a former stage that is now an include file is copied anew).
@@ -181,7 +181,7 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
       ++errors;
     }
   }
-  printSummaryLine(report, build.source, build.output);
+  if (!base.messages.quiet) printSummaryLine(report, build.source, build.output);
   printErrorSummary(errors);
   return errors ? 1 : 0;
 }

@@ -135,7 +135,7 @@ void copyThroughPasses(const Plan& plan, std::vector<JobResult>& results) {
 void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, const std::string& tool,
                       const ScheduleOptions& options, std::vector<JobResult>& results, Cache& next) {
   if (toConvert.empty()) return;
-  const bool tty = ::isatty(2);
+  const bool tty = options.progress && ::isatty(2);
   size_t finished = 0;
   // Jobs whose worker crashed: converted again down the crash ladder (process_failure.h), each round
   // without what the last attempt died in, once every job of the round before is done.

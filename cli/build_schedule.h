@@ -19,11 +19,12 @@ void copyThroughPasses(const Plan& plan, std::vector<JobResult>& results);
 struct ScheduleOptions {
   int jobs = 0;                    // worker processes (0: one per core)
   double jobTimeoutSeconds = 300;  // a pipeline that takes longer is killed and reported (<= 0: no limit)
+  bool progress = true;            // a progress bar on a terminal (-q: none)
 };
 
 // Converts plan.jobs[i] for every i in `toConvert` in worker processes, writes their outputs, and
 // records in `next` the jobs that converted, or failed with diagnostics the same inputs repeat.
-// Shows progress on a terminal.
+// Shows progress on a terminal when options.progress.
 void convertInWorkers(const Plan& plan, const std::vector<size_t>& toConvert, const std::string& tool,
                       const ScheduleOptions& options, std::vector<JobResult>& results, Cache& next);
 

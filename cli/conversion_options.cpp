@@ -91,7 +91,24 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
                "goes to standard output), to review them like a patch");
   app.add_flag("--force-reemit", o.t.forceReemit, "Re-emit shaders that need no change instead of copying them");
   app.add_option("--report", o.reportPath, "Write a JSON report of what was done ('-': standard output)");
+  addMessageOptions(app, o.messages);
   groupConversionOptions(app);
+}
+
+void addMessageOptions(CLI::App& app, MessageOptions& o) {
+  app.add_option("--color", o.colour,
+                 "Colour the messages: auto (on a terminal, unless NO_COLOR is set), always, never (as clang's "
+                 "-fdiagnostics-color)")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)  // the last one said, as clang
+      ->group("Messages");
+  app.add_flag("--no-caret", o.noCaret,
+               "Do not print the source line and a caret under the column after a located message "
+               "(-fno-caret-diagnostics)")
+      ->group("Messages");
+  app.add_flag("-q,--quiet", o.quiet, "Print only warnings and errors: no progress bar, no summary line")
+      ->group("Messages");
 }
 
 void groupConversionOptions(CLI::App& app) {
@@ -398,6 +415,16 @@ std::vector<std::string> glslcSpellings(int argc, char** argv, bool* depfileBesi
       args.push_back("--depfile");
     } else if (i > 0 && arg == "-MD") {
       *depfileBesideOutput = true;
+    } else if (i > 0 && (arg == "-fcolor-diagnostics" || arg == "-fdiagnostics-color")) {
+      args.insert(args.end(), {"--color", "always"});
+    } else if (i > 0 && arg == "-fno-color-diagnostics") {
+      args.insert(args.end(), {"--color", "never"});
+    } else if (i > 0 && arg.starts_with("-fdiagnostics-color=")) {
+      args.insert(args.end(), {"--color", arg.substr(20)});
+    } else if (i > 0 && arg == "-fno-caret-diagnostics") {
+      args.push_back("--no-caret");
+    } else if (i > 0 && arg == "-fcaret-diagnostics") {
+      // the default
     } else if (i > 0 && arg == "-c") {
       // glslc's "compile only, no link": what every conversion is.
     } else {

@@ -16,8 +16,16 @@
 
 namespace stereoshift {
 
+// How the messages look and how many there are (every subcommand): --color, --no-caret, -q.
+struct MessageOptions {
+  std::string colour = "auto";  // --color auto|always|never
+  bool noCaret = false;         // --no-caret: no source line and caret under located messages
+  bool quiet = false;           // -q: no progress bar, no summary line; warnings and errors only
+};
+
 struct CliOptions {
   TranspileOptions t;
+  MessageOptions messages;
   std::vector<std::string> inputs;
   std::string output;
   std::string stage, target, eyeSource = "auto", shiftForm = "branch";
@@ -44,10 +52,14 @@ struct CliOptions {
   bool depfileBesideOutput = false;
 };
 
-// glslc's spellings CLI11 cannot take as they are, rewritten before the parse: -fshader-stage=S
-// (-S S), -fentry-point=F (-e F), -MF FILE (--depfile FILE), -MD, and -c (compile only: all this
-// tool does) dropped.
+// glslc's and clang's spellings CLI11 cannot take as they are, rewritten before the parse:
+// -fshader-stage=S (-S S), -fentry-point=F (-e F), -MF FILE (--depfile FILE), -MD, -c (compile
+// only: all this tool does) dropped, -f[no-]color-diagnostics and -fdiagnostics-color[=WHEN]
+// (--color), -f[no-]caret-diagnostics (--no-caret).
 std::vector<std::string> glslcSpellings(int argc, char** argv, bool* depfileBesideOutput);
+
+// Registers --color, --no-caret and -q on `app` (each subcommand has its own).
+void addMessageOptions(CLI::App& app, MessageOptions& o);
 
 // Registers the conversion options (shared by the main command, `build` and `verify`) on `app`.
 void addConversionOptions(CLI::App& app, CliOptions& o);

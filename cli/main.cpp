@@ -125,6 +125,13 @@ static int runCommandLine(int argc, char** argv) {
     return reportParseError(app, e, std::cerr);
   }
 
+  // The messages of the command that runs, in its style, from here on.
+  const MessageOptions& messages = *reproject ? reprojectOptions.messages
+                                   : *verify  ? v.messages
+                                   : *build   ? b.messages
+                                              : o.messages;
+  DiagnosticStream styled({!messages.noCaret, colourWanted(messages.colour)});
+
   if (*reproject) return runReprojectCommand(reprojectOptions);
 
   if (*verify) return runVerify(v, verifyOptions);

@@ -81,6 +81,7 @@ CLI::App* addReprojectCommand(CLI::App& app, ReprojectCliOptions& o) {
                 "farther-sample (the search's farther sample)")
       ->capture_default_str();
   r->add_flag("--mask", o.mask, "Also write a disocclusion mask (1 = disoccluded) to colour output 1, for inpainting");
+  addMessageOptions(*r, o.messages);
   return r;
 }
 

@@ -3,6 +3,7 @@
 // JSON report, all of them or none.
 #pragma once
 
+#include "cli/conversion_options.h"  // MessageOptions
 #include "transpiler/reproject/reproject_shaders.h"
 
 #include <string>
@@ -17,6 +18,7 @@ namespace stereoshift {
 // The option strings as given; every value is checked by runReprojectCommand (an error there is
 // "stereoshift: error: ..." and exit status 1).
 struct ReprojectCliOptions {
+  MessageOptions messages;
   std::string outputDir, reportPath;
   std::vector<std::string> targets;
   std::string targetVersion;

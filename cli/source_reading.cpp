@@ -1,6 +1,7 @@
 // How the CLI reads its input shaders (see source_reading.h).
 #include "cli/source_reading.h"
 
+#include "cli/diagnostic_output.h"
 #include "cli/test_hook.h"
 #include "transpiler/source/file_io.h"
 
@@ -47,6 +48,7 @@ int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* 
       std::ostringstream text;
       text << std::cin.rdbuf();
       s.contents = text.str();
+      rememberSourceText(kStdinName, s.contents);  // for the source line under its diagnostics
     } else if (fs::is_directory(p, ec) || !readFile(p, &s.contents)) {
       log << p << ": error: cannot read file: " << unreadableBecause(p) << "\n";
       ++failed;

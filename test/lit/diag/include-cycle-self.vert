@@ -4,6 +4,8 @@
 // RUN: %not timeout 300 %stereoshift %s -o %t.out 2>&1 | FileCheck %s
 // RUN: test ! -e %t.out
 // CHECK: {{.*}}Inputs/cycle/x.glsl:3:1: error: #include cycle: {{.*}}include-cycle-self.vert -> {{.*}}Inputs/cycle/x.glsl -> {{.*}}Inputs/cycle/x.glsl{{$}}
+// CHECK-NEXT: #include "x.glsl"
+// CHECK-NEXT: {{^[[:blank:]]*\^$}}
 // CHECK-NEXT: {{^}}1 error generated.
 #version 450
 #extension GL_GOOGLE_include_directive : require

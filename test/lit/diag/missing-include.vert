@@ -13,6 +13,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "does-not-exist.glsl"
 // CHECK: missing-include.vert:[[@LINE-1]]:1: error: '#include' : Could not process include directive for header name: does-not-exist.glsl
+// CHECK-NEXT: #include "does-not-exist.glsl"
+// CHECK-NEXT: {{^[[:blank:]]*\^$}}
 // CHECK-NEXT: {{^}}1 error generated.
 void main() {
   gl_Position = vec4(1.0);

@@ -13,5 +13,7 @@
 void main() {
   gl_Position = vec4(1.0 2.0);
 // CHECK: syntax-error.vert:[[@LINE-1]]:{{[0-9]+}}: error: syntax error, unexpected FLOATCONSTANT, expecting RIGHT_PAREN or COMMA
+// CHECK-NEXT: gl_Position = vec4(1.0 2.0);
+// CHECK-NEXT: {{^[[:blank:]]*\^$}}
 // CHECK-NEXT: {{^}}1 error generated.
 }

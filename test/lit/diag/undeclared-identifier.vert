@@ -13,5 +13,7 @@
 void main() {
   gl_Position = vec4(undefinedThing, 1.0);
 // CHECK: undeclared-identifier.vert:[[@LINE-1]]:22: error: 'undefinedThing' : undeclared identifier
+// CHECK-NEXT: gl_Position = vec4(undefinedThing, 1.0);
+// CHECK-NEXT: {{^[[:blank:]]*\^$}}
 // CHECK-NEXT: {{^}}1 error generated.
 }

@@ -4,6 +4,8 @@
 // RUN: %not %stereoshift %s -o %t.out 2>&1 | FileCheck %s
 // RUN: test ! -e %t.out
 // CHECK: version-garbled.vert:1:1: error: '#version 3x0': not a GLSL version
+// CHECK-NEXT: #version 3x0
+// CHECK-NEXT: {{^[[:blank:]]*\^$}}
 // CHECK-NEXT: {{^}}1 error generated.
 // CHECK-NOT: ES shaders
 void main() {

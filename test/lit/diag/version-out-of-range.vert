@@ -4,6 +4,8 @@
 // RUN: %not %stereoshift %s -o %t.out 2>&1 | FileCheck %s
 // RUN: test ! -e %t.out
 // CHECK: version-out-of-range.vert:1:10: error: #version 2147483648 is not a GLSL version
+// CHECK-NEXT: #version 2147483648
+// CHECK-NEXT: {{^[[:blank:]]*\^$}}
 // CHECK-NEXT: {{^}}1 error generated.
 void main() {
   gl_Position = vec4(0.0);
