@@ -163,6 +163,13 @@ class DiagnosticStream::Buffer : public std::streambuf {
  public:
   Buffer(std::streambuf* out, const DiagnosticStyle& style) : out_(out), style_(style) {}
   ~Buffer() override { passOn(pending_.size()); }
+  // Renders what is pending in the style it was written in, then takes `style`; returns the old one.
+  DiagnosticStyle setStyle(const DiagnosticStyle& style) {
+    passOn(pending_.size());
+    DiagnosticStyle old = style_;
+    style_ = style;
+    return old;
+  }
 
  protected:
   int overflow(int c) override {
@@ -197,12 +204,33 @@ class DiagnosticStream::Buffer : public std::streambuf {
   std::string pending_;
 };
 
-DiagnosticStream::DiagnosticStream(const DiagnosticStyle& style)
-    : buffer_(new Buffer(std::cerr.rdbuf(), style)), previous_(std::cerr.rdbuf(buffer_)) {}
+namespace {
+// The stream in force in this process. A command run inside another (a conversion-service worker
+// forked from the command that started the server) renders through the one already there, in its
+// own style: two would place each caret twice.
+DiagnosticStream::Buffer* activeBuffer = nullptr;
+}  // namespace
+
+DiagnosticStream::DiagnosticStream(const DiagnosticStyle& style) {
+  if (activeBuffer) {
+    std::cerr.flush();
+    outerStyle_ = activeBuffer->setStyle(style);
+    buffer_ = nullptr;
+    previous_ = nullptr;
+    return;
+  }
+  buffer_ = activeBuffer = new Buffer(std::cerr.rdbuf(), style);
+  previous_ = std::cerr.rdbuf(buffer_);
+}
 
 DiagnosticStream::~DiagnosticStream() {
   std::cerr.flush();
+  if (!buffer_) {
+    activeBuffer->setStyle(outerStyle_);
+    return;
+  }
   std::cerr.rdbuf(previous_);
+  activeBuffer = nullptr;
   delete buffer_;  // passes on what is left
   std::cerr.flush();
 }

@@ -40,6 +40,7 @@ void rememberSourceText(const std::string& name, std::string text);
 // While alive, std::cerr goes through renderDiagnostics: whole lines are rendered as they complete;
 // a flush passes on a partial line only when it is terminal control (the build's progress bar,
 // "\r...\x1b[K"), so a message written in pieces is rendered whole. Restores std::cerr when it ends.
+// One per process: a stream made while another is alive sets that one's style until it ends.
 class DiagnosticStream {
  public:
   explicit DiagnosticStream(const DiagnosticStyle& style);
@@ -47,10 +48,12 @@ class DiagnosticStream {
   DiagnosticStream(const DiagnosticStream&) = delete;
   DiagnosticStream& operator=(const DiagnosticStream&) = delete;
 
- private:
   class Buffer;
-  Buffer* buffer_;
-  std::streambuf* previous_;
+
+ private:
+  Buffer* buffer_;             // null when another stream was already in force
+  std::streambuf* previous_;   // what std::cerr wrote to before
+  DiagnosticStyle outerStyle_;  // that other stream's style, given back at the end
 };
 
 }  // namespace stereoshift
