@@ -58,7 +58,11 @@ BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& result
       addEntry(results[i].reportFacts[k], report.upToDate, results[i].reportTexts[k]);
     for (const auto& r : results[i].reports) {
       bool converts = convertsShaders(plan.jobs[i].mode);
-      addEntry(reportFacts(r), converts ? report.converted : report.copied, reportEntryText(r));
+      // A stage that converted while another stage of its pipeline failed is not written (the
+      // pipeline is all or nothing): not counted as converted.
+      bool unwritten = r.value("ok", false) && r.value("output", "").starts_with("not written");
+      addEntry(reportFacts(r), unwritten ? report.notWritten : converts ? report.converted : report.copied,
+               reportEntryText(r));
       if (converts && r.value("ok", false) && r.value("output", "") == "copied") ++report.unchanged;
     }
   }
@@ -69,6 +73,7 @@ BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& result
                         {"converted", report.converted}, {"converted_unchanged", report.unchanged},
                         {"up_to_date", report.upToDate},
                         {"copied_by_pass", report.copied}, {"failed", report.failed},
+                        {"not_written", report.notWritten},
                         {"removed_stale_outputs", removed}};
   // The #include files copied into the output tree (copyIncludedFiles), relative to it.
   if (!includeCopies.empty()) {
@@ -92,6 +97,7 @@ void printSummaryLine(const BuildReport& report, const std::string& source, cons
             << report.converted << " converted, " << report.upToDate << " up to date";
   if (report.copied) std::cerr << ", " << report.copied << " copied (mono/post/UI passes)";
   if (report.failed) std::cerr << ", " << report.failed << " failed";
+  if (report.notWritten) std::cerr << ", " << report.notWritten << " not written (another stage of their pipeline failed)";
   if (report.removed) std::cerr << ", " << report.removed << " stale outputs removed";
   // Converted, but nothing to inject (2D, fragment, already stereo): written as they were.
   if (report.unchanged) std::cerr << "; " << report.unchanged << " of the converted unchanged (written as they were)";

@@ -30,6 +30,7 @@ struct BuildReport {
   size_t shaders = 0;
   int converted = 0, upToDate = 0, copied = 0, failed = 0, removed = 0;
   int unchanged = 0;  // of `converted`: nothing to inject, the output is the input byte for byte
+  int notWritten = 0;  // converted, but another stage of the pipeline failed: nothing written
 };
 
 // The report of a run over `plan`; `results` are per job, `removed` the stale outputs deleted,

@@ -44,4 +44,14 @@ bool isPreRasterization(Stage stage) {
          stage == Stage::Geometry || stage == Stage::Mesh;
 }
 
+bool vulkanGlslOutput(const SourceInfo& source, bool esOutput, std::optional<int> targetVersion) {
+  const bool sameDialect = source.language == SourceLanguage::Glsl && esOutput == source.es;
+  if (!source.vulkan || !(sameDialect || source.language != SourceLanguage::Glsl)) return false;
+  if (!targetVersion) return true;
+  if (sameDialect && *targetVersion >= source.version) return true;
+  return *targetVersion >= (esOutput ? 310 : 430);
+}
+
+bool glslHasInverse(int version, bool es) { return version >= (es ? 300 : 150); }
+
 }  // namespace stereoshift

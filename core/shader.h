@@ -75,6 +75,18 @@ struct SourceInfo {
   int spliceVersionCap = 0;
 };
 
+// Whether a GLSL/ESSL output keeps Vulkan GLSL's semantics (descriptor sets, push constants): the
+// input is Vulkan GLSL of the same dialect, or HLSL / SPIR-V (which carry sets), and no
+// --target-version asks for OpenGL. One below ESSL 310 or GLSL 430 does, unless it is at or above
+// the input's own version in the same dialect: Vulkan GLSL is written from 430 on in practice, and
+// below it the std430 blocks a Vulkan module's push constants and buffers are emitted as do not
+// compile, while an older OpenGL target is what such a request means.
+bool vulkanGlslOutput(const SourceInfo& source, bool esOutput, std::optional<int> targetVersion);
+// Whether GLSL/ESSL `version` has inverse(). ESSL 300 has it; desktop GLSL 1.40's specification
+// does too, but glslang, which re-compiles every output, declares it from 150 on: an output must
+// pass both, so 150.
+bool glslHasInverse(int version, bool es);
+
 struct SourceFile {
   std::string path;      // as given; used in diagnostics and for the extension
   std::string contents;  // raw bytes

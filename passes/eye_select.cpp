@@ -25,12 +25,7 @@ TargetLanguage outputLanguage(const PassContext& ctx) {
 
 // Whether a GLSL/ESSL output has OpenGL (not Vulkan) semantics, as the back end decides it.
 bool openGlOutput(const PassContext& ctx, TargetLanguage target) {
-  if (!glslOutput(target)) return false;
-  bool es = target == TargetLanguage::Essl;
-  bool openGlVersion = ctx.output.version && *ctx.output.version < (es ? 310 : 400);
-  bool sameDialect = ctx.source.language == SourceLanguage::Glsl && es == ctx.source.es;
-  bool vulkan = ctx.source.vulkan && (sameDialect || ctx.source.language != SourceLanguage::Glsl) && !openGlVersion;
-  return !vulkan;
+  return glslOutput(target) && !vulkanGlslOutput(ctx.source, target == TargetLanguage::Essl, ctx.output.version);
 }
 
 // The GLSL/ESSL version the output will have.

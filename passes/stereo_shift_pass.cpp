@@ -4,6 +4,7 @@
 // before every EmitVertex / EmitStreamVertex of a geometry shader (in any function). A mesh shader
 // has no such point (each invocation writes any vertices of the per-vertex output array, in any
 // order): there the value of every store of a whole clip position is shifted instead.
+#include "passes/eye_select.h"  // outputLanguage, glslOutputVersion
 #include "passes/ir/builder.h"
 #include "passes/pass.h"
 #include "passes/pass_registry.h"
@@ -62,7 +63,11 @@ class StereoShiftPass final : public Pass {
         }
       }
     }
-    if (ctx.options.invariantPosition)
+    // GLSL 1.10 has no `invariant` (1.20 brought it; every ESSL has it): there the position stays as
+    // it is, or the output would not compile.
+    const TargetLanguage target = outputLanguage(ctx);
+    const bool invariantExists = target != TargetLanguage::Glsl || glslOutputVersion(ctx, target) >= 120;
+    if (ctx.options.invariantPosition && invariantExists)
       for (const auto& p : positions) {
         if (p.isMember)
           m.decorateMember(m.pointeeType(m.definition(p.variable)->typeId), p.member, spv::DecorationInvariant);

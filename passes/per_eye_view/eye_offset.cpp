@@ -409,9 +409,9 @@ OffsetSource chooseOffsetSource(const PassContext& ctx, const Module& f, const S
     source.description = apply(slotName(f, *inverse)) + "  [inverse view-projection by name]";
     return source;
   }
-  // GLSL below 140 and ESSL 100 have no inverse(): there the application's eye-offset parameters.
+  // GLSL below 150 and ESSL 100 have no inverse() (core/shader.h): there the application's eye-offset parameters.
   TargetLanguage target = outputLanguage(ctx);
-  bool hasInverse = !glslOutput(target) || glslOutputVersion(ctx, target) >= (target == TargetLanguage::Essl ? 300 : 140);
+  bool hasInverse = !glslOutput(target) || glslHasInverse(glslOutputVersion(ctx, target), target == TargetLanguage::Essl);
   if (chain && !product.empty() && hasInverse) {
     bool allMat4 = std::all_of(product.begin(), product.end(),
                                [&](const Slot& s) { return isMat4(f, slotType(f, s)); });

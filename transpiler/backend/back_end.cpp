@@ -98,11 +98,10 @@ EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& i
         o.es = result.language == TargetLanguage::Essl;
         o.version = static_cast<uint32_t>(
             options.targetVersion.value_or(sameDialect ? info.version : (o.es ? 310 : 450)));
-        // Vulkan GLSL in, Vulkan GLSL out; HLSL / SPIR-V carry descriptor sets, so they keep them too.
-        // A --target-version that Vulkan GLSL does not exist in (desktop < 400, ES < 310) asks for
-        // OpenGL GLSL: push constants become plain uniforms, sets go (else the output cannot compile).
-        bool openGlVersion = options.targetVersion && *options.targetVersion < (o.es ? 310 : 400);
-        o.vulkan_semantics = info.vulkan && (sameDialect || info.language != SourceLanguage::Glsl) && !openGlVersion;
+        // Vulkan GLSL in, Vulkan GLSL out; HLSL / SPIR-V carry descriptor sets, so they keep them too;
+        // an older --target-version asks for OpenGL GLSL: push constants become plain uniforms, sets
+        // go (core/shader.h, vulkanGlslOutput).
+        o.vulkan_semantics = vulkanGlslOutput(info, o.es, options.targetVersion);
         o.enable_420pack_extension = false;  // never add an extension the source did not ask for
         o.separate_shader_objects = false;
         o.vertex.support_nonzero_base_instance = false;  // no stray SPIRV_Cross_BaseInstance uniform

@@ -147,8 +147,8 @@ bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
       wrap.offset = "vec3(" + eyeParamText(r, spec, kEyeOffsetX) + ", " + eyeParamText(r, spec, kEyeOffsetY) + ", " +
                     eyeParamText(r, spec, kEyeOffsetZ) + ")";
     } else {
-      if (c.offset == CameraText::InvertedClipMatrices && (info.es ? info.version < 300 : info.version < 140)) {
-        why = "the per-eye camera inverts the clip matrices, and inverse() needs GLSL 140 / ESSL 300";
+      if (c.offset == CameraText::InvertedClipMatrices && !glslHasInverse(info.version, info.es)) {
+        why = "the per-eye camera inverts the clip matrices, and inverse() needs GLSL 150 / ESSL 300";
         return false;
       }
       // InvVP * (e*S*C, 0, 0, 0): the clip-space direction of the shift at zero depth, in world space.
