@@ -1,6 +1,8 @@
 #include "transpiler/backend/emit_prep.h"
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 namespace stereoshift {
 
@@ -54,6 +56,58 @@ EmitHints collectHints(const spirv::Module& m) {
     }
   }
   return hints;
+}
+
+void signIntegerBuiltIns(spirv::Module& m) {
+  uint32_t uintType = 0;
+  std::set<uint32_t> retyped;
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassInput ||
+        m.decorationValue(inst.resultId, spv::DecorationBuiltIn) != uint32_t(spv::BuiltInInvocationId))
+      continue;
+    const spirv::Instruction* type = m.definition(m.pointeeType(inst.typeId));
+    if (!type || type->opcode != spv::OpTypeInt || type->operand(0) != 32 || type->operand(1) != 0) continue;
+    uintType = type->resultId;
+    retyped.insert(inst.resultId);
+  }
+  if (retyped.empty()) return;
+  const uint32_t intType = m.typeInt(32, true);
+  const uint32_t intPointer = m.typePointer(spv::StorageClassInput, intType);
+  std::map<uint32_t, uint32_t> signedOf;  // each load's uint value -> the int it converts
+  // The variables move after the types they now use (a new int type is appended last).
+  std::vector<spirv::Instruction> moved;
+  std::erase_if(m.typesValues, [&](const spirv::Instruction& inst) {
+    if (inst.opcode != spv::OpVariable || !retyped.count(inst.resultId)) return false;
+    moved.push_back(inst);
+    moved.back().typeId = intPointer;
+    return true;
+  });
+  m.typesValues.insert(m.typesValues.end(), moved.begin(), moved.end());
+  for (auto& function : m.functions)
+    for (auto& block : function.blocks)
+      for (size_t k = 0; k < block.instructions.size(); ++k) {
+        spirv::Instruction& load = block.instructions[k];
+        if (load.opcode != spv::OpLoad || !retyped.count(load.operand(0))) continue;
+        const uint32_t value = load.resultId, signedValue = m.takeId();
+        load.typeId = intType;
+        load.resultId = signedValue;
+        spirv::Instruction cast;
+        cast.opcode = spv::OpBitcast;
+        cast.typeId = uintType;
+        cast.resultId = value;
+        cast.operands = {signedValue};
+        block.instructions.insert(block.instructions.begin() + static_cast<std::ptrdiff_t>(k) + 1, cast);
+        signedOf[value] = signedValue;
+      }
+  // An index takes the int itself: a tessellation control shader's per-vertex outputs must be indexed
+  // with gl_InvocationID as it is, not a conversion of it.
+  for (auto& function : m.functions)
+    for (auto& block : function.blocks)
+      for (auto& inst : block.instructions)
+        if (inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain)
+          for (size_t i = 1; i < inst.operands.size(); ++i)
+            if (auto it = signedOf.find(inst.operands[i]); it != signedOf.end()) inst.operands[i] = it->second;
+  m.invalidateDefinitions();
 }
 
 }  // namespace stereoshift

@@ -11,5 +11,12 @@ namespace stereoshift {
 
 void stripAutoAssignedQualifiers(spirv::Module& module, const SourceInfo& info);
 EmitHints collectHints(const spirv::Module& module);
+// GLSL declares gl_InvocationID as int; HLSL's SV_OutputControlPointID and SV_GSInstanceID are
+// uint, and glslang keeps the uint input. SPIRV-Cross converts it where an int is needed but not
+// where a uint is (`uint id = gl_InvocationID;`, which needs GLSL 4.00's implicit conversions and
+// never compiles in ESSL): for a GLSL/ESSL output the input becomes an int, each load converted
+// back, so the text reads `uint(gl_InvocationID)`. (The other built-ins HLSL makes uint,
+// SV_PrimitiveID, SV_SampleIndex, SV_VertexID, ..., SPIRV-Cross converts itself.)
+void signIntegerBuiltIns(spirv::Module& module);
 
 }  // namespace stereoshift

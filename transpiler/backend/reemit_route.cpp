@@ -35,6 +35,7 @@ class ReemitRoute final : public BackEndRoute {
     SourceInfo emitInfo = info;
     if (ctx.options.eye.glBinding && ctx.eye.variable) emitInfo.explicitBinding.insert(ctx.module.name(ctx.eye.variable));
     stripAutoAssignedQualifiers(emitModule, emitInfo);
+    if (r.target == TargetLanguage::Glsl || r.target == TargetLanguage::Essl) signIntegerBuiltIns(emitModule);
     EmitHints hints = collectHints(emitModule);
     EmittedSource emitted = emitSource(emitModule.encode(), info, r.options, ctx.options.eye.select, hints, r.input.path, diags);
     if (!emitted.ok) return result;  // Failed, with SPIRV-Cross's reason
