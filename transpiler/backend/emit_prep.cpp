@@ -110,4 +110,90 @@ void signIntegerBuiltIns(spirv::Module& m) {
   m.invalidateDefinitions();
 }
 
+namespace {
+
+// The component count of a 32-bit float scalar or vector type with fewer than 4 (0 otherwise), and
+// its component type.
+uint32_t narrowFloatCount(const spirv::Module& m, uint32_t type, uint32_t* component) {
+  const spirv::Instruction* def = m.definition(type);
+  if (def && def->opcode == spv::OpTypeFloat && def->operand(0) == 32) {
+    *component = type;
+    return 1;
+  }
+  if (!def || def->opcode != spv::OpTypeVector || def->operand(1) >= 4) return 0;
+  const spirv::Instruction* element = m.definition(def->operand(0));
+  if (!element || element->opcode != spv::OpTypeFloat || element->operand(0) != 32) return 0;
+  *component = def->operand(0);
+  return def->operand(1);
+}
+
+// Whether every use of `var` in the functions is a whole load or store or an access chain into it.
+bool onlyLoadedStoredOrIndexed(const spirv::Module& m, uint32_t var) {
+  for (const auto& function : m.functions)
+    for (const auto& block : function.blocks)
+      for (const auto& inst : block.instructions)
+        for (size_t i = 0; i < inst.operands.size(); ++i) {
+          if (inst.operands[i] != var) continue;
+          bool allowed = i == 0 && (inst.opcode == spv::OpLoad || inst.opcode == spv::OpStore ||
+                                    inst.opcode == spv::OpAccessChain || inst.opcode == spv::OpInBoundsAccessChain);
+          if (!allowed) return false;
+        }
+  return true;
+}
+
+}  // namespace
+
+void widenLegacyFragmentOutputs(spirv::Module& m) {
+  if (m.executionModel() != spv::ExecutionModelFragment) return;
+  std::map<uint32_t, std::pair<uint32_t, uint32_t>> widened;  // variable -> (component count, float type)
+  for (const auto& inst : m.typesValues) {
+    if (inst.opcode != spv::OpVariable || inst.operand(0) != spv::StorageClassOutput ||
+        m.hasDecoration(inst.resultId, spv::DecorationBuiltIn))
+      continue;
+    uint32_t component = 0;
+    uint32_t count = narrowFloatCount(m, m.pointeeType(inst.typeId), &component);
+    if (count && onlyLoadedStoredOrIndexed(m, inst.resultId)) widened[inst.resultId] = {count, component};
+  }
+  if (widened.empty()) return;
+  const uint32_t floatType = widened.begin()->second.second;
+  const uint32_t vec4 = m.typeVector(floatType, 4);
+  const uint32_t vec4Pointer = m.typePointer(spv::StorageClassOutput, vec4);
+  const uint32_t zero = m.constantFloat(0.0f), one = m.constantFloat(1.0f);
+  std::vector<spirv::Instruction> moved;  // after the types and constants they now use
+  std::erase_if(m.typesValues, [&](const spirv::Instruction& inst) {
+    if (inst.opcode != spv::OpVariable || !widened.count(inst.resultId)) return false;
+    moved.push_back(inst);
+    moved.back().typeId = vec4Pointer;
+    return true;
+  });
+  m.typesValues.insert(m.typesValues.end(), moved.begin(), moved.end());
+  for (auto& function : m.functions)
+    for (auto& block : function.blocks)
+      for (size_t k = 0; k < block.instructions.size(); ++k) {
+        spirv::Instruction& inst = block.instructions[k];
+        auto it = widened.find(inst.operand(0));
+        if (it == widened.end() || (inst.opcode != spv::OpStore && inst.opcode != spv::OpLoad)) continue;
+        const uint32_t count = it->second.first;
+        const auto at = block.instructions.begin() + static_cast<std::ptrdiff_t>(k);
+        if (inst.opcode == spv::OpStore) {
+          // (v, 0, ..., 1): what the shader wrote, then the components it did not.
+          spirv::Instruction pad(spv::OpCompositeConstruct, vec4, m.takeId(), {inst.operand(1)});
+          for (uint32_t c = count; c < 3; ++c) pad.operands.push_back(zero);
+          pad.operands.push_back(one);
+          inst.operands[1] = pad.resultId;
+          block.instructions.insert(at, pad);
+        } else {
+          const uint32_t narrowType = inst.typeId, value = inst.resultId, wide = m.takeId();
+          inst.typeId = vec4;
+          inst.resultId = wide;
+          spirv::Instruction back = count == 1 ? spirv::Instruction(spv::OpCompositeExtract, narrowType, value, {wide, 0})
+                                               : spirv::Instruction(spv::OpVectorShuffle, narrowType, value, {wide, wide});
+          for (uint32_t c = 0; count > 1 && c < count; ++c) back.operands.push_back(c);
+          block.instructions.insert(at + 1, back);
+        }
+        ++k;
+      }
+  m.invalidateDefinitions();
+}
+
 }  // namespace stereoshift

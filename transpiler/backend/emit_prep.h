@@ -18,5 +18,11 @@ EmitHints collectHints(const spirv::Module& module);
 // back, so the text reads `uint(gl_InvocationID)`. (The other built-ins HLSL makes uint,
 // SV_PrimitiveID, SV_SampleIndex, SV_VertexID, ..., SPIRV-Cross converts itself.)
 void signIntegerBuiltIns(spirv::Module& module);
+// Legacy GLSL (before 1.30) and ESSL 1.00 write a fragment's colours through gl_FragColor /
+// gl_FragData[n], which are vec4: SPIRV-Cross assigns a float, vec2 or vec3 output to them as it
+// is, which does not compile. Each such output becomes a vec4, its stores padded with 0 and an alpha
+// of 1 (the components the shader never wrote; a colour attachment's are undefined then), its loads
+// taking the first components back. An output used any other way is left alone.
+void widenLegacyFragmentOutputs(spirv::Module& module);
 
 }  // namespace stereoshift

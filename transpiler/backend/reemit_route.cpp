@@ -7,6 +7,7 @@
 
 #include "transpiler/backend/back_end.h"
 #include "transpiler/backend/emit_prep.h"
+#include "passes/eye_select.h"  // glslOutputVersion
 
 namespace stereoshift {
 
@@ -35,7 +36,11 @@ class ReemitRoute final : public BackEndRoute {
     SourceInfo emitInfo = info;
     if (ctx.options.eye.glBinding && ctx.eye.variable) emitInfo.explicitBinding.insert(ctx.module.name(ctx.eye.variable));
     stripAutoAssignedQualifiers(emitModule, emitInfo);
-    if (r.target == TargetLanguage::Glsl || r.target == TargetLanguage::Essl) signIntegerBuiltIns(emitModule);
+    if (r.target == TargetLanguage::Glsl || r.target == TargetLanguage::Essl) {
+      signIntegerBuiltIns(emitModule);
+      if (glslOutputVersion(ctx, r.target) < (r.target == TargetLanguage::Essl ? 300 : 130))
+        widenLegacyFragmentOutputs(emitModule);
+    }
     EmitHints hints = collectHints(emitModule);
     EmittedSource emitted = emitSource(emitModule.encode(), info, r.options, ctx.options.eye.select, hints, r.input.path, diags);
     if (!emitted.ok) return result;  // Failed, with SPIRV-Cross's reason
