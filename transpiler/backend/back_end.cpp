@@ -137,6 +137,21 @@ EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& i
         // HLSL vertex, geometry and domain shaders back to HLSL take the source splice
         // (splice_route.h); these repairs of SPIRV-Cross's text serve the cross-language route
         // (GLSL/SPIR-V in) and the HLSL re-emits left: changed pixel shaders, vertex fallbacks.
+        // SPIRV-Cross's HLSL writer has no geometry, hull or domain stage: refused with that said,
+        // rather than its "Unsupported builtin in HLSL: 13". (HLSL shaders of these stages go back
+        // to HLSL through the source splice, not here.)
+        if (info.stage == Stage::Geometry || info.stage == Stage::TessControl || info.stage == Stage::TessEvaluation ||
+            info.stage == Stage::Mesh || info.stage == Stage::Task) {
+          const char* what = info.stage == Stage::Geometry      ? "geometry"
+                             : info.stage == Stage::TessControl ? "hull (tessellation control)"
+                             : info.stage == Stage::TessEvaluation ? "domain (tessellation evaluation)"
+                             : info.stage == Stage::Mesh        ? "mesh"
+                                                                : "amplification (task)";
+          diags.error(file, std::string("--target hlsl: SPIRV-Cross, which writes the HLSL, has no ") + what +
+                                " shaders; nothing was written (convert this stage for a GLSL, ESSL or SPIR-V target, "
+                                "or keep an HLSL version of it written by hand)");
+          return result;
+        }
         spirv_cross::CompilerHLSL compiler(words);
         auto h = compiler.get_hlsl_options();
         h.shader_model = static_cast<uint32_t>(options.targetVersion.value_or(50));
@@ -144,6 +159,16 @@ EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& i
         if (!options.targetVersion)
           for (spv::Capability c : compiler.get_declared_capabilities())
             if (c == spv::CapabilityMultiView) h.shader_model = 61;
+        // From 6.2 on SPIRV-Cross writes buffer loads as templates (Load<float4>), which glslang, the
+        // check every output passes, cannot parse; 6.1's text is valid at any later model. Only
+        // 16-bit types need 6.2's own text.
+        if (h.shader_model >= 62) {
+          bool sixteenBit = false;
+          for (spv::Capability c : compiler.get_declared_capabilities())
+            sixteenBit |= c == spv::CapabilityFloat16 || c == spv::CapabilityInt16 ||
+                          c == spv::CapabilityStorageBuffer16BitAccess || c == spv::CapabilityStorageInputOutput16;
+          if (!sixteenBit) h.shader_model = 61;
+        }
         h.support_nonzero_base_vertex_base_instance = false;
         compiler.set_hlsl_options(h);
         if (info.stage == Stage::Vertex)
