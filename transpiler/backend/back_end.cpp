@@ -80,6 +80,58 @@ std::string renameEntryPoint(std::string text, const std::string& entryPoint) {
   return text;
 }
 
+// The HLSL text of `words` (SPIRV-Cross, with the source's semantics and cbuffer member names put
+// back); nullopt, with the reason in `diags`, for a stage SPIRV-Cross cannot write as HLSL.
+std::optional<std::string> emitHlsl(const std::vector<uint32_t>& words, const SourceInfo& info,
+                                    const BackEndOptions& options, const EmitHints& hints, const std::string& file,
+                                    Diagnostics& diags) {
+  // HLSL vertex, geometry and domain shaders back to HLSL take the source splice
+  // (splice_route.h); this serves the cross-language route (GLSL/SPIR-V in) and the HLSL re-emits
+  // left: changed pixel shaders, vertex fallbacks. SPIRV-Cross's HLSL writer has no geometry, hull
+  // or domain stage: refused with that said, rather than its "Unsupported builtin in HLSL: 13".
+  if (info.stage == Stage::Geometry || info.stage == Stage::TessControl || info.stage == Stage::TessEvaluation ||
+      info.stage == Stage::Mesh || info.stage == Stage::Task) {
+    const char* what = info.stage == Stage::Geometry      ? "geometry"
+                       : info.stage == Stage::TessControl ? "hull (tessellation control)"
+                       : info.stage == Stage::TessEvaluation ? "domain (tessellation evaluation)"
+                       : info.stage == Stage::Mesh        ? "mesh"
+                                                          : "amplification (task)";
+    diags.error(file, std::string("--target hlsl: SPIRV-Cross, which writes the HLSL, has no ") + what +
+                          " shaders; nothing was written (convert this stage for a GLSL, ESSL or SPIR-V target, "
+                          "or keep an HLSL version of it written by hand)");
+    return std::nullopt;
+  }
+  spirv_cross::CompilerHLSL compiler(words);
+  auto h = compiler.get_hlsl_options();
+  h.shader_model = static_cast<uint32_t>(options.targetVersion.value_or(50));
+  // SV_ViewID (single-pass multiview) exists from shader model 6.1 on.
+  if (!options.targetVersion)
+    for (spv::Capability c : compiler.get_declared_capabilities())
+      if (c == spv::CapabilityMultiView) h.shader_model = 61;
+  // From 6.2 on SPIRV-Cross writes buffer loads as templates (Load<float4>), which glslang, the
+  // check every output passes, cannot parse; 6.1's text is valid at any later model. Only
+  // 16-bit types need 6.2's own text.
+  if (h.shader_model >= 62) {
+    bool sixteenBit = false;
+    for (spv::Capability c : compiler.get_declared_capabilities())
+      sixteenBit |= c == spv::CapabilityFloat16 || c == spv::CapabilityInt16 ||
+                    c == spv::CapabilityStorageBuffer16BitAccess || c == spv::CapabilityStorageInputOutput16;
+    if (!sixteenBit) h.shader_model = 61;
+  }
+  h.support_nonzero_base_vertex_base_instance = false;
+  compiler.set_hlsl_options(h);
+  if (info.stage == Stage::Vertex)
+    for (const auto& [location, semantic] : hints.inputSemantics)
+      compiler.add_vertex_attribute_remap({location, semantic});
+  std::string text = compiler.compile();
+  if (info.stage != Stage::Vertex) text = restoreSemantics(text, "SPIRV_Cross_Input", hints.inputSemantics);
+  text = restoreSemantics(text, "SPIRV_Cross_Output", hints.outputSemantics);
+  // cbuffer members keep the names the application looks up.
+  text = renameIdentifiers(text, hints.cbufferMemberNames);
+  if (!info.entryPoint.empty() && info.entryPoint != "main") text = renameEntryPoint(std::move(text), info.entryPoint);
+  return text;
+}
+
 }  // namespace
 
 EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& info, const BackEndOptions& options,
@@ -134,53 +186,9 @@ EmittedSource emitSource(const std::vector<uint32_t>& words, const SourceInfo& i
         break;
       }
       case TargetLanguage::Hlsl: {
-        // HLSL vertex, geometry and domain shaders back to HLSL take the source splice
-        // (splice_route.h); these repairs of SPIRV-Cross's text serve the cross-language route
-        // (GLSL/SPIR-V in) and the HLSL re-emits left: changed pixel shaders, vertex fallbacks.
-        // SPIRV-Cross's HLSL writer has no geometry, hull or domain stage: refused with that said,
-        // rather than its "Unsupported builtin in HLSL: 13". (HLSL shaders of these stages go back
-        // to HLSL through the source splice, not here.)
-        if (info.stage == Stage::Geometry || info.stage == Stage::TessControl || info.stage == Stage::TessEvaluation ||
-            info.stage == Stage::Mesh || info.stage == Stage::Task) {
-          const char* what = info.stage == Stage::Geometry      ? "geometry"
-                             : info.stage == Stage::TessControl ? "hull (tessellation control)"
-                             : info.stage == Stage::TessEvaluation ? "domain (tessellation evaluation)"
-                             : info.stage == Stage::Mesh        ? "mesh"
-                                                                : "amplification (task)";
-          diags.error(file, std::string("--target hlsl: SPIRV-Cross, which writes the HLSL, has no ") + what +
-                                " shaders; nothing was written (convert this stage for a GLSL, ESSL or SPIR-V target, "
-                                "or keep an HLSL version of it written by hand)");
-          return result;
-        }
-        spirv_cross::CompilerHLSL compiler(words);
-        auto h = compiler.get_hlsl_options();
-        h.shader_model = static_cast<uint32_t>(options.targetVersion.value_or(50));
-        // SV_ViewID (single-pass multiview) exists from shader model 6.1 on.
-        if (!options.targetVersion)
-          for (spv::Capability c : compiler.get_declared_capabilities())
-            if (c == spv::CapabilityMultiView) h.shader_model = 61;
-        // From 6.2 on SPIRV-Cross writes buffer loads as templates (Load<float4>), which glslang, the
-        // check every output passes, cannot parse; 6.1's text is valid at any later model. Only
-        // 16-bit types need 6.2's own text.
-        if (h.shader_model >= 62) {
-          bool sixteenBit = false;
-          for (spv::Capability c : compiler.get_declared_capabilities())
-            sixteenBit |= c == spv::CapabilityFloat16 || c == spv::CapabilityInt16 ||
-                          c == spv::CapabilityStorageBuffer16BitAccess || c == spv::CapabilityStorageInputOutput16;
-          if (!sixteenBit) h.shader_model = 61;
-        }
-        h.support_nonzero_base_vertex_base_instance = false;
-        compiler.set_hlsl_options(h);
-        if (info.stage == Stage::Vertex)
-          for (const auto& [location, semantic] : hints.inputSemantics)
-            compiler.add_vertex_attribute_remap({location, semantic});
-        std::string text = compiler.compile();
-        if (info.stage != Stage::Vertex) text = restoreSemantics(text, "SPIRV_Cross_Input", hints.inputSemantics);
-        text = restoreSemantics(text, "SPIRV_Cross_Output", hints.outputSemantics);
-        // cbuffer members keep the names the application looks up.
-        text = renameIdentifiers(text, hints.cbufferMemberNames);
-        if (!info.entryPoint.empty() && info.entryPoint != "main") text = renameEntryPoint(std::move(text), info.entryPoint);
-        result.text = std::move(text);
+        std::optional<std::string> text = emitHlsl(words, info, options, hints, file, diags);
+        if (!text) return result;
+        result.text = std::move(*text);
         break;
       }
       case TargetLanguage::Msl: {
