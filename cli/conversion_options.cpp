@@ -36,7 +36,9 @@ void addConversionOptions(CLI::App& app, CliOptions& o) {
   app.add_option("-D", o.t.defines, "Define a preprocessor macro: -DNAME or -DNAME=VALUE")->allow_extra_args(false);
   app.add_option("-I", o.t.includeDirs, "Add an #include search directory")->allow_extra_args(false);
   app.add_option("--target", o.target, "Output language: glsl, essl, hlsl, msl, spirv, spirv-asm (default: the input's own)");
-  app.add_option("--target-version", o.targetVersion, "GLSL/ESSL version or HLSL shader model (50, 51, 60) of the output");
+  app.add_option("--target-version", o.targetVersion,
+                 "Version of the output: GLSL 110-460, ESSL 100, 300, 310, 320, HLSL shader model 40, 41, 50, 51, 60-67 "
+                 "(default: the input's own; HLSL 50)");
   app.add_option("--eye-source", o.eyeSource, "Where eyeSign/separation/convergence live: auto, uniform-block, push-constant, spec-constant, loose-uniforms; "
                  "3dmigoto (HLSL: 3Dmigoto's StereoParams texture at t125); "
                  "or single-pass stereo, eyeSign from the view index (multiview) or the instance index (instanced)");
