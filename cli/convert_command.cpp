@@ -110,6 +110,13 @@ int runConvertCommand(const CliOptions& o, const std::vector<std::string>& paths
     printErrorSummary(1);
     return 2;
   }
+  // Several stages' texts one after the other cannot be split again by whoever reads them.
+  if (shaderOnStdout && paths.size() > 1 && !o.diff) {
+    std::cerr << "stereoshift: error: the " << paths.size() << " stages of the pipeline would all go to standard output, "
+              << "one after the other: give -o DIRECTORY (each output named as its input), or --diff\n";
+    printErrorSummary(1);
+    return 2;
+  }
   // SPIR-V words on a terminal are no use to anyone and can upset it.
   if (shaderOnStdout && o.t.target == TargetLanguage::Spirv && !o.diff && ::isatty(STDOUT_FILENO)) {
     std::cerr << "stereoshift: error: binary SPIR-V would be written to the terminal: give -o FILE, redirect standard "
