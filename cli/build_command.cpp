@@ -27,6 +27,7 @@
 
 #include <iostream>
 #include <set>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -99,6 +100,10 @@ void addBuildOptions(CLI::App& build, BuildCommandOptions& o) {
   build.add_flag("--dry-run", o.dryRun,
                  "List each pipeline, its stages and outputs and whether it would be converted, is up to date or is "
                  "copied; convert and write nothing");
+  build.add_option("--files-from", o.filesFrom,
+                   "Convert only the files FILE lists, one path per line (relative to the source directory, or "
+                   "absolute inside it), grouped into pipelines as in a tree; what CMake's stereoshift_add_shaders runs")
+      ->check(nonEmptyPath());
   build.add_option("--job-timeout", o.jobTimeoutSeconds, "Seconds one pipeline may take before it is stopped and reported (0: no limit)")
       ->capture_default_str();
   build.add_option("--job-memory", o.jobMemoryMiB,
@@ -130,7 +135,29 @@ int runBuildCommand(const BuildCommandOptions& build, const CliOptions& base) {
   }
 
   // 1. plan
-  Plan plan = manifestMode ? planManifest(build.source, outDir, base) : planDirectory(build.source, outDir, base);
+  std::vector<fs::path> listed;
+  if (!build.filesFrom.empty()) {
+    if (manifestMode) {
+      std::cerr << "stereoshift: error: --files-from lists the shaders of a source directory; a manifest names its "
+                   "own pipelines\n";
+      printErrorSummary(1);
+      return 2;
+    }
+    std::string text;
+    if (!readFile(build.filesFrom, &text)) {
+      std::cerr << build.filesFrom << ": error: cannot read file: " << unreadableBecause(build.filesFrom) << "\n";
+      printErrorSummary(1);
+      return 1;
+    }
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (!line.empty()) listed.emplace_back(line);
+    }
+  }
+  Plan plan = manifestMode ? planManifest(build.source, outDir, base)
+                           : planDirectory(build.source, outDir, base, build.filesFrom.empty() ? nullptr : &listed);
+  if (!build.filesFrom.empty()) plan.extraDependencies.emplace_back(build.filesFrom);
   if (!reportPlanProblems(plan)) {
     printErrorSummary(static_cast<int>(plan.errors.size()));
     return 1;

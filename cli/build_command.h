@@ -17,6 +17,7 @@ struct BuildCommandOptions {
   double jobTimeoutSeconds = 300;  // a pipeline that takes longer is killed and reported
   uint64_t jobMemoryMiB = 4096;    // a worker that maps more is stopped and its pipeline reported (0: none)
   bool dryRun = false;             // list what would be done (converted, up to date, copied); write nothing
+  std::string filesFrom;           // --files-from: the tree is the files this lists, not the whole directory
 };
 
 // Registers the build-specific options on the `build` subcommand.

@@ -222,16 +222,48 @@ bool sharedExtensionWithoutShaderText(const fs::path& path, const std::string& t
 // directories walked are added to the plan's dependencies, entries that cannot be read to its
 // skipped entries or warnings.
 //
+// The files of a --files-from list as the walk would name them (root / relative path), each
+// checked: inside the source directory and a regular file; the others are errors of the plan.
+std::vector<fs::path> listedFiles(const fs::path& root, const std::vector<fs::path>& listed, Plan& plan) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  const fs::path absoluteRoot = fs::absolute(root, ec).lexically_normal();
+  for (const fs::path& entry : listed) {
+    fs::path relative = entry.is_absolute() ? entry.lexically_normal().lexically_relative(absoluteRoot)
+                                            : entry.lexically_normal();
+    if (relative.empty() || *relative.begin() == ".." || relative.is_absolute()) {
+      plan.errors.push_back(entry.string() + ": error: listed in --files-from but not inside the source directory " +
+                            root.string() + " (outputs mirror the paths under it)");
+      continue;
+    }
+    fs::path file = root / relative;
+    if (!fs::is_regular_file(file, ec)) {
+      plan.errors.push_back(file.string() + ": error: listed in --files-from but " +
+                            (fs::exists(file, ec) ? "not a file" : "does not exist"));
+      continue;
+    }
+    files.push_back(std::move(file));
+  }
+  std::sort(files.begin(), files.end());
+  files.erase(std::unique(files.begin(), files.end()), files.end());
+  return files;
+}
+
 // A file is a pipeline stage when its stage can be told (-S, `#pragma shader_stage`, the name) and
 // no other file of the tree #includes it; a shader-language file with no stage (common.glsl) is an
 // include file. Stages group by the name without the stage part (pipelineKey): 5.1.parallax.vs and
 // 5.1.parallax.fs, basicVS.hlsl and basicPS.hlsl, water.vert.glsl and water.frag.glsl.
 std::map<std::string, std::vector<fs::path>> findPipelines(const fs::path& root, const fs::path& outDir,
-                                                           const CliOptions& base, Plan& plan) {
+                                                           const CliOptions& base, Plan& plan,
+                                                           const std::vector<fs::path>* only = nullptr) {
   std::vector<fs::path> files;
-  plan.extraDependencies.push_back(root);
   const std::map<std::string, Stage>& extensions = base.t.stageExtensions;
-  TreeWalk(outDir, extensions, plan).walk(root, files);
+  if (only) {
+    files = listedFiles(root, *only, plan);
+  } else {
+    plan.extraDependencies.push_back(root);
+    TreeWalk(outDir, extensions, plan).walk(root, files);
+  }
   std::sort(files.begin(), files.end());
   struct Candidate {
     fs::path path;
@@ -315,12 +347,13 @@ void addJob(Plan& plan, const fs::path& outDir, const std::string& key, const st
 
 }  // namespace
 
-Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOptions& base) {
+Plan planDirectory(const fs::path& root, const fs::path& outDir, const CliOptions& base,
+                   const std::vector<fs::path>* only) {
   Plan plan;
   plan.root = root;
   plan.outputDir = outDir;
   RenderPassOptions options = passOptions(base, PassMode::Stereo);
-  for (const auto& [key, stages] : findPipelines(root, outDir, base, plan))
+  for (const auto& [key, stages] : findPipelines(root, outDir, base, plan, only))
     addJob(plan, outDir, key, stages, options, "", PassMode::Stereo, false);
   return plan;
 }

@@ -30,8 +30,11 @@ struct Plan {
   std::map<std::string, std::string> fileDigests;
 };
 
-// Every pipeline under the directory `root`, converted with `base`.
-Plan planDirectory(const std::filesystem::path& root, const std::filesystem::path& outDir, const CliOptions& base);
+// Every pipeline under the directory `root`, converted with `base`. With `only` (build
+// --files-from), the tree is those files, not the directory's whole content: paths relative to
+// `root`, or absolute ones inside it; one outside it or not a file is an error of the plan.
+Plan planDirectory(const std::filesystem::path& root, const std::filesystem::path& outDir, const CliOptions& base,
+                   const std::vector<std::filesystem::path>* only = nullptr);
 // The pipelines the passes of the manifest use, each with its pass's options.
 Plan planManifest(const std::filesystem::path& manifestFile, const std::filesystem::path& outDir,
                   const CliOptions& base);

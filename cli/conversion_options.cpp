@@ -134,7 +134,7 @@ void groupConversionOptions(CLI::App& app) {
       {"validate-each", "Analysis and debugging"}, {"require-analysis", "Analysis and debugging"},
       {"unchecked-text-route", "Analysis and debugging"},
       {"service", "Conversion service"}, {"no-service", "Conversion service"}, {"service-idle", "Conversion service"},
-      {"jobs", "Build"}, {"no-cache", "Build"}, {"job-timeout", "Build"}, {"job-memory", "Build"}, {"dry-run", "Build"},
+      {"jobs", "Build"}, {"no-cache", "Build"}, {"job-timeout", "Build"}, {"job-memory", "Build"}, {"dry-run", "Build"}, {"files-from", "Build"},
       {"separation", "Verify"}, {"convergence", "Verify"}, {"json", "Verify"}};
   for (CLI::Option* option : app.get_options()) {
     std::string name = !option->get_lnames().empty() ? option->get_lnames().front()

@@ -18,8 +18,6 @@ namespace fs = std::filesystem;
 
 namespace stereoshift {
 
-namespace {
-
 // Why `path` cannot be read, in the words the system uses.
 std::string unreadableBecause(const std::string& path) {
   std::error_code ec;
@@ -32,8 +30,6 @@ std::string unreadableBecause(const std::string& path) {
   ::close(fd);
   return "reading it failed";
 }
-
-}  // namespace
 
 int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* sources, std::ostream& log) {
   int failed = 0;

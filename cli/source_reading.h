@@ -18,5 +18,7 @@ inline constexpr const char* kStdinName = "<stdin>";
 // `log`. Returns how many failed. The path "-" is standard input, read once; its SourceFile is named
 // kStdinName. The test hook (test_hook.h) runs on every path.
 int readSources(const std::vector<std::string>& paths, std::vector<SourceFile>* sources, std::ostream& log);
+// Why `path` cannot be read, in the words the system uses ("no such file", "Permission denied").
+std::string unreadableBecause(const std::string& path);
 
 }  // namespace stereoshift

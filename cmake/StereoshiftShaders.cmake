@@ -12,17 +12,27 @@
 #     [TARGET_SPV spv1.0 ... spv1.6]   (--target-spv)
 #     [STAGE_EXTENSIONS <ext>=<stage>...]   (--stage-ext: vp=vert fp=frag)
 #     [OPTIONS <stereoshift option>...]
-#     [NO_SERVICE]                     (convert each pipeline in its own process)
+#     [PER_PIPELINE]                   (one build step per pipeline instead of one for the target)
+#     [NO_SERVICE]                     (PER_PIPELINE: convert each pipeline in its own process)
 #     [OUTPUTS_VAR <variable>])
 #
 # SOURCES: stages that share a directory and the name without the stage part (lit.vert + lit.frag,
-# water.vert.hlsl + water.frag.hlsl, 5.1.x.vs + 5.1.x.fs, basicVS.hlsl + basicPS.hlsl) form one pipeline, converted by one `stereoshift --pipeline` command, because only
-# the pipeline's last pre-rasterization stage is shifted and the eye-parameter binding is chosen for
-# the whole pipeline; a lone shader is a pipeline of one. Each output keeps its source's file name
-# and its path relative to BASE_DIR, under OUTPUT_DIR. Every command writes a depfile (the stages and
-# every #included file), so an edit to a header reruns exactly the pipelines that include it.
+# water.vert.hlsl + water.frag.hlsl, 5.1.x.vs + 5.1.x.fs, basicVS.hlsl + basicPS.hlsl) form one
+# pipeline, because only the pipeline's last pre-rasterization stage is shifted and the eye-parameter
+# binding is chosen for the whole pipeline; a lone shader is a pipeline of one. Each output keeps its
+# source's file name and its path relative to BASE_DIR, under OUTPUT_DIR.
 #
-# The per-pipeline commands go through stereoshift's conversion service (`--service`): a per-user
+# By default the target is one build step: `stereoshift build BASE_DIR --files-from <list>` over
+# the SOURCES (a generated list), incremental inside by its content-hash cache in OUTPUT_DIR, with
+# one depfile of every input and #included file it read. Its declared output is
+# OUTPUT_DIR/stereoshift-report.json; the shaders are its byproducts, which Ninja re-stats: an
+# output `build` did not rewrite (its bytes are the same) leaves whatever depends on it alone. A
+# clean build then costs what `stereoshift build` costs (one process, parallel workers), an edit
+# one pipeline's conversion.
+#
+# PER_PIPELINE: one `stereoshift --pipeline` command per pipeline, each with its own depfile (the
+# stages and every #included file), so an edit to a header reruns exactly the commands of the
+# pipelines that include it. These commands go through stereoshift's conversion service (`--service`): a per-user
 # server that keeps glslang initialised, started by the first command and shared by every Ninja or
 # make job, so each command costs milliseconds instead of glslang's ~0.1 s set-up. Its outputs are
 # byte for byte the in-process ones, and a command whose server cannot be reached converts
@@ -60,7 +70,7 @@ function(stereoshift_add_shaders target)
   # Options the function decides itself: a caller's copy would name other outputs than the declared ones.
   set(reserved_options -o --output --depfile --pipeline --report)
   cmake_parse_arguments(PARSE_ARGV 1 arg
-    "NO_SERVICE"
+    "NO_SERVICE;PER_PIPELINE"
     "OUTPUT_DIR;BASE_DIR;MANIFEST;TARGET_LANGUAGE;LANGUAGE;TARGET_ENV;TARGET_SPV;OUTPUTS_VAR"
     "SOURCES;INCLUDE_DIRS;DEFINES;OPTIONS;STAGE_EXTENSIONS")
 
@@ -122,6 +132,13 @@ function(stereoshift_add_shaders target)
 
   cmake_path(ABSOLUTE_PATH arg_OUTPUT_DIR BASE_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}" NORMALIZE OUTPUT_VARIABLE output_dir)
   string(REGEX REPLACE "(.)/+$" "\\1" output_dir "${output_dir}")  # "out/" -> "out": outputs are "out/x"
+  # A build step owns its OUTPUT_DIR (its cache, its report, the removal of outputs whose source
+  # went): two targets there would undo each other's work.
+  get_property(owned_dirs GLOBAL PROPERTY STEREOSHIFT_OUTPUT_DIRS)
+  if(output_dir IN_LIST owned_dirs AND (DEFINED arg_MANIFEST OR NOT arg_PER_PIPELINE))
+    message(FATAL_ERROR "stereoshift_add_shaders(${target}): OUTPUT_DIR '${output_dir}' is already another target's; give each target its own")
+  endif()
+  set_property(GLOBAL APPEND PROPERTY STEREOSHIFT_OUTPUT_DIRS "${output_dir}")
 
   # --- the conversion options every command shares ----------------------------------------------
   set(conversion_args "")
@@ -160,6 +177,7 @@ function(stereoshift_add_shaders target)
 
   set(depfile_dir "${CMAKE_CURRENT_BINARY_DIR}/stereoshift_deps/${target}")
   set(all_outputs "")
+  set(step_outputs "")
 
   if(DEFINED arg_MANIFEST)
     # --- MANIFEST: one incremental `stereoshift build`; the report stands for all its outputs -----
@@ -285,6 +303,10 @@ function(stereoshift_add_shaders target)
       endforeach()
       set(depfile "${depfile_dir}/${relative_key}.d")
 
+      list(APPEND all_outputs ${outputs})
+      if(NOT arg_PER_PIPELINE)
+        continue()  # the one build step below converts them all
+      endif()
       list(LENGTH stages stage_count)
       if(stage_count EQUAL 1)
         # A single shader names its output itself, whatever file name the CLI would pick for it.
@@ -301,11 +323,48 @@ function(stereoshift_add_shaders target)
         DEPFILE "${depfile}"
         COMMENT "stereoshift: ${target}: ${relative_key} (${stage_names})"
         VERBATIM)
-      list(APPEND all_outputs ${outputs})
     endforeach()
+
+    if(NOT arg_PER_PIPELINE)
+      # --- one build step: `stereoshift build` over the listed sources -----------------------------
+      set(listed "")
+      foreach(source IN LISTS sources)
+        file(RELATIVE_PATH relative_source "${base_dir}" "${source}")
+        string(APPEND listed "${relative_source}\n")
+      endforeach()
+      # Written when generating, and only when the list changed: adding a source reruns the step.
+      set(files_list "${depfile_dir}/sources.txt")
+      file(GENERATE OUTPUT "${files_list}" CONTENT "${listed}")
+      # `build` has its own workers: the conversion service's options are the per-pipeline commands'.
+      set(build_args ${conversion_args})
+      list(REMOVE_ITEM build_args --service --no-service)
+      set(report "${output_dir}/stereoshift-report.json")
+      set(depfile "${depfile_dir}/stereoshift-report.json.d")
+      list(LENGTH sources source_count)
+      list(LENGTH pipeline_keys pipeline_count)
+      add_custom_command(
+        OUTPUT "${report}"
+        BYPRODUCTS ${all_outputs}
+        COMMAND stereoshift::stereoshift build ${build_args} "${base_dir}" -o "${output_dir}" --files-from "${files_list}"
+                --depfile "${depfile}" -q
+        # The report stands for the step: touched, so it is newer than what triggered the run even
+        # when `build` found it unchanged (the shaders themselves keep their times when unchanged).
+        COMMAND "${CMAKE_COMMAND}" -E touch "${report}"
+        DEPENDS ${sources} "${files_list}" stereoshift::stereoshift
+        DEPFILE "${depfile}"
+        COMMENT "stereoshift: ${target}: ${source_count} shaders in ${pipeline_count} pipelines (one build step)"
+        VERBATIM)
+      set(step_outputs "${report}")  # what the target waits for; OUTPUTS_VAR lists the shaders
+    endif()
   endif()
 
-  add_custom_target("${target}" ALL DEPENDS ${all_outputs})
+  # One build step: the target waits for the step's report. Its shaders are byproducts, which
+  # Ninja knows as the step's outputs; Make has no rule for them (depend on the target there).
+  if(step_outputs)
+    add_custom_target("${target}" ALL DEPENDS ${step_outputs})
+  else()
+    add_custom_target("${target}" ALL DEPENDS ${all_outputs})
+  endif()
   set_target_properties("${target}" PROPERTIES
     STEREOSHIFT_OUTPUTS "${all_outputs}"
     STEREOSHIFT_OUTPUT_DIR "${output_dir}")

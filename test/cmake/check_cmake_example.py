@@ -9,8 +9,12 @@ examples/cmake-project (the test edits its files, never the source tree), per ge
      shifted stages carry the eye parameters, fragment stages do not, no output holds a path of
      the machine and every copy of the example (each at another path) gives the same bytes;
   3. builds again: nothing runs (Ninja says "no work to do"; no output is rewritten);
-  4. touches the shared header: exactly the pipelines with a stage that includes it rerun;
-  5. edits one source of a pipeline without the header: exactly that pipeline reruns.
+  4. touches the shared header: the target's one build step runs and converts nothing (the bytes are
+     the same), no output is rewritten, and the next build has no work; then edits it: exactly the
+     pipelines with a stage that includes it convert;
+  5. edits one source of a pipeline without the header: exactly that pipeline converts, and only
+     outputs whose bytes changed are rewritten.
+Which pipelines converted is read from the step's report (entries not marked "cached").
 The example's second target converts the same shaders through scene.toml (MANIFEST): its step must
 run exactly when one of its inputs changed, and write the same bytes as the per-pipeline steps.
 Also: the package from the build tree (export()), TARGET_LANGUAGE/DEFINES/OPTIONS reaching the
@@ -22,6 +26,7 @@ What is expected is derived from the copied example's files (which shaders exist
 """
 import argparse
 import fnmatch
+import json
 import os
 import re
 import shutil
@@ -35,9 +40,9 @@ HEADER_NAME = "common.glsl"
 # The stages that can be a pipeline's last pre-rasterization stage (mesh aside), which gets the shift.
 SHIFTED_STAGES = {"vert", "tese", "geom"}
 EYE_PARAMETERS = ("eyeSign", "separation", "convergence")
-# One line per conversion that ran: the COMMENT of stereoshift_add_shaders' custom commands.
-RAN_PATTERN = re.compile(r"stereoshift: example_shaders: (\S+) \(")
-SCENE_RAN = "stereoshift: example_scene:"  # the MANIFEST target's one step
+# The COMMENT of the SOURCES target's one build step, and of the MANIFEST target's.
+STEP_RAN = "stereoshift: example_shaders:"
+SCENE_RAN = "stereoshift: example_scene:"
 
 failures = []
 # Output bytes of each first build, by path under the output directory: every copy of the example
@@ -130,10 +135,20 @@ def check_reproducible(label, example, build_dir):
         check(data == expected, f"{label}: {output} differs from the same output in an earlier copy of the example")
 
 
+def converted_pipelines(build_dir):
+    """The pipelines the SOURCES step converted in its last run: its report's entries not cached."""
+    path = build_dir / "stereo" / "stereoshift-report.json"
+    if not path.is_file():  # a project of another layout (the checks of options and errors)
+        return set()
+    report = json.loads(path.read_text())
+    return {entry["pipeline"] for entry in report["shaders"] if not entry.get("cached", False)}
+
+
 def build(cmake, build_dir, extra=()):
     result = run([cmake, "--build", build_dir, *extra])
     log = result.stdout + result.stderr
-    return log, set(RAN_PATTERN.findall(log)), SCENE_RAN in log
+    ran = converted_pipelines(build_dir) if STEP_RAN in log else set()
+    return log, ran, SCENE_RAN in log
 
 
 def check_generator(args, generator, make_program, prefix, work):
@@ -193,19 +208,26 @@ def check_generator(args, generator, make_program, prefix, work):
     if generator == "Ninja":
         check("ninja: no work to do." in log, f"{name}: the second build did work:\n{log}")
 
-    # 4. touching the header reruns exactly the pipelines that include it
+    # 4. touching the header runs the step, which converts nothing and rewrites nothing; editing it
+    # converts exactly the pipelines that include it
     before = mtimes(all_outputs)
     make_newer(example.header, all_outputs)
     log, ran, scene_ran = build(args.cmake, build_dir)
+    check(STEP_RAN in log, f"{name}: after touching {HEADER_NAME} the build step did not run:\n{log}")
     check(scene_ran == bool(example.including & example.scene_pipelines),
           f"{name}: after touching {HEADER_NAME} the MANIFEST step {'ran' if scene_ran else 'did not run'}")
+    check(not ran, f"{name}: after touching {HEADER_NAME} (same bytes) converted {sorted(ran)}")
+    check(mtimes(all_outputs) == before, f"{name}: after touching {HEADER_NAME} (same bytes) outputs were rewritten")
+    log, ran, scene_ran = build(args.cmake, build_dir)
+    check(STEP_RAN not in log and not scene_ran, f"{name}: the build after touching {HEADER_NAME} is not stable:\n{log}")
+    make_newer(example.header, all_outputs, edit=lambda p: p.write_text(p.read_text() + "// edited by the test\n"))
+    log, ran, scene_ran = build(args.cmake, build_dir)
     check(ran == example.including,
-          f"{name}: after touching {HEADER_NAME} ran {sorted(ran)}, expected {sorted(example.including)}")
+          f"{name}: after editing {HEADER_NAME} converted {sorted(ran)}, expected {sorted(example.including)}")
     after = mtimes(all_outputs)
     changed = {p for p in all_outputs if after.get(p) != before.get(p)}
-    expected = example.outputs(example.including)
-    check(changed == expected, f"{name}: after touching {HEADER_NAME} rewrote {sorted(map(str, changed))}, "
-                               f"expected {sorted(map(str, expected))}")
+    check(changed <= example.outputs(example.including),
+          f"{name}: after editing {HEADER_NAME} rewrote {sorted(map(str, changed))}, which do not include it")
 
     # 5. editing one stage of a pipeline without the header reruns that pipeline only
     edited_key = next(k for k in sorted(example.pipelines)
@@ -218,12 +240,13 @@ def check_generator(args, generator, make_program, prefix, work):
     log, ran, scene_ran = build(args.cmake, build_dir)
     check(scene_ran == (edited_key in example.scene_pipelines),
           f"{name}: after editing {edited.name} the MANIFEST step {'ran' if scene_ran else 'did not run'}")
-    check(ran == {edited_key}, f"{name}: after editing {edited.name} ran {sorted(ran)}, expected ['{edited_key}']")
+    check(ran == {edited_key}, f"{name}: after editing {edited.name} converted {sorted(ran)}, expected ['{edited_key}']")
     after = mtimes(all_outputs)
     changed = {p for p in all_outputs if after.get(p) != before.get(p)}
-    expected = example.outputs([edited_key])
-    check(changed == expected, f"{name}: after editing {edited.name} rewrote {sorted(map(str, changed))}, "
-                               f"expected {sorted(map(str, expected))}")
+    # The edited stage's output changed; its pipeline's other outputs are rewritten only if their bytes did.
+    check(example.output_of[edited] in changed and changed <= example.outputs([edited_key]),
+          f"{name}: after editing {edited.name} rewrote {sorted(map(str, changed))}, expected "
+          f"{example.output_of[edited]} and at most {sorted(map(str, example.outputs([edited_key])))}")
     log, ran, scene_ran = build(args.cmake, build_dir)
     check(not ran and not scene_ran, f"{name}: the build after the edit is not stable:\n{log}")
 
@@ -297,6 +320,23 @@ stereoshift_add_shaders(stage_named SOURCES "{hlsl_dir}/mesh.vert" BASE_DIR "{hl
     text = output.read_text() if output.is_file() else ""
     check("cbuffer StereoParams" in text, f"LANGUAGE hlsl: {output} is not the converted HLSL shader")
 
+    # PER_PIPELINE keeps one command per pipeline (through the conversion service), the same bytes.
+    project = write_project(work / "per-pipeline", prefix, body=f"""
+stereoshift_add_shaders(per_pipeline SOURCES "{shaders}/lit.vert" "{shaders}/lit.frag" "{shaders}/sky.vert" "{shaders}/sky.frag"
+  BASE_DIR "{shaders}" OUTPUT_DIR stereo INCLUDE_DIRS "{include}" DEFINES NORMAL_SCALE=1.0 PER_PIPELINE)
+""")
+    build_dir = work / "build-per-pipeline"
+    run([args.cmake, "-S", project, "-B", build_dir, "-G", "Ninja", f"-DCMAKE_MAKE_PROGRAM={args.ninja}"])
+    commands = run([args.ninja, "-C", build_dir, "-t", "commands"]).stdout
+    check(commands.count("--pipeline") == 2 and " build " not in commands,
+          f"PER_PIPELINE: expected two --pipeline commands and no build step:\n{commands}")
+    build(args.cmake, build_dir)
+    for name in ("lit.vert", "lit.frag", "sky.vert", "sky.frag"):
+        one_step = first_build_outputs.get(Path("stereo") / name)
+        per_pipeline = build_dir / "stereo" / name
+        check(per_pipeline.is_file() and one_step is not None and per_pipeline.read_bytes() == one_step,
+              f"PER_PIPELINE: {per_pipeline} is missing or differs from the one-step build's")
+
     bad_calls = {
         "no_output_dir": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert")', "OUTPUT_DIR is required"),
         "outside_base_dir": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert" BASE_DIR "{include}" OUTPUT_DIR o)',
@@ -315,6 +355,9 @@ stereoshift_add_shaders(stage_named SOURCES "{hlsl_dir}/mesh.vert" BASE_DIR "{hl
                                    "BASE_DIR applies to SOURCES only"),
         "unknown_keyword": (f'stereoshift_add_shaders(t SOURCES "{shaders}/sky.vert" OUTPUT_DIR o SHADERS x)',
                             "unknown arguments"),
+        "shared_output_dir": (f'stereoshift_add_shaders(a SOURCES "{shaders}/sky.vert" BASE_DIR "{shaders}" OUTPUT_DIR o)\n'
+                              f'stereoshift_add_shaders(b SOURCES "{shaders}/lit.vert" BASE_DIR "{shaders}" OUTPUT_DIR o)',
+                              "is already another target's"),
     }
     for case, (call, message) in bad_calls.items():
         project = write_project(work / "errors" / case, prefix, call + "\n")
