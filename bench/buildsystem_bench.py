@@ -5,10 +5,12 @@
 The project: pipelines in the dialects and naming conventions of public samples (Vulkan GLSL 450
 with a shared #include, LearnOpenGL-style GL 3.3 core .vs/.fs, ESSL 300 es, HLSL basicVS/basicPS,
 GLSL 460 compute), every shader different. Built with, each clean (nothing built) and no-op (built
-just before, nothing changed):
-  cmake+ninja            stereoshift_add_shaders(SOURCES ...): one command per pipeline, each its
-                         own process (-DSTEREOSHIFT_USE_SERVICE=OFF)
-  cmake+ninja+service    the same commands through the conversion service (the default); the clean
+just before, nothing changed) and, for the CMake forms and `build`, after an edit to one shader:
+  cmake+ninja            stereoshift_add_shaders(SOURCES ...), the default: one build step for the
+                         target (`stereoshift build --files-from`, its cache, restat)
+  cmake+ninja per pipeline          PER_PIPELINE: one command per pipeline, each its own process
+                         (-DSTEREOSHIFT_USE_SERVICE=OFF)
+  cmake+ninja per pipeline+service  the same commands through the conversion service; the clean
                          build starts with no server running, so the server's start is in it
   stereoshift build      one `stereoshift build <tree> -o <dir>` (its own warm workers, its cache)
   glslang|spirv-cross    per file, glslangValidator to SPIR-V then spirv-cross back, from a Ninja
@@ -34,7 +36,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT_ROOT = os.path.dirname(HERE)
 
 # The issue's aims, printed beside the measured ratios.
-AIM_SERVICE_OVER_BUILD = 1.5  # cmake+ninja with the service at most this many times `stereoshift build`
+AIM_CMAKE_OVER_BUILD = 1.5  # cmake+ninja (the default form) at most this many times `stereoshift build`
 AIM_NOOP_PERCENT = 2.0  # a no-op build at most this share of its clean build
 
 
@@ -176,8 +178,11 @@ add_executable(stereoshift::stereoshift IMPORTED)
 set_target_properties(stereoshift::stereoshift PROPERTIES IMPORTED_LOCATION "{stereoshift}")
 include("{PROJECT_ROOT}/cmake/StereoshiftShaders.cmake")
 file(GLOB_RECURSE bench_shaders CONFIGURE_DEPENDS "${{CMAKE_CURRENT_SOURCE_DIR}}/shaders/*")
+if(BENCH_PER_PIPELINE)
+  set(form PER_PIPELINE)
+endif()
 stereoshift_add_shaders(bench_shaders SOURCES ${{bench_shaders}} BASE_DIR shaders OUTPUT_DIR stereo
-                        INCLUDE_DIRS include)
+                        INCLUDE_DIRS include ${{form}})
 """)
     return sorted(shaders)
 
@@ -273,12 +278,20 @@ def main():
     env.update(STEREOSHIFT_SERVICE_DIR=service_dir, STEREOSHIFT_SERVICE_IDLE="30")
 
     trees = {}
-    for name, use_service in (("cmake+ninja", "OFF"), ("cmake+ninja+service", "ON")):
-        tree = os.path.join(work, name.replace("+", "_"))
+    forms = (("cmake+ninja", "OFF", "OFF"), ("cmake+ninja per pipeline", "ON", "OFF"),
+             ("cmake+ninja per pipeline+service", "ON", "ON"))
+    for name, per_pipeline, use_service in forms:
+        tree = os.path.join(work, name.replace("+", "_").replace(" ", "_"))
         shutil.rmtree(tree, ignore_errors=True)
         timed([args.cmake, "-S", project, "-B", tree, "-G", "Ninja", f"-DCMAKE_MAKE_PROGRAM={args.ninja}",
-               f"-DSTEREOSHIFT_USE_SERVICE={use_service}"], env=env)
+               f"-DBENCH_PER_PIPELINE={per_pipeline}", f"-DSTEREOSHIFT_USE_SERVICE={use_service}"], env=env)
         trees[name] = tree
+    edited = os.path.join(project, "shaders", shaders[len(shaders) // 2])
+
+    def edit_one_shader():
+        """Appends a comment to one shader: new bytes, so every form has one pipeline to convert."""
+        with open(edited, "a") as f:
+            f.write("// edited\n")
     ninja = [args.ninja, f"-j{args.jobs}"]
     build_out = os.path.join(work, "build_out")
 
@@ -290,8 +303,10 @@ def main():
     try:
         for rep in range(args.reps):
             # Interleaved, so a change in the machine's load hits every variant alike.
-            for name in ("cmake+ninja", "cmake+ninja+service"):
+            for name, _, _ in forms:
                 timed(ninja + ["-t", "clean"], cwd=trees[name], env=env)
+                # The one step's cache and outputs go too: a clean build converts everything.
+                shutil.rmtree(os.path.join(trees[name], "stereo"), ignore_errors=True)
                 kill_servers(service_dir)
                 shutil.rmtree(service_dir, ignore_errors=True)
                 record(name, "clean", timed(ninja, cwd=trees[name], env=env)[0])
@@ -299,7 +314,9 @@ def main():
                 if "no work to do" not in run.stdout:
                     print(f"warning: {name}: the no-op build did work:\n{run.stdout[-500:]}", file=sys.stderr)
                 record(name, "no-op", seconds)
-                if name == "cmake+ninja+service":
+                edit_one_shader()
+                record(name, "edit", timed(ninja, cwd=trees[name], env=env)[0])
+                if name == "cmake+ninja per pipeline+service":
                     # Once more with the server left running: what every later clean build costs.
                     timed(ninja + ["-t", "clean"], cwd=trees[name], env=env)
                     record(name + " (warm server)", "clean", timed(ninja, cwd=trees[name], env=env)[0])
@@ -308,6 +325,8 @@ def main():
                        "-I", os.path.join(project, "include")]
             record("stereoshift build", "clean", timed(command, env=env)[0])
             record("stereoshift build", "no-op", timed(command, env=env)[0])
+            edit_one_shader()
+            record("stereoshift build", "edit", timed(command, env=env)[0])
             shutil.rmtree(os.path.join(baseline, "spv"), ignore_errors=True)
             shutil.rmtree(os.path.join(baseline, "out"), ignore_errors=True)
             timed(ninja + ["-t", "clean"], cwd=baseline)
@@ -316,7 +335,11 @@ def main():
     finally:
         kill_servers(service_dir)
 
-    # Same bytes with and without the service (what the CMake default relies on).
+    # Every form brought up to the last edit, then the same bytes from each (what the choice of form
+    # relies on).
+    for name, _, _ in forms:
+        timed(ninja, cwd=trees[name], env=env)
+    kill_servers(service_dir)
     def tree_bytes(tree):
         found = {}
         for root, _, files in os.walk(os.path.join(tree, "stereo")):
@@ -324,23 +347,28 @@ def main():
                 path = os.path.join(root, name)
                 found[os.path.relpath(path, tree)] = open(path, "rb").read()
         return found
-    identical = tree_bytes(trees["cmake+ninja"]) == tree_bytes(trees["cmake+ninja+service"])
+    one_step = tree_bytes(trees["cmake+ninja"])
+    one_step.pop(os.path.join("stereo", "stereoshift-report.json"), None)
+    one_step.pop(os.path.join("stereo", ".stereoshift-cache.msgpack"), None)
+    identical = all(one_step == tree_bytes(trees[name]) for name, _, _ in forms[1:])
 
     median = {key: statistics.median(values) for key, values in samples.items()}
     build_clean = median[("stereoshift build", "clean")]
     print(f"{len(shaders)} shaders in {pipelines} pipelines (GLSL 450 Vulkan, GL 3.3 core, ESSL 300, HLSL, "
           f"GLSL 460 compute); -j{args.jobs}; {args.reps} repetition(s), medians")
-    print(f"{'variant':32s} {'clean s':>9s} {'x build':>8s} {'no-op s':>9s} {'no-op %':>8s}")
-    for variant in ("cmake+ninja", "cmake+ninja+service", "cmake+ninja+service (warm server)", "stereoshift build",
-                    "glslang|spirv-cross"):
+    print(f"{'variant':42s} {'clean s':>9s} {'x build':>8s} {'no-op s':>9s} {'no-op %':>8s} {'edit s':>8s}")
+    for variant in ("cmake+ninja", "cmake+ninja per pipeline", "cmake+ninja per pipeline+service",
+                    "cmake+ninja per pipeline+service (warm server)", "stereoshift build", "glslang|spirv-cross"):
         clean = median[(variant, "clean")]
         noop = median.get((variant, "no-op"))
+        edit = median.get((variant, "edit"))
         noop_text = f"{noop:9.3f} {100 * noop / clean:7.1f}%" if noop is not None else f"{'':9s} {'':8s}"
-        print(f"{variant:32s} {clean:9.2f} {clean / build_clean:7.2f}x {noop_text}")
-    service_ratio = median[("cmake+ninja+service", "clean")] / build_clean
-    print(f"aim: cmake+ninja+service within {AIM_SERVICE_OVER_BUILD}x of stereoshift build (clean): "
-          f"{service_ratio:.2f}x; every no-op under {AIM_NOOP_PERCENT}% of its clean build")
-    print(f"outputs with and without the service byte-identical: {'yes' if identical else 'NO'}")
+        edit_text = f"{edit:8.3f}" if edit is not None else ""
+        print(f"{variant:42s} {clean:9.2f} {clean / build_clean:7.2f}x {noop_text} {edit_text}")
+    cmake_ratio = median[("cmake+ninja", "clean")] / build_clean
+    print(f"aim: cmake+ninja within {AIM_CMAKE_OVER_BUILD}x of stereoshift build (clean): "
+          f"{cmake_ratio:.2f}x; every no-op under {AIM_NOOP_PERCENT}% of its clean build")
+    print(f"outputs of the three CMake forms byte-identical: {'yes' if identical else 'NO'}")
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"shaders": len(shaders), "pipelines": pipelines, "jobs": args.jobs, "reps": args.reps,
