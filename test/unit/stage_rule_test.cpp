@@ -120,6 +120,11 @@ TEST(StageRule, PragmaShaderStage) {
   EXPECT_EQ(stageFromPragma("#pragma shader_stage(tesscontrol)").stage, Stage::TessControl);
   EXPECT_EQ(stageFromPragma("#pragma shader_stage(tesseval)").stage, Stage::TessEvaluation);
   EXPECT_EQ(stageFromPragma("#pragma optimize(on)\n").stage, std::nullopt);
+  // The word split by a line splice (backslash-newline, also before CRLF) is still the pragma: the
+  // shortcut that skips files never spelling `shader_stage` must not miss it.
+  EXPECT_EQ(stageFromPragma("#pragma shader_\\\nstage(vertex)\n").stage, Stage::Vertex);
+  EXPECT_EQ(stageFromPragma("#pragma sha\\\r\nder_stage(fragment)\r\n").stage, Stage::Fragment);
+  EXPECT_EQ(stageFromPragma("#pragma \\\nshader_stage(compute)\n").stage, Stage::Compute);
   StageDecision bad = stageFromPragma("#version 450\n#pragma shader_stage(vortex)\n");
   EXPECT_EQ(bad.stage, std::nullopt);
   EXPECT_EQ(bad.problemLine, 2);
