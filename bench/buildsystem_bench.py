@@ -245,6 +245,28 @@ def kill_servers(service_dir):
                 pass
 
 
+def print_results(samples, shaders, pipelines, args, identical):
+    """The table of medians, the ratio against the aim, and whether the forms wrote the same bytes."""
+    median = {key: statistics.median(values) for key, values in samples.items()}
+    build_clean = median[("stereoshift build", "clean")]
+    print(f"{len(shaders)} shaders in {pipelines} pipelines (GLSL 450 Vulkan, GL 3.3 core, ESSL 300, HLSL, "
+          f"GLSL 460 compute); -j{args.jobs}; {args.reps} repetition(s), medians")
+    print(f"{'variant':42s} {'clean s':>9s} {'x build':>8s} {'no-op s':>9s} {'no-op %':>8s} {'edit s':>8s}")
+    for variant in ("cmake+ninja", "cmake+ninja per pipeline", "cmake+ninja per pipeline+service",
+                    "cmake+ninja per pipeline+service (warm server)", "stereoshift build", "glslang|spirv-cross"):
+        clean = median[(variant, "clean")]
+        noop = median.get((variant, "no-op"))
+        edit = median.get((variant, "edit"))
+        noop_text = f"{noop:9.3f} {100 * noop / clean:7.1f}%" if noop is not None else f"{'':9s} {'':8s}"
+        edit_text = f"{edit:8.3f}" if edit is not None else ""
+        print(f"{variant:42s} {clean:9.2f} {clean / build_clean:7.2f}x {noop_text} {edit_text}")
+    cmake_ratio = median[("cmake+ninja", "clean")] / build_clean
+    print(f"aim: cmake+ninja within {AIM_CMAKE_OVER_BUILD}x of stereoshift build (clean): "
+          f"{cmake_ratio:.2f}x; every no-op under {AIM_NOOP_PERCENT}% of its clean build")
+    print(f"outputs of the three CMake forms byte-identical: {'yes' if identical else 'NO'}")
+    return median
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--stereoshift", default=os.path.join(PROJECT_ROOT, "build", "stereoshift"))
@@ -352,23 +374,7 @@ def main():
     one_step.pop(os.path.join("stereo", ".stereoshift-cache.msgpack"), None)
     identical = all(one_step == tree_bytes(trees[name]) for name, _, _ in forms[1:])
 
-    median = {key: statistics.median(values) for key, values in samples.items()}
-    build_clean = median[("stereoshift build", "clean")]
-    print(f"{len(shaders)} shaders in {pipelines} pipelines (GLSL 450 Vulkan, GL 3.3 core, ESSL 300, HLSL, "
-          f"GLSL 460 compute); -j{args.jobs}; {args.reps} repetition(s), medians")
-    print(f"{'variant':42s} {'clean s':>9s} {'x build':>8s} {'no-op s':>9s} {'no-op %':>8s} {'edit s':>8s}")
-    for variant in ("cmake+ninja", "cmake+ninja per pipeline", "cmake+ninja per pipeline+service",
-                    "cmake+ninja per pipeline+service (warm server)", "stereoshift build", "glslang|spirv-cross"):
-        clean = median[(variant, "clean")]
-        noop = median.get((variant, "no-op"))
-        edit = median.get((variant, "edit"))
-        noop_text = f"{noop:9.3f} {100 * noop / clean:7.1f}%" if noop is not None else f"{'':9s} {'':8s}"
-        edit_text = f"{edit:8.3f}" if edit is not None else ""
-        print(f"{variant:42s} {clean:9.2f} {clean / build_clean:7.2f}x {noop_text} {edit_text}")
-    cmake_ratio = median[("cmake+ninja", "clean")] / build_clean
-    print(f"aim: cmake+ninja within {AIM_CMAKE_OVER_BUILD}x of stereoshift build (clean): "
-          f"{cmake_ratio:.2f}x; every no-op under {AIM_NOOP_PERCENT}% of its clean build")
-    print(f"outputs of the three CMake forms byte-identical: {'yes' if identical else 'NO'}")
+    median = print_results(samples, shaders, pipelines, args, identical)
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"shaders": len(shaders), "pipelines": pipelines, "jobs": args.jobs, "reps": args.reps,
