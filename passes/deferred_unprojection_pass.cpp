@@ -54,6 +54,7 @@
 #include <glslang/SPIRV/GLSL.std.450.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace stereoshift {
@@ -227,28 +228,81 @@ void decideViewRays(PassContext& ctx, const ValueFlow& index, SourceAnalysis& be
   }
 }
 
-// The rewrites as source text can carry them (run_record.h, UnprojectionText): only unprojections
-// `M * v` through a matrix the text names plainly.
-void recordUnprojectionTexts(const spirv::Module& m, const std::vector<Product>& products, const Findings& found,
+// The local a view ray's corrected value is assigned to, as the text names it: the value's one use
+// is a store into a named function variable that nothing else writes (read through loads and
+// access chains that are only loaded), so the text's one assignment to that name is the product.
+std::optional<std::string> assignedLocal(const ValueFlow& index, uint32_t value) {
+  const spirv::Module& m = index.module();
+  const spirv::DefUse& du = index.defUse();
+  const auto& uses = du.uses(value);
+  if (uses.size() != 1 || uses[0].user->opcode != spv::OpStore || uses[0].operand != 1) return std::nullopt;
+  uint32_t pointer = uses[0].user->operand(0);
+  const Instruction* variable = du.definition(pointer);
+  if (!variable || variable->opcode != spv::OpVariable || variable->operand(0) != spv::StorageClassFunction)
+    return std::nullopt;
+  std::string name = m.name(pointer);
+  if (name.empty() || name.starts_with("gl_") || name.find("stereoshift_") != std::string::npos) return std::nullopt;
+  for (const auto& use : du.uses(pointer)) {
+    if (use.user == uses[0].user || use.user->opcode == spv::OpLoad) continue;
+    if (use.user->opcode != spv::OpAccessChain && use.user->opcode != spv::OpInBoundsAccessChain) return std::nullopt;
+    for (const auto& read : du.uses(use.user->resultId))
+      if (read.user->opcode != spv::OpLoad) return std::nullopt;
+  }
+  return name;
+}
+
+// 1/P00 of a view ray's fix as the text reads it; nullopt when the matrix has no plain name there.
+std::optional<std::string> inverseScaleText(const spirv::Module& m, const RayProduct& r) {
+  if (r.scale.kind == ScaleKind::Injected) return std::string();
+  std::optional<analysis::Slot> slot;
+  if (r.scale.kind == ScaleKind::InverseElement) slot = analysis::loadedSlot(m, r.scale.matrixValue);
+  if (r.scale.kind == ScaleKind::ProjectionElement) slot = analysis::Slot{r.scale.root, r.scale.path, false};
+  auto access = slot ? analysis::slotSourceAccess(m, *slot) : std::nullopt;
+  if (!access) return std::nullopt;
+  return r.scale.kind == ScaleKind::InverseElement ? *access + "[0][0]" : "(1.0 / " + *access + "[0][0])";
+}
+
+// The rewrites as source text can carry them (run_record.h, UnprojectionText, ViewRayText):
+// unprojections and re-projections `M * v` through a matrix the text names plainly, and (GLSL) view
+// rays whose corrected value the text assigns to a local once.
+void recordUnprojectionTexts(const ValueFlow& index, const std::vector<Product>& products, const Findings& found,
                              bool hlsl, DeferredFacts& facts) {
-  if (!found.fixableRays.empty() || !found.reprojections.empty()) {
+  const spirv::Module& m = index.module();
+  if (hlsl && (!found.fixableRays.empty() || !found.reprojections.empty())) {
     facts.unprojectionTextMissing = "a view ray's or a re-projection's fix";
     return;
   }
+  std::vector<ViewRayText> rays;
+  for (const RayProduct* r : found.fixableRays) {
+    auto local = assignedLocal(index, r->fixPoint);
+    auto scale = inverseScaleText(m, *r);
+    if (!local || !scale) {
+      facts.unprojectionTextMissing =
+          !local ? "a view ray whose corrected value is not the one value a local of the text is assigned"
+                 : "a view ray's fix through a projection the text does not name plainly";
+      return;
+    }
+    rays.push_back({*local, r->components, *scale});
+  }
   std::vector<UnprojectionText> texts;
-  for (const auto& p : products) {
-    if (!p.recognised) continue;
+  auto addProduct = [&](const Product& p, bool reprojection) {
     auto slot = analysis::loadedSlot(m, p.matrix);
     auto access = slot ? analysis::slotSourceAccess(m, *slot) : std::nullopt;
     // HLSL writes its products mul(M, v), which glslang makes v * M; GLSL's v * M stays the IR's.
     if ((p.vectorTimesMatrix && !hlsl) || !access) {
       facts.unprojectionTextMissing = p.vectorTimesMatrix ? "an unprojection written `v * M`"
                                                           : "an unprojection through a matrix the text does not name plainly";
-      return;
+      return false;
     }
-    texts.push_back({*access, hlsl});
-  }
+    texts.push_back({*access, hlsl, reprojection});
+    return true;
+  };
+  for (const auto& p : products)
+    if (p.recognised && !addProduct(p, false)) return;
+  for (const Product* p : found.reprojections)
+    if (!addProduct(*p, true)) return;
   facts.unprojectionTexts = std::move(texts);
+  facts.viewRayTexts = std::move(rays);
 }
 
 // Each matrix product: an unprojection (fixed), a re-projection of a fixed view-ray position
@@ -444,7 +498,7 @@ class DeferredUnprojectionPass final : public Pass {
       facts.applicationFills = ctx.eye.names[kProjScaleX] +
                                " = P[0][0], the x scale of the projection the G-buffer was drawn with "
                                "(no projection matrix in the shader to take it from)";
-    recordUnprojectionTexts(m, products, found, ctx.source.language == SourceLanguage::Hlsl, facts);
+    recordUnprojectionTexts(index, products, found, ctx.source.language == SourceLanguage::Hlsl, facts);
     for (const auto& p : products)
       if (p.recognised) rewrite(ctx, p);
     for (const RayProduct* r : found.fixableRays) rewriteRay(ctx, *r);

@@ -206,13 +206,27 @@ struct CameraTextFix {
 struct UnprojectionText {
   std::string matrix;  // as the source reads it: `uInvViewProj`, `frame.invViewProj`
   bool hlslMul = false;  // HLSL's `mul(matrix, v)` (SPIR-V's v * M), not GLSL's `matrix * v`
+  // A re-projection `P * vec4(p, 1)` of a corrected view-ray position back to this eye's screen
+  // (its x + eyeSign*separation*(w - convergence)), not an unprojection.
+  bool reprojection = false;
+};
+
+// A view ray's fix as GLSL text can carry it: the corrected value is what the shader assigns, once,
+// to a local of its own (`vec3 viewPos = ray * depth;`), so the right-hand side of that assignment
+// goes through a helper returning it with x - eyeSign*separation*(|z| - convergence) * (1/P00).
+struct ViewRayText {
+  std::string local;         // the local, as the text names it
+  uint32_t components = 3;   // vec3 or vec4
+  std::string inverseScale;  // 1/P00 as the text reads it (`frame.invProjection[0][0]`,
+                             // `(1.0 / projection[0][0])`); empty: the injected eye parameter's
 };
 
 struct DeferredFacts {
   std::vector<ViewDependentUse> fixed, leftAlone;
-  // Every rewrite of the module as source text carries it, or why not (a view ray, a
-  // re-projection, a matrix without a plain name, `v * M`): see UnprojectionText.
+  // Every rewrite of the module as source text carries it, or why not (an HLSL view ray or
+  // re-projection, a matrix without a plain name, `v * M`): see UnprojectionText, ViewRayText.
   std::vector<UnprojectionText> unprojectionTexts;
+  std::vector<ViewRayText> viewRayTexts;  // GLSL only
   std::string unprojectionTextMissing;
   std::vector<RowProductTextFix> textFixes;  // with PassOptions::sourceTextFixes
   std::vector<ViewRayTextFix> rayTextFixes;  // likewise

@@ -324,6 +324,30 @@ const std::string kDumpViewRay = kDumpPrologue + R"(  r2.xy = r2.xy * r1.xx;
 // The view-ray form: the pixel's far-plane point through the inverse projection is the ray, scaled
 // so that its z is the linear view depth the G-buffer stores (a positive depth; view space -z).
 // The uniform block shares FrameUBO's first two members, so renderLighting() feeds it.
+// kViewRayFrag's position re-projected with the projection (after the lighting data in the frame
+// block): the NDC x it lands at minus the pixel's own.
+const char* kViewRayReprojectFrag = R"(#version 450
+layout(set = 0, binding = 0) uniform FrameUBO {
+    mat4 invProjection;
+    vec4 viewportSize;   // xy = pixels, zw = 1 / pixels
+    vec4 light[2];
+    mat4 projection;
+} frame;
+layout(set = 1, binding = 2) uniform sampler2D gLinearDepth;
+layout(location = 0) in vec2 inUV;
+layout(location = 0) out vec4 outColor;
+void main()
+{
+    vec2 ndc = gl_FragCoord.xy * frame.viewportSize.zw * 2.0 - 1.0;
+    vec4 farPoint = frame.invProjection * vec4(ndc, 1.0, 1.0);
+    vec3 ray = farPoint.xyz / farPoint.w;
+    float linearDepth = texelFetch(gLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    vec3 viewPos = ray * (linearDepth / -ray.z);
+    vec4 back = frame.projection * vec4(viewPos, 1.0);
+    outColor = unpackUnorm4x8(floatBitsToUint(back.x / back.w - ndc.x));
+}
+)";
+
 const char* kViewRayFrag = R"(#version 450
 layout(set = 0, binding = 0) uniform FrameUBO {
     mat4 invProjection;
@@ -433,7 +457,9 @@ Transpiled compileTranspiled(const char* name, const char* text, TranspileOption
   if (splicedText) {
     std::string route = r.report.value("route", std::string());
     EXPECT_TRUE(route == "glsl-source-splice" || route == "hlsl-pixel-source-splice") << r.report.dump(2);
-    EXPECT_NE(r.output.find("stereoshift_unproject_"), std::string::npos) << r.output;
+    EXPECT_TRUE(r.output.find("stereoshift_unproject_") != std::string::npos ||
+                r.output.find("stereoshift_view_ray_") != std::string::npos)
+        << r.output;
     t.spirv = compileOriginal(name, r.output.c_str(), options);
   } else {
     t.spirv.resize(r.output.size() / 4);
@@ -589,6 +615,9 @@ class DeferredRender : public ::testing::Test {
     append(frame, inv.data(), 16);
     append(frame, viewport, 4);
     append(frame, light, 8);
+    // The matrix the inverse undoes, after the rest (kViewRayReprojectFrag re-projects with it).
+    auto forward = toFloat(inverse(inverseViewProj));
+    append(frame, forward.data(), 16);
     RenderRequest request;
     request.width = request.height = kSize;
     Draw draw;
@@ -998,7 +1027,7 @@ void DeferredRender::checkViewRay(const char* name, const char* text, const char
         fixedPosition[component] = renderLighting(linear, fixedDump, monoInverseProjection, nullptr, eye, stereo);
         baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye, mono);
       } else {
-        Transpiled transpiled = compileTranspiled(name, text, options);
+        Transpiled transpiled = compileTranspiled(name, text, options, splicedText_);
         report = transpiled.report["passes"]["deferred-unprojection"];
         fixedPosition[component] = renderLighting(linear, transpiled.spirv, monoInverseProjection, &transpiled, eye);
         baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye);
@@ -1040,6 +1069,69 @@ void DeferredRender::checkViewRay(const char* name, const char* text, const char
 
 TEST_F(DeferredRender, ViewRayPositionWithinBoundOfTheTruePosition) {
   checkViewRay("view_ray.frag", kViewRayFrag, "view ray");
+}
+
+// The same check with the fix spliced into the shader's own GLSL text: the assignment's right-hand
+// side through stereoshift_view_ray_viewPos(), the text compiled here as a driver would.
+TEST_F(DeferredRender, SplicedGlslViewRayWithinBoundOfTheTruePosition) {
+  splicedText_ = true;
+  checkViewRay("view_ray.frag", kViewRayFrag, "view ray spliced");
+}
+
+// A corrected view-ray position re-projected with the mono projection (SSAO's samples, screen-space
+// reflections) must land where this eye's image has the point: kViewRayReprojectFrag re-projects
+// the pixel's own surface point, which in the eye's image is the pixel itself, and writes the NDC x
+// it lands at minus the pixel's. Through the SPIR-V route and the spliced text (the re-projection
+// through stereoshift_reproject_frame_projection()) it is 0 within rounding: measured at most
+// 2.4e-7 (lavapipe, both eyes, both routes); with the view ray corrected and the re-projection's fix
+// taken out of the text, off by e*S*(1 - C/w): beyond 1000 times the bound at 57618 of 63100 pixels
+// (left) and 57930 of 63470 (right), right only near the convergence depth.
+TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
+  constexpr double kBound = 4e-6;  // a few ulps of NDC values near 1, through two matrix products
+  const Mat4 monoInverseProjection = inverse(projection(0));
+  const Mat4 mono = projection(0);
+  TranspileOptions options;
+  Transpiled viaSpirv = compileTranspiled("reproject.frag", kViewRayReprojectFrag, options);
+  TranspileOptions textOptions;
+  textOptions.target = TargetLanguage::Auto;
+  TranspileResult spliced = transpile(SourceFile{"reproject.frag", kViewRayReprojectFrag}, textOptions);
+  ASSERT_TRUE(spliced.ok) << spliced.diagnostics.format();
+  ASSERT_EQ(spliced.report.value("route", std::string()), "glsl-source-splice") << spliced.report.dump(2);
+  const std::string wrapped = "stereoshift_reproject_frame_projection(";
+  size_t at = spliced.output.find(wrapped, spliced.output.find("void main"));
+  ASSERT_NE(at, std::string::npos) << spliced.output;
+  std::string withoutReprojection = spliced.output;
+  withoutReprojection.replace(at, wrapped.size(), "(");
+  Transpiled viaText = viaSpirv, viaTextUnfixed = viaSpirv;
+  viaText.spirv = compileOriginal("reproject.frag", spliced.output.c_str(), options);
+  viaTextUnfixed.spirv = compileOriginal("reproject.frag", withoutReprojection.c_str(), options);
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    GBuffer linear = g;
+    for (size_t i = 0; i < g.depthValues.size(); ++i)
+      linear.depth.rgba[4 * i] =
+          g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (double(g.depthValues[i]) + mono[10]));
+    RenderResult a = renderLighting(linear, viaSpirv.spirv, monoInverseProjection, &viaSpirv, eye);
+    RenderResult b = renderLighting(linear, viaText.spirv, monoInverseProjection, &viaText, eye);
+    RenderResult c = renderLighting(linear, viaTextUnfixed.spirv, monoInverseProjection, &viaTextUnfixed, eye);
+    ASSERT_TRUE(a.ok() && b.ok() && c.ok());
+    double worstSpirv = 0, worstText = 0;
+    size_t pixels = 0, unfixedWrong = 0;
+    for (size_t i = 0; i < g.depthValues.size(); ++i) {
+      if (g.depthValues[i] >= 1.0f) continue;
+      ++pixels;
+      worstSpirv = std::max(worstSpirv, std::abs(double(bitsAt(a, i))));
+      worstText = std::max(worstText, std::abs(double(bitsAt(b, i))));
+      unfixedWrong += std::abs(double(bitsAt(c, i))) > 1000 * kBound;
+    }
+    std::cout << std::setprecision(3) << "[view ray re-projected] eye " << eye << ": max |ndc - pixel| over " << pixels
+              << " pixels: SPIR-V " << worstSpirv << ", spliced text " << worstText
+              << "; without the re-projection's fix beyond 1000x the bound at " << unfixedWrong << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_LT(worstSpirv, kBound) << "eye " << eye;
+    EXPECT_LT(worstText, kBound) << "eye " << eye;
+    EXPECT_GT(unfixedWrong, pixels * 9 / 10) << "eye " << eye << ": without the re-projection's fix it should be off";
+  }
 }
 
 // The view-ray form as a decompiled dump writes it, one component at a time (kDumpViewRay): the

@@ -290,6 +290,38 @@ TEST(GlslSplice, DerivedOutputsAreNoExactCopies) {
   EXPECT_EQ(exactPositionCopies(src), std::vector<std::string>{"a"});
 }
 
+// A view ray's position: the right-hand side of its one assignment wrapped, a comment after the
+// expression left outside the call, a declaration list ended by its comma; ESSL 100 compiles it.
+// Refused where the text changes the position again (a compound operator, a member, a step) or
+// assigns it twice.
+TEST(GlslSplice, ViewRayAssignmentWrapped) {
+  std::string src = "precision mediump float;\nuniform sampler2D d;\nuniform mat4 p;\nvarying vec3 r;\n"
+                    "void main() { vec3 pos = r * texture2D(d, r.xy).x /* linear */, n = r; "
+                    "gl_FragColor = vec4(pos + n, 1.0); }\n";
+  GlslSpliceOptions o = spliceOptions(100, true);
+  o.shift = false;
+  o.viewRays.push_back({"pos", "vec3", "stereoshift_view_ray_pos", "(1.0 / p[0][0])"});
+  GlslSpliceResult r = spliceGlslStereo(src, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_NE(r.text.find("vec3 pos = stereoshift_view_ray_pos(r * texture2D(d, r.xy).x) /* linear */, n = r;"),
+            std::string::npos)
+      << r.text;
+  EXPECT_NE(r.text.find("highp vec3 stereoshift_view_ray_pos(highp vec3 stereoshift_p)"), std::string::npos);
+  Diagnostics diags;
+  EXPECT_TRUE(verifyLegacyCompiles(r.text, Stage::Fragment, 100, true, "out.frag", diags)) << diags.format() << r.text;
+  for (const std::string& change : {"pos *= 2.0;", "pos.x = 0.0;", "pos++;", "--pos;", "pos <<= 1;", "pos = r;"}) {
+    std::string changed = src;
+    changed.insert(changed.find("gl_FragColor"), change + " ");
+    GlslSpliceResult refused = spliceGlslStereo(changed, o);
+    EXPECT_FALSE(refused.ok) << change;
+    EXPECT_NE(refused.error.find("'pos'"), std::string::npos) << refused.error;
+  }
+  // Read or compared, the position is not changed: `pos == r`, `pos <= r` are no assignments.
+  std::string compared = src;
+  compared.insert(compared.find("gl_FragColor"), "bool same = pos == r || pos.x <= r.x; ");
+  EXPECT_TRUE(spliceGlslStereo(compared, o).ok);
+}
+
 TEST(GlslSplice, WithoutMainIsAnError) {
   EXPECT_FALSE(spliceGlslStereo("void notMain() {}\n", spliceOptions(110, false)).ok);
 }

@@ -366,6 +366,81 @@ bool wrapUnprojections(const std::vector<Word>& w, const Scopes& scopes, const G
   return true;
 }
 
+// Whether the words after a name's postfix end `end` assign it by a compound operator or step it
+// (`+=`, `<<=`, `++`), which a plain `=` is not.
+bool compoundAssigned(const std::vector<Word>& w, size_t k, size_t end) {
+  auto at = [&](size_t i) { return i < w.size() ? w[i].text : std::string(); };
+  const std::string op = at(end + 1);
+  if (op.size() == 1 && std::string("+-*/%&|^").find(op[0]) != std::string::npos && at(end + 2) == "=") return true;
+  if ((op == "<" || op == ">") && at(end + 2) == op && at(end + 3) == "=") return true;
+  if ((op == "+" || op == "-") && at(end + 2) == op) return true;
+  return k >= 2 && (w[k - 1].text == "+" || w[k - 1].text == "-") && w[k - 2].text == w[k - 1].text;
+}
+
+// View rays: the right-hand side of the one assignment to the local the analysis names, wrapped in
+// the helper (the words of `source` around it kept: comments stay outside the call). Refused where
+// the text does not show that one assignment plainly: a second assignment (the name declared again
+// elsewhere, say), a compound one, a member or element assigned, the name in a macro.
+bool wrapViewRays(const std::string& source, const std::vector<Word>& w, const Scopes& scopes,
+                  const GlslSpliceOptions& o, Inserts& inserts, std::string& error) {
+  if (o.viewRays.empty()) return true;
+  source::LexedText lexed(source);
+  const std::string highp = o.es ? "highp " : "";
+  for (const auto& r : o.viewRays) {
+    const std::string type = highp + r.type;
+    const std::string prototype = markedPrototype(type + " " + r.function + "(" + type + " stereoshift_p)");
+    std::vector<size_t> assignments;
+    for (size_t k = 0; k < w.size(); ++k) {
+      if (w[k].text != r.local || (k > 0 && w[k - 1].text == ".")) continue;
+      if (w[k].inDefine) {
+        error = "the view-ray position '" + r.local + "' is named inside a macro";
+        return false;
+      }
+      size_t end = postfixEnd(w, k);
+      if (end == std::string::npos) continue;
+      bool assigns = end + 1 < w.size() && w[end + 1].text == "=" && !(end + 2 < w.size() && w[end + 2].text == "=");
+      if (compoundAssigned(w, k, end) || (assigns && end != k)) {
+        error = "the view-ray position '" + r.local + "' is changed after its assignment in the text";
+        return false;
+      }
+      if (assigns) assignments.push_back(k);
+    }
+    if (assignments.size() != 1 || !scopes.inBody[assignments[0]]) {
+      error = "the text assigns the view-ray position '" + r.local + "' " + std::to_string(assignments.size()) +
+              " times in its functions, the analysis saw one assignment";
+      return false;
+    }
+    // The expression: after `=`, to the `;` or `,` that ends it outside brackets.
+    size_t equals = assignments[0] + 1, stop = equals + 1;
+    for (int depth = 0; stop < w.size() && !w[stop].inDefine; ++stop) {
+      const std::string& t = w[stop].text;
+      if (t == "(" || t == "[" || t == "{") ++depth;
+      if (t == ")" || t == "]" || t == "}") --depth;
+      if (depth == 0 && (t == ";" || t == ",")) break;
+      if (depth < 0) break;
+    }
+    if (stop >= w.size() || (w[stop].text != ";" && w[stop].text != ",")) {
+      error = "the assignment of the view-ray position '" + r.local + "' does not end plainly";
+      return false;
+    }
+    size_t begin = std::string::npos, finish = std::string::npos;
+    for (size_t t = 0; t < lexed.size(); ++t) {
+      const source::Token& token = lexed[t];
+      if (token.kind == source::TokenKind::Comment || token.begin < w[equals].end || token.end > w[stop].begin) continue;
+      if (begin == std::string::npos) begin = token.begin;
+      finish = token.end;
+    }
+    if (begin == std::string::npos) {
+      error = "the assignment of the view-ray position '" + r.local + "' has no expression";
+      return false;
+    }
+    inserts[begin] += r.function + "(";
+    inserts[finish] = ")" + inserts[finish];
+    addPrototype(w, scopes, assignments[0], prototype, inserts);
+  }
+  return true;
+}
+
 
 std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
   const std::string highp = o.es ? "highp " : "";
@@ -382,10 +457,25 @@ std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind
     t += highp + c.type + " " + c.function + "(" + highp + c.type + " stereoshift_camera)" + nl + "{" + nl + ind +
          "return stereoshift_camera + " + offset + ";" + nl + "}" + nl;
   }
+  const std::string scale = "(" + o.eyeSignName + " * " + o.separationName + ")";
   for (const auto& u : o.unprojections) {
-    std::string d = "(" + o.eyeSignName + " * " + o.separationName + ") * (1.0 - " + o.convergenceName + " * stereoshift_q.w)";
+    std::string value;
+    if (u.reprojection) {
+      // Back to this eye's screen: the shift of the clip position (docs/stereo-math.md section 1).
+      bool fused = glslHasPreciseAndFma(o.version, o.es) && o.fused;
+      value = "vec4(" + shiftedX(o, "stereoshift_q", fused) + ", stereoshift_q.yzw)";
+    } else {
+      value = "stereoshift_q - " + u.matrix + "[0] * (" + scale + " * (1.0 - " + o.convergenceName + " * stereoshift_q.w))";
+    }
     t += highp + "vec4 " + u.function + "(" + highp + "vec4 stereoshift_q)" + nl + "{" + nl + ind + "return " +
-         o.eyeSignName + " != 0.0 ? stereoshift_q - " + u.matrix + "[0] * (" + d + ") : stereoshift_q;" + nl + "}" + nl;
+         o.eyeSignName + " != 0.0 ? " + value + " : stereoshift_q;" + nl + "}" + nl;
+  }
+  for (const auto& r : o.viewRays) {
+    // The eye depth is |z| for either handedness (deferred_unprojection_pass.cpp).
+    t += highp + r.type + " " + r.function + "(" + highp + r.type + " stereoshift_p)" + nl + "{" + nl + ind + "if (" +
+         o.eyeSignName + " != 0.0)" + nl + ind + ind + "stereoshift_p.x = stereoshift_p.x - (" + scale +
+         " * (abs(stereoshift_p.z) - " + o.convergenceName + ")) * " + r.inverseScale + ";" + nl + ind +
+         "return stereoshift_p;" + nl + "}" + nl;
   }
   return t;
 }
@@ -427,6 +517,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
   std::set<std::string> helpers;
   for (const auto& c : options.cameras) helpers.insert(c.function);
   for (const auto& u : options.unprojections) helpers.insert(u.function);
+  for (const auto& r : options.viewRays) helpers.insert(r.function);
   for (const auto& word : originalWords)
     if (helpers.count(word.text)) {
       result.error = "the shader already uses the name `" + word.text + "` (is it converted already?)";
@@ -438,7 +529,8 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
     Scopes scopes = scopesOf(originalWords);
     Inserts inserts;
     if (!wrapCameraReads(originalWords, scopes, options, inserts, result.error) ||
-        !wrapUnprojections(originalWords, scopes, options, inserts, result.error))
+        !wrapUnprojections(originalWords, scopes, options, inserts, result.error) ||
+        !wrapViewRays(original, originalWords, scopes, options, inserts, result.error))
       return result;
     source = applyInserts(original, inserts);
   }

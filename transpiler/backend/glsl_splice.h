@@ -19,7 +19,9 @@
 //     `stereoshift_eye_<camera>(camera)`, with the helper's prototype before each function that
 //     reads it and its definition (`camera + this eye's offset`) in the appended block;
 //   - unprojections (deferred-unprojection, any stage): every `InvM * v` the analysis fixed becomes
-//     `stereoshift_unproject_<InvM>(InvM * v)`, likewise with a prototype and a definition;
+//     `stereoshift_unproject_<InvM>(InvM * v)`, likewise with a prototype and a definition; a
+//     re-projection of a corrected position `P * v`, `stereoshift_reproject_<P>(P * v)`; a view
+//     ray's position `p = ray * depth;`, `p = stereoshift_view_ray_<p>(ray * depth);`;
 //   - appended with it: the eye parameters, as the passes declared them (`declarations`: a uniform
 //     block with its layout, or loose uniforms when none are given).
 //
@@ -77,8 +79,21 @@ struct GlslSpliceOptions : ShiftSpec {
     std::string matrix;    // `uInvViewProj`, `frame.invViewProj`
     std::string function;  // stereoshift_unproject_<matrix, `.` as `_`>
     int products = 1;      // how many products through it the analysis fixed: the text must have as many
+    // A re-projection of a corrected view-space position (stereoshift_reproject_<matrix>): the
+    // helper returns q with x + (eyeSign*separation)*(q.w - convergence), back to this eye's screen.
+    bool reprojection = false;
   };
   std::vector<UnprojectionWrap> unprojections;
+  // View rays made this eye's (deferred-unprojection): the right-hand side of the one assignment
+  // `<local> = <expression>` becomes `<function>(<expression>)`, the helper returning p with
+  // x - (eyeSign*separation)*(abs(p.z) - convergence)*inverseScale (p itself when eyeSign is 0).
+  struct ViewRayWrap {
+    std::string local;         // `viewPos`
+    std::string type;          // vec3 or vec4
+    std::string function;      // stereoshift_view_ray_<local>
+    std::string inverseScale;  // 1/P00 as a GLSL expression
+  };
+  std::vector<ViewRayWrap> viewRays;
   // false: the stage gets no shift (a fragment shader, a stage before the one that rasterises): no
   // `main` renamed, the appended block holds the eye parameters and the helpers only.
   bool shift = true;

@@ -168,12 +168,12 @@ bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
   return true;
 }
 
-// The unprojections the passes made per eye, as the splice writes them; false with `why` set when
-// one of deferred-unprojection's rewrites cannot be written in the text.
+// The unprojections, re-projections and view rays the passes made per eye, as the splice writes
+// them; false with `why` set when one of deferred-unprojection's rewrites cannot be written in the text.
 bool unprojections(const EmitRequest& r, GlslSpliceOptions& spec, std::string& why) {
   const DeferredFacts& facts = r.context.record.deferred;
   if (!r.context.record.madeEdit(EditKind::UnprojectionCorrection)) return true;
-  if (!facts.unprojectionTextMissing.empty() || facts.unprojectionTexts.empty()) {
+  if (!facts.unprojectionTextMissing.empty() || (facts.unprojectionTexts.empty() && facts.viewRayTexts.empty())) {
     why = "the splice cannot write " +
           (facts.unprojectionTextMissing.empty() ? std::string("deferred-unprojection's fix") : facts.unprojectionTextMissing);
     return false;
@@ -182,14 +182,33 @@ bool unprojections(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
     auto same = std::find_if(spec.unprojections.begin(), spec.unprojections.end(),
                              [&](const GlslSpliceOptions::UnprojectionWrap& w) { return w.matrix == u.matrix; });
     if (same != spec.unprojections.end()) {
+      // One matrix both unprojecting and re-projecting: the text cannot tell its products apart.
+      if (same->reprojection != u.reprojection) {
+        why = "the splice cannot tell the unprojections through '" + u.matrix + "' from its re-projections";
+        return false;
+      }
       ++same->products;
       continue;
     }
     GlslSpliceOptions::UnprojectionWrap wrap;
     wrap.matrix = u.matrix;
-    wrap.function = "stereoshift_unproject_" + u.matrix;
+    wrap.reprojection = u.reprojection;
+    wrap.function = (u.reprojection ? "stereoshift_reproject_" : "stereoshift_unproject_") + u.matrix;
     std::replace(wrap.function.begin(), wrap.function.end(), '.', '_');
     spec.unprojections.push_back(std::move(wrap));
+  }
+  for (const ViewRayText& v : facts.viewRayTexts) {
+    GlslSpliceOptions::ViewRayWrap wrap;
+    wrap.local = v.local;
+    wrap.type = v.components == 4 ? "vec4" : "vec3";
+    wrap.function = "stereoshift_view_ray_" + v.local;
+    wrap.inverseScale = !v.inverseScale.empty() ? v.inverseScale : "(1.0 / " + eyeParamText(r, spec, kProjScaleX) + ")";
+    if (std::any_of(spec.viewRays.begin(), spec.viewRays.end(),
+                    [&](const GlslSpliceOptions::ViewRayWrap& w) { return w.local == v.local; })) {
+      why = "two view rays are assigned to '" + v.local + "'";
+      return false;
+    }
+    spec.viewRays.push_back(std::move(wrap));
   }
   return true;
 }

@@ -3,7 +3,10 @@
 // ray and scaled by depth / ray.z (`ray * d / ray.z`). The fix goes after the last scaling (the
 // division by ray.z belongs to the rebuilt position) and takes 1/P00 = invProj[0][0] from the
 // matrix that makes the ray; the product that makes the ray is reported as part of the fix.
-// RUN: %stereoshift --validate-each --verify %s --report %t.json -o - | %rmchecks | FileCheck %s
+// Spliced into its own text (the default route), the local's right-hand side through the helper:
+// RUN: %stereoshift --validate-each --verify %s --report %t.json -o - | %rmchecks | FileCheck %s --check-prefix=SPLICE
+// Re-emitted from the IR (an explicit --target-version takes SPIRV-Cross's route): the same fix.
+// RUN: %stereoshift --validate-each --verify %s --report %t.json --target-version 450 -o - | %rmchecks | FileCheck %s
 // RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
 #version 450
 layout(set = 0, binding = 0) uniform Frame { mat4 invProj; vec2 invResolution; vec4 lightViewPos; } frame;
@@ -18,6 +21,8 @@ void main() {
   float attenuation = 1.0 / (1.0 + dot(frame.lightViewPos.xyz - viewPos, frame.lightViewPos.xyz - viewPos));
   fragColor = vec4(vec3(attenuation), 1.0);
 }
+// SPLICE: vec3 viewPos = stereoshift_view_ray_viewPos(ray * d / ray.z);
+// SPLICE: stereoshift_p.x = stereoshift_p.x - ((stereo.eyeSign * stereo.separation) * (abs(stereoshift_p.z) - stereo.convergence)) * frame.invProj[0][0];
 // CHECK: vec3 [[P:_[0-9]+]] = (ray * d) / vec3(ray.z);
 // CHECK-NEXT: float [[Z:_[0-9]+]] = [[P]].z;
 // CHECK-NEXT: vec3 [[X:_[0-9]+]] = [[P]];

@@ -4,7 +4,10 @@
 // gets x - eyeSign*separation*(|z| - convergence) / P00, with P00 = projection[0][0] taken from the
 // matrix that re-projects the sample; that re-projection gets the clip shift back to this eye's
 // screen (docs/stereo-math.md section 4, view rays).
-// RUN: %stereoshift --validate-each --verify %s --report %t.json -o - | %rmchecks | FileCheck %s
+// Spliced into its own text (the default route), the local's right-hand side through the helper:
+// RUN: %stereoshift --validate-each --verify %s --report %t.json -o - | %rmchecks | FileCheck %s --check-prefix=SPLICE
+// Re-emitted from the IR (an explicit --target-version takes SPIRV-Cross's route): the same fix.
+// RUN: %stereoshift --validate-each --verify %s --report %t.json --target-version 450 -o - | %rmchecks | FileCheck %s
 // RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
 #version 450
 layout(set = 0, binding = 0) uniform SsaoParams { mat4 projection; vec4 kernel[8]; float radius; } params;
@@ -25,6 +28,10 @@ void main() {
   }
   outOcclusion = 1.0 - occlusion / 8.0;
 }
+// SPLICE: vec3 viewPos = stereoshift_view_ray_viewPos(vViewRay * linearDepth);
+// SPLICE: vec4 offset = stereoshift_reproject_params_projection(params.projection * vec4(samplePos, 1.0));
+// SPLICE: return stereo.eyeSign != 0.0 ? vec4(stereoshift_q.x + (stereo.eyeSign * stereo.separation) * (stereoshift_q.w - stereo.convergence), stereoshift_q.yzw) : stereoshift_q;
+// SPLICE: stereoshift_p.x = stereoshift_p.x - ((stereo.eyeSign * stereo.separation) * (abs(stereoshift_p.z) - stereo.convergence)) * (1.0 / params.projection[0][0]);
 // CHECK: vec3 [[P:_[0-9]+]] = vViewRay * linearDepth;
 // CHECK-NEXT: float [[Z:_[0-9]+]] = [[P]].z;
 // CHECK-NEXT: vec3 [[X:_[0-9]+]] = [[P]];
