@@ -16,12 +16,14 @@
 #include "passes/pass_registry.h"
 #include "passes/shift_emitter.h"
 
+#include "passes/analysis/uniform_slots.h"
 #include "passes/analysis/value_numbers.h"
 #include "passes/ir/walker.h"
 
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace stereoshift {
@@ -123,6 +125,7 @@ class HaloPass final : public Pass {
     std::vector<std::string> fixed;
     std::vector<std::pair<uint32_t, HaloFacts::ExactCopy>> exactParts;  // output variable, its copy
     std::set<std::string> inexactRoots;  // outputs one of whose shifted stores is not a copy
+    std::vector<std::pair<uint32_t, std::optional<HaloFacts::DerivedText>>> derivedTexts;  // per derived store
     if (!positionValues.empty())
       for (auto& fn : m.functions) {
         for (auto& block : fn.blocks) {
@@ -143,6 +146,7 @@ class HaloPass final : public Pass {
               exactParts.push_back({target, {root, outputPath(m, store.operand(0))}});
             } else {
               inexactRoots.insert(root);
+              derivedTexts.push_back({target, derivedText(m, store, root)});
             }
             block.instructions[i].operands[1] = newValue;
             block.instructions.insert(block.instructions.begin() + static_cast<long>(i), code.begin(), code.end());
@@ -172,6 +176,20 @@ class HaloPass final : public Pass {
       if (inexactRoots.count(output) &&
           std::find(facts.derivedOutputs.begin(), facts.derivedOutputs.end(), output) == facts.derivedOutputs.end())
         facts.derivedOutputs.push_back(output);
+    // The derived outputs as text: each stored once, by a store whose computation the text can show.
+    facts.derivedTexts.clear();
+    for (const auto& [target, text] : derivedTexts) {
+      int stores = 0;
+      spirv::forEachFunctionInstruction(m, [&, target = target](const Instruction& inst, const spirv::Function&,
+                                                               const spirv::Block&) {
+        if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == target) ++stores;
+      });
+      if (!text || stores != 1) {
+        facts.derivedTexts.clear();
+        break;
+      }
+      facts.derivedTexts.push_back(*text);
+    }
     // A copy's part the text can re-copy to: named, and no other store writes any of it; only where
     // the position has one value (re-copying the final position is then the copy's value).
     facts.exactCopies.clear();
@@ -270,6 +288,55 @@ class HaloPass final : public Pass {
 
   // Returns `value` itself when it does not depend on the position, else the id of a clone computed
   // from the shifted position (instructions appended to `code`).
+  // The name the source reads a position load by: a named variable (a local holding the position),
+  // or gl_Position, a member of the built-in block. Empty otherwise.
+  static std::string loadedName(const spirv::Module& m, uint32_t pointer) {
+    const Instruction* def = m.definition(pointer);
+    if (def && def->opcode == spv::OpVariable) return m.name(pointer);
+    if (!def || def->opcode != spv::OpAccessChain || def->operands.size() != 2) return {};
+    const Instruction* base = m.definition(def->operand(0));
+    auto index = base && base->opcode == spv::OpVariable ? analysis::constantValue(m, def->operand(1)) : std::nullopt;
+    if (!index) return {};
+    std::string member = m.memberName(m.pointeeType(base->typeId), *index);
+    return member == "gl_Position" ? member : std::string();
+  }
+
+  // A derived output's store as a text splice can recompute it (run_record.h, DerivedText), or
+  // nullopt: a position value in its computation that is no load of a named place (recomputed
+  // `mvp * p`), a name read there as the position and as something else, a part the source does
+  // not spell plainly.
+  std::optional<HaloFacts::DerivedText> derivedText(const spirv::Module& m, const Instruction& store,
+                                                    const std::string& root) {
+    HaloFacts::DerivedText text{root, outputPath(m, store.operand(0)), {}};
+    if (text.path.empty() || text.path.find_first_of(".[") != std::string::npos) return std::nullopt;
+    std::set<std::string> position, other;
+    bool plain = true;
+    std::function<void(uint32_t, int)> walk = [&](uint32_t value, int depth) {
+      const Instruction* def = m.definition(value);
+      if (!def || depth > 64) return;
+      bool isPosition = isPosition_ && isPosition_(value);
+      if (def->opcode == spv::OpLoad) {
+        std::string name = loadedName(m, def->operand(0));
+        if (isPosition && name.empty()) plain = false;
+        (isPosition ? position : other).insert(name);
+        return;
+      }
+      if (isPosition) plain = false;
+      if (!isPureArithmetic(def->opcode)) return;
+      size_t firstLiteral = def->operands.size();
+      if (def->opcode == spv::OpCompositeExtract) firstLiteral = 1;
+      if (def->opcode == spv::OpCompositeInsert || def->opcode == spv::OpVectorShuffle) firstLiteral = 2;
+      for (size_t k = def->opcode == spv::OpExtInst ? 2 : 0; k < std::min(firstLiteral, def->operands.size()); ++k)
+        walk(def->operand(k), depth + 1);
+    };
+    walk(store.operand(1), 0);
+    for (const auto& name : position)
+      if (other.count(name)) plain = false;
+    if (!plain || position.empty()) return std::nullopt;
+    text.positionNames.assign(position.begin(), position.end());
+    return text;
+  }
+
   uint32_t cloneWithShift(PassContext& ctx, uint32_t value, const std::set<uint32_t>& positionValues,
                           std::vector<Instruction>& code, std::map<uint32_t, uint32_t>& cloned, int depth) {
     if (auto it = cloned.find(value); it != cloned.end()) return it->second;

@@ -122,6 +122,15 @@ struct HaloFacts {
     std::string output, path;
   };
   std::vector<ExactCopy> exactCopies;
+  // A derived output as a text splice can recompute it: written by one store, whose part the source
+  // spells (`vScreenUV`), and whose computation reads the position only by loads of places the
+  // source names (`gl_Position`, a local that holds it): those reads, through the shift, give the
+  // shifted output.
+  struct DerivedText {
+    std::string output, path;
+    std::vector<std::string> positionNames;
+  };
+  std::vector<DerivedText> derivedTexts;
 };
 
 // stereo-shift.

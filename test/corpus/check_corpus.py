@@ -144,7 +144,7 @@ def unwrap_calls(text, prefix):
 def undo_inline_edits(text):
     """The splices' edits inside lines undone: renamed entry points, wrapped emits, returns and out
     parameters, attributes moved to a wrapper, per-eye camera reads, unprojections, re-projections and
-    view rays, one-line marked insertions."""
+    view rays, derived outputs' reads of the position, one-line marked insertions."""
     text = re.sub(r"/\* ---- stereoshift ---- \*/.*?/\* ---- end stereoshift ---- \*/ ", "", text)
     text = re.sub(r"/\* stereoshift: moved to the wrapper: (.*?) \*/", r"\1", text)
     text = re.sub(r"\{ stereoshift_shiftPosition\(\); (.*?) \}", r"\1", text)
@@ -158,6 +158,7 @@ def undo_inline_edits(text):
     text = unwrap_calls(text, "stereoshift_unproject_")  # an unprojection through its helper
     text = unwrap_calls(text, "stereoshift_reproject_")  # a re-projection of a corrected position
     text = unwrap_calls(text, "stereoshift_view_ray_")  # a view ray's position through its helper
+    text = unwrap_calls(text, "stereoshift_shifted_position")  # a derived output's read of the position
     return re.sub(r"\b(\w+)_stereoshift_mono\b", r"\1", text)
 
 

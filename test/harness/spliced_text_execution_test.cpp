@@ -5,7 +5,9 @@
 // error against the double reference). `stereoshift verify` and execution.corpus check the SPIR-V
 // route; this checks the spliced text itself, for every corpus pipeline whose stages are all
 // spliced or copied (legacy GLSL 1xx / ESSL 100, GLSL 330, ESSL 300, Vulkan GLSL, the relief
-// tutorials, the file-naming conventions).
+// tutorials, the file-naming conventions). Each stereo run is also held, output by output and bit
+// for bit, to the SPIR-V route's conversion of the shifted stage: the text carries what the IR does,
+// outputs derived from the position (halo) included.
 #include "transpiler/frontend/front_end.h"
 #include "transpiler/stereoshift.h"
 #include "transpiler/verify/stereo_verify.h"
@@ -15,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -67,13 +70,25 @@ TEST_P(SplicedTextExecution, SplicedTextMatchesReference) {
   const PipelineCase& c = GetParam();
   std::vector<StageModules> stages;
   bool spliced = false;
+  // Converted as one pipeline, as `build` converts it (the eye parameters at a binding no stage uses).
+  std::vector<SourceFile> inputs;
+  for (const auto& path : c.stages) {
+    inputs.push_back({path.string(), {}});
+    ASSERT_TRUE(readFile(path.string(), &inputs.back().contents));
+  }
+  TranspileOptions pipelineOptions;
+  pipelineOptions.includeDirs = {(c.stages.front().parent_path() / "include").string()};
+  std::vector<TranspileResult> all = transpilePipeline(inputs, pipelineOptions);
+  TranspileOptions viaIr = pipelineOptions;
+  viaIr.target = TargetLanguage::Spirv;
+  std::vector<TranspileResult> allViaIr = transpilePipeline(inputs, viaIr);
+  ASSERT_EQ(all.size(), c.stages.size());
+  ASSERT_EQ(allViaIr.size(), c.stages.size());
   for (size_t i = 0; i < c.stages.size(); ++i) {
-    SourceFile input{c.stages[i].string(), {}};
-    ASSERT_TRUE(readFile(input.path, &input.contents));
-    TranspileOptions options;
-    options.includeDirs = {(c.stages[i].parent_path() / "include").string()};
+    const SourceFile& input = inputs[i];
+    TranspileOptions options = pipelineOptions;
     options.shiftThisStage = i + 1 == c.stages.size();
-    TranspileResult converted = transpile(input, options);
+    TranspileResult& converted = all[i];
     ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
     std::string route = converted.report.value("route", "");
     bool copied = converted.report.value("output", "") == "copied";
@@ -94,6 +109,17 @@ TEST_P(SplicedTextExecution, SplicedTextMatchesReference) {
     stage.transpiled = stereo.spirv;
     for (const auto& n : converted.report.value("halo_copies", nlohmann::json::array()))
       stage.haloOutputs.push_back(n.get<std::string>());
+    // Outputs computed from the position move with it (verify's own rule); what they move to is
+    // held to the SPIR-V route's conversion of the same stage, bit for bit (`agreeing`).
+    if (converted.report.contains("passes") && converted.report["passes"].contains("halo"))
+      for (const auto& n : converted.report["passes"]["halo"].value("shifted_outputs", nlohmann::json::array()))
+        stage.haloOutputs.push_back(n.get<std::string>());
+    if (options.shiftThisStage) {
+      const TranspileResult& ir = allViaIr[i];
+      ASSERT_TRUE(ir.ok) << ir.diagnostics.format();
+      stage.agreeing.resize(ir.output.size() / 4);
+      std::memcpy(stage.agreeing.data(), ir.output.data(), stage.agreeing.size() * 4);
+    }
     // Outputs made from the per-eye camera differ between the eyes by design (relief view vectors;
     // their images are checked in relief_render_test.cpp); mono must still be bit for bit.
     if (converted.report.contains("passes") && converted.report["passes"].contains("per-eye-view"))
@@ -112,6 +138,9 @@ TEST_P(SplicedTextExecution, SplicedTextMatchesReference) {
   EXPECT_TRUE(r.monoIdentical);
   EXPECT_TRUE(r.otherOutputsUnchanged) << (r.problems.empty() ? "" : r.problems.front());
   EXPECT_LE(r.maxStereoUlps, settings.maxUlps);
+  EXPECT_TRUE(r.problems.empty()) << r.problems.front();
+  EXPECT_GT(r.agreementComponentsCompared, 0u);
+  EXPECT_EQ(r.disagreeingComponents, 0u) << (r.problems.empty() ? "" : r.problems.front());
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, SplicedTextExecution, ::testing::ValuesIn(glslPipelines()),

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -17,6 +18,7 @@ namespace {
 constexpr const char* kMonoSuffix = "_stereoshift_mono";
 constexpr const char* kShiftHelper = "stereoshift_shiftPosition";
 constexpr const char* kShiftedX = "stereoshift_x";
+constexpr const char* kShiftedPosition = "stereoshift_shifted_position";
 
 struct Word {
   size_t begin, end;
@@ -73,8 +75,9 @@ std::string shiftedX(const GlslSpliceOptions& spec, const std::string& p, bool f
 // The statements that shift gl_Position under the cutoff and give the halo copies the shifted
 // value, each line starting with `ind`. With `precise` (GLSL 400 / ESSL 320) the shifted x is a
 // precise temporary, so no compiler contracts it differently in a depth pre-pass and the colour pass.
-std::string shiftStatements(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
-  const std::string p = "gl_Position";
+// `p` another vec4 than gl_Position: the same statements on it, no halo copies.
+std::string shiftStatements(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl,
+                            const std::string& p = "gl_Position") {
   bool modern = glslHasPreciseAndFma(o.version, o.es);
   bool precise = modern && o.precise;
   std::string x = shiftedX(o, p, modern && o.fused), t;
@@ -88,7 +91,8 @@ std::string shiftStatements(const GlslSpliceOptions& o, const std::string& ind, 
     t += ind + "if (" + conditionText(o, p) + ")" + nl + ind + "{" + nl;
     t += assign(ind + ind, x) + ind + "}" + nl;
   }
-  for (const auto& copy : o.haloCopies) t += ind + copy + " = " + p + ";" + nl;
+  if (p == "gl_Position")
+    for (const auto& copy : o.haloCopies) t += ind + copy + " = " + p + ";" + nl;
   return t;
 }
 
@@ -377,10 +381,50 @@ bool compoundAssigned(const std::vector<Word>& w, size_t k, size_t end) {
   return k >= 2 && (w[k - 1].text == "+" || w[k - 1].text == "-") && w[k - 2].text == w[k - 1].text;
 }
 
+// The one assignment `name = <expression>` of the text, as the words of `=` and of the `;` or `,`
+// that ends the expression; nullopt with `error` set where the text does not show that one
+// assignment plainly: a second one (the name declared again elsewhere, say), a compound one, a
+// member or element assigned, the name in a macro. `what` names the value in the message.
+std::optional<std::pair<size_t, size_t>> soleAssignment(const std::vector<Word>& w, const Scopes& scopes,
+                                                        const std::string& name, const std::string& what,
+                                                        std::string& error) {
+  std::vector<size_t> assignments;
+  for (size_t k = 0; k < w.size(); ++k) {
+    if (w[k].text != name || (k > 0 && w[k - 1].text == ".")) continue;
+    if (w[k].inDefine) {
+      error = "the " + what + " '" + name + "' is named inside a macro";
+      return std::nullopt;
+    }
+    size_t end = postfixEnd(w, k);
+    if (end == std::string::npos) continue;
+    bool assigns = end + 1 < w.size() && w[end + 1].text == "=" && !(end + 2 < w.size() && w[end + 2].text == "=");
+    if (compoundAssigned(w, k, end) || (assigns && end != k)) {
+      error = "the " + what + " '" + name + "' is changed after its assignment in the text";
+      return std::nullopt;
+    }
+    if (assigns) assignments.push_back(k);
+  }
+  if (assignments.size() != 1 || !scopes.inBody[assignments[0]]) {
+    error = "the text assigns the " + what + " '" + name + "' " + std::to_string(assignments.size()) +
+            " times in its functions, the analysis saw one assignment";
+    return std::nullopt;
+  }
+  size_t equals = assignments[0] + 1, stop = equals + 1;
+  for (int depth = 0; stop < w.size() && !w[stop].inDefine; ++stop) {
+    const std::string& t = w[stop].text;
+    if (t == "(" || t == "[" || t == "{") ++depth;
+    if (t == ")" || t == "]" || t == "}") --depth;
+    if (depth <= 0 && (t == ";" || t == "," || depth < 0)) break;
+  }
+  if (stop >= w.size() || (w[stop].text != ";" && w[stop].text != ",")) {
+    error = "the assignment of the " + what + " '" + name + "' does not end plainly";
+    return std::nullopt;
+  }
+  return std::make_pair(equals, stop);
+}
+
 // View rays: the right-hand side of the one assignment to the local the analysis names, wrapped in
-// the helper (the words of `source` around it kept: comments stay outside the call). Refused where
-// the text does not show that one assignment plainly: a second assignment (the name declared again
-// elsewhere, say), a compound one, a member or element assigned, the name in a macro.
+// the helper (the words of `source` around it kept: comments stay outside the call).
 bool wrapViewRays(const std::string& source, const std::vector<Word>& w, const Scopes& scopes,
                   const GlslSpliceOptions& o, Inserts& inserts, std::string& error) {
   if (o.viewRays.empty()) return true;
@@ -389,40 +433,9 @@ bool wrapViewRays(const std::string& source, const std::vector<Word>& w, const S
   for (const auto& r : o.viewRays) {
     const std::string type = highp + r.type;
     const std::string prototype = markedPrototype(type + " " + r.function + "(" + type + " stereoshift_p)");
-    std::vector<size_t> assignments;
-    for (size_t k = 0; k < w.size(); ++k) {
-      if (w[k].text != r.local || (k > 0 && w[k - 1].text == ".")) continue;
-      if (w[k].inDefine) {
-        error = "the view-ray position '" + r.local + "' is named inside a macro";
-        return false;
-      }
-      size_t end = postfixEnd(w, k);
-      if (end == std::string::npos) continue;
-      bool assigns = end + 1 < w.size() && w[end + 1].text == "=" && !(end + 2 < w.size() && w[end + 2].text == "=");
-      if (compoundAssigned(w, k, end) || (assigns && end != k)) {
-        error = "the view-ray position '" + r.local + "' is changed after its assignment in the text";
-        return false;
-      }
-      if (assigns) assignments.push_back(k);
-    }
-    if (assignments.size() != 1 || !scopes.inBody[assignments[0]]) {
-      error = "the text assigns the view-ray position '" + r.local + "' " + std::to_string(assignments.size()) +
-              " times in its functions, the analysis saw one assignment";
-      return false;
-    }
-    // The expression: after `=`, to the `;` or `,` that ends it outside brackets.
-    size_t equals = assignments[0] + 1, stop = equals + 1;
-    for (int depth = 0; stop < w.size() && !w[stop].inDefine; ++stop) {
-      const std::string& t = w[stop].text;
-      if (t == "(" || t == "[" || t == "{") ++depth;
-      if (t == ")" || t == "]" || t == "}") --depth;
-      if (depth == 0 && (t == ";" || t == ",")) break;
-      if (depth < 0) break;
-    }
-    if (stop >= w.size() || (w[stop].text != ";" && w[stop].text != ",")) {
-      error = "the assignment of the view-ray position '" + r.local + "' does not end plainly";
-      return false;
-    }
+    auto assignment = soleAssignment(w, scopes, r.local, "view-ray position", error);
+    if (!assignment) return false;
+    auto [equals, stop] = *assignment;
     size_t begin = std::string::npos, finish = std::string::npos;
     for (size_t t = 0; t < lexed.size(); ++t) {
       const source::Token& token = lexed[t];
@@ -436,11 +449,34 @@ bool wrapViewRays(const std::string& source, const std::vector<Word>& w, const S
     }
     inserts[begin] += r.function + "(";
     inserts[finish] = ")" + inserts[finish];
-    addPrototype(w, scopes, assignments[0], prototype, inserts);
+    addPrototype(w, scopes, equals - 1, prototype, inserts);
   }
   return true;
 }
 
+// Derived halo outputs: in the one assignment of each, every read of the position by one of its
+// names goes through the shift.
+bool wrapDerivedHalos(const std::vector<Word>& w, const Scopes& scopes, const GlslSpliceOptions& o, Inserts& inserts,
+                      std::string& error) {
+  const std::string type = o.es ? "highp vec4" : "vec4";
+  const std::string prototype = markedPrototype(type + " " + kShiftedPosition + "(" + type + " stereoshift_p)");
+  for (const auto& d : o.derivedHalos) {
+    auto assignment = soleAssignment(w, scopes, d.output, "output computed from the position", error);
+    if (!assignment) return false;
+    int reads = 0;
+    for (size_t k = assignment->first + 1; k < assignment->second; ++k) {
+      if (k > 0 && w[k - 1].text == ".") continue;
+      if (std::find(d.positionNames.begin(), d.positionNames.end(), w[k].text) == d.positionNames.end()) continue;
+      wrap(w, scopes, k, k, kShiftedPosition, prototype, inserts);
+      ++reads;
+    }
+    if (reads == 0) {
+      error = "the assignment of '" + d.output + "' reads the position by no name the analysis saw";
+      return false;
+    }
+  }
+  return true;
+}
 
 std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind, const std::string& nl) {
   const std::string highp = o.es ? "highp " : "";
@@ -469,6 +505,11 @@ std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind
     }
     t += highp + "vec4 " + u.function + "(" + highp + "vec4 stereoshift_q)" + nl + "{" + nl + ind + "return " +
          o.eyeSignName + " != 0.0 ? " + value + " : stereoshift_q;" + nl + "}" + nl;
+  }
+  if (!o.derivedHalos.empty()) {
+    // The position as the shift leaves it, for the outputs computed from it.
+    t += highp + "vec4 " + kShiftedPosition + "(" + highp + "vec4 stereoshift_p)" + nl + "{" + nl +
+         shiftStatements(o, ind, nl, "stereoshift_p") + ind + "return stereoshift_p;" + nl + "}" + nl;
   }
   for (const auto& r : o.viewRays) {
     // The eye depth is |z| for either handedness (deferred_unprojection_pass.cpp).
@@ -518,6 +559,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
   for (const auto& c : options.cameras) helpers.insert(c.function);
   for (const auto& u : options.unprojections) helpers.insert(u.function);
   for (const auto& r : options.viewRays) helpers.insert(r.function);
+  if (!options.derivedHalos.empty()) helpers.insert(kShiftedPosition);
   for (const auto& word : originalWords)
     if (helpers.count(word.text)) {
       result.error = "the shader already uses the name `" + word.text + "` (is it converted already?)";
@@ -530,7 +572,8 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
     Inserts inserts;
     if (!wrapCameraReads(originalWords, scopes, options, inserts, result.error) ||
         !wrapUnprojections(originalWords, scopes, options, inserts, result.error) ||
-        !wrapViewRays(original, originalWords, scopes, options, inserts, result.error))
+        !wrapViewRays(original, originalWords, scopes, options, inserts, result.error) ||
+        !wrapDerivedHalos(originalWords, scopes, options, inserts, result.error))
       return result;
     source = applyInserts(original, inserts);
   }

@@ -10,7 +10,8 @@
 //   - vertex and tessellation-evaluation shaders: every token `main` (outside comments) becomes
 //     `main_stereoshift_mono`, and a new `main` appended at the end of the file calls it, then
 //     shifts gl_Position under the cutoff, then gives the outputs that are exact copies of the clip
-//     position (halo) the shifted value;
+//     position (halo) the shifted value; an output computed from the position reads it, in its one
+//     assignment, through `stereoshift_shifted_position()`;
 //   - geometry shaders: every statement `EmitVertex();` / `EmitStreamVertex(n);` becomes
 //     `{ stereoshift_shiftPosition(); EmitVertex(); }` (the shift of the vertex about to be
 //     emitted), with a prototype of the helper before each function that emits and its definition
@@ -59,6 +60,14 @@ struct GlslSpliceOptions : ShiftSpec {
   std::vector<std::string> declarations;
   // Outputs (as written in the source) that are exact copies of gl_Position: given the shifted value.
   std::vector<std::string> haloCopies;
+  // Outputs computed from the position (halo: `vScreenUV = gl_Position.xy / gl_Position.w ...`):
+  // in the one assignment of `output`, every read of one of `positionNames` (gl_Position, a local
+  // holding it) becomes `stereoshift_shifted_position(name)`, the position as the shift leaves it.
+  struct DerivedHalo {
+    std::string output;
+    std::vector<std::string> positionNames;
+  };
+  std::vector<DerivedHalo> derivedHalos;
   // Camera positions made this eye's (per-eye-view): every read of `access` in a function body
   // becomes `<function>(access)`, the function's prototype goes before each function that reads it
   // and its definition, `camera + offset`, into the appended block.

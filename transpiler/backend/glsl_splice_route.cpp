@@ -215,12 +215,23 @@ bool unprojections(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
 
 // The halo outputs the passes shifted, as the source names them, when each is an exact copy of
 // gl_Position the splice can re-copy; empty with `why` set when one is not.
-bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::string& why) {
+bool haloCopies(const EmitRequest& r, GlslSpliceOptions& spec, std::string& why) {
   const RunRecord& record = r.context.record;
-  if (!record.halo.derivedOutputs.empty()) {
-    why = "the halo pass changed the output '" + record.halo.derivedOutputs.front() +
-          "', which is computed from the clip position (not a copy of it), and only the IR carries that";
-    return false;
+  std::vector<std::string>& copies = spec.haloCopies;
+  // Outputs computed from the position: re-computed from the shifted one where the analysis says
+  // how the text reads the position there (HaloFacts::DerivedText), else only the IR carries them.
+  for (const auto& derived : record.halo.derivedOutputs) {
+    auto text = std::find_if(record.halo.derivedTexts.begin(), record.halo.derivedTexts.end(),
+                             [&](const HaloFacts::DerivedText& t) { return t.output == derived; });
+    if (text == record.halo.derivedTexts.end()) {
+      why = "the halo pass changed the output '" + derived +
+            "', which is computed from the clip position in a way the text does not show (recomputed, or written "
+            "more than once), and only the IR carries that";
+      return false;
+    }
+    GlslSpliceOptions::DerivedHalo halo{sourceName(text->path), {}};
+    for (const auto& name : text->positionNames) halo.positionNames.push_back(sourceName(name));
+    spec.derivedHalos.push_back(std::move(halo));
   }
   if (!record.halo.shiftedOutputs) return true;
   std::vector<std::string> exact = exactPositionCopies(r.input.contents);
@@ -228,6 +239,9 @@ bool haloCopies(const EmitRequest& r, std::vector<std::string>& copies, std::str
     if (std::find(copies.begin(), copies.end(), path) == copies.end()) copies.push_back(path);
   };
   for (const auto& translated : *record.halo.shiftedOutputs) {
+    if (std::find(record.halo.derivedOutputs.begin(), record.halo.derivedOutputs.end(), translated) !=
+        record.halo.derivedOutputs.end())
+      continue;
     std::string out = sourceName(translated);
     if (std::find(exact.begin(), exact.end(), out) != exact.end()) {
       add(out);
@@ -295,7 +309,7 @@ class GlslSpliceRoute final : public BackEndRoute {
     if (!r.entryPointOption.empty()) splice.entryPoint = r.entryPointOption;
     std::string why;
     splice.shift = ctx.shiftPosition && ctx.record.madeEdit(EditKind::PositionShift);
-    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice.haloCopies, why) || !perEyeCameras(r, splice, why) ||
+    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice, why) || !perEyeCameras(r, splice, why) ||
         !unprojections(r, splice, why)) {
       result.status = EmitResult::Declined;
       result.declinedBecause = fallbackNote(why);

@@ -39,6 +39,7 @@ nlohmann::json VerifyResult::json() const {
           {"other_outputs_unchanged", otherOutputsUnchanged},
           {"halo_components_changed", haloComponentsChanged},
           {"new_nans", newNaNs},
+          {"disagreeing_components", disagreeingComponents},
           {"synthesized_stages", synthesizedStages},
           {"push_constants_as_buffer", pushConstantsAsBuffer},
           {"problems", problems}};
@@ -134,6 +135,24 @@ class StereoCheck {
       matchInvariance(*a, *b);
       feedDoubleInputsAsFloats(*a);
       feedDoubleInputsAsFloats(*b);
+      if (&s == &stages_.back() && !s.agreeing.empty()) {
+        const Module& transpiledInvariance = *b;
+        auto c = Module::parse(s.agreeing, &error);
+        if (!c) return stop("unparsable SPIR-V (the agreeing conversion): " + error);
+        if (s.bindings == BindingClasses::D3dRegisters) separateRegisterClasses(*c);
+        convertOpenGLForVulkan(*c, blockBinding, &error);
+        if (s.bindings == BindingClasses::OpenGL) separateOpenGLBindingClasses(*c);
+        // Compiled alike: the transpiled stage's invariance, not its own (a splice adds none where
+        // the SPIR-V route marks the position; llvmpipe then contracts differently).
+        std::erase_if(c->annotations, [](const spirv::Instruction& i) {
+          return (i.opcode == spv::OpDecorate && i.operand(1) == uint32_t(spv::DecorationInvariant)) ||
+                 (i.opcode == spv::OpMemberDecorate && i.operand(2) == uint32_t(spv::DecorationInvariant));
+        });
+        c->invalidateDefinitions();
+        matchInvariance(*c, transpiledInvariance);
+        feedDoubleInputsAsFloats(*c);
+        agreeing_ = std::move(*c);
+      }
       originals_.push_back(std::move(*a));
       transpiled_.push_back(std::move(*b));
     }
@@ -250,6 +269,28 @@ class StereoCheck {
     }
     if (std::find(inStereo_.begin(), inStereo_.end(), UINT32_MAX) != inStereo_.end())
       return stop("original and transpiled shaders have different outputs");
+    return !agreeing_ || instrumentAgreeing();
+  }
+
+  // The agreeing conversion's capture, and where each transpiled component is in it.
+  bool instrumentAgreeing() {
+    Result<CaptureLayout> layout = instrumentForCapture(*agreeing_);
+    if (!layout) return stop(layout.error().message);
+    layoutC_ = std::move(*layout);
+    inAgreeing_.assign(layoutB_.stride / 4, UINT32_MAX);
+    std::vector<bool> matched(layoutC_.fields.size(), false);
+    for (const auto& g : layoutB_.fields)
+      for (size_t i = 0; i < layoutC_.fields.size(); ++i) {
+        const auto& f = layoutC_.fields[i];
+        if (matched[i] || f.isPosition != g.isPosition || f.location != g.location || f.components != g.components)
+          continue;
+        matched[i] = true;
+        for (uint32_t k = 0; k < g.components; ++k) inAgreeing_[g.offset / 4 + k] = f.offset / 4 + k;
+        break;
+      }
+    if (std::find(matched.begin(), matched.end(), false) != matched.end() ||
+        std::find(inAgreeing_.begin(), inAgreeing_.end(), UINT32_MAX) != inAgreeing_.end())
+      return stop("the two conversions of the stage have different outputs");
     return true;
   }
 
@@ -279,6 +320,12 @@ class StereoCheck {
     stereoBase_ = base_;
     for (const auto& m : transpiled_)
       if (Status built = buildResources(m, &stereoBase_); !built) return stop(built.error().message);
+    if (agreeing_) {
+      agreeBase_ = base_;
+      for (size_t i = 0; i + 1 < transpiled_.size(); ++i)
+        if (Status built = buildResources(transpiled_[i], &agreeBase_); !built) return stop(built.error().message);
+      if (Status built = buildResources(*agreeing_, &agreeBase_); !built) return stop(built.error().message);
+    }
     return true;
   }
 
@@ -325,6 +372,10 @@ class StereoCheck {
     stereoBase_.patchControlPoints = base_.patchControlPoints;
     stereoBase_.vertexCount = base_.vertexCount;
     stereoBase_.instanceCount = mode_ == EyeSelect::InstanceIndex ? 2 * instances_ : 1;
+    agreeBase_.topology = base_.topology;
+    agreeBase_.patchControlPoints = base_.patchControlPoints;
+    agreeBase_.vertexCount = base_.vertexCount;
+    agreeBase_.instanceCount = 1;
   }
 
   bool capture(std::vector<Module>& modules, const PipelineInputs& inputs, CaptureResult* out) {
@@ -333,7 +384,7 @@ class StereoCheck {
     request.pipeline = inputs;
     for (size_t i = 0; i < modules.size(); ++i)
       request.pipeline.stages.push_back({toVk(modules[i].executionModel()), modules[i].encode(), modules[i].entryPointName()});
-    request.xfbStride = original ? layoutA_.stride : layoutB_.stride;
+    request.xfbStride = original ? layoutA_.stride : &modules == &agreeingStages_ ? layoutC_.stride : layoutB_.stride;
     // Room for tessellation / geometry amplification.
     request.expectedVertices = count_ * 64 * inputs.instanceCount;
     *out = context_.capture(request);
@@ -491,7 +542,34 @@ class StereoCheck {
         continue;
       }
       for (uint32_t v = 0; v < result_.vertices; ++v) compareVertex(stereo, v, v, eye, "eye " + std::to_string(int(eye)));
+      if (agreeing_ && !compareAgreeing(stereo, eye)) return false;
     }
+    return true;
+  }
+
+  // The agreeing conversion run with the same eye: every captured component bit for bit the same.
+  bool compareAgreeing(const CaptureResult& stereo, float eye) {
+    agreeingStages_ = transpiled_;
+    agreeingStages_.back() = *agreeing_;
+    PipelineInputs inputs = agreeBase_;
+    if (Result<bool> set = applyEyeParameters(agreeingStages_.back(), settings_, eye, &inputs); !set)
+      return stop(set.error().message);
+    CaptureResult other;
+    if (!capture(agreeingStages_, inputs, &other)) return stop("agreeing conversion: " + other.error);
+    if (other.vertexCount() != stereo.vertexCount()) {
+      result_.problems.push_back("eye " + std::to_string(int(eye)) + ": the two conversions captured different vertex counts");
+      return true;
+    }
+    for (uint32_t v = 0; v < stereo.vertexCount(); ++v)
+      for (uint32_t c = 0; c < layoutB_.stride / 4; ++c) {
+        ++result_.agreementComponentsCompared;
+        if (stereo.u32(v, c) == other.u32(v, inAgreeing_[c])) continue;
+        if (result_.disagreeingComponents++ == 0)
+          result_.problems.push_back("eye " + std::to_string(int(eye)) + ", vertex " + std::to_string(v) +
+                                     ": component " + std::to_string(c) + " is " + std::to_string(stereo.f32(v, c)) +
+                                     " here and " + std::to_string(other.f32(v, inAgreeing_[c])) +
+                                     " in the agreeing conversion");
+      }
     return true;
   }
 
@@ -601,6 +679,11 @@ class StereoCheck {
   std::vector<Module> originals_, transpiled_;
   std::vector<std::vector<Module>> perView_;  // multiview: the transpiled stages of each view
   CaptureLayout layoutA_, layoutB_;            // the original's and the transpiled capture
+  std::optional<Module> agreeing_;              // StageModules::agreeing of the last stage, prepared
+  std::vector<Module> agreeingStages_;          // the transpiled stages with it last
+  CaptureLayout layoutC_;                      // its capture
+  std::vector<uint32_t> inAgreeing_;           // per transpiled component: its place in that capture
+  PipelineInputs agreeBase_;
   std::vector<uint32_t> inStereo_;             // per original component: its place in the transpiled capture
   std::string routeName_;
   int eyeVaryingComponent_ = -1, routeComponent_ = -1;

@@ -29,6 +29,11 @@ struct StageModules {
   std::string entry = "main";
   std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
   BindingClasses bindings = BindingClasses::Shared;
+  // The last stage only, optional: another conversion of the same shader (the SPIR-V route's, beside
+  // a spliced text) whose every captured output must equal the transpiled one's, bit for bit, in
+  // each eye: what the text carries is what the IR says (halo outputs derived from the position,
+  // whose own values the stereo reference cannot tell).
+  std::vector<uint32_t> agreeing;
 };
 
 struct VerifySettings {
@@ -71,6 +76,9 @@ struct VerifyResult {
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
   uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
   uint32_t newNaNs = 0;         // x became NaN although the original x and w were not NaN
+  // With StageModules::agreeing (two-pass only): components of the stereo runs that differ between
+  // the two conversions, and how many were compared.
+  uint32_t disagreeingComponents = 0, agreementComponentsCompared = 0;
   std::vector<std::string> synthesizedStages;  // pass-through stages run in front of the given ones
   bool pushConstantsAsBuffer = false;  // push constants over the device limit, bound as a uniform buffer
   std::vector<std::string> problems;

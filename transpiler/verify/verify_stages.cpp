@@ -104,6 +104,17 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     auto of = [&](const SourceFile* f) { return decideStage(f->path, f->contents, options.stage, options.stageExtensions).stage; };
     return static_cast<int>(*of(a)) < static_cast<int>(*of(b));
   });
+  // Converted as one pipeline, as `build` and `--pipeline` convert it: the eye parameters then take
+  // a binding no stage of it uses (each stage alone could pick one another stage holds).
+  TranspileOptions harnessOptions = options;
+  harnessOptions.target = TargetLanguage::Spirv;
+  harnessOptions.forceReemit = true;
+  // The harness repairs what glslang's module for OpenGL GLSL gets wrong (a loose `uniform bool`)
+  // in its own copies, original and transpiled alike (convertOpenGLForVulkan).
+  harnessOptions.spirvForHarness = true;
+  std::vector<SourceFile> orderedFiles;
+  for (const SourceFile* file : ordered) orderedFiles.push_back(*file);
+  std::vector<TranspileResult> converted = transpilePipeline(orderedFiles, harnessOptions);
   for (size_t i = 0; i < ordered.size(); ++i) {
     // The single-pass modes refuse what the output language cannot express (ESSL vertex shaders
     // and gl_Layer, OpenGL multiview and geometry stages, ...): verify runs SPIR-V, so it first
@@ -117,14 +128,9 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
         return false;
       }
     }
-    TranspileOptions o = options;
-    o.target = TargetLanguage::Spirv;
-    o.forceReemit = true;
-    // The harness repairs what glslang's module for OpenGL GLSL gets wrong (a loose `uniform bool`)
-    // in its own copies, original and transpiled alike (convertOpenGLForVulkan).
-    o.spirvForHarness = true;
+    TranspileOptions o = harnessOptions;
     o.shiftThisStage = i + 1 == ordered.size();
-    TranspileResult result = transpile(*ordered[i], o);
+    TranspileResult result = std::move(converted[i]);
     if (!result.ok) {
       diags.append(result.diagnostics);
       return false;

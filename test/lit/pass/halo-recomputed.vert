@@ -1,11 +1,16 @@
 // halo by value: an output that recomputes the clip position (the same product, written with the
 // components spelled out) and one derived from the product computed again in a helper function are
 // both the position: each gets the shift the position gets (a select on the same cutoff). The
-// recomputation is an exact copy by value (what the HLSL splice may copy); the screen UV is derived,
-// which only the IR carries: the GLSL output is SPIRV-Cross's re-emit, with a note.
+// recomputation is an exact copy by value (re-copied from the shifted position by the splice); the
+// screen UV is derived from a local the analysis found to hold the position by value, so in the
+// spliced text its reads of that local go through stereoshift_shifted_position().
 // RUN: %stereoshift --validate-each --verify %s -o %t.vert --report %t.json 2>%t.notes
-// RUN: FileCheck %s --check-prefix=NOTE --input-file %t.notes
-// NOTE: halo-recomputed.vert: note: GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: the halo pass changed the output 'outScreenUV', which is computed from the clip position (not a copy of it), and only the IR carries that
+// RUN: FileCheck %s --check-prefix=NOTE --allow-empty --input-file %t.notes
+// NOTE-NOT: re-emitted
+// RUN: %rmchecks %t.vert | FileCheck %s --check-prefix=TEXT
+// TEXT: outScreenUV = stereoshift_shifted_position(again).xy / stereoshift_shifted_position(again).w * 0.5 + 0.5;
+// TEXT: main_stereoshift_mono();
+// TEXT: outClip = gl_Position;
 // RUN: FileCheck %s --input-file %t.json
 // CHECK: "halo": {
 // CHECK-NEXT: "derived_outputs": [

@@ -1,48 +1,55 @@
 #version 300 es
+// stereoshift-expect: shift
+// Water-surface vertex shader: Gerstner-style waves; also outputs the clip position and screen UVs derived from it (halo case).
 
-invariant gl_Position;
+precision highp float;
 
-uniform mat4 uModel;
-uniform vec4 uWave;
-uniform float uTime;
-uniform mat4 uViewProj;
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec2 aTexCoord;
+
+uniform highp mat4 uModel;
+uniform highp mat4 uViewProj;
+uniform highp float uTime;
+uniform highp vec4 uWave;   // xy = direction, z = amplitude, w = wavelength
+
+out highp vec4 vClipPos;
+out highp vec2 vScreenUV;
+out mediump vec2 vTexCoord;
+out mediump vec3 vNormal;
+
+/* ---- stereoshift ---- */ highp vec4 stereoshift_shifted_position(highp vec4 stereoshift_p); /* ---- end stereoshift ---- */ void main_stereoshift_mono()
+{
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    float k = 6.2831853 / uWave.w;
+    float phase = k * dot(uWave.xy, world.xz) - uTime * 1.5;
+    world.y += uWave.z * sin(phase);
+    vec2 slope = uWave.xy * (uWave.z * k * cos(phase));
+    vNormal = normalize(vec3(-slope.x, 1.0, -slope.y));
+
+    vTexCoord = aTexCoord + uWave.xy * uTime * 0.02;
+    gl_Position = uViewProj * world;
+    vClipPos = gl_Position;
+    vScreenUV = stereoshift_shifted_position(gl_Position).xy / stereoshift_shifted_position(gl_Position).w * 0.5 + 0.5;
+}
+// ---- stereoshift: stereo parameters and clip-space shift (injected) ----
 uniform float eyeSign;
 uniform float separation;
 uniform float convergence;
-
-layout(location = 0) in vec3 aPosition;
-out mediump vec3 vNormal;
-out mediump vec2 vTexCoord;
-layout(location = 1) in vec2 aTexCoord;
-out vec4 vClipPos;
-out vec2 vScreenUV;
-
+highp vec4 stereoshift_shifted_position(highp vec4 stereoshift_p)
+{
+    if (eyeSign != 0.0 && abs(stereoshift_p.w - 1.0) > 9.99999975e-06 && !isinf(stereoshift_p.w))
+    {
+        stereoshift_p.x = stereoshift_p.x + (eyeSign * separation) * (stereoshift_p.w - convergence);
+    }
+    return stereoshift_p;
+}
 void main()
 {
-    vec4 world = uModel * vec4(aPosition, 1.0);
-    float k = 6.283185482025146484375 / uWave.w;
-    float phase = (k * dot(uWave.xy, world.xz)) - (uTime * 1.5);
-    world.y += (uWave.z * sin(phase));
-    vec2 slope = uWave.xy * ((uWave.z * k) * cos(phase));
-    vNormal = normalize(vec3(-slope.x, 1.0, -slope.y));
-    vTexCoord = aTexCoord + ((uWave.xy * uTime) * 0.0199999995529651641845703125);
-    vec4 _103 = uViewProj * world;
-    gl_Position = _103;
-    vec4 _108 = gl_Position;
-    _108.x = ((eyeSign != 0.0) && ((abs(_108.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_108.w)))) ? (_108.x + ((eyeSign * separation) * (_108.w - convergence))) : _108.x;
-    vClipPos = _108;
-    vec4 _111 = gl_Position;
-    vec2 _116 = vec2(gl_Position.w);
-    vec2 _120 = vec2(0.5);
-    _111.x = ((eyeSign != 0.0) && ((abs(_111.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(_111.w)))) ? (_111.x + ((eyeSign * separation) * (_111.w - convergence))) : _111.x;
-    vScreenUV = ((_111.xy / _116) * 0.5) + _120;
-    if ((eyeSign != 0.0) && ((abs(gl_Position.w - 1.0) > 9.9999997473787516355514526367188e-06) && (!isinf(gl_Position.w))))
+    main_stereoshift_mono();
+    if (eyeSign != 0.0 && abs(gl_Position.w - 1.0) > 9.99999975e-06 && !isinf(gl_Position.w))
     {
-        float _193 = gl_Position.w - convergence;
-        float _194 = eyeSign * separation;
-        float _195 = _194 * _193;
-        float _196 = gl_Position.x + _195;
-        gl_Position.x = _196;
+        gl_Position.x = gl_Position.x + (eyeSign * separation) * (gl_Position.w - convergence);
     }
+    vClipPos = gl_Position;
 }
-
+// ---- end stereoshift ----
