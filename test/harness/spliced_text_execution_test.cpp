@@ -33,11 +33,11 @@ struct PipelineCase {
   std::vector<fs::path> stages;  // pre-rasterization stages, in pipeline order
 };
 
-std::vector<PipelineCase> glslPipelines() {
+std::vector<PipelineCase> glslPipelines(const fs::path& root) {
   std::map<std::string, std::vector<fs::path>> groups;
-  for (auto& e : fs::recursive_directory_iterator(fs::path(CORPUS_DIR))) {
+  for (auto& e : fs::recursive_directory_iterator(root)) {
     if (!e.is_regular_file()) continue;
-    std::string rel = fs::relative(e.path(), CORPUS_DIR).string();
+    std::string rel = fs::relative(e.path(), root).string();
     if (rel.find("hlsl") != std::string::npos || rel.find("d3d") != std::string::npos ||
         rel.find("include") != std::string::npos)
       continue;
@@ -49,7 +49,7 @@ std::vector<PipelineCase> glslPipelines() {
   std::vector<PipelineCase> cases;
   for (auto& [key, stages] : groups) {
     std::sort(stages.begin(), stages.end(), [&](auto& a, auto& b) { return order(a) < order(b); });
-    cases.push_back({fs::relative(key, CORPUS_DIR).string(), stages});
+    cases.push_back({fs::relative(key, root).string(), stages});
   }
   return cases;
 }
@@ -143,13 +143,18 @@ TEST_P(SplicedTextExecution, SplicedTextMatchesReference) {
   EXPECT_EQ(r.disagreeingComponents, 0u) << (r.problems.empty() ? "" : r.problems.front());
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, SplicedTextExecution, ::testing::ValuesIn(glslPipelines()),
-                         [](const ::testing::TestParamInfo<PipelineCase>& info) {
-                           std::string n = info.param.name;
-                           for (char& ch : n)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return n;
-                         });
+std::string caseName(const ::testing::TestParamInfo<PipelineCase>& info) {
+  std::string n = info.param.name;
+  for (char& ch : n)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, SplicedTextExecution, ::testing::ValuesIn(glslPipelines(CORPUS_DIR)), caseName);
+// The harness's own splice cases (shaders/splice/): halo outputs derived from the position in the
+// legacy dialects and through a local, which the corpus does not write.
+INSTANTIATE_TEST_SUITE_P(Harness, SplicedTextExecution, ::testing::ValuesIn(glslPipelines(SPLICE_SHADER_DIR)),
+                         caseName);
 
 // 3Dmigoto dumps spliced with --eye-source 3dmigoto: the spliced text (the dump's `#define cmp -`
 // and SV_POSITION0 kept) compiled again, run against the original with StereoParams texel 0 set

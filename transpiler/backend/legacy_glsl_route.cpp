@@ -62,14 +62,23 @@ class LegacyGlslRoute final : public BackEndRoute {
     // The splice renders the eye parameters, the shift and halo copies.
     for (const auto& pass : ctx.record.passesWithEditsBeyond(kGlslSpliceRenders))
       drop("what the " + pass + " pass changed");
-    // Halo outputs: exact copies of gl_Position are re-copied after the shift; derived ones are not.
+    // Halo outputs: exact copies of gl_Position are re-copied after the shift; derived ones read the
+    // position through the shift where the analysis says how their one assignment reads it
+    // (HaloFacts::DerivedText), else they are left out.
     std::vector<std::string> copies = exactPositionCopies(r.input.contents);
-    if (ctx.record.halo.shiftedOutputs)
-      for (const auto& out : *ctx.record.halo.shiftedOutputs) {
+    const HaloFacts& halo = ctx.record.halo;
+    if (halo.shiftedOutputs)
+      for (const auto& out : *halo.shiftedOutputs) {
         std::string name = sourceName(out);
+        auto derived = std::find_if(halo.derivedTexts.begin(), halo.derivedTexts.end(),
+                                    [&](const HaloFacts::DerivedText& t) { return t.output == out; });
         if (std::find(copies.begin(), copies.end(), name) != copies.end()) {
           if (std::find(splice.haloCopies.begin(), splice.haloCopies.end(), name) == splice.haloCopies.end())
             splice.haloCopies.push_back(name);
+        } else if (derived != halo.derivedTexts.end()) {
+          GlslSpliceOptions::DerivedHalo text{sourceName(derived->path), {}};
+          for (const auto& position : derived->positionNames) text.positionNames.push_back(sourceName(position));
+          splice.derivedHalos.push_back(std::move(text));
         } else {
           drop("the halo fix of output '" + name + "' (derived from the clip position, not a plain copy)");
         }
