@@ -407,6 +407,26 @@ class PerEyeViewPass final : public Pass {
   }
 
  private:
+  // CameraText::holderType: the name of the plain struct the access starts with, if it does.
+  static std::string holderTypeName(const Module& m, const Slot& slot) {
+    const Instruction* variable = m.definition(slot.variable);
+    if (!variable || slot.indices.empty()) return {};
+    uint32_t type = m.pointeeType(variable->typeId);
+    if (m.name(slot.variable).empty()) {  // an anonymous block: the text starts at its member
+      const Instruction* block = m.definition(type);
+      if (!block || block->opcode != spv::OpTypeStruct || slot.indices.size() < 2 ||
+          slot.indices[0] >= block->operands.size())
+        return {};
+      type = block->operand(slot.indices[0]);
+    }
+    const Instruction* holder = m.definition(type);
+    if (!holder || holder->opcode != spv::OpTypeStruct || m.hasDecoration(type, spv::DecorationBlock) ||
+        m.hasDecoration(type, spv::DecorationBufferBlock))
+      return {};
+    std::string name = m.name(type);
+    return name.starts_with("gl_") || name.find("stereoshift_") != std::string::npos ? std::string() : name;
+  }
+
   // The camera and its offset as the source text names them, for a splice (run_record.h).
   static void recordCameraText(const Module& m, const Slot& camera, const OffsetSource& source, PerEyeViewFacts& facts) {
     CameraText text;
@@ -422,6 +442,7 @@ class PerEyeViewPass final : public Pass {
     }
     text.access = *access;
     text.components = type->operand(1);
+    text.holderType = holderTypeName(m, named);
     text.offset = source.kind == OffsetSource::InverseViewProjection ? CameraText::InverseViewProjection
                   : source.kind == OffsetSource::InvertedClipMatrices ? CameraText::InvertedClipMatrices
                                                                       : CameraText::EyeOffsetParams;

@@ -151,6 +151,10 @@ struct CameraText {
   // The camera is the translation of `inverse(access)` (a view matrix inverted in the shader):
   // the text's `inverse(access)` is what moves, its column 3 by the offset.
   bool inverseOf = false;
+  // The struct type of the access's first part when that is a plain struct (`CameraData` for
+  // `camera.position`, `camera` a struct uniform or an anonymous block's struct member): a read of
+  // that struct whole (`CameraData cam = camera;`) gives a copy whose camera is this eye's.
+  std::string holderType;
 };
 
 struct PerEyeViewFacts {

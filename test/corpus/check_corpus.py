@@ -159,6 +159,7 @@ def undo_inline_edits(text):
     text = unwrap_calls(text, "stereoshift_reproject_")  # a re-projection of a corrected position
     text = unwrap_calls(text, "stereoshift_view_ray_")  # a view ray's position through its helper
     text = unwrap_calls(text, "stereoshift_shifted_position")  # a derived output's read of the position
+    text = unwrap_calls(text, "stereoshift_holder_")  # a struct holding the camera, read whole
     return re.sub(r"\b(\w+)_stereoshift_mono\b", r"\1", text)
 
 

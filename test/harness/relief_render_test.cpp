@@ -339,6 +339,7 @@ struct Resources {
   std::vector<UniformBuffer> buffers;
   std::vector<SampledTexture> textures;
   std::vector<std::string> unfilled;  // block members no value was given for (a test error if read)
+  std::vector<uint8_t> pushConstants;  // the push-constant block, filled likewise
 };
 
 // The texture a sampler's name asks for: a height field (bumps on a grid, `height`/`depth`/`disp`,
@@ -353,7 +354,7 @@ SampledTexture textureFor(const std::string& name, uint32_t set, uint32_t bindin
   if (type == VK_DESCRIPTOR_TYPE_SAMPLER) return t;
   const bool normalHeight = lower.find("normalheight") != std::string::npos;
   const bool height = !normalHeight && (lower.find("height") != std::string::npos || lower.find("depth") != std::string::npos ||
-                                        lower.find("disp") != std::string::npos);
+                                        lower.find("disp") != std::string::npos || lower.find("relief") != std::string::npos);
   const bool normal = !normalHeight && lower.find("normal") != std::string::npos;
   for (uint32_t y = 0; y < kTexture; ++y)
     for (uint32_t x = 0; x < kTexture; ++x) {
@@ -396,7 +397,8 @@ Resources reflectResources(const std::vector<spirv::Module>& stages, const std::
         out.textures.push_back(textureFor(m.name(inst.resultId), set, binding, kind));
         continue;
       }
-      if (storage != spv::StorageClassUniform || !m.hasDecoration(type, spv::DecorationBlock)) continue;
+      const bool push = storage == spv::StorageClassPushConstant;
+      if ((storage != spv::StorageClassUniform && !push) || !m.hasDecoration(type, spv::DecorationBlock)) continue;
       const spirv::Instruction* block = m.definition(type);
       std::vector<uint8_t> bytes;
       for (uint32_t member = 0; member < block->operands.size(); ++member) {
@@ -411,6 +413,10 @@ Resources reflectResources(const std::vector<spirv::Module>& stages, const std::
         std::memcpy(bytes.data() + offset, it->second.data(), it->second.size() * 4);
       }
       bytes.resize((bytes.size() + 15) / 16 * 16, 0);
+      if (push) {  // one range for every stage, as the harness binds it
+        if (out.pushConstants.size() < bytes.size()) out.pushConstants = std::move(bytes);
+        continue;
+      }
       auto at = bufferAt.find({set, binding});
       if (at == bufferAt.end()) {
         bufferAt[{set, binding}] = out.buffers.size();
@@ -572,6 +578,7 @@ void renderTutorialCase(VulkanContext& context, const TutorialCase& c, bool spli
     draw.pipeline.vertexCount = 6;
     draw.pipeline.uniformBuffers = resources.buffers;
     draw.pipeline.textures = resources.textures;
+    draw.pipeline.pushConstants = resources.pushConstants;
     request.draws = {draw};
     RenderResult result = context.render(request);
     EXPECT_TRUE(result.ok()) << result.error;
@@ -641,6 +648,15 @@ std::map<std::string, Words> vulkanCamera(const M& view, const M& proj, const rt
           {"cameraPos", floats({camera[0], camera[1], camera[2], 1})}};
 }
 
+// Vulkan GLSL with the camera in a struct (`CameraData { view; projection; position; }`) that the
+// vertex stage copies whole into a local before reading it.
+std::map<std::string, Words> structCamera(const M& view, const M& proj, const rt::Vec3<double>& camera) {
+  Words whole = floats(view), projection = floats(proj), position = floats({camera[0], camera[1], camera[2], 1});
+  whole.insert(whole.end(), projection.begin(), projection.end());  // std140: view, projection, position
+  whole.insert(whole.end(), position.begin(), position.end());
+  return {{"camera", whole}, {"model", floats(kIdentity)}};
+}
+
 // D3D-style HLSL: one cbuffer with the world and view-projection matrices and the eye position.
 std::map<std::string, Words> hlslCamera(const M& view, const M& proj, const rt::Vec3<double>& camera) {
   return {{"gWorld", floats(kIdentity)},
@@ -671,6 +687,13 @@ std::vector<TutorialCase> tutorialCases() {
                       {"parallaxBias", floats({-0.02})},
                       {"numLayers", floats({48})},
                       {"mappingMode", integer(mode)}}});
+  // The camera struct copied whole (`CameraData cam = camera;`): spliced, that copy is taken through
+  // stereoshift_holder_camera(), which gives it this eye's camera; the fragment stage relief-maps
+  // with a linear then binary search.
+  cases.push_back({"vk450_camera_struct_copied_whole",
+                   {"vk450/camera_block.vert", "vk450/camera_block.frag"},
+                   structCamera,
+                   {{"depthScale", floats({kHeightScale})}}});
   // D3D-style HLSL: one cbuffer with the world and view-projection matrices and the eye position,
   // an output struct; the pixel shader ray-marches with SampleGrad. Spliced, the camera's offset goes
   // through the inverse of gViewProj, which the splice writes as its own cofactor inverse.

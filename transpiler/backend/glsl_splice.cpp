@@ -276,6 +276,9 @@ size_t postfixEnd(const std::vector<Word>& w, size_t k) {
   return end;
 }
 
+// The helper that returns a copy of the struct `holder` with this eye's camera in it.
+std::string holderFunction(const std::string& holder) { return "stereoshift_holder_" + holder; }
+
 // Per-eye cameras: every read of a camera in a function body wrapped as `function(camera)`, the
 // helper's prototype before each top-level function that reads it. Refused where the text is not
 // plain enough to be sure every read is the camera's: a read in a macro, a local, parameter or
@@ -319,6 +322,15 @@ bool wrapCameraReads(const std::vector<Word>& w, const Scopes& scopes, const Gls
       size_t last = accessEnd(w, k, parts);
       if (last == std::string::npos) {
         if (k + 1 < w.size() && w[k + 1].text == ".") continue;  // another member
+        // The struct holding the camera read whole: a copy of it with this eye's camera.
+        if (!camera.holderType.empty() && parts.size() > 1 && !(k + 1 < w.size() && w[k + 1].text == "[")) {
+          wrap(w, scopes, k, k, holderFunction(parts[0]),
+               markedPrototype(camera.holderType + " " + holderFunction(parts[0]) + "(" + camera.holderType +
+                               " stereoshift_holder)"),
+               inserts);
+          ++reads;
+          continue;
+        }
         error = "'" + parts[0] + "', which holds the camera '" + camera.access + "', is used whole";
         return false;
       }
@@ -492,6 +504,14 @@ std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind
     std::string offset = c.type == "vec4" ? "vec4(" + c.offset + ", 0.0)" : c.offset;
     t += highp + c.type + " " + c.function + "(" + highp + c.type + " stereoshift_camera)" + nl + "{" + nl + ind +
          "return stereoshift_camera + " + offset + ";" + nl + "}" + nl;
+    if (!c.holderType.empty()) {
+      // The holder struct read whole: the copy's camera member through the helper above.
+      const std::string part = c.access.substr(0, c.access.find('.'));
+      const std::string member = c.access.substr(part.size());  // `.position`
+      t += c.holderType + " " + holderFunction(part) + "(" + c.holderType + " stereoshift_holder)" + nl + "{" + nl +
+           ind + "stereoshift_holder" + member + " = " + c.function + "(stereoshift_holder" + member + ");" + nl +
+           ind + "return stereoshift_holder;" + nl + "}" + nl;
+    }
   }
   const std::string scale = "(" + o.eyeSignName + " * " + o.separationName + ")";
   for (const auto& u : o.unprojections) {
@@ -556,7 +576,10 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
   std::string nl = original.find("\r\n") != std::string::npos ? "\r\n" : "\n";
   std::vector<Word> originalWords = words(original);
   std::set<std::string> helpers;
-  for (const auto& c : options.cameras) helpers.insert(c.function);
+  for (const auto& c : options.cameras) {
+    helpers.insert(c.function);
+    if (!c.holderType.empty()) helpers.insert(holderFunction(c.access.substr(0, c.access.find('.'))));
+  }
   for (const auto& u : options.unprojections) helpers.insert(u.function);
   for (const auto& r : options.viewRays) helpers.insert(r.function);
   if (!options.derivedHalos.empty()) helpers.insert(kShiftedPosition);

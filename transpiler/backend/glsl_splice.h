@@ -79,6 +79,9 @@ struct GlslSpliceOptions : ShiftSpec {
     // `inverse(access)` is wrapped instead (a camera taken from an inverted view matrix): the helper
     // takes and returns the mat4 and moves its column 3.
     bool inverseOf = false;
+    // The struct type of the access's first part (`CameraData` for `camera.position`): a read of that
+    // part whole becomes `stereoshift_holder_<part>(part)`, a copy whose camera is this eye's.
+    std::string holderType;
   };
   std::vector<CameraWrap> cameras;
   // Unprojections made this eye's (deferred-unprojection): every `<matrix> * <operand>` in a function

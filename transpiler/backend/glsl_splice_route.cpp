@@ -142,6 +142,7 @@ bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
     wrap.type = c.components == 4 ? "vec4" : "vec3";
     wrap.function = std::string(c.inverseOf ? "stereoshift_eye_inverse_" : "stereoshift_eye_") + c.access;
     wrap.inverseOf = c.inverseOf;
+    wrap.holderType = c.inverseOf ? std::string() : c.holderType;
     std::replace(wrap.function.begin(), wrap.function.end(), '.', '_');
     if (c.offset == CameraText::EyeOffsetParams) {
       wrap.offset = "vec3(" + eyeParamText(r, spec, kEyeOffsetX) + ", " + eyeParamText(r, spec, kEyeOffsetY) + ", " +
@@ -165,6 +166,11 @@ bool perEyeCameras(const EmitRequest& r, GlslSpliceOptions& spec, std::string& w
     }
     spec.cameras.push_back(std::move(wrap));
   }
+  // One struct holding two cameras: its whole reads cannot take both helpers (refused as before).
+  for (auto& a : spec.cameras)
+    for (auto& b : spec.cameras)
+      if (&a != &b && !a.holderType.empty() && a.access.substr(0, a.access.find('.')) == b.access.substr(0, b.access.find('.')))
+        a.holderType.clear(), b.holderType.clear();
   return true;
 }
 
