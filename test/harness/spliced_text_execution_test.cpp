@@ -31,6 +31,7 @@ namespace {
 struct PipelineCase {
   std::string name;
   std::vector<fs::path> stages;  // pre-rasterization stages, in pipeline order
+  EyeSource eyeSource = EyeSource::Auto;  // --eye-source of the conversion
 };
 
 std::vector<PipelineCase> glslPipelines(const fs::path& root) {
@@ -77,6 +78,7 @@ TEST_P(SplicedTextExecution, SplicedTextMatchesReference) {
     ASSERT_TRUE(readFile(path.string(), &inputs.back().contents));
   }
   TranspileOptions pipelineOptions;
+  pipelineOptions.eye.source = c.eyeSource;
   pipelineOptions.includeDirs = {(c.stages.front().parent_path() / "include").string()};
   std::vector<TranspileResult> all = transpilePipeline(inputs, pipelineOptions);
   TranspileOptions viaIr = pipelineOptions;
@@ -155,6 +157,15 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SplicedTextExecution, ::testing::ValuesIn(glslP
 // legacy dialects and through a local, which the corpus does not write.
 INSTANTIATE_TEST_SUITE_P(Harness, SplicedTextExecution, ::testing::ValuesIn(glslPipelines(SPLICE_SHADER_DIR)),
                          caseName);
+// --eye-source push-constant on shaders with their own push-constant block: the splice inserts the
+// eye parameters into that block (the corpus's Vulkan shaders that have one, and the harness's own).
+INSTANTIATE_TEST_SUITE_P(
+    PushConstants, SplicedTextExecution,
+    ::testing::Values(
+        PipelineCase{"vk450_push_constants", {fs::path(SPLICE_SHADER_DIR) / "vk450_push_constants.vert"}, EyeSource::PushConstant},
+        PipelineCase{"vk450_forward_pbr", {fs::path(CORPUS_DIR) / "vk450/forward_pbr.vert"}, EyeSource::PushConstant},
+        PipelineCase{"vk450_shadow_cascade", {fs::path(CORPUS_DIR) / "vk450/shadow_cascade.vert"}, EyeSource::PushConstant}),
+    caseName);
 
 // 3Dmigoto dumps spliced with --eye-source 3dmigoto: the spliced text (the dump's `#define cmp -`
 // and SV_POSITION0 kept) compiled again, run against the original with StereoParams texel 0 set

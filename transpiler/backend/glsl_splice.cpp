@@ -98,7 +98,7 @@ std::string shiftStatements(const GlslSpliceOptions& o, const std::string& ind, 
 
 std::string declarationText(const GlslSpliceOptions& o, const std::string& nl) {
   std::string t;
-  if (o.declarations.empty())
+  if (o.declarations.empty() && o.pushConstantMembers.empty())
     for (const std::string* name : {&o.eyeSignName, &o.separationName, &o.convergenceName})
       t += "uniform float " + *name + ";" + nl;
   for (const auto& line : o.declarations) t += line + nl;
@@ -382,6 +382,44 @@ bool wrapUnprojections(const std::vector<Word>& w, const Scopes& scopes, const G
   return true;
 }
 
+// The shader's own push-constant block (`layout(push_constant) uniform B { ... } pc;`) extended by
+// the eye parameters: one marked insertion before its closing brace. Refused where the text does not
+// show one such block plainly (none, several under #if branches, one inside a macro).
+bool extendPushConstantBlock(const std::vector<Word>& w, const GlslSpliceOptions& o, Inserts& inserts,
+                             std::string& error) {
+  if (o.pushConstantMembers.empty()) return true;
+  std::vector<size_t> blocks;
+  for (size_t k = 0; k < w.size(); ++k) {
+    if (w[k].text != "push_constant") continue;
+    if (w[k].inDefine) {
+      error = "the push-constant block is declared inside a macro";
+      return false;
+    }
+    blocks.push_back(k);
+  }
+  if (blocks.size() != 1) {
+    error = "the text declares " + std::to_string(blocks.size()) + " push-constant blocks, the eye parameters join one";
+    return false;
+  }
+  size_t open = blocks[0];
+  while (open < w.size() && w[open].text != "{" && w[open].text != ";") ++open;
+  size_t close = open < w.size() && w[open].text == "{" ? open : std::string::npos;
+  for (int depth = 0; close != std::string::npos && close < w.size(); ++close) {
+    if (w[close].inDefine) close = std::string::npos;
+    if (close == std::string::npos) break;
+    if (w[close].text == "{") ++depth;
+    if (w[close].text == "}" && --depth == 0) break;
+  }
+  if (close == std::string::npos || close >= w.size()) {
+    error = "the push-constant block has no plain `{ ... }` in the text";
+    return false;
+  }
+  std::string members;
+  for (const auto& member : o.pushConstantMembers) members += member + " ";
+  inserts[w[close].begin] += "/* ---- stereoshift ---- */ " + members + "/* ---- end stereoshift ---- */ ";
+  return true;
+}
+
 // Whether the words after a name's postfix end `end` assign it by a compound operator or step it
 // (`+=`, `<<=`, `++`), which a plain `=` is not.
 bool compoundAssigned(const std::vector<Word>& w, size_t k, size_t end) {
@@ -590,13 +628,14 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
     }
   // The wraps first: every later edit reads the text with them (they add no `main`, no emit).
   std::string source = original;
-  if (!helpers.empty()) {
+  if (!helpers.empty() || !options.pushConstantMembers.empty()) {
     Scopes scopes = scopesOf(originalWords);
     Inserts inserts;
     if (!wrapCameraReads(originalWords, scopes, options, inserts, result.error) ||
         !wrapUnprojections(originalWords, scopes, options, inserts, result.error) ||
         !wrapViewRays(original, originalWords, scopes, options, inserts, result.error) ||
-        !wrapDerivedHalos(originalWords, scopes, options, inserts, result.error))
+        !wrapDerivedHalos(originalWords, scopes, options, inserts, result.error) ||
+        !extendPushConstantBlock(originalWords, options, inserts, result.error))
       return result;
     source = applyInserts(original, inserts);
   }

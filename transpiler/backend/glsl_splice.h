@@ -24,7 +24,8 @@
 //     re-projection of a corrected position `P * v`, `stereoshift_reproject_<P>(P * v)`; a view
 //     ray's position `p = ray * depth;`, `p = stereoshift_view_ray_<p>(ray * depth);`;
 //   - appended with it: the eye parameters, as the passes declared them (`declarations`: a uniform
-//     block with its layout, or loose uniforms when none are given).
+//     block with its layout, or loose uniforms when none are given); or, where they join the
+//     shader's own push-constant block, inserted in that block before its closing brace.
 //
 // Every edit outside the appended block is one of those renames or wraps; the appended block and
 // each prototype sit between the marker comments "---- stereoshift" and "---- end stereoshift".
@@ -58,6 +59,10 @@ struct GlslSpliceOptions : ShiftSpec {
   // names of the spec (loose uniforms). With a block, the spec's names are its members as the shift
   // reads them (`stereo.eyeSign`).
   std::vector<std::string> declarations;
+  // The shader's own push-constant block takes the eye parameters (--eye-source push-constant on a
+  // shader that has one): these member declarations go in one marked insertion before its closing
+  // brace, and nothing is declared in the appended block.
+  std::vector<std::string> pushConstantMembers;
   // Outputs (as written in the source) that are exact copies of gl_Position: given the shifted value.
   std::vector<std::string> haloCopies;
   // Outputs computed from the position (halo: `vScreenUV = gl_Position.xy / gl_Position.w ...`):

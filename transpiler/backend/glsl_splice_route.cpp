@@ -81,8 +81,23 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
     }
     case EyeSource::PushConstant:
       if (ctx.eye.firstMember != 0) {
-        why = "the eye parameters join the shader's own push-constant block, which the splice does not edit";
-        return false;
+        // They join the shader's own block after its last member (eye_param_emitter.cpp): the same
+        // offsets as the IR's, written out where the version has `offset` (GLSL 440), else the
+        // packing's own (4-byte floats right after the last member, std430).
+        const std::string instance = ctx.module.name(ctx.eye.variable);
+        const bool explicitOffsets = !info.es && info.version >= 440;
+        uint32_t offset = facts.pushConstantOffset.value_or(0);
+        for (const auto& name : names) {
+          spec.pushConstantMembers.push_back(
+              (explicitOffsets ? "layout(offset = " + std::to_string(offset) + ") " : std::string()) +
+              (info.es ? "highp " : "") + "float " + name + ";");
+          offset += 4;
+        }
+        const std::string prefix = instance.empty() ? std::string() : instance + ".";
+        spec.eyeSignName = prefix + names[0];
+        spec.separationName = prefix + names[1];
+        spec.convergenceName = prefix + names[2];
+        return true;
       }
       [[fallthrough]];
     default: {
