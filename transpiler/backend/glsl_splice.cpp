@@ -609,6 +609,26 @@ std::vector<std::string> exactPositionCopies(const std::string& source) {
   return out;
 }
 
+// The extensions the edits need, in a marked block after the #version line (before any code, as
+// GLSL wants #extension); false where the text has no #version line.
+bool insertExtensions(const std::string& source, const GlslSpliceOptions& o, const std::string& nl, Inserts& inserts,
+                      std::string& error) {
+  if (o.extensions.empty()) return true;
+  source::LexedText lexed(source);
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    const source::Token& t = lexed[k];
+    if (t.kind != source::TokenKind::Directive || t.directive != source::DirectiveKind::Version) continue;
+    size_t end = source.find('\n', t.begin);
+    if (end == std::string::npos) break;
+    std::string block = "// ---- stereoshift: extensions (injected) ----" + nl;
+    for (const auto& name : o.extensions) block += "#extension " + name + " : require" + nl;
+    inserts[end + 1] += block + "// ---- end stereoshift ----" + nl;
+    return true;
+  }
+  error = "the text has no #version line to put `#extension " + o.extensions.front() + "` after";
+  return false;
+}
+
 GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceOptions& options) {
   GlslSpliceResult result;
   std::string nl = original.find("\r\n") != std::string::npos ? "\r\n" : "\n";
@@ -628,14 +648,15 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
     }
   // The wraps first: every later edit reads the text with them (they add no `main`, no emit).
   std::string source = original;
-  if (!helpers.empty() || !options.pushConstantMembers.empty()) {
+  if (!helpers.empty() || !options.pushConstantMembers.empty() || !options.extensions.empty()) {
     Scopes scopes = scopesOf(originalWords);
     Inserts inserts;
     if (!wrapCameraReads(originalWords, scopes, options, inserts, result.error) ||
         !wrapUnprojections(originalWords, scopes, options, inserts, result.error) ||
         !wrapViewRays(original, originalWords, scopes, options, inserts, result.error) ||
         !wrapDerivedHalos(originalWords, scopes, options, inserts, result.error) ||
-        !extendPushConstantBlock(originalWords, options, inserts, result.error))
+        !extendPushConstantBlock(originalWords, options, inserts, result.error) ||
+        !insertExtensions(original, options, nl, inserts, result.error))
       return result;
     source = applyInserts(original, inserts);
   }

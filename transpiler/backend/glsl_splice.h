@@ -59,6 +59,9 @@ struct GlslSpliceOptions : ShiftSpec {
   // names of the spec (loose uniforms). With a block, the spec's names are its members as the shift
   // reads them (`stereo.eyeSign`).
   std::vector<std::string> declarations;
+  // Extensions the edits need (`GL_EXT_multiview` for gl_ViewIndex), each `#extension NAME : require`
+  // in a marked block right after the #version line.
+  std::vector<std::string> extensions;
   // The shader's own push-constant block takes the eye parameters (--eye-source push-constant on a
   // shader that has one): these member declarations go in one marked insertion before its closing
   // brace, and nothing is declared in the appended block.

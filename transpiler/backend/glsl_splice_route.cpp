@@ -137,8 +137,9 @@ bool renderEyeParams(const EmitRequest& r, GlslSpliceOptions& spec, std::string&
 std::string eyeParamText(const EmitRequest& r, const GlslSpliceOptions& spec, int which) {
   const std::vector<std::string>& names = r.context.record.eyeParams.names;
   std::string name = which < static_cast<int>(names.size()) ? names[static_cast<size_t>(which)] : std::string();
-  size_t dot = spec.eyeSignName.find('.');
-  return dot == std::string::npos ? name : spec.eyeSignName.substr(0, dot + 1) + name;
+  // The block's instance from separation's access (eyeSign may be multiview's expression).
+  size_t dot = spec.separationName.find('.');
+  return dot == std::string::npos ? name : spec.separationName.substr(0, dot + 1) + name;
 }
 
 // The per-eye cameras the passes made, as the splice writes them (glsl_splice.h); false with `why`
@@ -292,10 +293,17 @@ class GlslSpliceRoute final : public BackEndRoute {
     const PassContext& ctx = r.context;
     if (!takesGlslSpliceRoute(ctx.source, r.target, r.options))
       return RouteDecision::decline("not a GLSL pre-rasterisation stage kept in its own dialect");
-    if (ctx.options.eye.select != EyeSelect::Parameter)
-      return RouteDecision::decline(fallbackNote("the single-pass stereo modes are written by SPIRV-Cross"), true);
-    auto beyond =
-        ctx.record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera | EditKind::UnprojectionCorrection);
+    // Multiview on Vulkan GLSL: the eye sign is gl_ViewIndex's (GL_EXT_multiview). OpenGL's
+    // OVR_multiview (a num_views layout) and the instanced mode's routing stay SPIRV-Cross's.
+    const bool vulkanMultiview = ctx.options.eye.select == EyeSelect::ViewIndex && ctx.source.vulkan;
+    if (ctx.options.eye.select != EyeSelect::Parameter && !vulkanMultiview)
+      return RouteDecision::decline(fallbackNote("the single-pass stereo modes other than Vulkan multiview are "
+                                                 "written by SPIRV-Cross"),
+                                    true);
+    // Multiview's one change, the eye sign from the view index, is the splice's to write too.
+    auto beyond = ctx.record.passesWithEditsBeyond(kGlslSpliceRenders | EditKind::PerEyeCamera |
+                                                   (vulkanMultiview ? editSet(EditKind::SinglePassEye) : kNoEdits) |
+                                                   EditKind::UnprojectionCorrection);
     if (!beyond.empty())
       return RouteDecision::decline(fallbackNote("the splice cannot carry what the " + beyond.front() + " pass changed"),
                                     true);
@@ -330,8 +338,15 @@ class GlslSpliceRoute final : public BackEndRoute {
     if (!r.entryPointOption.empty()) splice.entryPoint = r.entryPointOption;
     std::string why;
     splice.shift = ctx.shiftPosition && ctx.record.madeEdit(EditKind::PositionShift);
-    if (!renderEyeParams(r, splice, why) || !haloCopies(r, splice, why) || !perEyeCameras(r, splice, why) ||
-        !unprojections(r, splice, why)) {
+    bool rendered = renderEyeParams(r, splice, why);
+    if (rendered && ctx.options.eye.select == EyeSelect::ViewIndex) {
+      // The eye sign the IR derives (eye_select.cpp): exactly -1 for view 0, +1 for view 1 (swapped
+      // with --swap-eyes); separation and convergence stay where the eye source put them. Set
+      // before the helpers are written, which read it.
+      splice.eyeSignName = ctx.options.eye.swapEyes ? "(gl_ViewIndex != 0 ? -1.0 : 1.0)" : "(gl_ViewIndex != 0 ? 1.0 : -1.0)";
+      if (!enablesExtension(r.input.contents, "GL_EXT_multiview")) splice.extensions.push_back("GL_EXT_multiview");
+    }
+    if (!rendered || !haloCopies(r, splice, why) || !perEyeCameras(r, splice, why) || !unprojections(r, splice, why)) {
       result.status = EmitResult::Declined;
       result.declinedBecause = fallbackNote(why);
       return result;

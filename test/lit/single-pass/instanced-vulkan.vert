@@ -6,7 +6,7 @@
 // The single-pass modes are not spliced into the source text: SPIRV-Cross re-emits, with a note.
 // RUN: %stereoshift --eye-source instanced --validate-each --verify %s -o %t.1.vert --report %t.json 2>%t.notes
 // RUN: FileCheck %s --check-prefix=NOTE --input-file %t.notes
-// NOTE: instanced-vulkan.vert: note: GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: the single-pass stereo modes are written by SPIRV-Cross
+// NOTE: instanced-vulkan.vert: note: GLSL re-emitted by SPIRV-Cross instead of spliced into its own text: the single-pass stereo modes other than Vulkan multiview are written by SPIRV-Cross
 // RUN: %rmchecks %t.1.vert | FileCheck %s
 // RUN: FileCheck %s --check-prefix=REPORT --input-file %t.json
 // RUN: %stereoshift --eye-source instanced %t.1.vert -o %t.2.vert
