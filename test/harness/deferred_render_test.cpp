@@ -324,34 +324,17 @@ const std::string kDumpViewRay = kDumpPrologue + R"(  r2.xy = r2.xy * r1.xx;
 // The view-ray form: the pixel's far-plane point through the inverse projection is the ray, scaled
 // so that its z is the linear view depth the G-buffer stores (a positive depth; view space -z).
 // The uniform block shares FrameUBO's first two members, so renderLighting() feeds it.
-// kViewRayFrag's position re-projected with the projection (after the lighting data in the frame
-// block): the NDC x it lands at minus the pixel's own.
-const char* kViewRayReprojectFrag = R"(#version 450
-layout(set = 0, binding = 0) uniform FrameUBO {
-    mat4 invProjection;
-    vec4 viewportSize;   // xy = pixels, zw = 1 / pixels
-    vec4 light[2];
-    mat4 projection;
-} frame;
-layout(set = 1, binding = 2) uniform sampler2D gLinearDepth;
-layout(location = 0) in vec2 inUV;
-layout(location = 0) out vec4 outColor;
-void main()
-{
-    vec2 ndc = gl_FragCoord.xy * frame.viewportSize.zw * 2.0 - 1.0;
-    vec4 farPoint = frame.invProjection * vec4(ndc, 1.0, 1.0);
-    vec3 ray = farPoint.xyz / farPoint.w;
-    float linearDepth = texelFetch(gLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
-    vec3 viewPos = ray * (linearDepth / -ray.z);
-    vec4 back = frame.projection * vec4(viewPos, 1.0);
-    outColor = unpackUnorm4x8(floatBitsToUint(back.x / back.w - ndc.x));
-}
-)";
-
+// With REPROJECT defined the position is re-projected with the projection (after the lighting data
+// renderLighting() writes to the frame block) and the output is the NDC x it lands at minus the
+// pixel's own.
 const char* kViewRayFrag = R"(#version 450
 layout(set = 0, binding = 0) uniform FrameUBO {
     mat4 invProjection;
     vec4 viewportSize;   // xy = pixels, zw = 1 / pixels
+#ifdef REPROJECT
+    vec4 light[2];
+    mat4 projection;
+#endif
 } frame;
 layout(set = 1, binding = 2) uniform sampler2D gLinearDepth;
 layout(location = 0) in vec2 inUV;
@@ -363,7 +346,12 @@ void main()
     vec3 ray = farPoint.xyz / farPoint.w;
     float linearDepth = texelFetch(gLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
     vec3 viewPos = ray * (linearDepth / -ray.z);
+#ifdef REPROJECT
+    vec4 back = frame.projection * vec4(viewPos, 1.0);
+    outColor = unpackUnorm4x8(floatBitsToUint(back.x / back.w - ndc.x));
+#else
     outColor = unpackUnorm4x8(floatBitsToUint(viewPos[POSITION_COMPONENT]));
+#endif
 }
 )";
 
@@ -615,7 +603,7 @@ class DeferredRender : public ::testing::Test {
     append(frame, inv.data(), 16);
     append(frame, viewport, 4);
     append(frame, light, 8);
-    // The matrix the inverse undoes, after the rest (kViewRayReprojectFrag re-projects with it).
+    // The matrix the inverse undoes, after the rest (kViewRayFrag with REPROJECT re-projects with it).
     auto forward = toFloat(inverse(inverseViewProj));
     append(frame, forward.data(), 16);
     RenderRequest request;
@@ -1079,9 +1067,9 @@ TEST_F(DeferredRender, SplicedGlslViewRayWithinBoundOfTheTruePosition) {
 }
 
 // A corrected view-ray position re-projected with the mono projection (SSAO's samples, screen-space
-// reflections) must land where this eye's image has the point: kViewRayReprojectFrag re-projects
-// the pixel's own surface point, which in the eye's image is the pixel itself, and writes the NDC x
-// it lands at minus the pixel's. Through the SPIR-V route and the spliced text (the re-projection
+// reflections) must land where this eye's image has the point: kViewRayFrag with REPROJECT
+// re-projects the pixel's own surface point, which in the eye's image is the pixel itself, and
+// writes the NDC x it lands at minus the pixel's. Through the SPIR-V route and the spliced text (the re-projection
 // through stereoshift_reproject_frame_projection()) it is 0 within rounding: measured at most
 // 2.4e-7 (lavapipe, both eyes, both routes); with the view ray corrected and the re-projection's fix
 // taken out of the text, off by e*S*(1 - C/w): beyond 1000 times the bound at 57618 of 63100 pixels
@@ -1091,10 +1079,11 @@ TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
   const Mat4 monoInverseProjection = inverse(projection(0));
   const Mat4 mono = projection(0);
   TranspileOptions options;
-  Transpiled viaSpirv = compileTranspiled("reproject.frag", kViewRayReprojectFrag, options);
-  TranspileOptions textOptions;
+  options.defines = {"REPROJECT"};
+  Transpiled viaSpirv = compileTranspiled("reproject.frag", kViewRayFrag, options);
+  TranspileOptions textOptions = options;
   textOptions.target = TargetLanguage::Auto;
-  TranspileResult spliced = transpile(SourceFile{"reproject.frag", kViewRayReprojectFrag}, textOptions);
+  TranspileResult spliced = transpile(SourceFile{"reproject.frag", kViewRayFrag}, textOptions);
   ASSERT_TRUE(spliced.ok) << spliced.diagnostics.format();
   ASSERT_EQ(spliced.report.value("route", std::string()), "glsl-source-splice") << spliced.report.dump(2);
   const std::string wrapped = "stereoshift_reproject_frame_projection(";
