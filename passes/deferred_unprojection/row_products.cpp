@@ -1,6 +1,7 @@
 // See row_products.h: unprojections through cbuffer rows, as decompiled HLSL writes them.
 #include "passes/deferred_unprojection/row_products.h"
 
+#include "passes/analysis/uniform_slots.h"
 #include "passes/ir/walker.h"
 
 #include <glslang/SPIRV/GLSL.std.450.h>
@@ -440,7 +441,7 @@ struct RegisterAnalyses {
 
 struct Factors;
 void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth);
-bool texelOnly(const Sources& s);
+bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 
 // The view vectors c - p (c a cbuffer vector, p = q.xyz / q.w), x, y and z computed by one statement.
@@ -469,12 +470,21 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
       }
       if (!camera || !position) continue;
       const Instruction* divide = d.definition(position->term->id);
-      if (!divide || divide->opcode != spv::OpFDiv) continue;
-      auto laneOf = [&](uint32_t id) { return d.canonical({id, d.isVector(id) ? position->term->lane : 0}); };
-      if (laneOf(divide->operand(1)) != q[3]->at) continue;
-      const Lane numerator = laneOf(divide->operand(0));
+      auto laneOf = [&](uint32_t id, Lane at) { return d.canonical({id, d.isVector(id) ? at.lane : 0}); };
+      std::optional<Lane> numerator;
+      if (divide && divide->opcode == spv::OpFDiv && laneOf(divide->operand(1), *position->term) == q[3]->at)
+        numerator = laneOf(divide->operand(0), *position->term);
+      // Or times the reciprocal (fxc's rcp; the decompiler's `r.w = 1 / r.w; p = r.xyz * r.www;`).
+      for (int side = 0; divide && divide->opcode == spv::OpFMul && side < 2; ++side) {
+        const Lane other = laneOf(divide->operand(1 - side), *position->term);
+        const Instruction* r = d.definition(other.id);
+        if (r && r->opcode == spv::OpFDiv && analysis::constantValue(registers, r->operand(0)) == 0x3f800000u &&
+            laneOf(r->operand(1), other) == q[3]->at)
+          numerator = laneOf(divide->operand(side), *position->term);
+      }
+      if (!numerator) continue;
       for (uint32_t i = 0; i < 3; ++i)
-        if (numerator == q[i]->at) byValue[inst.resultId].push_back({lane, i, camera->coefficient});
+        if (*numerator == q[i]->at) byValue[inst.resultId].push_back({lane, i, camera->coefficient});
     }
   });
   std::vector<CameraTextFix> found;
@@ -522,8 +532,6 @@ bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   Sources s = sourcesOf(flow, d, inner);
   return (s.fragCoord || s.varying) && !s.arithmetic;
 }
-
-std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::array<const Member*, 4>& q, Lane x, Lane z);
 
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const spirv::Module& registers = a.registers;
@@ -629,10 +637,8 @@ struct Factors {
 };
 constexpr int kMaxFactorVisits = 32;
 
-// A value computed from texels, uniforms and constants only (a depth made linear, `1 / (a*t + b)`)
-// is one factor, not looked into.
-bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
-
+// A value computed from texels, uniforms and constants only (a depth made linear, `1 / (a*t + b)`,
+// texelOnly) is one factor, not looked into.
 void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth) {
   if (++out.visits > kMaxFactorVisits || out.tooLarge) {
     out.tooLarge = true;

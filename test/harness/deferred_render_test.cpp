@@ -972,6 +972,16 @@ TEST_F(DeferredRender, DumpStyleViewVectorGetsThisEyesCameraByExecution) {
   checkViewVector("5a6b7c8d9e0f1234-ps_replace.txt", kDumpViewVector.c_str(), "dump view vector");
 }
 
+// The same with the perspective divide written as fxc often compiles it, a reciprocal then a
+// product (`r3.w = 1 / r3.w; r2.xyz = r3.xyz * r3.www;`): the camera is found all the same.
+TEST_F(DeferredRender, DumpStyleViewVectorThroughAReciprocalGetsThisEyesCameraByExecution) {
+  std::string text = kDumpViewVector;
+  const std::string divide = "  r2.xyz = r3.xyz / r3.www;\n";
+  ASSERT_NE(text.find(divide), std::string::npos);
+  text.replace(text.find(divide), divide.size(), "  r3.w = 1 / r3.w;\n  r2.xyz = r3.xyz * r3.www;\n");
+  checkViewVector("5a6b7c8d9e0f1235-ps_replace.txt", text.c_str(), "dump view vector, reciprocal");
+}
+
 TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {
   checkScreenToWorld("4a5b6c7d8e9f0123-ps_replace.txt", kDumpScreenToWorld.c_str(), "dump screen to world");
 }
