@@ -45,6 +45,24 @@ bool isPureArithmetic(spv::Op op) {
   }
 }
 
+// The operands of a pure-arithmetic instruction that are values (ids): all but the literal indices
+// of extracts, inserts and shuffles and an ext-inst's set and number, as [first, last).
+std::pair<size_t, size_t> valueOperands(const Instruction& inst) {
+  size_t last = inst.operands.size();
+  if (inst.opcode == spv::OpCompositeExtract) last = 1;
+  if (inst.opcode == spv::OpCompositeInsert || inst.opcode == spv::OpVectorShuffle) last = 2;
+  return {inst.opcode == spv::OpExtInst ? 2 : 0, std::min(last, inst.operands.size())};
+}
+
+// How many stores in the module write (any part of) `variable`.
+int storesTo(const spirv::Module& m, uint32_t variable) {
+  int stores = 0;
+  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == variable) ++stores;
+  });
+  return stores;
+}
+
 // The source spelling of the output part `pointer` addresses (`vClip`, `surf.clip`, `copies[1]`):
 // its variable's name and, through constant access-chain indices, struct member names and array
 // indices. Empty for a vector component, a variable index or a missing name.
@@ -157,13 +175,8 @@ class HaloPass final : public Pass {
         }
       }
     // Only an output written once has one mono value to read back.
-    for (auto it = monoStoredTo.begin(); it != monoStoredTo.end();) {
-      int stores = 0;
-      spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
-        if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == it->first) ++stores;
-      });
-      it = stores == 1 ? std::next(it) : monoStoredTo.erase(it);
-    }
+    for (auto it = monoStoredTo.begin(); it != monoStoredTo.end();)
+      it = storesTo(m, it->first) == 1 ? std::next(it) : monoStoredTo.erase(it);
     readBackMonoValues(ctx, monoStoredTo);
     isPosition_ = nullptr;  // it refers to this run's numbering
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
@@ -179,12 +192,7 @@ class HaloPass final : public Pass {
     // The derived outputs as text: each stored once, by a store whose computation the text can show.
     facts.derivedTexts.clear();
     for (const auto& [target, text] : derivedTexts) {
-      int stores = 0;
-      spirv::forEachFunctionInstruction(m, [&, target = target](const Instruction& inst, const spirv::Function&,
-                                                               const spirv::Block&) {
-        if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == target) ++stores;
-      });
-      if (!text || stores != 1) {
+      if (!text || storesTo(m, target) != 1) {
         facts.derivedTexts.clear();
         break;
       }
@@ -286,8 +294,6 @@ class HaloPass final : public Pass {
   }
 
 
-  // Returns `value` itself when it does not depend on the position, else the id of a clone computed
-  // from the shifted position (instructions appended to `code`).
   // The name the source reads a position load by: a named variable (a local holding the position),
   // or gl_Position, a member of the built-in block. Empty otherwise.
   static std::string loadedName(const spirv::Module& m, uint32_t pointer) {
@@ -323,11 +329,8 @@ class HaloPass final : public Pass {
       }
       if (isPosition) plain = false;
       if (!isPureArithmetic(def->opcode)) return;
-      size_t firstLiteral = def->operands.size();
-      if (def->opcode == spv::OpCompositeExtract) firstLiteral = 1;
-      if (def->opcode == spv::OpCompositeInsert || def->opcode == spv::OpVectorShuffle) firstLiteral = 2;
-      for (size_t k = def->opcode == spv::OpExtInst ? 2 : 0; k < std::min(firstLiteral, def->operands.size()); ++k)
-        walk(def->operand(k), depth + 1);
+      auto [first, last] = valueOperands(*def);
+      for (size_t k = first; k < last; ++k) walk(def->operand(k), depth + 1);
     };
     walk(store.operand(1), 0);
     for (const auto& name : position)
@@ -337,6 +340,8 @@ class HaloPass final : public Pass {
     return text;
   }
 
+  // Returns `value` itself when it does not depend on the position, else the id of a clone computed
+  // from the shifted position (instructions appended to `code`).
   uint32_t cloneWithShift(PassContext& ctx, uint32_t value, const std::set<uint32_t>& positionValues,
                           std::vector<Instruction>& code, std::map<uint32_t, uint32_t>& cloned, int depth) {
     if (auto it = cloned.find(value); it != cloned.end()) return it->second;
@@ -350,13 +355,8 @@ class HaloPass final : public Pass {
     if (!def || depth > 64 || !isPureArithmetic(def->opcode)) return value;
     Instruction copy = *def;
     bool changed = false;
-    // Operand words that are ids: all for these opcodes except literal indices and ext-inst numbers.
-    size_t firstLiteral = copy.operands.size();
-    if (copy.opcode == spv::OpCompositeExtract) firstLiteral = 1;
-    if (copy.opcode == spv::OpCompositeInsert) firstLiteral = 2;
-    if (copy.opcode == spv::OpVectorShuffle) firstLiteral = 2;
-    for (size_t k = 0; k < std::min(firstLiteral, copy.operands.size()); ++k) {
-      if (copy.opcode == spv::OpExtInst && k < 2) continue;  // set id and instruction number
+    auto [first, last] = valueOperands(copy);
+    for (size_t k = first; k < last; ++k) {
       uint32_t replaced = cloneWithShift(ctx, copy.operands[k], positionValues, code, cloned, depth + 1);
       if (replaced != copy.operands[k]) {
         copy.operands[k] = replaced;

@@ -242,9 +242,9 @@ size_t accessEnd(const std::vector<Word>& w, size_t k, const std::vector<std::st
   return last;
 }
 
-// The word that closes the bracket opened at `open` (`(`, `[`), or npos.
+// The word that closes the bracket opened at `open` (`(`, `[`, `{`), or npos.
 size_t closing(const std::vector<Word>& w, size_t open) {
-  const std::string opener = w[open].text, closer = opener == "(" ? ")" : "]";
+  const std::string opener = w[open].text, closer = opener == "(" ? ")" : opener == "[" ? "]" : "}";
   int depth = 0;
   for (size_t k = open; k < w.size() && !w[k].inDefine; ++k) {
     if (w[k].text == opener) ++depth;
@@ -276,8 +276,10 @@ size_t postfixEnd(const std::vector<Word>& w, size_t k) {
   return end;
 }
 
-// The helper that returns a copy of the struct `holder` with this eye's camera in it.
-std::string holderFunction(const std::string& holder) { return "stereoshift_holder_" + holder; }
+// The first part of a camera's access (`camera` of `camera.position`): the struct holding it.
+std::string holderPart(const std::string& access) { return access.substr(0, access.find('.')); }
+// The helper that returns a copy of that struct with this eye's camera in it.
+std::string holderFunction(const std::string& access) { return "stereoshift_holder_" + holderPart(access); }
 
 // Per-eye cameras: every read of a camera in a function body wrapped as `function(camera)`, the
 // helper's prototype before each top-level function that reads it. Refused where the text is not
@@ -324,8 +326,8 @@ bool wrapCameraReads(const std::vector<Word>& w, const Scopes& scopes, const Gls
         if (k + 1 < w.size() && w[k + 1].text == ".") continue;  // another member
         // The struct holding the camera read whole: a copy of it with this eye's camera.
         if (!camera.holderType.empty() && parts.size() > 1 && !(k + 1 < w.size() && w[k + 1].text == "[")) {
-          wrap(w, scopes, k, k, holderFunction(parts[0]),
-               markedPrototype(camera.holderType + " " + holderFunction(parts[0]) + "(" + camera.holderType +
+          wrap(w, scopes, k, k, holderFunction(camera.access),
+               markedPrototype(camera.holderType + " " + holderFunction(camera.access) + "(" + camera.holderType +
                                " stereoshift_holder)"),
                inserts);
           ++reads;
@@ -403,14 +405,8 @@ bool extendPushConstantBlock(const std::vector<Word>& w, const GlslSpliceOptions
   }
   size_t open = blocks[0];
   while (open < w.size() && w[open].text != "{" && w[open].text != ";") ++open;
-  size_t close = open < w.size() && w[open].text == "{" ? open : std::string::npos;
-  for (int depth = 0; close != std::string::npos && close < w.size(); ++close) {
-    if (w[close].inDefine) close = std::string::npos;
-    if (close == std::string::npos) break;
-    if (w[close].text == "{") ++depth;
-    if (w[close].text == "}" && --depth == 0) break;
-  }
-  if (close == std::string::npos || close >= w.size()) {
+  size_t close = open < w.size() && w[open].text == "{" ? closing(w, open) : std::string::npos;
+  if (close == std::string::npos) {
     error = "the push-constant block has no plain `{ ... }` in the text";
     return false;
   }
@@ -544,9 +540,8 @@ std::string helperDefinitions(const GlslSpliceOptions& o, const std::string& ind
          "return stereoshift_camera + " + offset + ";" + nl + "}" + nl;
     if (!c.holderType.empty()) {
       // The holder struct read whole: the copy's camera member through the helper above.
-      const std::string part = c.access.substr(0, c.access.find('.'));
-      const std::string member = c.access.substr(part.size());  // `.position`
-      t += c.holderType + " " + holderFunction(part) + "(" + c.holderType + " stereoshift_holder)" + nl + "{" + nl +
+      const std::string member = c.access.substr(holderPart(c.access).size());  // `.position`
+      t += c.holderType + " " + holderFunction(c.access) + "(" + c.holderType + " stereoshift_holder)" + nl + "{" + nl +
            ind + "stereoshift_holder" + member + " = " + c.function + "(stereoshift_holder" + member + ");" + nl +
            ind + "return stereoshift_holder;" + nl + "}" + nl;
     }
@@ -636,7 +631,7 @@ GlslSpliceResult spliceGlslStereo(const std::string& original, const GlslSpliceO
   std::set<std::string> helpers;
   for (const auto& c : options.cameras) {
     helpers.insert(c.function);
-    if (!c.holderType.empty()) helpers.insert(holderFunction(c.access.substr(0, c.access.find('.'))));
+    if (!c.holderType.empty()) helpers.insert(holderFunction(c.access));
   }
   for (const auto& u : options.unprojections) helpers.insert(u.function);
   for (const auto& r : options.viewRays) helpers.insert(r.function);
