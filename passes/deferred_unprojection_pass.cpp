@@ -402,7 +402,8 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     std::string column;
     for (size_t i = 0; i < 4; ++i) column += (i ? ", " : "") + (p.fix.present[i] ? p.fix.column[i] : std::string("-"));
     entry.fix = "q - (" + column + ") * " + (p.fix.scaledByDepth ? "s.x*(|z| - s.y)*sign(z)" : "s.x*(1 - s.y*q.w)") +
-                " after line " + std::to_string(p.fix.afterLine) + ", before the divide";
+                " after line " + std::to_string(p.fix.afterLine) +
+                (p.fix.present[3] ? ", before the divide" : " (the point has no w: an affine map)");
     facts.fixed.push_back(entry);
     facts.textFixes.push_back(p.fix);
     recorded = true;

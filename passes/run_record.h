@@ -210,7 +210,9 @@ struct CameraTextFix {
   std::array<uint32_t, 3> lanes{};     // the lanes of v.x, v.y, v.z in the statement's value
   std::array<std::string, 3> camera;   // c, element by element: "cb0[6].x"
   std::array<std::string, 3> columnX;  // InvM[i][x], i = 0..2
-  std::array<std::string, 4> columnZ;  // InvM[i][z], i = 0..3
+  // The column whose xyz / w is the camera the matrix shows, i = 0..3: InvM[i][z] (the projection
+  // centre), or a screen-to-world map's translation M[i][3] ("1" for the w of an affine map).
+  std::array<std::string, 4> centre;
 };
 
 // An unprojection `InvM * v` of source text as a splice can carry it: the product, found in the

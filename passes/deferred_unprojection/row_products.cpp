@@ -1,13 +1,9 @@
 // See row_products.h: unprojections through cbuffer rows, as decompiled HLSL writes them.
 #include "passes/deferred_unprojection/row_products.h"
 
-#include "passes/analysis/uniform_slots.h"
-#include "passes/ir/walker.h"
-
-#include <glslang/SPIRV/GLSL.std.450.h>
+#include "passes/deferred_unprojection/linear_form.h"
 
 #include <bit>
-#include <cstdio>
 #include <map>
 #include <optional>
 #include <set>
@@ -15,286 +11,9 @@
 
 namespace stereoshift::deferred {
 
-using analysis::kAnyIndex;
-using spirv::Instruction;
+using namespace linear;
 
 namespace {
-
-// scale * (a uniform element, or 1 when `root` is 0).
-struct Coefficient {
-  uint32_t root = 0;
-  AccessPath path;
-  float scale = 1.0f;
-  bool uniform() const { return root != 0; }
-};
-
-// One lane of a value: an SSA id and the vector lane (0 for a scalar).
-struct Lane {
-  uint32_t id = 0;
-  uint32_t lane = 0;
-  auto operator<=>(const Lane&) const = default;
-};
-
-// A scalar as a sum of coefficient * term (a term-less part is a constant or uniform addend).
-struct Part {
-  std::optional<Lane> term;
-  Coefficient coefficient;
-};
-using Linear = std::vector<Part>;
-
-class Decomposer {
- public:
-  explicit Decomposer(const ValueFlow& index) : index_(index), m_(index.module()) {}
-
-  // Follows moves (extracts, inserts, shuffles, constructs, copies) to the lane of the value that
-  // computes it.
-  Lane canonical(Lane at) const {
-    for (int step = 0; step < 64; ++step) {
-      const Instruction* def = index_.definition(at.id);
-      if (!def) return at;
-      switch (def->opcode) {
-        case spv::OpCopyObject: at.id = def->operand(0); continue;
-        case spv::OpCompositeExtract:
-          if (def->operands.size() != 2 || !isVector(def->operand(0))) return at;
-          at = {def->operand(0), def->operand(1)};
-          continue;
-        case spv::OpCompositeInsert:
-          if (def->operands.size() != 3 || !isVector(def->resultId)) return at;
-          at = def->operand(2) == at.lane ? Lane{def->operand(0), 0} : Lane{def->operand(1), at.lane};
-          continue;
-        case spv::OpVectorShuffle: {
-          uint32_t pick = def->operand(2 + at.lane), first = lanes(def->operand(0));
-          if (pick == 0xFFFFFFFFu || 2 + at.lane >= def->operands.size()) return at;
-          at = pick < first ? Lane{def->operand(0), pick} : Lane{def->operand(1), pick - first};
-          continue;
-        }
-        case spv::OpCompositeConstruct: {
-          if (!isVector(def->resultId)) return at;
-          uint32_t first = 0;
-          bool found = false;
-          for (uint32_t part : def->operands) {
-            uint32_t count = isVector(part) ? lanes(part) : 1;
-            if (at.lane < first + count) {
-              at = {part, isVector(part) ? at.lane - first : 0};
-              found = true;
-              break;
-            }
-            first += count;
-          }
-          if (!found) return at;
-          continue;
-        }
-        default: return at;
-      }
-    }
-    return at;
-  }
-
-  // The linear form of one lane, memoised; nullopt never (an opaque value is a term of its own).
-  const Linear& form(Lane at) {
-    at = canonical(at);
-    if (auto it = memo_.find(at); it != memo_.end()) return it->second;
-    Linear value = compute(at);
-    return memo_.emplace(at, std::move(value)).first->second;
-  }
-
-  // The uniform element (with a constant scale) a lane is, if it is one.
-  std::optional<Coefficient> uniformElement(Lane at) {
-    const Linear& f = form(at);
-    if (f.size() != 1 || f[0].term || !f[0].coefficient.uniform()) return std::nullopt;
-    return f[0].coefficient;
-  }
-  // The constant a lane is, if it is one (0 for a zero).
-  std::optional<float> constant(Lane at) {
-    const Linear& f = form(at);
-    if (f.empty()) return 0.0f;
-    if (f.size() != 1 || f[0].term || f[0].coefficient.uniform()) return std::nullopt;
-    return f[0].coefficient.scale;
-  }
-  const Instruction* definition(uint32_t id) const { return index_.definition(id); }
-
-  bool isVector(uint32_t id) const { return lanes(id) > 1; }
-  uint32_t lanes(uint32_t id) const {
-    const Instruction* def = index_.definition(id);
-    const Instruction* type = def ? m_.definition(def->typeId) : nullptr;
-    return type && type->opcode == spv::OpTypeVector ? type->operand(1) : 1;
-  }
-
- private:
-  const ValueFlow& index_;
-  const spirv::Module& m_;
-  std::map<Lane, Linear> memo_;
-  int depth_ = 0;
-  size_t computed_ = 0;
-
- public:
-  // Lanes decomposed and parts built for them: the work, for the complexity tests.
-  size_t computed() const { return computed_; }
-
- private:
-
-  static std::optional<Coefficient> pure(const Linear& f) {
-    if (f.size() != 1 || f[0].term) return std::nullopt;
-    return f[0].coefficient;
-  }
-  static Linear scaled(Linear f, float by) {
-    for (auto& p : f) p.coefficient.scale *= by;
-    return f;
-  }
-  static Linear sum(Linear a, const Linear& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-  }
-  Linear opaque(Lane at) const { return {Part{canonical(at), {}}}; }
-  Lane laneOf(uint32_t id, uint32_t lane) const { return {id, isVector(id) ? lane : 0}; }
-
-  // a * b: a constant scales the other side; a uniform element is the coefficient of the other
-  // side taken whole (an opaque term); anything else is opaque as a whole (`self`).
-  Linear product(Lane a, Lane b, Lane self) {
-    const Linear fa = form(a), fb = form(b);
-    if (fa.empty() || fb.empty()) return {};  // a zero
-    auto ca = pure(fa), cb = pure(fb);
-    if (ca && cb) {
-      if (ca->uniform() && cb->uniform()) return opaque(self);
-      Coefficient c = ca->uniform() ? *ca : *cb;
-      c.scale = ca->scale * cb->scale;
-      return {Part{std::nullopt, c}};
-    }
-    if (cb) return cb->uniform() ? Linear{Part{canonical(a), *cb}} : scaled(fa, cb->scale);
-    if (ca) return ca->uniform() ? Linear{Part{canonical(b), *ca}} : scaled(fb, ca->scale);
-    return opaque(self);
-  }
-
-  Linear uniformLoad(const Instruction& load, Lane at) const {
-    auto target = index_.resolvePointer(load.operand(0));
-    auto storage = target ? m_.storageClassOf(target->root) : std::nullopt;
-    bool uniform = storage && (*storage == spv::StorageClassUniform || *storage == spv::StorageClassPushConstant);
-    if (!uniform || std::count(target->path.begin(), target->path.end(), kAnyIndex)) return opaque(at);
-    Coefficient c{target->root, target->path, 1.0f};
-    if (isVector(load.resultId)) c.path.push_back(at.lane);
-    return {Part{std::nullopt, c}};
-  }
-
-  // A component of a matrix product has four parts; a longer sum is opaque (and a sum of a value
-  // with itself, `a1 = a0 + a0` chained, cannot double its parts at every step).
-  static constexpr size_t kMaxParts = 8;
-
-  Linear compute(Lane at) {
-    const Instruction* def = index_.definition(at.id);
-    if (!def || ++depth_ > 256) {
-      --depth_;
-      return opaque(at);
-    }
-    Linear out = computeFor(*def, at);
-    --depth_;
-    computed_ += 1 + out.size();  // the lane and the parts built for it
-    if (out.size() > kMaxParts) return opaque(at);
-    return out;
-  }
-
-  Linear computeFor(const Instruction& def, Lane at) {
-    auto op = [&](size_t k) { return laneOf(def.operand(k), at.lane); };
-    switch (def.opcode) {
-      case spv::OpConstant: {
-        auto value = m_.floatConstant(def.resultId);
-        if (!value) return opaque(at);
-        if (*value == 0.0f) return {};
-        return {Part{std::nullopt, Coefficient{0, {}, *value}}};
-      }
-      case spv::OpConstantComposite:
-        return at.lane < def.operands.size() ? form({def.operands[at.lane], 0}) : opaque(at);
-      case spv::OpConstantNull: return {};
-      case spv::OpLoad: return uniformLoad(def, at);
-      case spv::OpFAdd: return sum(form(op(0)), form(op(1)));
-      case spv::OpFSub: return sum(form(op(0)), scaled(form(op(1)), -1.0f));
-      case spv::OpFNegate: return scaled(form(op(0)), -1.0f);
-      case spv::OpFMul: return product(op(0), op(1), at);
-      case spv::OpVectorTimesScalar: return product({def.operand(0), at.lane}, {def.operand(1), 0}, at);
-      case spv::OpDot: {
-        Linear out;
-        for (uint32_t k = 0; k < lanes(def.operand(0)); ++k)
-          out = sum(std::move(out), product({def.operand(0), k}, {def.operand(1), k}, at));
-        return out;
-      }
-      case spv::OpExtInst:
-        if (def.operand(1) == GLSLstd450Fma && def.operands.size() == 5)
-          return sum(product(laneOf(def.operand(2), at.lane), laneOf(def.operand(3), at.lane), at),
-                     form(laneOf(def.operand(4), at.lane)));
-        return opaque(at);
-      default: return opaque(at);
-    }
-  }
-};
-
-// The OpLine line of an instruction, when it is in the main file (glslang names each OpLine's file
-// as the front end named the text it parsed: the input's path, an #include's resolved name).
-class LineMap {
- public:
-  LineMap(const spirv::Module& m, const std::string& mainFile) {
-    for (const auto& inst : m.debugSource)
-      if (inst.opcode == spv::OpString && inst.stringOperand(0) == mainFile) mainFile_ = inst.resultId;
-    for (const auto& fn : m.functions)
-      for (const auto& block : fn.blocks) {
-        uint32_t line = 0;
-        for (const auto& inst : block.instructions) {
-          if (inst.opcode == spv::OpLine) line = inst.operand(0) == mainFile_ ? inst.operand(1) : 0;
-          else if (inst.opcode == spv::OpNoLine) line = 0;
-          else if (inst.resultId) lines_[inst.resultId] = line;
-        }
-      }
-  }
-  bool present() const { return mainFile_ != 0; }
-  uint32_t lineOf(uint32_t id) const {
-    auto it = lines_.find(id);
-    return it == lines_.end() ? 0 : it->second;
-  }
-
- private:
-  uint32_t mainFile_ = 0;
-  std::map<uint32_t, uint32_t> lines_;
-};
-
-// What one lane of a value is computed from (a vector's lane, a scalar whole).
-Sources sourcesOf(SourceAnalysis& flow, const Decomposer& d, Lane at) {
-  return flow.value(at.id, d.isVector(at.id) ? AccessPath{at.lane} : AccessPath{});
-}
-
-// A uniform element as the source names it: "cb1[20].x" (an HLSL cbuffer's members are global
-// names), with the coefficient's sign or scale.
-std::string elementText(const spirv::Module& m, const Coefficient& c) {
-  if (c.path.empty()) return "";
-  std::string text = describe(m, c.root, {c.path[0]});
-  const Instruction* var = m.definition(c.root);
-  uint32_t type = var ? m.pointeeType(var->typeId) : 0;
-  for (size_t k = 0; k < c.path.size(); ++k) {
-    const Instruction* t = m.definition(type);
-    if (!t) return "";
-    if (t->opcode == spv::OpTypeStruct) {
-      if (k != 0) return "";  // a member of a nested struct: not a decompiler's cbuffer
-      type = t->operand(c.path[k]);
-    } else if (t->opcode == spv::OpTypeArray || t->opcode == spv::OpTypeMatrix) {
-      text += "[" + std::to_string(c.path[k]) + "]";
-      type = t->operand(0);
-    } else if (t->opcode == spv::OpTypeVector && c.path[k] < 4) {
-      text += std::string(".") + "xyzw"[c.path[k]];
-      type = t->operand(0);
-    } else {
-      return "";
-    }
-  }
-  if (c.scale == 1.0f) return text;
-  if (c.scale == -1.0f) return "-" + text;
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(c.scale));
-  return "(" + std::string(buf) + " * " + text + ")";
-}
-
-bool isFloat4(const spirv::Module& m, uint32_t type) {
-  const Instruction* vector = m.definition(type);
-  if (!vector || vector->opcode != spv::OpTypeVector || vector->operand(1) != 4) return false;
-  const Instruction* component = m.definition(vector->operand(0));
-  return component && component->opcode == spv::OpTypeFloat && component->operand(0) == 32;
-}
 
 // One component of a candidate q: linear in three terms with a uniform element as each
 // coefficient, plus one uniform element; which component it is (`index`, 0-3) and of which matrix
@@ -391,15 +110,19 @@ std::vector<std::array<const Member*, 4>> groupProducts(const std::vector<Member
     for (const auto& g : groups) {
       // Column storage names each component by its lane, so a product the compiler narrowed to
       // the lanes the shader uses (`r1.xyw = ...`) is still one, with its w; rows need all four
-      // to say which is w.
+      // to say which is w. A point whose w the shader never reads (Unreal's `mul(float4(ndc *
+      // depth, depth, 1), ScreenToWorld).xyz`, an affine map) is x, y and z alone: lanes 0-2 of
+      // the columns, or three consecutive rows; only the screen-to-world form, whose correction
+      // needs no w, takes it (findRowProducts).
       bool columns = key.starts_with("c:");
       std::array<const Member*, 4> q{};
       if (columns) {
-        if (!g.count(3) || g.size() < 2) continue;
+        const bool point = g.count(0) && g.count(1) && g.count(2);
+        if ((!g.count(3) && !point) || g.size() < 2) continue;
         for (const auto& [index, member] : g) q[index] = member;
       } else {
         uint32_t first = g.begin()->first;
-        if (g.size() != 4 || g.rbegin()->first != first + 3) continue;  // rows k..k+3
+        if (g.size() < 3 || g.rbegin()->first != first + g.size() - 1) continue;  // rows k..k+3 (or k..k+2)
         for (const auto& [index, member] : g) q[index - first] = member;
       }
       products.push_back(q);
@@ -444,8 +167,36 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
 bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 
-// The view vectors c - p (c a cbuffer vector, p = q.xyz / q.w), x, y and z computed by one statement.
-std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::array<const Member*, 4>& q, Lane x, Lane z) {
+// The camera c of a view vector c - p that one lane of `f` (its linear form) is, where p is the
+// affine q's component `component` itself (its parts all negated in f, c the one part left over).
+std::optional<Coefficient> cameraBesidesPoint(const Linear& f, const Linear& component) {
+  if (f.size() != component.size() + 1) return std::nullopt;
+  std::vector<bool> used(f.size(), false);
+  for (const Part& part : component) {
+    bool matched = false;
+    for (size_t k = 0; k < f.size() && !matched; ++k) {
+      const Coefficient& c = f[k].coefficient;
+      if (used[k] || f[k].term != part.term || c.root != part.coefficient.root || c.path != part.coefficient.path ||
+          c.scale != -part.coefficient.scale)
+        continue;
+      used[k] = matched = true;
+    }
+    if (!matched) return std::nullopt;
+  }
+  for (size_t k = 0; k < f.size(); ++k) {
+    const Coefficient& c = f[k].coefficient;
+    if (!used[k]) return !f[k].term && c.uniform() && c.scale == 1.0f && c.path.size() >= 2 ? std::optional(c) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+// The view vectors c - p (c a cbuffer vector), x, y and z computed by one statement: p = q.xyz / q.w
+// (or times its reciprocal), or q.xyz itself where q has no w (the screen-to-world form of a
+// point). The camera the matrix shows, which c is compared with in the text: InvM's projection
+// centre, its column of z over that column's w; or where the screen-to-world map sends depth 0,
+// its translation column.
+std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::array<const Member*, 4>& q, Lane x, Lane z,
+                                             bool scaled) {
   const spirv::Module& registers = a.registers;
   Decomposer& d = a.d;
   struct Hit {
@@ -461,6 +212,11 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
       Lane at = d.canonical({inst.resultId, lane});
       if (at.id != inst.resultId || !seen.insert(at).second) continue;
       const Linear& f = d.form(at);
+      if (!q[3]) {
+        for (uint32_t i = 0; i < 3; ++i)
+          if (auto camera = cameraBesidesPoint(f, d.form(q[i]->at))) byValue[inst.resultId].push_back({lane, i, *camera});
+        continue;
+      }
       if (f.size() != 2) continue;
       const Part* camera = nullptr;
       const Part* position = nullptr;
@@ -502,8 +258,9 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
     bool named = fix.line != 0;
     for (uint32_t i = 0; i < 4; ++i) {
       if (i < 3) fix.columnX[i] = elementText(registers, q[i]->byTerm.at(x));
-      fix.columnZ[i] = elementText(registers, q[i]->byTerm.at(z));
-      named &= (i == 3 || (!fix.columnX[i].empty() && !fix.camera[i].empty())) && !fix.columnZ[i].empty();
+      if (!q[i]) fix.centre[i] = "1";  // an affine map's w
+      else fix.centre[i] = elementText(registers, scaled ? q[i]->translation : q[i]->byTerm.at(z));
+      named &= (i == 3 || (!fix.columnX[i].empty() && !fix.camera[i].empty())) && !fix.centre[i].empty();
     }
     if (named) found.push_back(std::move(fix));
   }
@@ -568,7 +325,8 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     auto scaledScreen = [](const Sources& s, uint32_t lane) {
       return (s.fragCoord || s.varying) && s.texel && !s.other && (s.inputLanes & 3u) == lane;
     };
-    for (const auto& [term, c] : q[3]->byTerm) {
+    const Member* any = q[3] ? q[3] : q[0];  // every component has the same three terms
+    for (const auto& [term, c] : any->byTerm) {
       Sources s = sourcesOf(flow, d, term);
       const bool plainX = screen(s, 1u), plainY = screen(s, 2u), scaledX = scaledScreen(s, 1u), scaledY = scaledScreen(s, 2u);
       if ((plainX || scaledX) && !x && (!scaled || *scaled == scaledX)) x = term, p.x = s, scaled = scaledX;
@@ -577,11 +335,11 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       else other = true;
     }
     if (other || !x || !y || !z) {
-      if (interpolatedPosition(flow, d, q[3]->byTerm)) {
+      if (interpolatedPosition(flow, d, any->byTerm)) {
         RowProduct seen;
         seen.interpolated = true;
         seen.rows = rowsText(registers, q);
-        for (const auto& [term, c] : q[3]->byTerm)
+        for (const auto& [term, c] : any->byTerm)
           seen.x |= sourcesOf(flow, d, term);
         for (uint32_t i = 0; i < 4; ++i)
           if (q[i]) seen.fix.afterLine = std::max(seen.fix.afterLine, lines.lineOf(q[i]->at.id));
@@ -589,6 +347,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       }
       continue;
     }
+    if (!q[3] && !*scaled) continue;  // (ndc, depth, 1) needs q.w for its divide: not a rebuild
     // Scaled terms must be the screen coordinate times that very depth.
     if (*scaled && (!scaledScreenTerm(d, flow, *x, *z, 1u, a.factorVisits) ||
                     !scaledScreenTerm(d, flow, *y, *z, 2u, a.factorVisits)))
@@ -604,9 +363,8 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       p.fix.depthLine = lines.lineOf(z->id);
       p.fix.depthLane = z->lane;
       if (!p.fix.depthLine && p.reason.empty()) p.reason = "the depth is computed outside the main file (an #include or a macro)";
-    } else if (std::all_of(q.begin(), q.end(), [](const Member* m) { return m != nullptr; })) {
-      p.cameras = findCameraVectors(a, q, *x, *z);
     }
+    if (q[0] && q[1] && q[2] && (q[3] || *scaled)) p.cameras = findCameraVectors(a, q, *x, *z, *scaled);
     p.rows = rowsText(registers, q);
     for (uint32_t i = 0; i < 4; ++i) {
       p.fix.present[i] = q[i] != nullptr;

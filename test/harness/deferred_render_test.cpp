@@ -291,6 +291,17 @@ const std::string kDumpScreenToWorld = kDumpPrologue + R"(  r2.xy = r2.xy * r1.x
   r2.xyz = r3.xyz / r3.www;
 )" + kDumpEpilogue;
 
+// The same map where the shader never reads the point's w (Unreal's `mul(float4(ScreenPosition *
+// SceneDepth, SceneDepth, 1), ScreenToWorld).xyz`): the compiler keeps lanes x, y and z of the
+// columns, no w and no divide (the map is affine).
+const std::string kScreenToWorldPointChain = R"(  r2.xy = r2.xy * r1.xx;
+  r3.xyz = cb0[1].xyz * r2.yyy;
+  r3.xyz = r2.xxx * cb0[0].xyz + r3.xyz;
+  r3.xyz = r1.xxx * cb0[2].xyz + r3.xyz;
+  r2.xyz = cb0[3].xyz + r3.xyz;
+)";
+const std::string kDumpScreenToWorldPoint = kDumpPrologue + kScreenToWorldPointChain + kDumpEpilogue;
+
 // A view vector from the camera (cb0[5]) to the rebuilt position, normalized (specular, Fresnel and
 // reflections start from it), its component VIEW_COMPONENT written as the float's bits.
 const std::string kDumpViewVector = kDumpPrologue + R"(  r3.xyzw = cb0[1].xyzw * r2.yyyy;
@@ -639,7 +650,7 @@ class DeferredRender : public ::testing::Test {
   // The screen-to-world check: truth, fix and baseline of kDumpScreenToWorld against the exact point.
   void checkScreenToWorld(const char* name, const char* text, const char* tag);
   // The camera check: the view vector to the rebuilt position from this eye's camera.
-  void checkViewVector(const char* name, const char* text, const char* tag);
+  void checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm = false);
 
   bool splicedText_ = false;  // the fix through the GLSL splice's text (compileTranspiled)
   std::unique_ptr<VulkanContext> context_;
@@ -816,6 +827,26 @@ TEST_F(DeferredRender, DumpStyleNamedMatrixFixedInItsTextByExecution) {
   checkRebuiltPositions("3a4b5c6d7e8f9012-ps_replace.txt", text.c_str(), "dump named matrix", &columns);
 }
 
+// The screen-to-world matrix of an inverse view-projection: that inverse times the map from
+// (X, Y, Z, 1) = (ndc.x * z, ndc.y * z, z, 1) to clip space (clip.z = -p22 * z + p32, clip.w = z).
+Mat4 screenToWorld(const Mat4& inverseViewProj, const Mat4& mono) {
+  Mat4 toClip{};
+  toClip[0] = toClip[5] = 1.0;
+  toClip[10] = -mono[10];
+  toClip[11] = 1.0;
+  toClip[14] = mono[14];
+  return multiply(inverseViewProj, toClip);
+}
+
+// The G-buffer with its depth made linear (the positive view depth z, in double from the Vulkan
+// depth, stored as fp32), as a screen-to-world shader reads it.
+GBuffer linearDepth(const GBuffer& g, const Mat4& mono) {
+  GBuffer linear = g;
+  for (size_t i = 0; i < g.depthValues.size(); ++i)
+    linear.depth.rgba[4 * i] = g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (g.depthValues[i] + mono[10]));
+  return linear;
+}
+
 // The screen-to-world form: per eye, the G-buffer's depth of that eye made linear (the positive view
 // depth z, in double from the Vulkan depth, stored as fp32), the dump run with ScreenToWorld = the
 // inverse view-projection times the map from (ndc * z, z, 1) to clip space: truth with the eye's own
@@ -824,19 +855,11 @@ TEST_F(DeferredRender, DumpStyleNamedMatrixFixedInItsTextByExecution) {
 // screenToWorldBound() of it, the baseline beyond the truth's bound at more than 90 % of the pixels.
 void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag) {
   const Mat4 mono = projection(0), viewMatrix = view();
-  // (X, Y, Z, 1) = (ndc.x * z, ndc.y * z, z, 1) to clip space: clip.z = -p22 * z + p32, clip.w = z.
-  Mat4 toClip{};
-  toClip[0] = toClip[5] = 1.0;
-  toClip[10] = -mono[10];
-  toClip[11] = 1.0;
-  toClip[14] = mono[14];
-  const Mat4 monoMatrix = multiply(inverse(multiply(mono, viewMatrix)), toClip);
+  const Mat4 monoMatrix = screenToWorld(inverse(multiply(mono, viewMatrix)), mono);
   for (double eye : {-1.0, 1.0}) {
     GBuffer g = renderGBuffer(eye);
-    GBuffer linear = g;
-    for (size_t i = 0; i < g.depthValues.size(); ++i)
-      linear.depth.rgba[4 * i] = g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (g.depthValues[i] + mono[10]));
-    const Mat4 stereoMatrix = multiply(inverse(multiply(projection(eye), viewMatrix)), toClip);
+    const GBuffer linear = linearDepth(g, mono);
+    const Mat4 stereoMatrix = screenToWorld(inverse(multiply(projection(eye), viewMatrix)), mono);
     const Mat4 stereoF = toDouble(toFloat(stereoMatrix)), monoF = toDouble(toFloat(monoMatrix));
     std::array<RenderResult, 3> truth, fixedPosition, baseline;
     for (int component = 0; component < 3; ++component) {
@@ -893,14 +916,18 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
 // normalization. The position-only fix (the camera block removed) must be beyond the bound at more
 // than 90 % of the pixels: its highlight is the mono camera's. With the light's position in cb0[5]
 // instead (not the camera the matrix shows) the camera block must leave the vector as it is.
-void DeferredRender::checkViewVector(const char* name, const char* text, const char* tag) {
-  const Mat4 viewMatrix = view();
-  const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
+void DeferredRender::checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm) {
+  const Mat4 viewMatrix = view(), mono = projection(0);
+  const Mat4 monoInverse = inverse(multiply(mono, viewMatrix));
+  // The matrix the dump is fed: the inverse view-projection, or its screen-to-world form (which reads
+  // the depth made linear); its column of x is the same.
+  const Mat4 monoMatrix = screenToWorldForm ? screenToWorld(monoInverse, mono) : monoInverse;
   const Mat4 inverseView = inverse(viewMatrix);
   const std::array<float, 4> camera = {float(inverseView[12]), float(inverseView[13]), float(inverseView[14]), 0.0f};
   const double u = kUnitRoundoff;
   for (double eye : {-1.0, 1.0}) {
-    GBuffer g = renderGBuffer(eye);
+    const GBuffer rendered = renderGBuffer(eye);
+    const GBuffer g = screenToWorldForm ? linearDepth(rendered, mono) : rendered;
     const Mat4 stereoInverse = inverse(multiply(projection(eye), viewMatrix));
     // The eye's projection centre: the world point whose stereo clip coordinates are (0, 0, p32, 0).
     const Mat4 stereo = projection(eye);
@@ -923,16 +950,16 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
       const std::string end = "// ---- end stereoshift ----\n";
       withoutCamera.erase(from, withoutCamera.find(end, from) + end.size() - from);
       DumpFeed stereoFeed{false, true, camera}, lightFeed{false, true, std::array<float, 4>{0.8f, 1.5f, -5.0f, 22.0f}};
-      fixedView[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoInverse, nullptr, eye, stereoFeed);
+      fixedView[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoMatrix, nullptr, eye, stereoFeed);
       positionOnly[component] =
-          renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoInverse, nullptr, eye, stereoFeed);
-      lightKept[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoInverse, nullptr, eye, lightFeed);
+          renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoMatrix, nullptr, eye, stereoFeed);
+      lightKept[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoMatrix, nullptr, eye, lightFeed);
       RenderResult lightWithout =
-          renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoInverse, nullptr, eye, lightFeed);
+          renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoMatrix, nullptr, eye, lightFeed);
       ASSERT_TRUE(fixedView[component].ok() && positionOnly[component].ok() && lightKept[component].ok());
       EXPECT_EQ(lightKept[component].pixels, lightWithout.pixels) << "a light's position must not be moved per eye";
     }
-    const Mat4 monoF = toDouble(toFloat(monoInverse));
+    const Mat4 monoF = toDouble(toFloat(monoMatrix));
     double cameraLength = 0, offsetLength = 0;
     for (int c = 0; c < 3; ++c) {
       cameraLength += double(camera[c]) * camera[c];
@@ -944,11 +971,22 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
     for (uint32_t y = 0; y < kSize; ++y)
       for (uint32_t x = 0; x < kSize; ++x) {
         size_t i = size_t(y) * kSize + x;
-        if (g.depthValues[i] >= 1.0f) continue;
+        if (rendered.depthValues[i] >= 1.0f) continue;
         ++pixels;
-        std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
-        const ViewVector expected = viewVectorTo(eyeCamera, times(stereoInverse, v),
-                                                 positionBound(monoF, v, true, eye * kSeparation, kConvergence), cameraBound);
+        const double nx = (x + 0.5) / kSize * 2 - 1, ny = (y + 0.5) / kSize * 2 - 1;
+        // The exact point the pixel shows in this eye, and the fixed rebuild's rounding bound.
+        std::array<double, 4> exact;
+        std::array<double, 3> positionError;
+        if (screenToWorldForm) {
+          const double z = g.depth.rgba[4 * i];
+          exact = times(stereoInverse, {nx * z, ny * z, z * -mono[10] + mono[14], z});
+          positionError = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence);
+        } else {
+          const std::array<double, 4> v = {nx, ny, g.depthValues[i], 1.0};
+          exact = times(stereoInverse, v);
+          positionError = positionBound(monoF, v, true, eye * kSeparation, kConvergence);
+        }
+        const ViewVector expected = viewVectorTo(eyeCamera, exact, positionError, cameraBound);
         const double bound = expected.bound;
         bool monoWrong = false;
         for (int c = 0; c < 3; ++c) {
@@ -984,6 +1022,23 @@ TEST_F(DeferredRender, DumpStyleViewVectorThroughAReciprocalGetsThisEyesCameraBy
 
 TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {
   checkScreenToWorld("4a5b6c7d8e9f0123-ps_replace.txt", kDumpScreenToWorld.c_str(), "dump screen to world");
+}
+
+// A screen-to-world point whose w the shader never reads: x, y and z of the columns alone.
+TEST_F(DeferredRender, DumpStyleScreenToWorldPointWithoutWFixedInItsTextByExecution) {
+  checkScreenToWorld("4a5b6c7d8e9f0124-ps_replace.txt", kDumpScreenToWorldPoint.c_str(), "dump screen to world point");
+}
+
+// The view vector from the camera to that point: the camera the screen-to-world map shows is where
+// it sends depth 0 (its translation column), and this eye's is beside it along its column of x.
+TEST_F(DeferredRender, DumpStyleScreenToWorldViewVectorGetsThisEyesCameraByExecution) {
+  std::string text = kDumpViewVector;
+  const std::string rebuild = "  r3.xyzw = cb0[1].xyzw * r2.yyyy;\n  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;\n"
+                              "  r3.xyzw = r1.xxxx * cb0[2].xyzw + r3.xyzw;\n  r3.xyzw = cb0[3].xyzw + r3.xyzw;\n"
+                              "  r2.xyz = r3.xyz / r3.www;\n";
+  ASSERT_NE(text.find(rebuild), std::string::npos);
+  text.replace(text.find(rebuild), rebuild.size(), kScreenToWorldPointChain);
+  checkViewVector("5a6b7c8d9e0f1236-ps_replace.txt", text.c_str(), "dump screen to world view vector", true);
 }
 
 TEST_F(DeferredRender, DumpStyleDp4RowsFixedInItsTextByExecution) {

@@ -115,6 +115,17 @@ mov o0.w, l(1.000000)
 ret
 )");
 
+// The same map where the shader never reads the point's w (`mul(float4(ndc * z, z, 1), M).xyz`): the
+// compiler computes x, y and z of the columns alone, with no divide.
+const std::string kScreenToWorldPointPs = linearDepthShader(24, R"(mul r2.xyz, r1.yyyy, cb1[21].xyzx
+mad r2.xyz, r1.xxxx, cb1[20].xyzx, r2.xyzx
+mad r2.xyz, r0.zzzz, cb1[22].xyzx, r2.xyzx
+add r2.xyz, r2.xyzx, cb1[23].xyzx
+mov o0.xyz, r2.xyzx
+mov o0.w, l(1.000000)
+ret
+)");
+
 // The view-ray form per component: the NDC times the linear view depth, x divided by P00 and y by
 // P11 (cb1[0].x, cb1[1].y), z = -depth.
 const std::string kViewRayPs = linearDepthShader(2, R"(div r2.x, r1.x, cb1[0].x
@@ -278,6 +289,15 @@ TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
   EXPECT_NE(converted.output.find("add r3.w, |r0.z|, -r3.y"), std::string::npos) << converted.output;
   checkByExecution(kScreenToWorldPs.c_str(), false, "asm screen to world", true);
+}
+
+// Corrected by the same s.x * (|z| - s.y) * sign(z), which needs no w: three lanes, the fourth none.
+TEST(AsmUnprojection, ScreenToWorldPointWithoutWCorrectedByExecution) {
+  AsmShiftResult converted = shiftAssembly(kScreenToWorldPointPs, {});
+  ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
+  EXPECT_NE(converted.output.find("mad r2.z, -cb1[20].z, r3.w, r2.z"), std::string::npos) << converted.output;
+  EXPECT_EQ(converted.output.find("cb1[20].w"), std::string::npos) << converted.output;
+  checkByExecution(kScreenToWorldPointPs.c_str(), false, "asm screen to world point", true);
 }
 
 // The view ray, per eye on 1024 pixel centres with view depths 1.5 to 60: the view-space x of the

@@ -300,6 +300,7 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
     block.push_back("mul " + rS + ".w, " + rS + ".w, " + rS + ".x");
   }
   for (size_t i = 0; i < 4; ++i) {
+    if (u.q[i].empty()) continue;  // the w of a point the shader never computes
     if (u.columnScale[i] == 1.0f || u.columnScale[i] == -1.0f) {
       const char* sign = u.columnScale[i] == 1.0f ? "-" : "";
       block.push_back("mad " + u.q[i] + ", " + sign + u.column[i] + ", " + rS + ".w, " + u.q[i]);
@@ -340,7 +341,7 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
   const char lanes[] = "xyz";
   for (int i = 0; i < 3; ++i) {
     const std::string t = rT + "." + lanes[i];
-    block.push_back("div " + t + ", " + c.columnZ[i] + ", " + c.columnZ[3]);
+    block.push_back("div " + t + ", " + c.centre[i] + ", " + c.centre[3]);
     block.push_back("add " + rT + ".w, " + c.camera[i] + ", -" + t);
     block.push_back("mad " + rS + ".z, |" + t + "|, l(0.000100), l(0.000100)");
     block.push_back("ge " + t + ", " + rS + ".z, |" + rT + ".w|");
@@ -397,9 +398,10 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
     if (!after.empty()) continue;  // two rebuilds completed by one instruction: corrected once
     after = correctionBlock(u, rS, text.model.major >= 5);
     std::string fix = "q -= (";
-    for (size_t i = 0; i < 4; ++i) fix += (i ? ", " : "") + u.column[i];
+    for (size_t i = 0; i < 4; ++i) fix += (i ? ", " : "") + (u.q[i].empty() ? std::string("-") : u.column[i]);
     fix += std::string(") * ") + (u.scaledByDepth ? "s.x*(|z| - s.y)*sign(z), z in " + u.depthRegister + "," : "s.x*(1 - s.y*q.w)") +
-           " after line " + std::to_string(u.lastLineNumber) + ", before the divide";
+           " after line " + std::to_string(u.lastLineNumber) +
+           (u.q[3].empty() ? " (the point has no w: an affine map)" : ", before the divide");
     result.corrections.push_back({std::string(u.scaledByDepth ? "position rebuilt through a screen-to-world matrix (ndc * depth, depth, 1) "
                                                                 "held as four constant-buffer "
                                                               : "position rebuilt through a matrix held as four constant-buffer ") +

@@ -595,12 +595,12 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
                                                const std::map<size_t, size_t>& lineIndex,
                                                const std::array<const Member*, 4>& q, const Roles& role) {
   // InvM's columns of x and z must be plain elements (no constant folded into them).
-  std::array<std::string, 4> columnZ;
+  std::array<std::string, 4> centre;
   for (size_t i = 0; i < 4; ++i) {
     const Coefficient& x = q[i]->byTerm.at(role.x);
     const Coefficient& z = q[i]->byTerm.at(role.depth);
     if (x.scale != 1.0f || z.scale != 1.0f || x.inverse || z.inverse) return {};
-    columnZ[i] = elementText(*z.element);
+    centre[i] = elementText(*z.element);
   }
   std::map<size_t, std::array<int, 3>> byOp;  // op -> the value of v.x, v.y, v.z it wrote
   for (int id = 0; id < static_cast<int>(values.size()); ++id) {
@@ -627,7 +627,7 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     AsmUnprojection::Camera c;
     c.lineNumber = p.ops[op].line;
     c.afterLine = lineIndex.at(c.lineNumber);
-    c.columnZ = columnZ;
+    c.centre = centre;
     for (int i = 0; i < 3; ++i) {
       const Value& v = values[ids[i]];
       c.v[i] = registerText(*v.at);
@@ -708,17 +708,21 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
   AsmUnprojections result;
   std::vector<AsmUnprojection>& found = result.found;
   for (const auto& [key, group] : groups) {
+    // Four components; or, in the screen-to-world form, whose correction needs no w, a point the
+    // shader computes x, y and z of alone (lanes 0-2 of the columns, or three consecutive rows).
+    const Roles& role = roles.at(key);
+    const size_t needed = role.scaled && (key.front() != 'c' || !group.count(3)) ? 3 : 4;
     std::array<const Member*, 4> q{};
     if (key.front() == 'c') {
-      if (!group.count(3) || group.size() != 4) continue;
+      if (group.size() != needed || group.rbegin()->first != needed - 1) continue;
       for (const auto& [index, member] : group) q[index] = &member;
     } else {
-      if (group.size() != 4 || group.rbegin()->first != group.begin()->first + 3) continue;
+      if (group.size() < needed || group.size() > 4 || group.rbegin()->first != group.begin()->first + group.size() - 1) continue;
       for (const auto& [index, member] : group) q[index - group.begin()->first] = &member;
     }
-    const Roles& role = roles.at(key);
     size_t first = SIZE_MAX, last = 0;
     for (const Member* m : q) {
+      if (!m) continue;
       first = std::min(first, values[m->value].op);
       last = std::max(last, values[m->value].op);
     }
@@ -726,6 +730,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     // all of them computed in one straight stretch of the program.
     bool placeable = true;
     for (const Member* m : q) {
+      if (!m) continue;
       const Value& v = values[m->value];
       placeable &= evaluation.region(v.op) == evaluation.region(last) && evaluation.stillIn(v, last);
     }
@@ -745,6 +750,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     u.lastLineNumber = p.ops[last].line;
     std::set<Element> rows;  // the matrix's vectors, lane 0 standing for the whole row
     for (size_t i = 0; i < 4; ++i) {
+      if (!q[i]) continue;  // a point's w the shader never computes: u.q[3] stays empty
       const Value& v = values[q[i]->value];
       u.q[i] = registerText(*v.at);
       const Coefficient& column = q[i]->byTerm.at(role.x);

@@ -55,7 +55,7 @@ struct AsmUnprojection {
   struct Camera {
     size_t afterLine = 0, lineNumber = 0;
     std::array<std::string, 3> v, camera;  // "r0.x"; "cb1[24].x"
-    std::array<std::string, 4> columnZ;    // InvM[i][z]
+    std::array<std::string, 4> centre;    // InvM[i][z]
   };
   std::vector<Camera> cameras;
 };

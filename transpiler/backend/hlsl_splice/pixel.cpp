@@ -125,7 +125,7 @@ std::optional<std::string> locateDepth(const Lines& lines, uint32_t depthLine, u
 Located locate(const Lines& lines, const RowProductTextFix& fix) {
   Located out;
   auto fail = [&](uint32_t line, std::string why) { return failedAt(out, line, std::move(why)); };
-  if (!fix.present[3]) return fail(fix.afterLine, "the rebuilt position has no w");
+  if (!fix.present[3] && !fix.scaledByDepth) return fail(fix.afterLine, "the rebuilt position has no w");
   for (size_t i = 0; i < 4; ++i) {
     if (!fix.present[i]) continue;
     auto a = assignmentOn(lines.line(fix.lines[i]));
@@ -232,8 +232,8 @@ std::string cameraBlock(const CameraTextFix& fix, const Located& at, const std::
                   ": v = camera - position, the camera the position's matrix shows) ----" + nl;
   t += indent + "{" + nl;
   t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
-  t += in + "float3 " + c + " = float3(" + fix.columnZ[0] + ", " + fix.columnZ[1] + ", " + fix.columnZ[2] + ") / " +
-       fix.columnZ[3] + ";" + nl;
+  t += in + "float3 " + c + " = float3(" + fix.centre[0] + ", " + fix.centre[1] + ", " + fix.centre[2] + ")" +
+       (fix.centre[3] == "1" ? "" : " / " + fix.centre[3]) + ";" + nl;
   t += in + "if (all(abs(float3(" + fix.camera[0] + ", " + fix.camera[1] + ", " + fix.camera[2] + ") - " + c +
        ") <= 0.0001 * (abs(" + c + ") + 1))) {" + nl;
   for (size_t i = 0; i < 3; ++i)
