@@ -409,11 +409,13 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     recorded = true;
     for (const CameraTextFix& camera : p.cameras) {
       ViewDependentUse view;
-      view.construct = "view vector camera - rebuilt position";
-      view.form = "a camera position minus the rebuilt position (specular, Fresnel, reflections)";
+      view.construct = camera.fromCamera ? "view vector rebuilt position - camera" : "view vector camera - rebuilt position";
+      view.form = camera.fromCamera ? "the rebuilt position minus a camera position (reflections, fog rays)"
+                                    : "a camera position minus the rebuilt position (specular, Fresnel, reflections)";
       view.uniform = camera.camera[0].substr(0, camera.camera[0].rfind('.'));
       view.line = static_cast<int>(camera.line);
-      view.fix = "v + s.x*s.y*(" + camera.columnX[0] + ", " + camera.columnX[1] + ", " + camera.columnX[2] +
+      view.fix = std::string(camera.fromCamera ? "v - " : "v + ") + "s.x*s.y*(" + camera.columnX[0] + ", " +
+                 camera.columnX[1] + ", " + camera.columnX[2] +
                  ") after line " + std::to_string(camera.line) +
                  ", where the constant is the camera the matrix shows (checked at run time; a light position is left alone)";
       facts.fixed.push_back(view);

@@ -209,6 +209,7 @@ struct CameraTextFix {
   uint32_t line = 0;                   // the statement computing v (x, y and z on one line)
   std::array<uint32_t, 3> lanes{};     // the lanes of v.x, v.y, v.z in the statement's value
   std::array<std::string, 3> camera;   // c, element by element: "cb0[6].x"
+  bool fromCamera = false;             // v = p - c (a view direction from the camera), not c - p
   std::array<std::string, 3> columnX;  // InvM[i][x], i = 0..2
   // The column whose xyz / w is the camera the matrix shows, i = 0..3: InvM[i][z] (the projection
   // centre), or a screen-to-world map's translation M[i][3] ("1" for the w of an affine map).

@@ -167,9 +167,10 @@ void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, 
 bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 
-// The camera c of a view vector c - p that one lane of `f` (its linear form) is, where p is the
-// affine q's component `component` itself (its parts all negated in f, c the one part left over).
-std::optional<Coefficient> cameraBesidesPoint(const Linear& f, const Linear& component) {
+// The camera c of a view vector `sign` * (c - p) that one lane of `f` (its linear form) is, where p
+// is the affine q's component `component` itself (its parts all in f times -sign, c the one part
+// left over, times sign).
+std::optional<Coefficient> cameraBesidesPoint(const Linear& f, const Linear& component, float sign) {
   if (f.size() != component.size() + 1) return std::nullopt;
   std::vector<bool> used(f.size(), false);
   for (const Part& part : component) {
@@ -177,7 +178,7 @@ std::optional<Coefficient> cameraBesidesPoint(const Linear& f, const Linear& com
     for (size_t k = 0; k < f.size() && !matched; ++k) {
       const Coefficient& c = f[k].coefficient;
       if (used[k] || f[k].term != part.term || c.root != part.coefficient.root || c.path != part.coefficient.path ||
-          c.scale != -part.coefficient.scale)
+          c.scale != -sign * part.coefficient.scale)
         continue;
       used[k] = matched = true;
     }
@@ -185,7 +186,7 @@ std::optional<Coefficient> cameraBesidesPoint(const Linear& f, const Linear& com
   }
   for (size_t k = 0; k < f.size(); ++k) {
     const Coefficient& c = f[k].coefficient;
-    if (!used[k]) return !f[k].term && c.uniform() && c.scale == 1.0f && c.path.size() >= 2 ? std::optional(c) : std::nullopt;
+    if (!used[k]) return !f[k].term && c.uniform() && c.scale == sign && c.path.size() >= 2 ? std::optional(c) : std::nullopt;
   }
   return std::nullopt;
 }
@@ -202,6 +203,7 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
   struct Hit {
     uint32_t lane = 0, component = 0;
     Coefficient camera;
+    bool fromCamera = false;
   };
   std::map<uint32_t, std::vector<Hit>> byValue;
   std::set<Lane> seen;
@@ -214,17 +216,23 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
       const Linear& f = d.form(at);
       if (!q[3]) {
         for (uint32_t i = 0; i < 3; ++i)
-          if (auto camera = cameraBesidesPoint(f, d.form(q[i]->at))) byValue[inst.resultId].push_back({lane, i, *camera});
+          for (float sign : {1.0f, -1.0f})
+            if (auto camera = cameraBesidesPoint(f, d.form(q[i]->at), sign))
+              byValue[inst.resultId].push_back({lane, i, *camera, sign < 0});
         continue;
       }
       if (f.size() != 2) continue;
+      // c - p, or p - c (the direction from the camera, as a reflection or a fog ray reads it).
       const Part* camera = nullptr;
       const Part* position = nullptr;
       for (const Part& part : f) {
-        if (!part.term && part.coefficient.uniform() && part.coefficient.scale == 1.0f && part.coefficient.path.size() >= 2) camera = &part;
-        else if (part.term && !part.coefficient.uniform() && part.coefficient.scale == -1.0f) position = &part;
+        if (!part.term && part.coefficient.uniform() && std::abs(part.coefficient.scale) == 1.0f && part.coefficient.path.size() >= 2) camera = &part;
+        else if (part.term && !part.coefficient.uniform() && std::abs(part.coefficient.scale) == 1.0f) position = &part;
       }
-      if (!camera || !position) continue;
+      if (!camera || !position || camera->coefficient.scale != -position->coefficient.scale) continue;
+      const bool fromCamera = camera->coefficient.scale < 0;
+      Coefficient c = camera->coefficient;
+      c.scale = 1.0f;
       const Instruction* divide = d.definition(position->term->id);
       auto laneOf = [&](uint32_t id, Lane at) { return d.canonical({id, d.isVector(id) ? at.lane : 0}); };
       std::optional<Lane> numerator;
@@ -240,20 +248,25 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
       }
       if (!numerator) continue;
       for (uint32_t i = 0; i < 3; ++i)
-        if (*numerator == q[i]->at) byValue[inst.resultId].push_back({lane, i, camera->coefficient});
+        if (*numerator == q[i]->at) byValue[inst.resultId].push_back({lane, i, c, fromCamera});
     }
   });
   std::vector<CameraTextFix> found;
   for (const auto& [id, hits] : byValue) {
     CameraTextFix fix;
     std::array<bool, 3> have{};
+    std::set<bool> directions;
     for (const Hit& h : hits) {
       if (have[h.component]) continue;
       have[h.component] = true;
       fix.lanes[h.component] = h.lane;
-      fix.camera[h.component] = elementText(registers, h.camera);
+      Coefficient c = h.camera;
+      c.scale = 1.0f;
+      fix.camera[h.component] = elementText(registers, c);
+      directions.insert(h.fromCamera);
     }
-    if (!have[0] || !have[1] || !have[2]) continue;
+    if (!have[0] || !have[1] || !have[2] || directions.size() != 1) continue;
+    fix.fromCamera = *directions.begin();
     fix.line = a.lines.lineOf(id);
     bool named = fix.line != 0;
     for (uint32_t i = 0; i < 4; ++i) {

@@ -650,7 +650,10 @@ class DeferredRender : public ::testing::Test {
   // The screen-to-world check: truth, fix and baseline of kDumpScreenToWorld against the exact point.
   void checkScreenToWorld(const char* name, const char* text, const char* tag);
   // The camera check: the view vector to the rebuilt position from this eye's camera.
-  void checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm = false);
+  // `screenToWorldForm`: the dump rebuilds through a screen-to-world map (linear depth); `fromCamera`:
+  // its vector is p - c, not c - p.
+  void checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm = false,
+                       bool fromCamera = false);
 
   bool splicedText_ = false;  // the fix through the GLSL splice's text (compileTranspiled)
   std::unique_ptr<VulkanContext> context_;
@@ -916,7 +919,8 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
 // normalization. The position-only fix (the camera block removed) must be beyond the bound at more
 // than 90 % of the pixels: its highlight is the mono camera's. With the light's position in cb0[5]
 // instead (not the camera the matrix shows) the camera block must leave the vector as it is.
-void DeferredRender::checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm) {
+void DeferredRender::checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm,
+                                     bool fromCamera) {
   const Mat4 viewMatrix = view(), mono = projection(0);
   const Mat4 monoInverse = inverse(multiply(mono, viewMatrix));
   // The matrix the dump is fed: the inverse view-projection, or its screen-to-world form (which reads
@@ -942,7 +946,7 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
       ASSERT_TRUE(r.ok) << r.diagnostics.format();
       ASSERT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"].size(), 2u) << r.report.dump(2);
       EXPECT_EQ(r.report["passes"]["deferred-unprojection"]["fixed"][1].value("construct", ""),
-                "view vector camera - rebuilt position");
+                fromCamera ? "view vector rebuilt position - camera" : "view vector camera - rebuilt position");
       // The same text without the camera block: the position corrected, the camera mono.
       std::string withoutCamera = r.output;
       const size_t from = withoutCamera.find("  // ---- stereoshift: this eye's camera");
@@ -986,8 +990,10 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
           exact = times(stereoInverse, v);
           positionError = positionBound(monoF, v, true, eye * kSeparation, kConvergence);
         }
-        const ViewVector expected = viewVectorTo(eyeCamera, exact, positionError, cameraBound);
+        ViewVector expected = viewVectorTo(eyeCamera, exact, positionError, cameraBound);
         const double bound = expected.bound;
+        if (fromCamera)
+          for (double& c : expected.direction) c = -c;
         bool monoWrong = false;
         for (int c = 0; c < 3; ++c) {
           const double error = std::abs(bitsAt(fixedView[c], i) - expected.direction[c]);
@@ -1022,6 +1028,22 @@ TEST_F(DeferredRender, DumpStyleViewVectorThroughAReciprocalGetsThisEyesCameraBy
 
 TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {
   checkScreenToWorld("4a5b6c7d8e9f0123-ps_replace.txt", kDumpScreenToWorld.c_str(), "dump screen to world");
+}
+
+// The direction from the camera, p - c (as a reflection or a fog ray reads it), in both forms: this
+// eye's camera subtracted.
+TEST_F(DeferredRender, DumpStyleVectorFromTheCameraGetsThisEyesCameraByExecution) {
+  std::string text = kDumpViewVector;
+  const std::string toCamera = "  r3.xyz = cb0[5].xyz + -r2.xyz;\n";
+  ASSERT_NE(text.find(toCamera), std::string::npos);
+  text.replace(text.find(toCamera), toCamera.size(), "  r3.xyz = -cb0[5].xyz + r2.xyz;\n");
+  checkViewVector("5a6b7c8d9e0f1237-ps_replace.txt", text.c_str(), "dump vector from the camera", false, true);
+  const std::string rebuild = "  r3.xyzw = cb0[1].xyzw * r2.yyyy;\n  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;\n"
+                              "  r3.xyzw = r1.xxxx * cb0[2].xyzw + r3.xyzw;\n  r3.xyzw = cb0[3].xyzw + r3.xyzw;\n"
+                              "  r2.xyz = r3.xyz / r3.www;\n";
+  ASSERT_NE(text.find(rebuild), std::string::npos);
+  text.replace(text.find(rebuild), rebuild.size(), kScreenToWorldPointChain);
+  checkViewVector("5a6b7c8d9e0f1238-ps_replace.txt", text.c_str(), "dump screen to world vector from the camera", true, true);
 }
 
 // A screen-to-world point whose w the shader never reads: x, y and z of the columns alone.

@@ -363,11 +363,12 @@ const std::string kViewVectorPs = [] {
 // of the Vulkan check (2 (|dp| + |dC|) / |C_eye - p| + 8u); the position-only correction (the camera
 // block dropped) beyond it at every pixel; with a light's position in cb1[24] instead, the output
 // bit for bit the position-only one.
-TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) {
-  AsmShiftResult converted = shiftAssembly(kViewVectorPs, {});
+// `fromCamera`: the shader's vector is p - c (the direction from the camera), the expected one negated.
+void checkViewVector(const std::string& shader, bool fromCamera, const char* tag) {
+  AsmShiftResult converted = shiftAssembly(shader, {});
   ASSERT_TRUE(converted.ok) << converted.error.message;
   ASSERT_EQ(converted.corrections.size(), 2u) << converted.whyUnchanged;
-  EXPECT_EQ(undoAssemblyEdits(converted.output), kViewVectorPs);
+  EXPECT_EQ(undoAssemblyEdits(converted.output), shader);
   std::string positionOnly = converted.output;
   const size_t from = positionOnly.find("// ---- stereoshift: this eye's camera");
   ASSERT_NE(from, std::string::npos) << converted.output;
@@ -416,7 +417,7 @@ TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) {
         auto fix = rebuild(*fixed, pixel, cb1, stereoParams), mono = rebuild(*withoutCamera, pixel, cb1, stereoParams);
         bool monoWrong = false;
         for (int c = 0; c < 3; ++c) {
-          const double expected = expectedVector.direction[c];
+          const double expected = fromCamera ? -expectedVector.direction[c] : expectedVector.direction[c];
           worst = std::max(worst, std::abs(fix[c] - expected) / bound);
           outside += std::abs(fix[c] - expected) > bound;
           monoWrong |= std::abs(mono[c] - expected) > bound;
@@ -425,12 +426,24 @@ TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) {
         lightMoved += rebuild(*fixed, pixel, withLight, stereoParams) != rebuild(*withoutCamera, pixel, withLight, stereoParams);
         ++pixels;
       }
-    std::cout << "[asm view vector] eye " << eye << ": " << pixels << " pixels, error / first-order bound: fix " << worst
+    std::cout << "[" << tag << "] eye " << eye << ": " << pixels << " pixels, error / first-order bound: fix " << worst
               << "; mono camera beyond it at " << monoOutside << " pixels\n";
     EXPECT_EQ(outside, 0u) << "eye " << eye;
     EXPECT_EQ(monoOutside, pixels) << "eye " << eye << ": the mono camera's view vector should be wrong";
     EXPECT_EQ(lightMoved, 0u) << "eye " << eye << ": a light's position must not be moved per eye";
   }
+}
+
+TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) { checkViewVector(kViewVectorPs, false, "asm view vector"); }
+
+// p - c, as a reflection or a fog ray reads it (`add r1.xyz, r1.xyzx, -cb1[24].xyzx`): this eye's
+// camera subtracted.
+TEST(AsmUnprojection, VectorFromTheCameraGetsThisEyesCameraByExecution) {
+  std::string text = kViewVectorPs;
+  const std::string toCamera = "add r1.xyz, -r1.xyzx, cb1[24].xyzx\n";
+  ASSERT_NE(text.find(toCamera), std::string::npos);
+  text.replace(text.find(toCamera), toCamera.size(), "add r1.xyz, r1.xyzx, -cb1[24].xyzx\n");
+  checkViewVector(text, true, "asm vector from the camera");
 }
 
 // What the correction found, and where it put it.

@@ -335,7 +335,7 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
                                      const std::string& rT, bool sm5) {
   std::vector<std::string> block = {
       "this eye's camera (line " + std::to_string(c.lineNumber) +
-          ": v = camera - position, the camera the position's matrix shows)",
+          (c.fromCamera ? ": v = position - camera" : ": v = camera - position") + ", the camera the position's matrix shows)",
       stereoParamsLoad(rS, sm5),
   };
   const char lanes[] = "xyz";
@@ -350,7 +350,8 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
   block.push_back("and " + rT + ".x, " + rT + ".x, " + rT + ".z");
   block.push_back("mul " + rS + ".z, " + rS + ".x, " + rS + ".y");
   for (int i = 0; i < 3; ++i) {
-    block.push_back("mad " + rT + ".w, " + rS + ".z, " + u.column[i] + ", " + c.v[i]);
+    // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much.
+    block.push_back("mad " + rT + ".w, " + (c.fromCamera ? "-" : "") + rS + ".z, " + u.column[i] + ", " + c.v[i]);
     block.push_back("movc " + c.v[i] + ", " + rT + ".x, " + rT + ".w, " + c.v[i]);
   }
   return block;
@@ -412,9 +413,10 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
       if (!at.empty()) continue;
       at = cameraBlock(u, c, rS, rT, text.model.major >= 5);
       cameras = true;
-      result.corrections.push_back({"view vector camera - rebuilt position (specular, Fresnel, reflections)", u.rows, u.depth,
-                                    u.ndc,
-                                    "v + s.x*s.y*(" + u.column[0] + ", " + u.column[1] + ", " + u.column[2] + ") after line " +
+      result.corrections.push_back({c.fromCamera ? "view vector rebuilt position - camera (reflections, fog rays)"
+                                                  : "view vector camera - rebuilt position (specular, Fresnel, reflections)",
+                                    u.rows, u.depth, u.ndc,
+                                    std::string(c.fromCamera ? "v - " : "v + ") + "s.x*s.y*(" + u.column[0] + ", " + u.column[1] + ", " + u.column[2] + ") after line " +
                                         std::to_string(c.lineNumber) + ", where " + c.camera[0].substr(0, c.camera[0].rfind('.')) +
                                         " is the camera the matrix shows (checked at run time)",
                                     c.lineNumber, c.lineNumber});

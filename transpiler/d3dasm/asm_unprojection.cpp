@@ -602,29 +602,34 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     if (x.scale != 1.0f || z.scale != 1.0f || x.inverse || z.inverse) return {};
     centre[i] = elementText(*z.element);
   }
-  std::map<size_t, std::array<int, 3>> byOp;  // op -> the value of v.x, v.y, v.z it wrote
+  // op -> the value of v.x, v.y, v.z it wrote, and whether each is p - c (the direction from the
+  // camera) rather than c - p.
+  std::map<size_t, std::array<int, 3>> byOp;
+  std::map<size_t, std::set<bool>> fromCamera;
   for (int id = 0; id < static_cast<int>(values.size()); ++id) {
     const Value& v = values[id];
     if (v.op == SIZE_MAX || !v.at || v.form.size() != 2) continue;
     const Part* camera = nullptr;
     const Part* position = nullptr;
     for (const Part& part : v.form) {
-      if (part.term < 0 && part.coefficient.element && !part.coefficient.inverse && part.coefficient.scale == 1.0f) camera = &part;
-      else if (part.term >= 0 && !part.coefficient.element && part.coefficient.scale == -1.0f) position = &part;
+      if (part.term < 0 && part.coefficient.element && !part.coefficient.inverse && std::abs(part.coefficient.scale) == 1.0f) camera = &part;
+      else if (part.term >= 0 && !part.coefficient.element && std::abs(part.coefficient.scale) == 1.0f) position = &part;
     }
-    if (!camera || !position) continue;
+    if (!camera || !position || camera->coefficient.scale != -position->coefficient.scale) continue;
     const auto [numerator, denominator] = values[position->term].quotient;
     if (denominator != q[3]->value) continue;
     for (int i = 0; i < 3; ++i)
       if (numerator == q[i]->value) {
         auto [it, inserted] = byOp.try_emplace(v.op, std::array<int, 3>{-1, -1, -1});
         it->second[i] = id;
+        fromCamera[v.op].insert(camera->coefficient.scale < 0);
       }
   }
   std::vector<AsmUnprojection::Camera> cameras;
   for (const auto& [op, ids] : byOp) {
-    if (std::find(ids.begin(), ids.end(), -1) != ids.end()) continue;
+    if (std::find(ids.begin(), ids.end(), -1) != ids.end() || fromCamera[op].size() != 1) continue;
     AsmUnprojection::Camera c;
+    c.fromCamera = *fromCamera[op].begin();
     c.lineNumber = p.ops[op].line;
     c.afterLine = lineIndex.at(c.lineNumber);
     c.centre = centre;

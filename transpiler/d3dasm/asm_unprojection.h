@@ -56,6 +56,7 @@ struct AsmUnprojection {
     size_t afterLine = 0, lineNumber = 0;
     std::array<std::string, 3> v, camera;  // "r0.x"; "cb1[24].x"
     std::array<std::string, 4> centre;    // InvM[i][z]
+    bool fromCamera = false;              // v = q.xyz / q.w - c, not c - q.xyz / q.w
   };
   std::vector<Camera> cameras;
 };

@@ -229,15 +229,18 @@ Located locateCamera(const Lines& lines, const CameraTextFix& fix) {
 std::string cameraBlock(const CameraTextFix& fix, const Located& at, const std::string& indent, const std::string& nl) {
   const std::string s = std::string(kPrefix) + "_stereo", c = std::string(kPrefix) + "_camera", in = indent + "  ";
   std::string t = indent + "// ---- stereoshift: this eye's camera (line " + std::to_string(fix.line) +
-                  ": v = camera - position, the camera the position's matrix shows) ----" + nl;
+                  (fix.fromCamera ? ": v = position - camera" : ": v = camera - position") +
+                  ", the camera the position's matrix shows) ----" + nl;
   t += indent + "{" + nl;
   t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
   t += in + "float3 " + c + " = float3(" + fix.centre[0] + ", " + fix.centre[1] + ", " + fix.centre[2] + ")" +
        (fix.centre[3] == "1" ? "" : " / " + fix.centre[3]) + ";" + nl;
   t += in + "if (all(abs(float3(" + fix.camera[0] + ", " + fix.camera[1] + ", " + fix.camera[2] + ") - " + c +
        ") <= 0.0001 * (abs(" + c + ") + 1))) {" + nl;
+  // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much.
+  const std::string op = fix.fromCamera ? " -= " : " += ";
   for (size_t i = 0; i < 3; ++i)
-    t += in + "  " + at.component[i] + " += " + s + ".x * " + s + ".y * " + fix.columnX[i] + ";" + nl;
+    t += in + "  " + at.component[i] + op + s + ".x * " + s + ".y * " + fix.columnX[i] + ";" + nl;
   t += in + "}" + nl;
   t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
   return t;
