@@ -49,7 +49,8 @@ std::string describe(const spirv::Module& m, uint32_t root, const AccessPath& pa
 namespace {
 
 // The lanes of an input that (root, path) reads: the one lane a path ending in a vector's
-// component names, else every lane of the vector (or scalar) it ends at.
+// component names, else every lane of the vector it ends at; none for a scalar input, a whole value
+// that tells no x from y (an interpolated w, `float v2 : TEXCOORD1`, that `v1.xy / v2.x` divides by).
 uint32_t inputLanesOf(const spirv::Module& m, uint32_t root, const AccessPath& path) {
   const Instruction* var = m.definition(root);
   if (!var) return 0xFu;
@@ -64,7 +65,7 @@ uint32_t inputLanesOf(const spirv::Module& m, uint32_t root, const AccessPath& p
   }
   const Instruction* t = m.definition(type);
   if (t && t->opcode == spv::OpTypeVector) return (1u << t->operand(1)) - 1;
-  return 1u;
+  return 0u;
 }
 
 }  // namespace

@@ -82,6 +82,22 @@ void main() {
 }
 )";
 
+// The full-screen triangle handing on a copy of its clip position's x and y times a w (location 0)
+// and that w alone (location 1), as an engine's light pass hands the screen position to a pixel
+// shader that divides one by the other (`v1.xy / v2.x`).
+const char* kClipCopyVert = R"(#version 450
+layout(location = 0) out vec4 outClipCopy;
+layout(location = 1) out float outW;
+out gl_PerVertex { vec4 gl_Position; };
+void main() {
+  const vec2 positions[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+  vec2 p = positions[gl_VertexIndex];
+  outClipCopy = vec4(p * 1.75, 0.0, 0.0);
+  outW = 1.75;
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
 const char* kLightingFrag = R"(#version 450
 layout(set = 0, binding = 0) uniform FrameUBO {
     mat4 invViewProj;
@@ -1028,6 +1044,22 @@ TEST_F(DeferredRender, DumpStyleViewVectorThroughAReciprocalGetsThisEyesCameraBy
 
 TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {
   checkScreenToWorld("4a5b6c7d8e9f0123-ps_replace.txt", kDumpScreenToWorld.c_str(), "dump screen to world");
+}
+
+// The NDC from an interpolated copy of the clip position divided by its w, a scalar input of its own
+// (`r2.xy = v1.xy / v2.xx;`): the w tells no x from y, and the point is corrected all the same.
+TEST_F(DeferredRender, DumpStyleScreenToWorldFromAnInterpolatedClipPositionFixedByExecution) {
+  std::string text = kDumpScreenToWorldPoint;
+  auto replace = [&](const std::string& from, const std::string& to) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("  float4 v0 : SV_POSITION0,\n", "  float4 v0 : SV_POSITION0,\n  float4 v1 : TEXCOORD0,\n  float v2 : TEXCOORD1,\n");
+  replace("  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n", "  r2.xy = v1.xy / v2.xx;\n");
+  const std::vector<uint32_t> fullScreen = fullScreenVert_;
+  fullScreenVert_ = compileOriginal("clip_copy.vert", kClipCopyVert, TranspileOptions{});
+  checkScreenToWorld("4a5b6c7d8e9f0125-ps_replace.txt", text.c_str(), "dump screen to world, v1.xy / v2.x");
+  fullScreenVert_ = fullScreen;
 }
 
 // The direction from the camera, p - c (as a reflection or a fog ray reads it), in both forms: this

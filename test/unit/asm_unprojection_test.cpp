@@ -126,6 +126,31 @@ mov o0.w, l(1.000000)
 ret
 )");
 
+// The same point with its NDC divided out of an interpolated copy of the clip position by its w,
+// another input (`v1.xy / v2.x`, the w in a register of its own): lanes of v2 both x and y read.
+const std::string kScreenToWorldInterpolatedNdcPs = R"(ps_5_0
+dcl_globalFlags refactoringAllowed
+dcl_constantbuffer cb1[24], immediateIndexed
+dcl_resource_texture2d (float,float,float,float) t0
+dcl_input_ps_siv linear noperspective v0.xy, position
+dcl_input_ps linear v1.xy
+dcl_input_ps linear v2.x
+dcl_output o0.xyzw
+dcl_temps 3
+ftoi r0.xy, v0.xyxx
+mov r0.zw, l(0,0,0,0)
+ld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw
+div r1.xy, v1.xyxx, v2.xxxx
+mul r1.xy, r0.zzzz, r1.xyxx
+mul r2.xyz, r1.yyyy, cb1[21].xyzx
+mad r2.xyz, r1.xxxx, cb1[20].xyzx, r2.xyzx
+mad r2.xyz, r0.zzzz, cb1[22].xyzx, r2.xyzx
+add r2.xyz, r2.xyzx, cb1[23].xyzx
+mov o0.xyz, r2.xyzx
+mov o0.w, l(1.000000)
+ret
+)";
+
 // The view-ray form per component: the NDC times the linear view depth, x divided by P00 and y by
 // P11 (cb1[0].x, cb1[1].y), z = -depth.
 const std::string kViewRayPs = linearDepthShader(2, R"(div r2.x, r1.x, cb1[0].x
@@ -193,6 +218,11 @@ struct Pixel {
 std::array<double, 3> rebuild(const Program& program, const Pixel& p, const std::vector<Vec4>& cb1, Vec4 stereo) {
   Machine m;
   m.inputs[0] = vec(p.x, p.y, 0.0f, 1.0f);
+  // A copy of the clip position's x and y (the pixel's NDC times a w) in v1, that w alone in v2, as a
+  // shader that divides them reads them.
+  const float w = 1.75f, nx = 2.0f * p.x / kSize - 1.0f, ny = 1.0f - 2.0f * p.y / kSize;
+  m.inputs[1] = vec(nx * w, ny * w, 0.0f, 0.0f);
+  m.inputs[2] = vec(w, 0.0f, 0.0f, 0.0f);
   m.cbuffers[0] = {Vec4{}, Vec4{}, vec(0, 0, 1.0f / kSize, 1.0f / kSize)};
   m.cbuffers[1] = cb1;
   m.resource = [&](uint32_t slot, const Vec4&, const std::string&) {
@@ -298,6 +328,13 @@ TEST(AsmUnprojection, ScreenToWorldPointWithoutWCorrectedByExecution) {
   EXPECT_NE(converted.output.find("mad r2.z, -cb1[20].z, r3.w, r2.z"), std::string::npos) << converted.output;
   EXPECT_EQ(converted.output.find("cb1[20].w"), std::string::npos) << converted.output;
   checkByExecution(kScreenToWorldPointPs.c_str(), false, "asm screen to world point", true);
+}
+
+TEST(AsmUnprojection, ScreenToWorldFromAnInterpolatedClipPositionCorrectedByExecution) {
+  AsmShiftResult converted = shiftAssembly(kScreenToWorldInterpolatedNdcPs, {});
+  ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
+  EXPECT_EQ(converted.corrections[0].ndc, "v1");
+  checkByExecution(kScreenToWorldInterpolatedNdcPs.c_str(), false, "asm screen to world, v1.xy / v2.x", true);
 }
 
 // The view ray, per eye on 1024 pixel centres with view depths 1.5 to 60: the view-space x of the

@@ -487,9 +487,35 @@ std::optional<std::pair<int, uint32_t>> screenAxis(const std::set<std::pair<uint
   return std::pair{has0 ? 0 : 1, reg};
 }
 
+// The input lanes a term of a product is computed from besides its texel factor (none if it is the
+// depth, or has a texel the way a screen position does not), for telling x from y.
+std::optional<std::set<std::pair<uint32_t, uint32_t>>> screenLanes(const std::vector<Value>& values, int term) {
+  const Origin o = originOf(values[term]);
+  if (o.texture && o.lanes.empty()) return std::nullopt;  // the depth
+  if (!o.texture) return std::set<std::pair<uint32_t, uint32_t>>(o.lanes.begin(), o.lanes.end());
+  std::set<std::pair<uint32_t, uint32_t>> lanes;
+  for (int factor : values[term].factors) {
+    const Origin f = originOf(values[factor]);
+    if (!f.texture) lanes.insert(f.lanes.begin(), f.lanes.end());
+  }
+  return lanes;
+}
+
 std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) {
   Roles r;
   std::vector<std::pair<int, int>> scaled;  // (term, the texel factor it is scaled by)
+  // Lanes every screen term reads (an interpolated w both are divided by: `div r0.xy, v1.xyxx,
+  // v2.xxxx`) tell no x from y: left out.
+  std::optional<std::set<std::pair<uint32_t, uint32_t>>> common;
+  for (const auto& [term, c] : m.byTerm)
+    if (auto lanes = screenLanes(values, term)) {
+      if (!common) common = *lanes;
+      else std::erase_if(*common, [&](const auto& lane) { return !lanes->count(lane); });
+    }
+  auto withoutCommon = [&](std::set<std::pair<uint32_t, uint32_t>> lanes) {
+    if (common) std::erase_if(lanes, [&](const auto& lane) { return common->count(lane) > 0; });
+    return lanes;
+  };
   auto assign = [&](int axis, uint32_t reg, int term) {
     if ((r.x >= 0 || r.y >= 0) && r.input != reg) return false;  // x and y of one input
     int& role = axis == 0 ? r.x : r.y;
@@ -507,7 +533,7 @@ std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) 
       continue;
     }
     if (!o.texture) {
-      auto axis = screenAxis(o.lanes);
+      auto axis = screenAxis(withoutCommon({o.lanes.begin(), o.lanes.end()}));
       if (!axis || !assign(axis->first, axis->second, term)) return std::nullopt;
       continue;
     }
@@ -520,7 +546,7 @@ std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) 
       else if (!f.texture) lanes.insert(f.lanes.begin(), f.lanes.end());
       else return std::nullopt;
     }
-    auto axis = depth >= 0 ? screenAxis(lanes) : std::nullopt;
+    auto axis = depth >= 0 ? screenAxis(withoutCommon(lanes)) : std::nullopt;
     if (!axis || !assign(axis->first, axis->second, term)) return std::nullopt;
     scaled.push_back({term, depth});
   }
