@@ -268,9 +268,13 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
   for (size_t i = 0; i < plans.size(); ++i) {
     TranspileOptions stageOptions = pipelineOptions;
     stageOptions.shiftThisStage = static_cast<int>(i) == last;
-    stageOptions.stageHasOtherUnits = std::any_of(plans.begin(), plans.end(), [&](const auto& other) {
+    auto otherUnit = [&](const auto& other) {
       return other != plans[i] && other->stage && plans[i]->stage && other->stage->stage &&
              other->stage->stage == plans[i]->stage->stage;
+    };
+    stageOptions.stageHasOtherUnits = std::any_of(plans.begin(), plans.end(), otherUnit);
+    stageOptions.positionWrittenByOtherUnit = std::any_of(plans.begin(), plans.end(), [&](const auto& other) {
+      return otherUnit(other) && other->input && textWritesPosition(other->input->contents);
     });
     results.push_back(convertStage(*plans[i], stageOptions));
     if (dumpDefault && kinds[i] == InputKind::Source) note3DMigotoDefault(stages[i], results.back());

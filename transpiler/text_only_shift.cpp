@@ -186,7 +186,10 @@ bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& p
 
 bool isVulkanGlslText(const std::string& text) { return readText(text).vulkan; }
 
-Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options) {
+bool textWritesPosition(const std::string& text) { return readText(text).writesPosition; }
+
+Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options,
+                                    bool positionInOtherUnit) {
   TextOnlyShift result;
   VersionLine v = findVersion(input.contents);
   if (!v.problem.empty()) {
@@ -196,7 +199,7 @@ Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const 
   if (!facts.problem.empty()) {
     return errorAt(0, 0, "the text has " + facts.problem);
   }
-  if (!facts.writesPosition) {
+  if (!facts.writesPosition && !positionInOtherUnit) {
     return errorAt(0, 0, "the text writes no gl_Position of its own");
   }
   for (const std::string* name : {&options.eye.eyeSignName, &options.eye.separationName, &options.eye.convergenceName})

@@ -49,7 +49,13 @@ const std::vector<std::string>& textOnlyNotDone();
 // parse: a pre-rasterization stage, kept in its own language, two-pass stereo, no --require-analysis.
 bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd);
 
-Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options);
+// `positionInOtherUnit`: another compilation unit of the stage assigns gl_Position (OpenGL links them
+// into one stage), so a text that writes none itself still takes the shift around its `main`.
+Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options,
+                                    bool positionInOtherUnit = false);
+
+// Whether GLSL text assigns gl_Position (or a component of it) itself.
+bool textWritesPosition(const std::string& text);
 
 // Whether GLSL text says it is Vulkan GLSL (descriptor sets, push constants, Vulkan built-ins, subpass
 // inputs, GL_KHR_vulkan_glsl): OpenGL's compilers cannot judge it.

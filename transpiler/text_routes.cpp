@@ -81,7 +81,7 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   if (glslangsGap(plan, options).empty()) return false;
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
-  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options);
+  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, options.positionWrittenByOtherUnit);
   return takeTextOnlyShift(plan, stage, std::move(shifted), route) && checkOutputWithMesa(plan);
 }
 

@@ -16,6 +16,9 @@ struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
   // A pipeline holds another compilation unit of this stage (OpenGL links a stage from several
   // shader objects): a unit that does not link alone may be one of them (stage_plan.h).
   bool stageHasOtherUnits = false;
+  // ... and one of those assigns gl_Position (by its text): a unit whose `main` only calls into the
+  // others still gets the shift around its `main` (text_only_shift.h).
+  bool positionWrittenByOtherUnit = false;
 };
 
 // The eye parameters from 3Dmigoto's StereoParams texture (t125), as 3Dmigoto fills it

@@ -316,6 +316,17 @@ std::set<std::string> builtinFunctionsDefined(const Scan& scan) {
   return defined;
 }
 
+// How many braces are open at token `k` (code tokens only).
+int braceDepthAt(const source::LexedText& lexed, size_t k) {
+  int depth = 0;
+  for (size_t i = 0; i < k && i < lexed.size(); ++i) {
+    if (!lexed[i].isCode()) continue;
+    if (lexed.isPunct(i, '{')) ++depth;
+    if (lexed.isPunct(i, '}')) depth = std::max(0, depth - 1);
+  }
+  return depth;
+}
+
 // `name` at `t` names a function, not a member selected after `.`.
 bool isFreeName(const source::LexedText& lexed, const Token& t) {
   size_t before = previousCodeToken(lexed, t.index);
@@ -594,6 +605,14 @@ class LegacyTranslator {
     } else if (!es_ && w == "ftransform") {
       return rewriteFtransform(t);
     } else if (compat_.count(w)) {
+      // The shader's own redeclaration of it (`varying vec4 gl_TexCoord[3];`, sizing the array, as
+      // the compatibility profile allows) is the declaration: renamed, and none of ours beside it.
+      // (At file scope: a member of a redeclared built-in block is not one; the analysis copy leaves
+      // such a block out.)
+      size_t before = previousCodeToken(scan_.lexed, t.index);
+      if (before != std::string::npos && scan_.lexed.isIdentifier(before) && scan_.lexed[before].isCode() &&
+          braceDepthAt(scan_.lexed, t.index) == 0)
+        redeclared_.insert(w);
       declare_.insert(w);
       rename(compat_.at(w).declaredName);
     } else if (!es_ && isUntranslatedCompatBuiltin(w)) {
@@ -631,6 +650,7 @@ class LegacyTranslator {
     if (fragColor_) decls += "out " + outPrecision + "vec4 stereoshift_FragColor; ";
     if (fragData_) decls += "out " + outPrecision + "vec4 stereoshift_FragData[gl_MaxDrawBuffers]; ";
     for (const auto& name : declare_) {
+      if (redeclared_.count(name)) continue;
       const CompatBuiltin& b = compat_.at(name);
       decls += b.storage + " " + b.type + " " + b.declaredName + (b.arraySize.empty() ? "" : "[" + b.arraySize + "]") + "; ";
       declared.push_back(b.declaredName);
@@ -677,6 +697,7 @@ class LegacyTranslator {
   std::map<std::string, CompatBuiltin> compat_;
   std::vector<Edit> edits_;
   std::set<std::string> declare_;  // compat built-ins (by gl_ name) used
+  std::set<std::string> redeclared_;  // ... and declared by the shader itself (a type name before it)
   std::set<std::string> helpers_;  // shadow helpers used
   std::set<std::string> userBuiltins_;  // ESSL 100: the user's functions named like ESSL 3-only built-ins
   bool fragColor_ = false, fragData_ = false;
