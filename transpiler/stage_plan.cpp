@@ -250,6 +250,14 @@ bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, cons
   return false;
 }
 
+bool mesaCompilesOriginal(const StagePlan& plan) {
+  if (!plan.input || plan.front.info.language != SourceLanguage::Glsl || isVulkanGlslText(plan.input->contents))
+    return false;
+  const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
+  return compileWithMesa(plan.input->contents, stage, plan.input->path, versionIfNone(plan)).kind ==
+         MesaVerdict::Kind::Compiled;
+}
+
 bool checkOutputWithMesa(StagePlan& plan) {
   if (plan.binaryOutput || plan.front.info.language != SourceLanguage::Glsl || !plan.record.mesa) return true;
   if (plan.record.target && *plan.record.target != TargetLanguage::Glsl && *plan.record.target != TargetLanguage::Essl)

@@ -71,6 +71,9 @@ bool isSpirvInput(const SourceFile& input);
 // After step 5, for a GLSL stage whose original only Mesa vouched for (the lifted copy's splice):
 // the output must compile in Mesa too (frontend/mesa_compiler.h); false, with the error, when not.
 bool checkOutputWithMesa(StagePlan& plan);
+// Whether Mesa's GLSL compiler compiles the original text of a GLSL stage glslang refused, asked
+// quietly: the stage's diagnostics are left as they are whatever the answer (no verdict: false).
+bool mesaCompilesOriginal(const StagePlan& plan);
 // Mesa's word on the original text of a GLSL stage that `route` would take where glslang did not
 // say yes as written: true when the route may go on (see stage_plan.cpp).
 bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, const char* route);

@@ -42,14 +42,30 @@ bool errorsInIncludes(const StagePlan& plan) {
   });
 }
 
+// Whether glslang's refusal is of the text as one compilation unit, which a driver's compiler can
+// judge alone: no link error (a function without a body, no entry point: a compiler takes what a
+// link refuses) and none of the front end's own limits (kept as they are, whatever a driver takes).
+bool onlyCompileErrors(const StagePlan& plan) {
+  return std::none_of(plan.diags.all().begin(), plan.diags.all().end(), [](const Diagnostic& d) {
+    return d.severity == Severity::Error &&
+           (d.message.find("Linking") != std::string::npos || d.message.find("No function definition") != std::string::npos ||
+            d.message.find("Missing entry point") != std::string::npos ||
+            d.message.find("the front end's limit") != std::string::npos);
+  });
+}
+
 // What may make glslang's refusal glslang's own gap rather than the shader's error: what the text
 // uses that glslang reads more narrowly than drivers (glslangGapIn), a unit of a stage linked from
-// several, or a crash (whatever the text). Empty: the shader's own error.
+// several, a crash (whatever the text), or, where glslang names none of those, a real driver's
+// word: Mesa's GLSL compiler compiles the original (asked quietly: when it refuses too, glslang's
+// errors are said as they are). Empty: the shader's own error.
 std::string glslangsGap(const StagePlan& plan, const TranspileOptions& options) {
   std::string gap = glslangGapIn(plan.input->contents);
   if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
   if (gap.empty() && options.glslangCrashed) gap = "what crashed glslang";
   if (gap.empty() && !options.crashedAfterFrontEnd.empty()) gap = "what crashed " + options.crashedAfterFrontEnd;
+  if (gap.empty() && onlyCompileErrors(plan) && mesaCompilesOriginal(plan))
+    gap = "what glslang refuses and Mesa's GLSL compiler compiles";
   return gap;
 }
 
