@@ -79,6 +79,26 @@ bool definesMain(const SourceFile& input) {
   return false;
 }
 
+// Whether GLSL text calls EmitVertex or EmitStreamVertex: where a geometry stage's vertices are
+// emitted, and so where its shift goes.
+bool callsEmit(const SourceFile& input) {
+  source::LexedText lexed(input.contents);
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed[k].isCode() && lexed.isIdentifier(k) &&
+        (lexed.text(k) == "EmitVertex" || lexed.text(k) == "EmitStreamVertex") &&
+        lexed.isPunct(lexed.nextNonComment(k), '('))
+      return true;
+  return false;
+}
+
+// Of several compilation units of the stage that gets the shift, which takes it: the one that
+// defines `main` (its wrapper shifts what the others write), or, in a geometry stage, the one that
+// emits the vertices (the shift goes before each emit, wherever `main` is).
+int shiftPreference(std::optional<Stage> stage, const SourceFile& input) {
+  if (stage == Stage::Geometry && callsEmit(input)) return 2;
+  return definesMain(input) ? 1 : 0;
+}
+
 // A pipeline has one shader per stage; OpenGL may link one stage from several compilation units,
 // of which one defines `main`. Two GLSL units of one stage that each define `main` are two shaders
 // (`--pipeline a.vert,b.vert`): the second would be left mono without a word. Refused: every stage
@@ -249,9 +269,10 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
       plan->stage = decideInputStage(stages[i], pipelineOptions);
     }
     // Of several compilation units of the last stage (OpenGL links a stage from several shader
-    // objects), the one that defines `main` takes the shift: its wrapper shifts what the others write.
+    // objects), the one shiftPreference says takes the shift.
     if (int rank = shiftRank(plan->stage->stage);
-        rank > lastRank || (rank > 0 && rank == lastRank && !definesMain(stages[last]) && definesMain(stages[i]))) {
+        rank > lastRank || (rank > 0 && rank == lastRank && shiftPreference(plan->stage->stage, stages[i]) >
+                                                                shiftPreference(plans[last]->stage->stage, stages[last]))) {
       last = static_cast<int>(i);
       lastRank = rank;
     }
