@@ -186,7 +186,38 @@ struct CompatBuiltin {
   std::string type;
   std::string declaredName;  // stereoshift_...
   std::string arraySize;     // "" for none
+  std::string structure;     // the struct `type` names, declared before it ("" for a plain type)
 };
+
+// The fixed-function state of the compatibility profile as uniform structs, as the GLSL 1.10-1.50
+// specifications list their members, each struct named stereoshift_<the specification's name>:
+// the analysis reads the shader's own uses of them (`gl_LightSource[0].position`), the output keeps
+// the shader's text. The arrays are sized by the limits every driver has at least of (8 lights, 8
+// texture coordinate sets and units, 8 clip planes; the shader's own indices are its own business).
+struct FixedFunctionStruct {
+  const char* name;
+  const char* members;
+};
+const FixedFunctionStruct kFixedFunctionStructs[] = {
+    {"LightSourceParameters",
+     "vec4 ambient; vec4 diffuse; vec4 specular; vec4 position; vec4 halfVector; vec3 spotDirection; "
+     "float spotExponent; float spotCutoff; float spotCosCutoff; float constantAttenuation; "
+     "float linearAttenuation; float quadraticAttenuation;"},
+    {"LightModelParameters", "vec4 ambient;"},
+    {"LightModelProducts", "vec4 sceneColor;"},
+    {"LightProducts", "vec4 ambient; vec4 diffuse; vec4 specular;"},
+    {"MaterialParameters", "vec4 emission; vec4 ambient; vec4 diffuse; vec4 specular; float shininess;"},
+    {"FogParameters", "vec4 color; float density; float start; float end; float scale;"},
+    {"PointParameters",
+     "float size; float sizeMin; float sizeMax; float fadeThresholdSize; float distanceConstantAttenuation; "
+     "float distanceLinearAttenuation; float distanceQuadraticAttenuation;"},
+};
+
+std::string fixedFunctionStruct(const std::string& name) {
+  for (const auto& s : kFixedFunctionStructs)
+    if (name == s.name) return std::string("struct stereoshift_") + s.name + " { " + s.members + " };";
+  return "";
+}
 
 // The compatibility built-ins of desktop GLSL 1xx, as `stage` sees them.
 std::map<std::string, CompatBuiltin> compatBuiltins(Stage stage) {
@@ -204,6 +235,26 @@ std::map<std::string, CompatBuiltin> compatBuiltins(Stage stage) {
   }
   add("gl_NormalMatrix", "uniform", "mat3", "NormalMatrix");
   add("gl_NormalScale", "uniform", "float", "NormalScale");
+  // Fixed-function lighting, material, fog and point state, clip and texture-generation planes.
+  auto addState = [&](const std::string& glName, const std::string& structName, const std::string& array = "") {
+    add(glName, "uniform", "stereoshift_" + structName, glName.substr(3), array);
+    m[glName].structure = structName;
+  };
+  addState("gl_LightSource", "LightSourceParameters", "8");
+  addState("gl_LightModel", "LightModelParameters");
+  addState("gl_FrontLightModelProduct", "LightModelProducts");
+  addState("gl_BackLightModelProduct", "LightModelProducts");
+  addState("gl_FrontLightProduct", "LightProducts", "8");
+  addState("gl_BackLightProduct", "LightProducts", "8");
+  addState("gl_FrontMaterial", "MaterialParameters");
+  addState("gl_BackMaterial", "MaterialParameters");
+  addState("gl_Fog", "FogParameters");
+  addState("gl_Point", "PointParameters");
+  add("gl_ClipPlane", "uniform", "vec4", "ClipPlane", "8");
+  add("gl_TextureEnvColor", "uniform", "vec4", "TextureEnvColor", "8");
+  for (const char* plane : {"gl_EyePlaneS", "gl_EyePlaneT", "gl_EyePlaneR", "gl_EyePlaneQ", "gl_ObjectPlaneS",
+                            "gl_ObjectPlaneT", "gl_ObjectPlaneR", "gl_ObjectPlaneQ"})
+    add(plane, "uniform", "vec4", std::string(plane).substr(3), "8");
   bool fragment = stage == Stage::Fragment;
   if (stage == Stage::Vertex) {
     add("gl_Vertex", "in", "vec4", "Vertex");
@@ -235,12 +286,8 @@ std::map<std::string, CompatBuiltin> compatBuiltins(Stage stage) {
 // Compatibility state a translation cannot stand in for with a plain declaration (structs of the
 // fixed-function pipeline): refused by name.
 bool isUntranslatedCompatBuiltin(const std::string& name) {
-  static const std::set<std::string> names = {
-      "gl_LightSource", "gl_LightModel", "gl_FrontLightModelProduct", "gl_BackLightModelProduct",
-      "gl_FrontLightProduct", "gl_BackLightProduct", "gl_FrontMaterial", "gl_BackMaterial", "gl_Fog",
-      "gl_Point", "gl_ClipPlane", "gl_TextureEnvColor", "gl_EyePlaneS", "gl_EyePlaneT", "gl_EyePlaneR",
-      "gl_EyePlaneQ", "gl_ObjectPlaneS", "gl_ObjectPlaneT", "gl_ObjectPlaneR", "gl_ObjectPlaneQ",
-      "gl_FrontColorIn", "gl_BackColorIn", "gl_TexCoordIn", "gl_FogFragCoordIn", "gl_SecondaryColorIn"};
+  static const std::set<std::string> names = {"gl_FrontColorIn", "gl_BackColorIn", "gl_TexCoordIn",
+                                              "gl_FogFragCoordIn", "gl_SecondaryColorIn"};
   return names.count(name) > 0;
 }
 
@@ -616,9 +663,8 @@ class LegacyTranslator {
       declare_.insert(w);
       rename(compat_.at(w).declaredName);
     } else if (!es_ && isUntranslatedCompatBuiltin(w)) {
-      return locate(t.begin, "'" + w + "' is fixed-function state of the compatibility profile that stereoshift "
-                             "cannot translate (only the transform matrices, vertex attributes, colours, "
-                             "texture coordinates and fog coordinate are); pass it as a uniform of your own");
+      return locate(t.begin, "'" + w + "' is a compatibility-profile input of the geometry stage that stereoshift "
+                             "cannot translate (the other compatibility built-ins are); pass it as a varying of your own");
     } else if (!es_ && isCompatBuiltin(w)) {
       // A compatibility built-in of another stage (gl_Vertex in a fragment shader).
       return locate(t.begin, "'" + w + "' is not available in a " + std::string(stageName(stage_)) + " shader");
@@ -649,9 +695,11 @@ class LegacyTranslator {
     auto outPrecision = es_ ? std::string("mediump ") : std::string();
     if (fragColor_) decls += "out " + outPrecision + "vec4 stereoshift_FragColor; ";
     if (fragData_) decls += "out " + outPrecision + "vec4 stereoshift_FragData[gl_MaxDrawBuffers]; ";
+    std::set<std::string> structures;
     for (const auto& name : declare_) {
       if (redeclared_.count(name)) continue;
       const CompatBuiltin& b = compat_.at(name);
+      if (!b.structure.empty() && structures.insert(b.structure).second) decls += fixedFunctionStruct(b.structure) + " ";
       decls += b.storage + " " + b.type + " " + b.declaredName + (b.arraySize.empty() ? "" : "[" + b.arraySize + "]") + "; ";
       declared.push_back(b.declaredName);
     }
