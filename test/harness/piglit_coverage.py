@@ -5,7 +5,8 @@ an OpenGL driver's developers, never a test of ours (nothing of piglit's is copi
 
 For each sampled .shader_test with inline pre-rasterization stages whose original passes in Mesa
 (shader_runner, headless), the stages are converted as one pipeline (`--pipeline`, default options)
-and the converted test is run again with the eye parameters left at 0 (mono). Printed: how many ran,
+and the converted test is run again with the eye parameters left at 0 (mono); with --stereo, again
+with eyeSign 1 where the test draws. Printed: how many ran,
 how many converted and still pass ("ok"), how many stereoshift refused, and how many it converted
 but no longer pass ("wrong": the worst result, a broken drop-in written with exit 0), with the
 reasons grouped.
@@ -72,6 +73,21 @@ def measure(path, args):
                 converted[i] = (sections[i][0], o.read())
         try:
             ok, log = piglit.run_runner(runner, piglit.render(converted), work, "mono")
+            # Only where the converted stages declare the eye parameters, the test draws (a linker
+            # test only links) and one program takes uniforms (not separate shader objects).
+            declared = any(re.search(r"\beyeSign\b", body) for _, body in converted)
+            draws = any(n == "test" and re.search(r"^\s*draw\b", b, re.M) for n, b in sections)
+            if ok and args.stereo and declared and draws and "SPIRV" not in text and "separate_shader" not in text:
+                # The test's own probes with the eye parameters set: they hold where it draws with
+                # w = 1 (the runtime cutoff keeps such draws mono); a test drawing perspective
+                # geometry moves, which this cannot tell from a fault: listed for a person to look at.
+                block = any(re.search(r"\buniform\s+StereoParams\b", body) for _, body in converted)
+                prefix = "StereoParams." if block else ""
+                eye = [(prefix + "eyeSign", "1"), (prefix + "separation", "0.5"), (prefix + "convergence", "1.0")]
+                stereo_ok, stereo_log = piglit.run_runner(
+                    runner, piglit.render(piglit.with_test(converted, eye, None)), work, "stereo")
+                if not stereo_ok:
+                    return "stereo-differs", stereo_log[-400:]
         except subprocess.TimeoutExpired:
             return "wrong", "the converted test timed out"
         return ("ok", "") if ok else ("wrong", log[-400:])
@@ -95,6 +111,9 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--execution-only", action="store_true", help="only tests under an execution/ folder")
     ap.add_argument("--json", help="write every test's result here")
+    ap.add_argument("--stereo", action="store_true",
+                    help="also run each converted test with eyeSign 1 (separation 0.5, convergence 1): its own probes "
+                         "must hold where it draws with w = 1 ('stereo-differs' otherwise, for a person to look at)")
     args = ap.parse_args()
     if not os.path.exists(os.path.join(args.piglit_bin, "shader_runner")) or not os.path.isdir(args.piglit_tests):
         print("piglit's shader_runner or its tests are not installed: skipped")
@@ -109,14 +128,16 @@ def main():
     with ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(lambda t: measure(t, args), tests))
     counts = Counter(kind for kind, _ in results)
-    ran = counts["ok"] + counts["refused"] + counts["wrong"]
+    ran = counts["ok"] + counts["refused"] + counts["wrong"] + counts["stereo-differs"]
     print("piglit tests sampled: %d (seed %d); run (the original passes, a pre-rasterization stage): %d"
           % (len(tests), args.seed, ran))
     if ran:
         print("converted and still passing: %d (%.1f%%)" % (counts["ok"], 100.0 * counts["ok"] / ran))
         print("refused:                     %d" % counts["refused"])
         print("converted, no longer pass:   %d" % counts["wrong"])
-    for kind in ("wrong", "refused"):
+        if args.stereo:
+            print("mono ok, stereo differs:     %d" % counts["stereo-differs"])
+    for kind in ("wrong", "stereo-differs", "refused"):
         reasons = Counter(reason_key(why) for k, why in results if k == kind)
         if reasons:
             print("%s, by reason:" % kind)
