@@ -107,9 +107,14 @@ std::optional<spirv::Module> makeFoldedCopy(const spirv::Module& module, bool ac
   dropUnreachableFunctions(*reduced);
   std::vector<std::string> flags = {"--private-to-local", "--scalar-replacement=100"};
   if (accessChains) flags.push_back("--convert-local-access-chains");
-  for (const char* flag : {"--eliminate-local-single-block", "--eliminate-local-single-store",
-                           "--eliminate-local-multi-store", "--ccp", "--simplify-instructions",
-                           "--redundancy-elimination"})
+  flags.push_back("--eliminate-local-single-block");
+  // The register copy: a register read in a condition before a branch (`if (r1.x >= 1) discard;`,
+  // a sky's early out) leaves an access chain into it that the single-block pass makes dead, and a
+  // variable with any access chain is never made SSA values, so every later read of the register
+  // saw every write to it. Dead code removed first.
+  if (accessChains) flags.push_back("--eliminate-dead-code-aggressive");
+  for (const char* flag : {"--eliminate-local-single-store", "--eliminate-local-multi-store", "--ccp",
+                           "--simplify-instructions", "--redundancy-elimination"})
     flags.push_back(flag);
   if (!runOptimizer(flags, reduced->encode(), &folded))
     return std::nullopt;

@@ -837,6 +837,18 @@ TEST_F(DeferredRender, DumpStyleMadChainFixedInItsTextByExecution) {
   checkRebuiltPositions("0a1b2c3d4e5f6071-ps_replace.txt", kDumpMadLighting.c_str(), "dump mad", &columns);
 }
 
+// A sky's early out between the depth read and the rebuild (`if (r1.x >= 1) discard;`, then the
+// `mad` chain): the register copy still follows every register through the branch, and the text
+// carries the correction past it (the branch writes no register).
+TEST_F(DeferredRender, DumpStyleRebuildAfterASkyEarlyOutFixedInItsTextByExecution) {
+  std::string text = kDumpMadLighting;
+  const std::string chain = "  r3.xyzw = cb0[1].xyzw * r2.yyyy;\n";
+  ASSERT_NE(text.find(chain), std::string::npos);
+  text.insert(text.find(chain), "  r0.w = cmp(r1.x >= 1.000000);\n  if (r0.w != 0) discard;\n");
+  DumpFeed columns{false, false};
+  checkRebuiltPositions("0a1b2c3d4e5f6072-ps_replace.txt", text.c_str(), "dump mad after a sky early out", &columns);
+}
+
 // The named matrix (namedMatrixDump): the correction reads InvViewProj's elements by name
 // (`InvViewProj[i].x`, HLSL's row i, column 0: the column of NDC x).
 TEST_F(DeferredRender, DumpStyleNamedMatrixFixedInItsTextByExecution) {

@@ -191,14 +191,30 @@ TEST(LegacyTranslation, DeclarationsGoOutsideConditionals) {
   EXPECT_NE(t.text.find("#endif\nout mediump vec4 stereoshift_FragColor; in vec2 v;"), std::string::npos) << t.text;
 }
 
-TEST(LegacyTranslation, RefusesUntranslatableStateWithItsLocation) {
-  std::string src = "#version 110\nvoid main() {\n  gl_FrontColor = gl_LightSource[0].diffuse;\n"
+// The fixed-function state is declared for the analysis as structs of stereoshift's own, once each.
+TEST(LegacyTranslation, DeclaresFixedFunctionStateAsStructs) {
+  std::string src = "#version 110\nvoid main() {\n  gl_FrontColor = gl_LightSource[0].diffuse + gl_LightSource[1].ambient;\n"
                     "  gl_Position = ftransform();\n}\n";
   LegacyTranslation t = translate(src, Stage::Vertex);
+  ASSERT_TRUE(t.ok) << t.error.message;
+  EXPECT_NE(t.text.find("struct stereoshift_LightSourceParameters { vec4 ambient; vec4 diffuse;"), std::string::npos)
+      << t.text;
+  EXPECT_NE(t.text.find("uniform stereoshift_LightSourceParameters stereoshift_LightSource[8];"), std::string::npos)
+      << t.text;
+  EXPECT_EQ(t.text.find("struct stereoshift_LightSourceParameters"),
+            t.text.rfind("struct stereoshift_LightSourceParameters"));
+  EXPECT_NE(t.text.find("stereoshift_LightSource[1].ambient"), std::string::npos) << t.text;
+}
+
+// What stays untranslatable is refused at its location: a geometry stage's compatibility inputs.
+TEST(LegacyTranslation, RefusesUntranslatableStateWithItsLocation) {
+  std::string src = "#version 150 compatibility\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\n"
+                    "void main() {\n  gl_FrontColor = gl_FrontColorIn[0];\n  EmitVertex();\n}\n";
+  LegacyTranslation t = translate(src, Stage::Geometry);
   ASSERT_FALSE(t.ok);
-  EXPECT_EQ(t.error.line, 3);
+  EXPECT_EQ(t.error.line, 5);
   EXPECT_EQ(t.error.column, 19);
-  EXPECT_NE(t.error.message.find("gl_LightSource"), std::string::npos);
+  EXPECT_NE(t.error.message.find("gl_FrontColorIn"), std::string::npos);
 }
 
 TEST(LegacyTranslation, AttributeOutsideVertexIsAnError) {

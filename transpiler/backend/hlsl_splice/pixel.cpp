@@ -15,7 +15,8 @@
 // `reg.mask = ...;` and the component is mask[lane]. The block is written only where that is
 // certain: one statement on each of those lines, and no line between a component's statement and
 // the block writes that register component again, reads it, or is anything but a plain assignment
-// (a branch, a loop, a call of a helper that might). Everything else of the file stays as written.
+// or control flow that writes nothing (an early `discard` or `return`, the braces of an `if`; not a
+// loop, not a call of a helper that might write). Everything else of the file stays as written.
 #include "transpiler/backend/hlsl_splice.h"
 
 #include "transpiler/backend/hlsl_splice/edit_buffer.h"
@@ -88,6 +89,16 @@ Located failedAt(Located out, uint32_t line, std::string why) {
   return out;
 }
 
+// Whether a line is control flow that writes no register: a branch that leaves the shader (`if (c)
+// discard;`, `if (c) return;`), the header or the end of an `if` / `else` block, `discard;` or
+// `return;` (a sky's or a stencil's early out before the lighting, as the decompiler writes them).
+// A block's statements are lines of their own, checked as any other; loops and calls are not this.
+bool controlOnly(const std::string& line) {
+  static const std::regex form(
+      R"(^\s*(if\s*\(.*\)\s*(discard;|return;|\{)|\}\s*else\s*\{|else\s*\{|\{|\}|discard;|return;)\s*(//.*)?$)");
+  return std::regex_match(line, form);
+}
+
 // Whether a line holds no code (blank, or a comment only).
 bool blankCode(const std::string& text) {
   return text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos;
@@ -110,6 +121,7 @@ std::optional<std::string> locateDepth(const Lines& lines, uint32_t depthLine, u
     std::string text = lines.line(l);
     if (blankCode(text)) continue;
     auto later = assignmentOn(text);
+    if (!later && controlOnly(text)) continue;  // writes nothing
     if (!later) {
       out = failedAt(out, l, "a line between the depth and " + what + " is not a plain assignment");
       return std::nullopt;
@@ -138,6 +150,10 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
       std::string text = lines.line(l);
       if (blankCode(text)) continue;
       auto later = assignmentOn(text);
+      if (!later && controlOnly(text)) {
+        if (reads(text, a->reg, c)) return fail(l, out.component[i] + " is read before the rebuilt position is complete");
+        continue;
+      }
       if (!later) return fail(l, "a line between the rebuilt position's statements is not a plain assignment");
       bool partOfQ = false;
       for (size_t j = 0; j < 4; ++j) partOfQ |= fix.present[j] && fix.lines[j] == l;
