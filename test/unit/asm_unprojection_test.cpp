@@ -117,14 +117,15 @@ ret
 
 // The same map where the shader never reads the point's w (`mul(float4(ndc * z, z, 1), M).xyz`): the
 // compiler computes x, y and z of the columns alone, with no divide.
-const std::string kScreenToWorldPointPs = linearDepthShader(24, R"(mul r2.xyz, r1.yyyy, cb1[21].xyzx
+const std::string kScreenToWorldPointChain = R"(mul r2.xyz, r1.yyyy, cb1[21].xyzx
 mad r2.xyz, r1.xxxx, cb1[20].xyzx, r2.xyzx
 mad r2.xyz, r0.zzzz, cb1[22].xyzx, r2.xyzx
 add r2.xyz, r2.xyzx, cb1[23].xyzx
 mov o0.xyz, r2.xyzx
 mov o0.w, l(1.000000)
 ret
-)");
+)";
+const std::string kScreenToWorldPointPs = linearDepthShader(24, kScreenToWorldPointChain);
 
 // The same point with its NDC divided out of an interpolated copy of the clip position by its w,
 // another input (`v1.xy / v2.x`, the w in a register of its own): lanes of v2 both x and y read.
@@ -142,14 +143,7 @@ mov r0.zw, l(0,0,0,0)
 ld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw
 div r1.xy, v1.xyxx, v2.xxxx
 mul r1.xy, r0.zzzz, r1.xyxx
-mul r2.xyz, r1.yyyy, cb1[21].xyzx
-mad r2.xyz, r1.xxxx, cb1[20].xyzx, r2.xyzx
-mad r2.xyz, r0.zzzz, cb1[22].xyzx, r2.xyzx
-add r2.xyz, r2.xyzx, cb1[23].xyzx
-mov o0.xyz, r2.xyzx
-mov o0.w, l(1.000000)
-ret
-)";
+)" + kScreenToWorldPointChain;
 
 // The view-ray form per component: the NDC times the linear view depth, x divided by P00 and y by
 // P11 (cb1[0].x, cb1[1].y), z = -depth.
