@@ -20,6 +20,15 @@ std::string demoteGlslangErrors(StagePlan& plan);
 
 constexpr const char* kOtherUnits = "functions or a main defined in another compilation unit of its stage";
 
+// An error glslang finds only when it links the stage: a function without its body, no entry
+// point, what another unit may declare (a geometry stage's layouts in the unit with `main`).
+bool isLinkError(const Diagnostic& d) {
+  return d.severity == Severity::Error && (d.message.find("No function definition (body) found") != std::string::npos ||
+                                           d.message.find("Missing entry point") != std::string::npos ||
+                                           d.message.find("ERROR: Linking") != std::string::npos ||
+                                           d.message.starts_with("Linking "));
+}
+
 // One compilation unit of a stage OpenGL links from several shader objects (the pipeline holds
 // another unit of its stage), refused by glslang only at its link: its functions' bodies or its
 // `main` are in another unit, which glslang, compiling one file, cannot see.
@@ -27,13 +36,7 @@ bool linkedWithOtherUnits(const StagePlan& plan, const TranspileOptions& options
   const auto& all = plan.diags.all();
   auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
   return options.stageHasOtherUnits && std::any_of(all.begin(), all.end(), isError) &&
-         std::all_of(all.begin(), all.end(), [&](const Diagnostic& d) {
-           return !isError(d) || d.message.find("No function definition (body) found") != std::string::npos ||
-                  d.message.find("Missing entry point") != std::string::npos ||
-                  d.message.find("ERROR: Linking") != std::string::npos ||
-                  // what another unit may declare (a geometry stage's layouts in the unit with `main`)
-                  d.message.starts_with("Linking ");
-         });
+         std::all_of(all.begin(), all.end(), [&](const Diagnostic& d) { return !isError(d) || isLinkError(d); });
 }
 
 // Whether an error of glslang's refusal is about the shader's #include files (those are the input's).
@@ -49,10 +52,8 @@ bool errorsInIncludes(const StagePlan& plan) {
 // link refuses) and none of the front end's own limits (kept as they are, whatever a driver takes).
 bool onlyCompileErrors(const StagePlan& plan) {
   return std::none_of(plan.diags.all().begin(), plan.diags.all().end(), [](const Diagnostic& d) {
-    return d.severity == Severity::Error &&
-           (d.message.find("Linking") != std::string::npos || d.message.find("No function definition") != std::string::npos ||
-            d.message.find("Missing entry point") != std::string::npos ||
-            d.message.find("the front end's limit") != std::string::npos);
+    return isLinkError(d) ||
+           (d.severity == Severity::Error && d.message.find("the front end's limit") != std::string::npos);
   });
 }
 
