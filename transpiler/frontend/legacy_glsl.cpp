@@ -224,7 +224,7 @@ std::map<std::string, CompatBuiltin> compatBuiltins(Stage stage) {
   std::map<std::string, CompatBuiltin> m;
   auto add = [&](const std::string& glName, const std::string& storage, const std::string& type,
                  const std::string& declared, const std::string& array = "") {
-    m[glName] = {storage, type, "stereoshift_" + declared, array};
+    m[glName] = {storage, type, "stereoshift_" + declared, array, ""};
   };
   // Uniform state of the fixed-function transform, in every stage.
   for (const char* base : {"ModelViewMatrix", "ProjectionMatrix", "ModelViewProjectionMatrix", "TextureMatrix"}) {
