@@ -395,7 +395,9 @@ const std::string kViewVectorPs = [] {
 // block dropped) beyond it at every pixel; with a light's position in cb1[24] instead, the output
 // bit for bit the position-only one.
 // `fromCamera`: the shader's vector is p - c (the direction from the camera), the expected one negated.
-void checkViewVector(const std::string& shader, bool fromCamera, const char* tag) {
+// `screenToWorld`: the shader reads the linear view depth and rebuilds through the screen-to-world
+// map (inverse(P V) times the map from (ndc * z, z, 1) to clip space).
+void checkViewVector(const std::string& shader, bool fromCamera, const char* tag, bool screenToWorld = false) {
   AsmShiftResult converted = shiftAssembly(shader, {});
   ASSERT_TRUE(converted.ok) << converted.error.message;
   ASSERT_EQ(converted.corrections.size(), 2u) << converted.whyUnchanged;
@@ -407,11 +409,18 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
   positionOnly.erase(from, positionOnly.find(end, from) + end.size() - from);
   auto fixed = decoded(converted.output), withoutCamera = decoded(positionOnly);
   ASSERT_TRUE(fixed && withoutCamera);
-  const Mat4 viewMatrix = view(), monoInverse = harness::inverse(harness::multiply(projection(0), viewMatrix));
+  const Mat4 viewMatrix = view(), mono = projection(0);
+  const Mat4 monoInverse = harness::inverse(harness::multiply(mono, viewMatrix));
+  Mat4 toClip{};  // (ndc.x * z, ndc.y * z, z, 1) to clip space
+  toClip[0] = toClip[5] = toClip[11] = 1.0;
+  toClip[10] = -mono[10];
+  toClip[14] = mono[14];
+  // The matrix the shader is fed; its column of x is the inverse view-projection's either way.
+  const Mat4 monoMatrix = screenToWorld ? harness::multiply(monoInverse, toClip) : monoInverse;
   const Mat4 inverseView = harness::inverse(viewMatrix);
   const Vec4 camera = vec(float(inverseView[12]), float(inverseView[13]), float(inverseView[14]), 0.0f);
   const Vec4 light = vec(0.8f, 1.5f, -5.0f, 0.0f);
-  const Mat4 monoF = harness::toDouble(harness::toFloat(monoInverse));
+  const Mat4 monoF = harness::toDouble(harness::toFloat(monoMatrix));
   const double u = harness::kUnitRoundoff;
   for (double eye : {-1.0, 1.0}) {
     const Mat4 stereoInverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
@@ -428,7 +437,7 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
     const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength));
     size_t pixels = 0, outside = 0, monoOutside = 0, lightMoved = 0;
     double worst = 0;
-    std::vector<Vec4> cb1 = constants(monoInverse, false);
+    std::vector<Vec4> cb1 = constants(monoMatrix, false);
     cb1.push_back(camera);
     std::vector<Vec4> withLight = cb1;
     withLight[24] = light;
@@ -436,14 +445,20 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
       for (uint32_t px = 4; px < kSize; px += 8) {
         const double w = 1.5 + 58.5 * std::fmod((px * 37 + py * 61) / 997.0, 1.0);
         const Mat4 monoProjection = projection(0);
-        const float depth = static_cast<float>((monoProjection[10] * -w + monoProjection[14]) / w);
+        const float depth = static_cast<float>(screenToWorld ? w : (monoProjection[10] * -w + monoProjection[14]) / w);
         const Pixel pixel{px + 0.5f, py + 0.5f, depth};
-        const std::array<double, 4> v = {2.0 * pixel.x / kSize - 1.0, 1.0 - 2.0 * pixel.y / kSize, depth, 1.0};
+        const double nx = 2.0 * pixel.x / kSize - 1.0, ny = 1.0 - 2.0 * pixel.y / kSize;
+        // The point in clip space (the screen-to-world form's (ndc * z, z, 1) mapped there), then
+        // through the eye's exact inverse.
+        const std::array<double, 4> v = screenToWorld
+                                            ? std::array<double, 4>{nx * depth, ny * depth, -mono[10] * depth + mono[14], depth}
+                                            : std::array<double, 4>{nx, ny, depth, 1.0};
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
-        const harness::ViewVector expectedVector =
-            harness::viewVectorTo(eyeCamera, exact, harness::positionBound(monoF, v, true, es, kConvergence), cameraBound);
+        const auto positionError = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence)
+                                                 : harness::positionBound(monoF, v, true, es, kConvergence);
+        const harness::ViewVector expectedVector = harness::viewVectorTo(eyeCamera, exact, positionError, cameraBound);
         const double bound = expectedVector.bound;
         auto fix = rebuild(*fixed, pixel, cb1, stereoParams), mono = rebuild(*withoutCamera, pixel, cb1, stereoParams);
         bool monoWrong = false;
@@ -466,6 +481,19 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
 }
 
 TEST(AsmUnprojection, ViewVectorGetsThisEyesCameraByExecution) { checkViewVector(kViewVectorPs, false, "asm view vector"); }
+
+// The screen-to-world point without w and a view vector from the camera to it: the camera the map
+// shows is its translation column (cb1[23]), where it sends depth 0.
+TEST(AsmUnprojection, ScreenToWorldViewVectorGetsThisEyesCameraByExecution) {
+  std::string text = kScreenToWorldPointPs;
+  const std::string out = "mov o0.xyz, r2.xyzx\n";
+  ASSERT_NE(text.find(out), std::string::npos);
+  text.replace(text.find(out), out.size(),
+               "add r2.xyz, -r2.xyzx, cb1[24].xyzx\ndp3 r0.w, r2.xyzx, r2.xyzx\nrsq r0.w, r0.w\n"
+               "mul o0.xyz, r0.wwww, r2.xyzx\n");
+  text.replace(text.find("cb1[24], immediateIndexed"), 25, "cb1[25], immediateIndexed");
+  checkViewVector(text, false, "asm screen to world view vector", true);
+}
 
 // p - c, as a reflection or a fog ray reads it (`add r1.xyz, r1.xyzx, -cb1[24].xyzx`): this eye's
 // camera subtracted.

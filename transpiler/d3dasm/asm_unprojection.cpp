@@ -227,18 +227,50 @@ bool notKnownNdc(const std::vector<Value>& values, int term) {
          std::all_of(inner.sources.begin(), inner.sources.end(), [](const Source& s) { return s.kind == Source::Input; });
 }
 
+// The camera c of a view vector `sign` * (c - p) whose linear form is `f`, p being the point q's
+// component `point` itself (the screen-to-world form without w): q's parts all in f times -sign, c
+// the one element left over, times sign.
+std::optional<Element> cameraBesidesPoint(const Linear& f, const Linear& point, float sign) {
+  if (f.size() != point.size() + 1) return std::nullopt;
+  std::vector<bool> used(f.size(), false);
+  for (const Part& part : point) {
+    bool matched = false;
+    for (size_t k = 0; k < f.size() && !matched; ++k) {
+      const Coefficient& c = f[k].coefficient;
+      if (used[k] || f[k].term != part.term || c.element != part.coefficient.element ||
+          c.inverse != part.coefficient.inverse || c.scale != -sign * part.coefficient.scale)
+        continue;
+      used[k] = matched = true;
+    }
+    if (!matched) return std::nullopt;
+  }
+  for (size_t k = 0; k < f.size(); ++k)
+    if (!used[k]) {
+      const Coefficient& c = f[k].coefficient;
+      return f[k].term < 0 && c.element && !c.inverse && c.scale == sign ? c.element : std::nullopt;
+    }
+  return std::nullopt;
+}
+
 // The view vectors c - q.xyz / q.w of a rebuild (AsmUnprojection::Camera): x, y and z written by
-// one instruction, each a constant-buffer element minus the quotient of q's component by q.w.
+// one instruction, each a constant-buffer element minus the quotient of q's component by q.w (or,
+// the screen-to-world form without w, minus q's component itself); or the same vectors the other
+// way round (p - c). The camera the matrix shows: InvM's column of z over its w, or where the
+// screen-to-world map sends depth 0, its translation column.
 std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values, const Program::Impl& p,
                                                const std::map<size_t, size_t>& lineIndex,
                                                const std::array<const Member*, 4>& q, const Roles& role) {
   // InvM's columns of x and z must be plain elements (no constant folded into them).
   std::array<std::string, 4> centre;
   for (size_t i = 0; i < 4; ++i) {
+    if (!q[i]) {
+      centre[i] = "l(1.000000)";  // an affine map's w
+      continue;
+    }
     const Coefficient& x = q[i]->byTerm.at(role.x);
     const Coefficient& z = q[i]->byTerm.at(role.depth);
-    if (x.scale != 1.0f || z.scale != 1.0f || x.inverse || z.inverse) return {};
-    centre[i] = elementText(*z.element);
+    if (x.scale != 1.0f || x.inverse || (!role.scaled && (z.scale != 1.0f || z.inverse))) return {};
+    centre[i] = role.scaled ? elementText(q[i]->translation) : elementText(*z.element);
   }
   // op -> the value of v.x, v.y, v.z it wrote, and whether each is p - c (the direction from the
   // camera) rather than c - p.
@@ -246,7 +278,18 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
   std::map<size_t, std::set<bool>> fromCamera;
   for (int id = 0; id < static_cast<int>(values.size()); ++id) {
     const Value& v = values[id];
-    if (v.op == SIZE_MAX || !v.at || v.form.size() != 2) continue;
+    if (v.op == SIZE_MAX || !v.at) continue;
+    if (!q[3]) {
+      for (int i = 0; i < 3; ++i)
+        for (float sign : {1.0f, -1.0f})
+          if (cameraBesidesPoint(v.form, values[q[i]->value].form, sign)) {
+            auto [it, inserted] = byOp.try_emplace(v.op, std::array<int, 3>{-1, -1, -1});
+            it->second[i] = id;
+            fromCamera[v.op].insert(sign < 0);
+          }
+      continue;
+    }
+    if (v.form.size() != 2) continue;
     const Part* camera = nullptr;
     const Part* position = nullptr;
     for (const Part& part : v.form) {
@@ -274,6 +317,11 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     for (int i = 0; i < 3; ++i) {
       const Value& v = values[ids[i]];
       c.v[i] = registerText(*v.at);
+      if (!q[3]) {  // the camera is the element q's own parts leave over
+        if (auto camera = cameraBesidesPoint(v.form, values[q[i]->value].form, c.fromCamera ? -1.0f : 1.0f))
+          c.camera[i] = elementText(*camera);
+        continue;
+      }
       for (const Part& part : v.form)
         if (part.term < 0) c.camera[i] = elementText(*part.coefficient.element);
     }
@@ -410,7 +458,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
       u.depthRegister = registerText(*z.at);
     }
     u.ndc = "v" + std::to_string(role.input);
-    if (!role.scaled) u.cameras = camerasOf(values, p, lineIndex, q, role);
+    u.cameras = camerasOf(values, p, lineIndex, q, role);
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });
