@@ -129,7 +129,10 @@ class GlslDialect final : public FrontEndDialect {
       text.replace(v.begin, v.end - v.begin, "#version 310 es");
     }
     std::vector<Client> clients;
-    bool mayBeVulkan = (!v.es && v.version >= 400) || (v.es && v.version >= 310);
+    // A text without #version is never Vulkan GLSL (that needs its #version written): its loader
+    // prepends an OpenGL one, so it is read with OpenGL's rules (else the eye parameters would go in
+    // a `set =` block no OpenGL compiler takes).
+    bool mayBeVulkan = !versionPrepended && ((!v.es && v.version >= 400) || (v.es && v.version >= 310));
     if (mayBeVulkan && options.targetEnv != TargetEnv::OpenGL45) clients.push_back(Client::Vulkan);  // --target-env opengl: GL rules only
     clients.push_back(Client::OpenGL);
 
