@@ -201,16 +201,23 @@ bool mesaAgreesOnOutput(StagePlan& plan, const std::string& output) {
 // take where glslang did not say yes as written: true when the route may go on. Refused: the user
 // sees Mesa's errors (the driver's word), glslang's go. No verdict: refused with what to install,
 // unless --unchecked-text-route takes it anyway (said in a warning and the report).
-bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, const char* route) {
-  const std::string& file = plan.input->path;
+// Mesa's verdict on the input's text, compiled once per stage whichever route asks first.
+const MesaVerdict& originalVerdict(StagePlan& plan) {
+  if (plan.originalMesaVerdict) return *plan.originalMesaVerdict;
   const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
   // Vulkan GLSL: glslang is its reference compiler, and OpenGL's cannot read it (descriptor sets,
   // push constants): there is no second word to be had.
-  MesaVerdict verdict;
+  MesaVerdict& verdict = plan.originalMesaVerdict.emplace();
   if (isVulkanGlslText(plan.input->contents))
     verdict.why = "the shader is Vulkan GLSL, which only glslang, its reference compiler, reads; no OpenGL compiler can vouch for it";
   else
-    verdict = compileWithMesa(plan.input->contents, stage, file, versionIfNone(plan));
+    verdict = compileWithMesa(plan.input->contents, stage, plan.input->path, versionIfNone(plan));
+  return verdict;
+}
+
+bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, const char* route) {
+  const std::string& file = plan.input->path;
+  const MesaVerdict& verdict = originalVerdict(plan);
   StageRecord::MesaCheck& check = plan.record.mesa.emplace();
   check.driver = verdict.driver;
   check.readAt = verdict.version;
@@ -250,12 +257,9 @@ bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, cons
   return false;
 }
 
-bool mesaCompilesOriginal(const StagePlan& plan) {
-  if (!plan.input || plan.front.info.language != SourceLanguage::Glsl || isVulkanGlslText(plan.input->contents))
-    return false;
-  const Stage stage = plan.stage && plan.stage->stage ? *plan.stage->stage : Stage::Unknown;
-  return compileWithMesa(plan.input->contents, stage, plan.input->path, versionIfNone(plan)).kind ==
-         MesaVerdict::Kind::Compiled;
+bool mesaCompilesOriginal(StagePlan& plan) {
+  if (!plan.input || plan.front.info.language != SourceLanguage::Glsl) return false;
+  return originalVerdict(plan).kind == MesaVerdict::Kind::Compiled;
 }
 
 bool checkOutputWithMesa(StagePlan& plan) {

@@ -19,6 +19,7 @@
 #include "passes/pass.h"
 #include "transpiler/backend/route.h"
 #include "transpiler/frontend/front_end.h"
+#include "transpiler/frontend/mesa_compiler.h"
 #include "transpiler/report.h"
 #include "transpiler/stereoshift.h"
 #include "transpiler/transpile_options.h"
@@ -48,6 +49,8 @@ struct StagePlan {
   SourceInfo info;
   std::vector<uint32_t> words;         // the input as the front end made it, before any pass
   std::vector<std::string> includedFiles;
+  // Mesa's word on the input's text where glslang refused it, asked once (stage_plan.cpp).
+  std::optional<MesaVerdict> originalMesaVerdict;
   // 2. parse
   std::optional<spirv::Module> module;
   std::unique_ptr<AnalysisManager> analyses;
@@ -73,7 +76,7 @@ bool isSpirvInput(const SourceFile& input);
 bool checkOutputWithMesa(StagePlan& plan);
 // Whether Mesa's GLSL compiler compiles the original text of a GLSL stage glslang refused, asked
 // quietly: the stage's diagnostics are left as they are whatever the answer (no verdict: false).
-bool mesaCompilesOriginal(const StagePlan& plan);
+bool mesaCompilesOriginal(StagePlan& plan);
 // Mesa's word on the original text of a GLSL stage that `route` would take where glslang did not
 // say yes as written: true when the route may go on (see stage_plan.cpp).
 bool mesaAgreesOnOriginal(StagePlan& plan, const TranspileOptions& options, const char* route);

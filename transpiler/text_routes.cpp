@@ -62,7 +62,7 @@ bool onlyCompileErrors(const StagePlan& plan) {
 // several, a crash (whatever the text), or, where glslang names none of those, a real driver's
 // word: Mesa's GLSL compiler compiles the original (asked quietly: when it refuses too, glslang's
 // errors are said as they are). Empty: the shader's own error.
-std::string glslangsGap(const StagePlan& plan, const TranspileOptions& options) {
+std::string glslangsGap(StagePlan& plan, const TranspileOptions& options) {
   std::string gap = glslangGapIn(plan.input->contents);
   if (gap.empty() && linkedWithOtherUnits(plan, options)) gap = kOtherUnits;
   if (gap.empty() && options.glslangCrashed) gap = "what crashed glslang";

@@ -118,11 +118,13 @@ std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) 
   std::vector<std::pair<int, int>> scaled;  // (term, the texel factor it is scaled by)
   // Lanes every screen term reads (an interpolated w both are divided by: `div r0.xy, v1.xyxx,
   // v2.xxxx`) tell no x from y: left out.
+  std::map<int, std::set<std::pair<uint32_t, uint32_t>>> screen;  // each term's but the depth's
   std::optional<std::set<std::pair<uint32_t, uint32_t>>> common;
   for (const auto& [term, c] : m.byTerm)
     if (auto lanes = screenLanes(values, term)) {
       if (!common) common = *lanes;
       else std::erase_if(*common, [&](const auto& lane) { return !lanes->count(lane); });
+      screen[term] = std::move(*lanes);
     }
   auto withoutCommon = [&](std::set<std::pair<uint32_t, uint32_t>> lanes) {
     if (common) std::erase_if(lanes, [&](const auto& lane) { return common->count(lane) > 0; });
@@ -145,20 +147,19 @@ std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) 
       continue;
     }
     if (!o.texture) {
-      auto axis = screenAxis(withoutCommon({o.lanes.begin(), o.lanes.end()}));
+      auto axis = screenAxis(withoutCommon(screen.at(term)));
       if (!axis || !assign(axis->first, axis->second, term)) return std::nullopt;
       continue;
     }
-    // Screen and texel: a product of screen-only factors and one texel-only factor.
-    std::set<std::pair<uint32_t, uint32_t>> lanes;
+    // Screen and texel: a product of screen-only factors (their lanes in `screen`) and one
+    // texel-only factor.
     int depth = -1;
     for (int factor : values[term].factors) {
       const Origin f = originOf(values[factor]);
       if (f.texture && f.lanes.empty() && depth < 0) depth = factor;
-      else if (!f.texture) lanes.insert(f.lanes.begin(), f.lanes.end());
-      else return std::nullopt;
+      else if (f.texture) return std::nullopt;
     }
-    auto axis = depth >= 0 ? screenAxis(withoutCommon(lanes)) : std::nullopt;
+    auto axis = depth >= 0 ? screenAxis(withoutCommon(screen.at(term))) : std::nullopt;
     if (!axis || !assign(axis->first, axis->second, term)) return std::nullopt;
     scaled.push_back({term, depth});
   }
@@ -272,21 +273,25 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     if (x.scale != 1.0f || x.inverse || (!role.scaled && (z.scale != 1.0f || z.inverse))) return {};
     centre[i] = role.scaled ? elementText(q[i]->translation) : elementText(*z.element);
   }
-  // op -> the value of v.x, v.y, v.z it wrote, and whether each is p - c (the direction from the
-  // camera) rather than c - p.
+  // op -> the value of v.x, v.y, v.z it wrote, the camera element of each, and whether each is
+  // p - c (the direction from the camera) rather than c - p.
   std::map<size_t, std::array<int, 3>> byOp;
+  std::map<size_t, std::array<Element, 3>> cameraOf;
   std::map<size_t, std::set<bool>> fromCamera;
+  auto found = [&](size_t op, int i, int id, Element camera, bool fromTheCamera) {
+    auto [it, inserted] = byOp.try_emplace(op, std::array<int, 3>{-1, -1, -1});
+    it->second[i] = id;
+    cameraOf[op][i] = camera;
+    fromCamera[op].insert(fromTheCamera);
+  };
   for (int id = 0; id < static_cast<int>(values.size()); ++id) {
     const Value& v = values[id];
     if (v.op == SIZE_MAX || !v.at) continue;
     if (!q[3]) {
       for (int i = 0; i < 3; ++i)
         for (float sign : {1.0f, -1.0f})
-          if (cameraBesidesPoint(v.form, values[q[i]->value].form, sign)) {
-            auto [it, inserted] = byOp.try_emplace(v.op, std::array<int, 3>{-1, -1, -1});
-            it->second[i] = id;
-            fromCamera[v.op].insert(sign < 0);
-          }
+          if (auto camera = cameraBesidesPoint(v.form, values[q[i]->value].form, sign))
+            found(v.op, i, id, *camera, sign < 0);
       continue;
     }
     if (v.form.size() != 2) continue;
@@ -300,11 +305,7 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     const auto [numerator, denominator] = values[position->term].quotient;
     if (denominator != q[3]->value) continue;
     for (int i = 0; i < 3; ++i)
-      if (numerator == q[i]->value) {
-        auto [it, inserted] = byOp.try_emplace(v.op, std::array<int, 3>{-1, -1, -1});
-        it->second[i] = id;
-        fromCamera[v.op].insert(camera->coefficient.scale < 0);
-      }
+      if (numerator == q[i]->value) found(v.op, i, id, *camera->coefficient.element, camera->coefficient.scale < 0);
   }
   std::vector<AsmUnprojection::Camera> cameras;
   for (const auto& [op, ids] : byOp) {
@@ -315,15 +316,8 @@ std::vector<AsmUnprojection::Camera> camerasOf(const std::vector<Value>& values,
     c.afterLine = lineIndex.at(c.lineNumber);
     c.centre = centre;
     for (int i = 0; i < 3; ++i) {
-      const Value& v = values[ids[i]];
-      c.v[i] = registerText(*v.at);
-      if (!q[3]) {  // the camera is the element q's own parts leave over
-        if (auto camera = cameraBesidesPoint(v.form, values[q[i]->value].form, c.fromCamera ? -1.0f : 1.0f))
-          c.camera[i] = elementText(*camera);
-        continue;
-      }
-      for (const Part& part : v.form)
-        if (part.term < 0) c.camera[i] = elementText(*part.coefficient.element);
+      c.v[i] = registerText(*values[ids[i]].at);
+      c.camera[i] = elementText(cameraOf[op][i]);
     }
     cameras.push_back(std::move(c));
   }
