@@ -297,6 +297,9 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
     stageOptions.positionWrittenByOtherUnit = std::any_of(plans.begin(), plans.end(), [&](const auto& other) {
       return otherUnit(other) && other->input && textWritesPosition(other->input->contents);
     });
+    stageOptions.otherUnitsKeepUnitW = std::none_of(plans.begin(), plans.end(), [&](const auto& other) {
+      return otherUnit(other) && (!other->input || !textKeepsUnitW(other->input->contents));
+    });
     results.push_back(convertStage(*plans[i], stageOptions));
     if (dumpDefault && kinds[i] == InputKind::Source) note3DMigotoDefault(stages[i], results.back());
   }

@@ -20,6 +20,7 @@ namespace {
 struct TextFacts {
   std::string problem;             // why the text is not clean enough to splice
   bool writesPosition = false;     // gl_Position (or a component of it) assigned
+  bool wMayBeOtherThanOne = false; // a write of gl_Position's w the text does not show is the literal 1
   bool vulkan = false;             // descriptor sets, push constants or Vulkan built-ins
   bool hasPushConstants = false;
   std::optional<uint32_t> highestBinding;
@@ -28,6 +29,84 @@ struct TextFacts {
 
 
 bool isPunct(const source::LexedText& lexed, size_t k, char c) { return lexed.isPunct(k, c); }
+bool has(const TextFacts& facts, const std::string& name);
+
+// Whether `spelled` is a literal one (`1`, `1.0`, `1.`, `1.0f`, `1e0`, `1.0lf`).
+bool isLiteralOne(std::string_view spelled) {
+  while (!spelled.empty() && (spelled.back() == 'f' || spelled.back() == 'F' || spelled.back() == 'l' ||
+                              spelled.back() == 'L' || spelled.back() == 'u' || spelled.back() == 'U'))
+    spelled.remove_suffix(1);
+  if (spelled.empty() || spelled.starts_with("0x") || spelled.starts_with("0X")) return false;
+  double value = 0;
+  auto [end, ec] = std::from_chars(spelled.data(), spelled.data() + spelled.size(), value);
+  return ec == std::errc() && end == spelled.data() + spelled.size() && value == 1.0;
+}
+
+// The text's 2D proof, one occurrence of gl_Position at a time: whether this one leaves the w of the
+// position the literal 1 or untouched. `code` holds the indices of the code tokens (comments left
+// out), `at` the occurrence's place in it. Taken as such: a read; a write of lanes without w; a
+// declaration (`vec4 gl_Position;` in a redeclared block, `invariant gl_Position;`); `gl_Position =
+// vec4(..., 1.0);` (the constructor's last argument the literal one, nothing after it) and
+// `gl_Position.w = 1.0;`. Anything else that may write w is not: a compound assignment, an increment,
+// an index, another right-hand side, the position handed to a function (an out parameter writes it).
+bool occurrenceKeepsUnitW(const source::LexedText& lexed, const std::vector<size_t>& code, size_t at) {
+  auto punct = [&](size_t i, char c) { return i < code.size() && lexed.isPunct(code[i], c); };
+  auto word = [&](size_t i) { return i < code.size() ? lexed.text(code[i]) : std::string_view(); };
+  if (at > 0 && (punct(at - 1, '.') || word(at - 1) == "vec4" || word(at - 1) == "invariant" ||
+                 word(at - 1) == "precise"))
+    return !punct(at - 1, '.') || !(punct(at + 1, '=') && !punct(at + 2, '='));  // gl_out[i].gl_Position = ...
+  size_t n = at + 1;
+  bool coversW = true;
+  std::string_view mask;  // the lanes written, when a swizzle names them
+  if (punct(n, '.') && n + 1 < code.size() && lexed.isIdentifier(code[n + 1])) {
+    mask = word(n + 1);
+    coversW = mask.find_first_of("waq") != std::string_view::npos;
+    n += 2;
+  } else if (punct(n, '[')) {
+    return false;  // gl_Position[i]: a lane by index, not told apart from w
+  }
+  const bool compound = (punct(n, '+') || punct(n, '-') || punct(n, '*') || punct(n, '/')) && punct(n + 1, '=');
+  const bool increment = (punct(n, '+') && punct(n + 1, '+')) || (punct(n, '-') && punct(n + 1, '-')) ||
+                         (at >= 2 && ((punct(at - 1, '+') && punct(at - 2, '+')) || (punct(at - 1, '-') && punct(at - 2, '-'))));
+  if (compound || increment) return !coversW;
+  const bool assigned = punct(n, '=') && !punct(n + 1, '=');
+  if (!assigned) {
+    // A read; but handed to a function as a whole argument, an out parameter may write it.
+    const bool argument = at > 0 && (punct(at - 1, '(') || punct(at - 1, ',')) && (punct(n, ')') || punct(n, ','));
+    return !argument;
+  }
+  if (!coversW) return true;
+  auto literalOneAt = [&](size_t i) {
+    return i < code.size() && lexed[code[i]].kind == source::TokenKind::Number && isLiteralOne(word(i));
+  };
+  if (!mask.empty())  // `gl_Position.w = 1.0;`
+    return mask.size() == 1 && literalOneAt(n + 1) && punct(n + 2, ';');
+  // `gl_Position = vec4( ... , 1.0 );`: the last argument at the constructor's own depth.
+  if (word(n + 1) != "vec4" || !punct(n + 2, '(')) return false;
+  int depth = 0;
+  size_t lastArgument = n + 3, i = n + 2;
+  for (; i < code.size(); ++i) {
+    if (punct(i, '(') || punct(i, '[')) ++depth;
+    if (punct(i, ')') || punct(i, ']')) --depth;
+    if (depth == 1 && punct(i, ',')) lastArgument = i + 1;
+    if (depth == 0) break;
+  }
+  return i < code.size() && i == lastArgument + 1 && literalOneAt(lastArgument) && punct(i + 1, ';');
+}
+
+// Whether every occurrence of gl_Position in the text keeps its w the literal 1 (or untouched), none
+// of them in a macro (its uses cannot be read without expanding it).
+bool keepsUnitW(const source::LexedText& lexed) {
+  std::vector<size_t> code;
+  for (size_t k = 0; k < lexed.size(); ++k) {
+    if (lexed[k].inDirective() && lexed.isIdentifier(k) && lexed.text(k) == "gl_Position") return false;
+    if (lexed[k].isCode()) code.push_back(k);
+  }
+  for (size_t i = 0; i < code.size(); ++i)
+    if (lexed.isIdentifier(code[i]) && lexed.text(code[i]) == "gl_Position" && !occurrenceKeepsUnitW(lexed, code, i))
+      return false;
+  return true;
+}
 
 TextFacts readText(const std::string& text) {
   TextFacts facts;
@@ -79,6 +158,7 @@ TextFacts readText(const std::string& text) {
     }
   }
   if (!open.empty()) facts.problem = "an unclosed '" + std::string(1, open.back()) + "'";
+  if (facts.problem.empty() && has(facts, "gl_Position")) facts.wMayBeOtherThanOne = !keepsUnitW(lexed);
   return facts;
 }
 
@@ -188,8 +268,13 @@ bool isVulkanGlslText(const std::string& text) { return readText(text).vulkan; }
 
 bool textWritesPosition(const std::string& text) { return readText(text).writesPosition; }
 
+bool textKeepsUnitW(const std::string& text) {
+  TextFacts facts = readText(text);
+  return facts.problem.empty() && !facts.wMayBeOtherThanOne;
+}
+
 Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options,
-                                    bool positionInOtherUnit) {
+                                    bool positionInOtherUnit, bool otherUnitsKeepUnitW) {
   TextOnlyShift result;
   VersionLine v = findVersion(input.contents);
   if (!v.problem.empty()) {
@@ -206,6 +291,14 @@ Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const 
     if (has(facts, *name)) {
       return errorAt(0, 0, "the shader already uses the name '" + *name + "' (is it converted already?)");
     }
+  if (!facts.wMayBeOtherThanOne && otherUnitsKeepUnitW) {
+    // 2D by its text: the runtime cutoff would keep every draw mono, so nothing is spliced (as the
+    // analysis copies a stage whose every position has the constant w = 1); the eye parameters are
+    // not declared, where a compiler would fold them away unused.
+    result.output = input.contents;
+    result.twoD = true;
+    return result;
+  }
   bool legacy = !facts.vulkan && (v.es ? v.version < 300 : v.version < 330);
   GlslSpliceOptions spec;
   static_cast<ShiftSpec&>(spec) = makeShiftSpec(options, facts.vulkan || glslHasPreciseAndFma(v.version, v.es));

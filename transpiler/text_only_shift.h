@@ -2,8 +2,10 @@
 // glslang cannot parse (a construct it does not know at the source's version, or a crash inside it)
 // into its stereo version from the text alone, with the GLSL splice (glsl_splice.h): `main`
 // renamed and a shifting `main` appended, or every EmitVertex wrapped. No analysis ran, so what
-// needs one is not done: no proof that a shader is 2D (the runtime cutoff still keeps w = 1 draws
-// mono), no halo copies, no per-eye camera, no deferred unprojection, no re-compile. The driver
+// needs one is not done: no halo copies, no per-eye camera, no deferred unprojection, no re-compile,
+// and the proof that a shader is 2D only where its text shows it (every write of gl_Position with
+// the literal w = 1, in every unit of the stage: copied unchanged, as the analysis copies a 2D
+// stage; elsewhere the runtime cutoff still keeps w = 1 draws mono). The driver
 // takes it only when the front end failed, warns, and records it (`"analysis": "text-only"`);
 // --require-analysis makes the front end's failure an error again.
 //
@@ -35,6 +37,9 @@ struct TextOnlyShift {
   int sites = 0;
   std::string eyeParams;             // "loose uniforms", "uniform block", ...
   std::vector<std::string> notDone;  // what an analysis would have done
+  // Every write of gl_Position in the stage's text has the literal w = 1 (textKeepsUnitW): a 2D
+  // stage, `output` its input unchanged, nothing spliced.
+  bool twoD = false;
 };
 
 // What in `text` glslang may read more narrowly than drivers do: an #extension it enables (glslang
@@ -50,12 +55,20 @@ const std::vector<std::string>& textOnlyNotDone();
 bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd);
 
 // `positionInOtherUnit`: another compilation unit of the stage assigns gl_Position (OpenGL links them
-// into one stage), so a text that writes none itself still takes the shift around its `main`.
+// into one stage), so a text that writes none itself still takes the shift around its `main`;
+// `otherUnitsKeepUnitW`: every other unit of the stage passes textKeepsUnitW (with the text's own
+// writes, the 2D proof of the whole stage).
 Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options,
-                                    bool positionInOtherUnit = false);
+                                    bool positionInOtherUnit = false, bool otherUnitsKeepUnitW = true);
 
 // Whether GLSL text assigns gl_Position (or a component of it) itself.
 bool textWritesPosition(const std::string& text);
+
+// The text's 2D proof: whether every write of gl_Position in GLSL text leaves its w the literal 1
+// (`gl_Position = vec4(..., 1.0);`, `gl_Position.w = 1.0;`) or untouched (lanes without w); a
+// compound assignment, another right-hand side, an index, the position handed to a function or
+// named in a macro is no proof. True for a text that writes none (no other unit's proof broken).
+bool textKeepsUnitW(const std::string& text);
 
 // Whether GLSL text says it is Vulkan GLSL (descriptor sets, push constants, Vulkan built-ins, subpass
 // inputs, GL_KHR_vulkan_glsl): OpenGL's compilers cannot judge it.

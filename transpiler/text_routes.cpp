@@ -100,7 +100,8 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   if (glslangsGap(plan, options).empty()) return false;
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
-  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, options.positionWrittenByOtherUnit);
+  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, options.positionWrittenByOtherUnit,
+                                                options.otherUnitsKeepUnitW);
   return takeTextOnlyShift(plan, stage, std::move(shifted), route) && checkOutputWithMesa(plan);
 }
 
@@ -248,6 +249,15 @@ bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shift
     return false;
   }
   std::string reason = demoteGlslangErrors(plan);
+  if (shifted->twoD) {
+    plan.diags.warning(file, "glslang cannot analyse this shader; its text writes gl_Position with the literal w = 1 "
+                             "only (a 2D stage, which the runtime cutoff would keep mono in both eyes), so it is copied "
+                             "unchanged; --require-analysis makes this an error");
+    plan.record.classification = Classification::ConstantW1;
+    TextOutcome copy{std::move(shifted->output)};
+    copy.textOnly = StageRecord::TextOnly{reason, {"per-eye view vectors", "deferred unprojection"}, {}, true};
+    return writeTextOutcome(plan, stage, std::move(copy));
+  }
   std::string notDone;
   for (const auto& what : shifted->notDone) notDone += (notDone.empty() ? "" : ", ") + what;
   plan.diags.warning(file, "glslang cannot analyse this shader: the clip-space shift was spliced from the text alone (not "

@@ -19,6 +19,9 @@ struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
   // ... and one of those assigns gl_Position (by its text): a unit whose `main` only calls into the
   // others still gets the shift around its `main` (text_only_shift.h).
   bool positionWrittenByOtherUnit = false;
+  // ... and every one of those keeps gl_Position's w the literal 1 by its text (textKeepsUnitW):
+  // with this unit's text, the stage's 2D proof where glslang cannot analyse it.
+  bool otherUnitsKeepUnitW = true;
 };
 
 // The eye parameters from 3Dmigoto's StereoParams texture (t125), as 3Dmigoto fills it
