@@ -187,6 +187,9 @@ int verifyInThisProcess(const std::vector<SourceFile>& sources, const TranspileO
               << "  stereo x error:              " << r.maxStereoUlps << " ULP (bound " << settings.maxUlps << ": " << r.boundBasis
               << ")\n"
               << "  vertices kept by the cutoff: " << r.cutoffVertices << "\n";
+    if (r.movedLaneComponents)
+      std::cout << "  lanes moved with x:          " << r.maxMovedLaneUlps << " ULP (bound " << harness::kMovedLaneUlps
+                << ": mono + a * shift of x), " << r.movedLaneComponents << " compared\n";
   } else {
     // Single-pass: the eye comes from the view or the instance, so there is no eyeSign = 0 run.
     const bool multiview = r.mode == EyeSelect::ViewIndex;

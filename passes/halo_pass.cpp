@@ -12,7 +12,10 @@
 // helper function or written another equal way is the position too. The reverse, the position read
 // back from an output (`outPos = P * V * M * p; gl_Position = outPos;`), shifts the output and has
 // the position read the mono value it was computed from, so stereo-shift shifts it once.
+//
+// Decompiled HLSL's outputs computed through registers lane by lane: halo_moved_lanes.h.
 #include "passes/pass.h"
+#include "passes/halo_moved_lanes.h"
 #include "passes/pass_registry.h"
 #include "passes/shift_emitter.h"
 
@@ -215,7 +218,8 @@ class HaloPass final : public Pass {
         });
         if (overlapping == 1) facts.exactCopies.push_back(copy);
       }
-    return fixed.empty() ? PassResult::Unchanged : PassResult::Changed;
+    const bool lanesMoved = moveLanesDerivedFromPositionX(ctx, fixed);
+    return fixed.empty() && !lanesMoved ? PassResult::Unchanged : PassResult::Changed;
   }
 
  private:

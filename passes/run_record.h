@@ -131,6 +131,17 @@ struct HaloFacts {
     std::vector<std::string> positionNames;
   };
   std::vector<DerivedText> derivedTexts;
+  // Lanes of outputs the register copy shows computed from the position's x with a constant
+  // coefficient (decompiled HLSL: `o3.xy = r0.xw + r0.zz;` after `r0.xz = float2(0.5,0.5) *
+  // r1.xw;`, Unity's screen position), each moved by `coefficient` times the shift of x: the
+  // output (as the source names it), the lane (0-3) and the coefficient. Not in shiftedOutputs (they
+  // are no copies).
+  struct MovedLane {
+    std::string output;
+    uint32_t lane = 0;
+    float coefficient = 0.0f;
+  };
+  std::vector<MovedLane> movedLanes;
 };
 
 // stereo-shift.

@@ -118,6 +118,9 @@ void renderEyeParams(const RunRecord& record, json& passes) {
 void renderHaloAndShift(const RunRecord& record, std::optional<int> spliceSites, json& passes) {
   if (record.halo.shiftedOutputs) passes["halo"]["shifted_outputs"] = *record.halo.shiftedOutputs;
   if (!record.halo.derivedOutputs.empty()) passes["halo"]["derived_outputs"] = record.halo.derivedOutputs;
+  for (const auto& moved : record.halo.movedLanes)
+    passes["halo"]["moved_lanes"].push_back(
+        {{"output", moved.output}, {"lane", std::string(1, "xyzw"[moved.lane & 3])}, {"coefficient", moved.coefficient}});
   const ShiftFacts& shift = record.shift;
   if (spliceSites) passes["stereo-shift"]["sites"] = *spliceSites;
   else if (shift.sites) passes["stereo-shift"]["sites"] = *shift.sites;

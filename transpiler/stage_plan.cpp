@@ -376,11 +376,15 @@ void keepOnlyCorrections(StagePlan& plan, PassContext& ctx) {
   bool hlslVertex = plan.info.language == SourceLanguage::Hlsl && plan.info.stage == Stage::Vertex &&
                     resolveTarget(plan.info, plan.options) == TargetLanguage::Hlsl;
   if (copies && hlslVertex) return;
-  if (haloEdited)
-    plan.diags.warning(plan.input->path, "--corrections-only: the outputs derived from the clip position (" +
-                                             (halo.derivedOutputs.empty() ? halo.shiftedOutputs->front()
-                                                                          : halo.derivedOutputs.front()) +
-                                             ") are not shifted: only an HLSL vertex shader's exact copies of it are");
+  if (haloEdited) {
+    std::string first = !halo.derivedOutputs.empty()                           ? halo.derivedOutputs.front()
+                        : halo.shiftedOutputs && !halo.shiftedOutputs->empty() ? halo.shiftedOutputs->front()
+                        : !halo.movedLanes.empty()                              ? halo.movedLanes.front().output
+                                                                                : std::string("?");
+    plan.diags.warning(plan.input->path, "--corrections-only: the outputs derived from the clip position (" + first +
+                                             ") are not shifted: only an HLSL vertex shader's exact copies of it, and "
+                                             "lanes linear in its x, are");
+  }
   plan.changed = false;
 }
 

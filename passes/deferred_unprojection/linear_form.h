@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,10 @@ class Decomposer {
     return at;
   }
 
+  // A lane to take as a term of its own, not decomposed further (the halo pass's position lanes:
+  // what an output adds of them, not of what they are computed from). Before any form().
+  void keepWhole(Lane at) { whole_.insert(canonical(at)); }
+
   // The linear form of one lane, memoised; nullopt never (an opaque value is a term of its own).
   const Linear& form(Lane at) {
     at = canonical(at);
@@ -126,6 +131,7 @@ class Decomposer {
   const ValueFlow& index_;
   const spirv::Module& m_;
   std::map<Lane, Linear> memo_;
+  std::set<Lane> whole_;
   int depth_ = 0;
   size_t computed_ = 0;
 
@@ -182,6 +188,7 @@ class Decomposer {
   static constexpr size_t kMaxParts = 8;
 
   Linear compute(Lane at) {
+    if (whole_.count(at)) return opaque(at);
     const Instruction* def = index_.definition(at.id);
     if (!def || ++depth_ > 256) {
       --depth_;

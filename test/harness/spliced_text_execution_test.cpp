@@ -248,3 +248,46 @@ TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
 }
 
 }  // namespace
+
+namespace {
+
+// A vertex dump that hands the pixel shader its screen position computed through registers (Unity's
+// ComputeScreenPos: `r0.xz = float2(0.5,0.5) * r1.xw; o3.xy = r0.xw + r0.zz;`, read by soft
+// particles, water and refraction): its x must move with the position, by half the shift, or the
+// pixel shader samples the screen where the mono image was (a halo). The expectation is the test's
+// own (o3.x moves by 0.5 times the shift of x, nothing else moves): the spliced text compiled again
+// and run on lavapipe, o3.x held to mono + 0.5 * (reference x - x) within kMovedLaneUlps; o4 (x
+// times a cbuffer element) and o5 (x squared) are left mono, unchanged, as the analysis says.
+TEST_F(MigotoDumpExecution, ScreenPositionLaneMovesWithTheShift) {
+  ASSERT_TRUE(context_) << "no Vulkan device: " << setupError_;
+  SourceFile input{"5a5b5c5d6e6f7a7b-vs_replace.txt", {}};
+  ASSERT_TRUE(readFile(std::string(MIGOTO_DUMP_DIR) + "/screen-pos-vs_replace.txt", &input.contents));
+  TranspileOptions options;
+  readEyeParamsFrom3DMigoto(options);
+  options.eye.blockName = "stereoshift_StereoParams";
+  TranspileResult converted = transpile(input, options);
+  ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
+  ASSERT_EQ(converted.report.value("route", ""), "hlsl-source-splice");
+  Diagnostics diags;
+  FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
+  ASSERT_TRUE(stereo.ok) << diags.format();
+  StageModules stage;
+  stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stage.original = converted.originalSpirv;
+  stage.transpiled = stereo.spirv;
+  stage.movedLanes = {{"o3", 0, 0.5f}};
+  VerifySettings settings;
+  VerifyResult r = verifyStereo(*context_, {stage}, settings);
+  ASSERT_TRUE(r.error.empty()) << r.error;
+  std::cout << "[verify] 3dmigoto screen-pos-vs_replace.txt: vertices " << r.vertices << ", max stereo error "
+            << r.maxStereoUlps << " ULP, o3.x against mono + 0.5 * shift: " << r.maxMovedLaneUlps << " ULP over "
+            << r.movedLaneComponents << " components\n";
+  EXPECT_TRUE(r.monoIdentical);
+  EXPECT_TRUE(r.otherOutputsUnchanged) << (r.problems.empty() ? "" : r.problems.front());
+  EXPECT_LE(r.maxStereoUlps, settings.maxUlps);
+  EXPECT_GT(r.movedLaneComponents, 0u);
+  EXPECT_GT(r.haloComponentsChanged, 0u);
+  EXPECT_LE(r.maxMovedLaneUlps, kMovedLaneUlps);
+}
+
+}  // namespace

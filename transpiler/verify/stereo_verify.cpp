@@ -38,6 +38,8 @@ nlohmann::json VerifyResult::json() const {
           {"cutoff_vertices", cutoffVertices},
           {"other_outputs_unchanged", otherOutputsUnchanged},
           {"halo_components_changed", haloComponentsChanged},
+          {"max_moved_lane_error_ulps", maxMovedLaneUlps},
+          {"moved_lane_components", movedLaneComponents},
           {"new_nans", newNaNs},
           {"disagreeing_components", disagreeingComponents},
           {"synthesized_stages", synthesizedStages},
@@ -450,13 +452,34 @@ class StereoCheck {
     else
       ulps = std::fabs(got - reference) / ulpOf(scale);
     result_.maxStereoUlps = std::max(result_.maxStereoUlps, ulps);
-    compareOtherComponents(stereo, vm, vs, run);
+    compareOtherComponents(stereo, vm, vs, run, reference - x, scale);
+  }
+
+  // Component `c` when it is a lane the halo pass moved (StageModules::movedLanes): checked against
+  // mono + a * shift (`shift` the reference's, `scale` its ULP basis). False for any other component.
+  bool compareMovedLane(const CaptureResult& stereo, uint32_t vm, uint32_t vs, uint32_t c, double shift, double scale) {
+    for (const auto& f : layoutA_.fields) {
+      if (f.isPosition || c < f.offset / 4 || c >= f.offset / 4 + f.components) continue;
+      for (const auto& moved : stages_.back().movedLanes) {
+        if (moved.output != f.name || c != f.offset / 4 + moved.lane) continue;
+        const double mono = mono_.f32(vm, c), got = stereo.f32(vs, inStereo_[c]);
+        const double reference = mono + double(moved.coefficient) * shift;
+        const double basis = std::max(std::fabs(mono), std::fabs(double(moved.coefficient)) * scale);
+        const double ulps = got == reference ? 0 : std::fabs(got - reference) / ulpOf(basis);
+        result_.maxMovedLaneUlps = std::max(result_.maxMovedLaneUlps, std::isnan(ulps) ? INFINITY : ulps);
+        ++result_.movedLaneComponents;
+        if (mono_.u32(vm, c) != stereo.u32(vs, inStereo_[c])) ++result_.haloComponentsChanged;
+        return true;
+      }
+    }
+    return false;
   }
 
   // y, z, w and every other captured component: unchanged, except halo copies of the position.
-  void compareOtherComponents(const CaptureResult& stereo, uint32_t vm, uint32_t vs, const std::string& run) {
+  void compareOtherComponents(const CaptureResult& stereo, uint32_t vm, uint32_t vs, const std::string& run,
+                              double shift, double scale) {
     for (uint32_t c = 0; c < layoutA_.stride / 4; ++c) {
-      if (c == px_) continue;
+      if (c == px_ || compareMovedLane(stereo, vm, vs, c, shift, scale)) continue;
       const uint32_t cs = inStereo_[c];
       // A copy of the position holds all of it: an output whose x merely equals the position's x at
       // this vertex (an integer-valued output, a constant 0 beside x = 0) is no copy (found with
@@ -663,6 +686,9 @@ class StereoCheck {
       result_.problems.push_back("stereo error " + std::to_string(result_.maxStereoUlps) + " ULP exceeds the bound of " +
                                  std::to_string(settings_.maxUlps));
     if (result_.newNaNs) result_.problems.push_back(std::to_string(result_.newNaNs) + " new NaN x values");
+    if (result_.maxMovedLaneUlps > kMovedLaneUlps)
+      result_.problems.push_back("a moved lane's error " + std::to_string(result_.maxMovedLaneUlps) +
+                                 " ULP exceeds the bound of " + std::to_string(kMovedLaneUlps));
     const bool eyeChecks = mode_ == EyeSelect::Parameter    ? result_.monoIdentical
                            : mode_ == EyeSelect::ViewIndex ? result_.eyeSignIgnored
                                                            : result_.eyeSignIgnored && result_.eyeRouted &&

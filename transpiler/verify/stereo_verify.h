@@ -28,6 +28,14 @@ struct StageModules {
   std::vector<uint32_t> transpiled;  // SPIR-V after stereoshift's passes
   std::string entry = "main";
   std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
+  // Lanes the halo pass moved by `coefficient` times the shift of x (HaloFacts::movedLanes): each
+  // held to the mono value plus coefficient * (reference x - x), within kMovedLaneUlps.
+  struct MovedLane {
+    std::string output;
+    uint32_t lane = 0;
+    float coefficient = 0.0f;
+  };
+  std::vector<MovedLane> movedLanes;
   BindingClasses bindings = BindingClasses::Shared;
   // The last stage only, optional: another conversion of the same shader (the SPIR-V route's, beside
   // a spliced text) whose every captured output must equal the transpiled one's, bit for bit, in
@@ -35,6 +43,8 @@ struct StageModules {
   // whose own values the stereo reference cannot tell).
   std::vector<uint32_t> agreeing;
 };
+
+constexpr double kMovedLaneUlps = 4.5;
 
 struct VerifySettings {
   float separation = 0.065f;
@@ -75,6 +85,13 @@ struct VerifyResult {
   uint32_t cutoffVertices = 0;  // vertices left unshifted by the cutoff
   bool otherOutputsUnchanged = false;  // y, z, w and non-derived varyings identical per eye
   uint32_t haloComponentsChanged = 0;  // components of halo outputs that moved with the shift
+  // StageModules::movedLanes: the largest error of a moved lane against mono + a * (x_ref - x), in
+  // ULPs of max(|the lane|, |a| * max(|x|, |S(w - C)|)). Its bound, kMovedLaneUlps = 4.5: the shifted
+  // x carries 2.5 ULP of max(|x|, |S(w - C)|) (maxUlps), x' - x rounds once (0.5, its size at most
+  // that), the product by a once (0.5 of |a| times it), the sum once (1 ULP of max(lane, |a| * it),
+  // the sum being at most twice that).
+  double maxMovedLaneUlps = 0;
+  uint32_t movedLaneComponents = 0;  // moved-lane components compared
   uint32_t newNaNs = 0;         // x became NaN although the original x and w were not NaN
   // With StageModules::agreeing (two-pass only): components of the stereo runs that differ between
   // the two conversions, and how many were compared.

@@ -7,15 +7,17 @@
 
 namespace stereoshift::hlsl_splice {
 
-namespace {
-
-std::string epsilonLiteral(float epsilon) {
+std::string floatLiteral(float value) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(epsilon));
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value));
   std::string lit = buf;
   if (lit.find_first_of(".eE") == npos) lit += ".0";
   return lit + "f";
 }
+
+namespace {
+
+std::string epsilonLiteral(float epsilon) { return floatLiteral(epsilon); }
 
 // eyeSign * separation, or the separation alone where it carries the eye's sign (3Dmigoto's).
 std::string eyeOffset(const ShiftSpec& spec) {

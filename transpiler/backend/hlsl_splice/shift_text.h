@@ -29,6 +29,9 @@ struct ShiftHelper {
 // The cbuffer of the eye parameters.
 std::string cbufferText(const HlslSpliceOptions& options, const std::string& nl);
 
+// A float as an HLSL literal that reads back as the same float (`0.5f`, `1.0f`, `1e-05f`).
+std::string floatLiteral(float value);
+
 // `T function(T v) { ...shift v<access>.x... return v; }` for one helper.
 std::string shiftFunctionText(const HlslSpliceOptions& spec, const ShiftHelper& helper, const std::string& nl);
 

@@ -8,6 +8,7 @@
 // matches. Halo copies (members or parameters the passes found equal to the clip position) are
 // shifted by the same helper.
 #include "transpiler/backend/hlsl_splice/rewriters.h"
+#include "transpiler/backend/hlsl_splice/shift_text.h"
 
 #include <algorithm>
 #include <utility>
@@ -25,13 +26,14 @@ class VertexRewriter : Rewriter {
       const Function* f;
       std::string returnShift;                                     // helper for the return value
       std::vector<std::pair<std::string, std::string>> outShifts;  // (param, helper)
+      std::string movedLanes;                                      // statements before the shifts
     };
     std::vector<Plan> plans;
     for (const auto& entry : entries) {
       for (const Function* f : entry.definitions) {
         auto plan = planEntry(*f, entry.wanted);
         if (!plan) return plan.error;
-        plans.push_back({f, plan.returnShift, plan.outShifts});
+        plans.push_back({f, plan.returnShift, plan.outShifts, plan.movedLanes});
       }
     }
     std::vector<std::string> ours = {opt_.cbufferName, opt_.eyeSignName, opt_.separationName, opt_.convergenceName};
@@ -53,7 +55,7 @@ class VertexRewriter : Rewriter {
     insertBlockBefore(first, notBefore, preambleText(helpers_));
 
     for (const auto& plan : plans) {
-      if (auto err = rewriteReturns(*plan.f, plan.returnShift, plan.outShifts)) return err;
+      if (auto err = rewriteReturns(*plan.f, plan.returnShift, plan.outShifts, plan.movedLanes)) return err;
     }
     for (const auto& camera : opt_.cameras)
       if (auto err = wrapCameraReads(camera, first)) return err;
@@ -91,8 +93,33 @@ class VertexRewriter : Rewriter {
     std::optional<SpliceError> error;
     std::string returnShift;
     std::vector<std::pair<std::string, std::string>> outShifts;
+    std::string movedLanes;
     explicit operator bool() const { return !error; }
   };
+
+  // The moved lanes as statements: each an `out` parameter of `f` moved by its coefficient times
+  // the shift of x of the SV_Position `out` parameter (helper `stereoshift_shift_position`).
+  std::optional<SpliceError> planMovedLanes(const Function& f, const HlslSplicedEntry& wanted, EntryPlan& plan) {
+    if (wanted.movedLanes.empty()) return std::nullopt;
+    std::string position;
+    for (const auto& p : f.params)
+      if (p.isOut && isPositionSemantic(p.semantic) && isFloat4Like(p.typeName)) position = p.name;
+    if (position.empty())
+      return errAt(f.nameTok, "the output '" + wanted.movedLanes.front().output +
+                                  "' moves with the clip position's x, which is no SV_Position out parameter of '" +
+                                  std::string(text(f.nameTok)) + "'");
+    const std::string shift = needShift("float4", "", {}, true).function;
+    for (const auto& moved : wanted.movedLanes) {
+      auto out = std::find_if(f.params.begin(), f.params.end(), [&](const Param& p) { return p.isOut && p.name == moved.output; });
+      if (out == f.params.end() || moved.lane > 3)
+        return errAt(f.nameTok, "the output '" + moved.output + "' that moves with the clip position's x is not an out "
+                                "parameter of '" + std::string(text(f.nameTok)) + "'");
+      const std::string lane(1, "xyzw"[moved.lane]);
+      plan.movedLanes += moved.output + "." + lane + " += " + floatLiteral(moved.coefficient) + " * (" + shift + "(" +
+                         position + ").x - " + position + ".x); ";
+    }
+    return std::nullopt;
+  }
 
   // The helper that shifts `access` (and `copies`) of a value of `type`, declared once.
   const ShiftHelper& needShift(const std::string& type, const std::string& access, std::vector<std::string> copies,
@@ -170,12 +197,16 @@ class VertexRewriter : Rewriter {
         if (position) plan.outShifts.push_back({p.name, needShift(p.typeName, *path, {}).function});
       }
     }
+    if (auto err = planMovedLanes(f, wanted, plan)) {
+      plan.error = err;
+      return plan;
+    }
     std::vector<std::string> unplaced = memberCopies;
     unplaced.insert(unplaced.end(), paramCopies.begin(), paramCopies.end());
     if (!unplaced.empty()) {
       plan.error = errAt(f.nameTok, "the halo copy '" + unplaced.front() + "' of '" + std::string(text(f.nameTok)) +
                                         "' is not a float4 output the text can shift");
-    } else if (plan.returnShift.empty() && plan.outShifts.empty()) {
+    } else if (plan.returnShift.empty() && plan.outShifts.empty() && plan.movedLanes.empty()) {
       plan.error = errAt(f.nameTok, "vertex entry point '" + std::string(text(f.nameTok)) +
                                         "' has no SV_Position output (return value, struct member or out parameter)");
     }
@@ -192,8 +223,9 @@ class VertexRewriter : Rewriter {
   }
 
   std::optional<SpliceError> rewriteReturns(const Function& f, const std::string& returnShift,
-                                            const std::vector<std::pair<std::string, std::string>>& outShifts) {
-    std::string outAssignments;
+                                            const std::vector<std::pair<std::string, std::string>>& outShifts,
+                                            const std::string& movedLanes) {
+    std::string outAssignments = movedLanes;  // from the position before it is shifted
     for (const auto& [param, helper] : outShifts) outAssignments += param + " = " + helper + "(" + param + "); ";
     bool endsInReturn = false;
     int depth = 0;
@@ -229,7 +261,7 @@ class VertexRewriter : Rewriter {
       }
       ++sites_;
     }
-    if (returnShift.empty() && outShifts.empty()) return errAt(f.nameTok, "nothing to shift");
+    if (returnShift.empty() && outShifts.empty() && movedLanes.empty()) return errAt(f.nameTok, "nothing to shift");
     return std::nullopt;
   }
 
