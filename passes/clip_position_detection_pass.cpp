@@ -3,6 +3,7 @@
 // found by the shared clip-position analysis). It changes nothing; later passes act on what it found.
 #include "passes/pass.h"
 #include "passes/pass_registry.h"
+#include "passes/ir/walker.h"
 
 #include <set>
 
@@ -46,6 +47,11 @@ class ClipPositionDetectionPass final : public Pass {
       ctx.classification = Classification::Intermediate;
     } else if (positions.outputs().empty()) {
       ctx.classification = Classification::NoPositionOutput;
+    } else if (model == spv::ExecutionModelGeometry && !emitsAVertex(m)) {
+      // Nothing it writes reaches the rasterizer (a link-only test, a stage kept for its side
+      // effects): the shift would have no site, and eye parameters nothing would read.
+      ctx.classification = Classification::NoVertexEmitted;
+      ctx.diags.note(ctx.file, "geometry shader emits no vertex: it rasterizes nothing, so nothing is shifted");
     } else if (std::string why = alreadyStereoReason(ctx); !why.empty()) {
       ctx.classification = Classification::AlreadyStereo;
       facts.alreadyStereo = why;
@@ -66,6 +72,14 @@ class ClipPositionDetectionPass final : public Pass {
   }
 
  private:
+  static bool emitsAVertex(const spirv::Module& m) {
+    bool emits = false;
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+      emits |= inst.opcode == spv::OpEmitVertex || inst.opcode == spv::OpEmitStreamVertex;
+    });
+    return emits;
+  }
+
   // Cheap proof of a perspective position, which spares most vertex shaders the folded copy (an
   // optimizer run): the entry function itself stores `M * v` (or `v * M`, M possibly `A * B`) to the
   // position, with M loaded from a uniform, push-constant, storage or input variable. Inlining and

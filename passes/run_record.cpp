@@ -22,6 +22,7 @@ const char* toString(Classification c) {
     case Classification::Intermediate: return "intermediate-stage";
     case Classification::NoPositionStage: return "no-position-stage";
     case Classification::NoPositionOutput: return "no-position-output";
+    case Classification::NoVertexEmitted: return "no-vertex-emitted";
   }
   return "?";
 }

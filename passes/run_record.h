@@ -26,6 +26,7 @@ enum class Classification {
   Intermediate,     // pre-rasterization stage followed by a later one in its pipeline
   NoPositionStage,  // tessellation control, fragment, compute, task: no clip position to shift
   NoPositionOutput, // a pre-rasterization stage that writes no clip position
+  NoVertexEmitted,  // a geometry shader that never emits a vertex: it rasterizes nothing, copied
 };
 const char* toString(Classification c);
 

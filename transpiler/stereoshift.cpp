@@ -81,15 +81,7 @@ bool definesMain(const SourceFile& input) {
 
 // Whether GLSL text calls EmitVertex or EmitStreamVertex: where a geometry stage's vertices are
 // emitted, and so where its shift goes.
-bool callsEmit(const SourceFile& input) {
-  source::LexedText lexed(input.contents);
-  for (size_t k = 0; k < lexed.size(); ++k)
-    if (lexed[k].isCode() && lexed.isIdentifier(k) &&
-        (lexed.text(k) == "EmitVertex" || lexed.text(k) == "EmitStreamVertex") &&
-        lexed.isPunct(lexed.nextNonComment(k), '('))
-      return true;
-  return false;
-}
+bool callsEmit(const SourceFile& input) { return textCallsEmit(input.contents); }
 
 // Of several compilation units of the stage that gets the shift, which takes it: the one that
 // defines `main` (its wrapper shifts what the others write), or, in a geometry stage, the one that
@@ -97,6 +89,32 @@ bool callsEmit(const SourceFile& input) {
 int shiftPreference(std::optional<Stage> stage, const SourceFile& input) {
   if (stage == Stage::Geometry && callsEmit(input)) return 2;
   return definesMain(input) ? 1 : 0;
+}
+
+// What the other compilation units of stage plan `i` (those `isOther` names) say by their text
+// (transpile_options.h, StageUnits); read only for a stage linked from several units.
+template <typename IsOther>
+StageUnits stageUnits(const std::vector<std::unique_ptr<StagePlan>>& plans, size_t i, IsOther isOther) {
+  StageUnits units;
+  const StagePlan& self = *plans[i];
+  std::vector<const SourceFile*> others;
+  for (const auto& other : plans)
+    if (isOther(other)) others.push_back(other->input);
+  // One unit alone: what another might hold is unknown (a function without its body may emit).
+  if (others.empty()) return units;
+  const bool geometry = self.stage && self.stage->stage == Stage::Geometry;
+  auto all = [&](auto test) {
+    return std::all_of(others.begin(), others.end(), [&](const SourceFile* f) { return f && test(f->contents); });
+  };
+  auto any = [&](auto test) {
+    return std::any_of(others.begin(), others.end(), [&](const SourceFile* f) { return f && test(f->contents); });
+  };
+  units.otherWritesPosition = any(textWritesPosition);
+  units.othersKeepUnitW = all(textKeepsUnitW);
+  if (geometry) units.stageEmits = textCallsEmit(self.input->contents) || any(textCallsEmit);
+  units.noUnitNamesPosition = all([](const std::string& t) { return !textNamesPosition(t); }) &&
+                              !textNamesPosition(self.input->contents);
+  return units;
 }
 
 // A pipeline has one shader per stage; OpenGL may link one stage from several compilation units,
@@ -294,12 +312,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
              other->stage->stage == plans[i]->stage->stage;
     };
     stageOptions.stageHasOtherUnits = std::any_of(plans.begin(), plans.end(), otherUnit);
-    stageOptions.positionWrittenByOtherUnit = std::any_of(plans.begin(), plans.end(), [&](const auto& other) {
-      return otherUnit(other) && other->input && textWritesPosition(other->input->contents);
-    });
-    stageOptions.otherUnitsKeepUnitW = std::none_of(plans.begin(), plans.end(), [&](const auto& other) {
-      return otherUnit(other) && (!other->input || !textKeepsUnitW(other->input->contents));
-    });
+    stageOptions.units = stageUnits(plans, i, [&](const auto& other) { return otherUnit(other); });
     results.push_back(convertStage(*plans[i], stageOptions));
     if (dumpDefault && kinds[i] == InputKind::Source) note3DMigotoDefault(stages[i], results.back());
   }

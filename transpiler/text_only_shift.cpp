@@ -268,13 +268,30 @@ bool isVulkanGlslText(const std::string& text) { return readText(text).vulkan; }
 
 bool textWritesPosition(const std::string& text) { return readText(text).writesPosition; }
 
+bool textNamesPosition(const std::string& text) {
+  source::LexedText lexed(text);
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed.isIdentifier(k) && lexed.text(k) == "gl_Position") return true;
+  return false;
+}
+
+bool textCallsEmit(const std::string& text) {
+  source::LexedText lexed(text);
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed[k].isCode() && lexed.isIdentifier(k) &&
+        (lexed.text(k) == "EmitVertex" || lexed.text(k) == "EmitStreamVertex") &&
+        lexed.isPunct(lexed.nextNonComment(k), '('))
+      return true;
+  return false;
+}
+
 bool textKeepsUnitW(const std::string& text) {
   TextFacts facts = readText(text);
   return facts.problem.empty() && !facts.wMayBeOtherThanOne;
 }
 
 Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options,
-                                    bool positionInOtherUnit, bool otherUnitsKeepUnitW) {
+                                    const StageUnits& units) {
   TextOnlyShift result;
   VersionLine v = findVersion(input.contents);
   if (!v.problem.empty()) {
@@ -284,19 +301,30 @@ Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const 
   if (!facts.problem.empty()) {
     return errorAt(0, 0, "the text has " + facts.problem);
   }
-  if (!facts.writesPosition && !positionInOtherUnit) {
+  if (!facts.writesPosition && !units.otherWritesPosition) {
+    if (units.noUnitNamesPosition) {  // every unit of the stage known, none with a position
+      result.output = input.contents;
+      result.copiedAs = Classification::NoPositionOutput;
+      return result;
+    }
     return errorAt(0, 0, "the text writes no gl_Position of its own");
   }
   for (const std::string* name : {&options.eye.eyeSignName, &options.eye.separationName, &options.eye.convergenceName})
     if (has(facts, *name)) {
       return errorAt(0, 0, "the shader already uses the name '" + *name + "' (is it converted already?)");
     }
-  if (!facts.wMayBeOtherThanOne && otherUnitsKeepUnitW) {
+  if (stage == Stage::Geometry && !units.stageEmits) {
+    // No vertex ever reaches the rasterizer: nothing to shift (as the analysis copies such a stage).
+    result.output = input.contents;
+    result.copiedAs = Classification::NoVertexEmitted;
+    return result;
+  }
+  if (!facts.wMayBeOtherThanOne && units.othersKeepUnitW) {
     // 2D by its text: the runtime cutoff would keep every draw mono, so nothing is spliced (as the
     // analysis copies a stage whose every position has the constant w = 1); the eye parameters are
     // not declared, where a compiler would fold them away unused.
     result.output = input.contents;
-    result.twoD = true;
+    result.copiedAs = Classification::ConstantW1;
     return result;
   }
   bool legacy = !facts.vulkan && (v.es ? v.version < 300 : v.version < 330);

@@ -19,6 +19,7 @@
 
 #include "core/diagnostics.h"
 #include "passes/pass_options.h"
+#include "passes/run_record.h"
 #include "core/result.h"
 #include "core/shader.h"
 #include "transpiler/backend/back_end_options.h"
@@ -37,9 +38,11 @@ struct TextOnlyShift {
   int sites = 0;
   std::string eyeParams;             // "loose uniforms", "uniform block", ...
   std::vector<std::string> notDone;  // what an analysis would have done
-  // Every write of gl_Position in the stage's text has the literal w = 1 (textKeepsUnitW): a 2D
-  // stage, `output` its input unchanged, nothing spliced.
-  bool twoD = false;
+  // Nothing spliced, `output` the input unchanged, for what the text shows: ConstantW1, every write
+  // of gl_Position in the stage's text has the literal w = 1 (textKeepsUnitW); NoVertexEmitted, a
+  // geometry stage none of whose units emits a vertex; NoPositionOutput, a stage of several units
+  // none of which names gl_Position.
+  std::optional<Classification> copiedAs;
 };
 
 // What in `text` glslang may read more narrowly than drivers do: an #extension it enables (glslang
@@ -54,15 +57,22 @@ const std::vector<std::string>& textOnlyNotDone();
 // parse: a pre-rasterization stage, kept in its own language, two-pass stereo, no --require-analysis.
 bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& passes, const BackEndOptions& backEnd);
 
-// `positionInOtherUnit`: another compilation unit of the stage assigns gl_Position (OpenGL links them
-// into one stage), so a text that writes none itself still takes the shift around its `main`;
-// `otherUnitsKeepUnitW`: every other unit of the stage passes textKeepsUnitW (with the text's own
-// writes, the 2D proof of the whole stage).
+// `units`: what the stage's other compilation units say by their text (OpenGL links a stage from
+// several; transpile_options.h, StageUnits): a text that writes no gl_Position itself still takes
+// the shift around its `main` where another unit writes it; the 2D proof covers every unit; a
+// geometry stage none of whose units emits, or a stage none of whose units names gl_Position, is
+// copied (TextOnlyShift::copiedAs).
 Result<TextOnlyShift> shiftFromText(const SourceFile& input, Stage stage, const PassOptions& options,
-                                    bool positionInOtherUnit = false, bool otherUnitsKeepUnitW = true);
+                                    const StageUnits& units = {});
+
+// Whether GLSL text calls EmitVertex or EmitStreamVertex.
+bool textCallsEmit(const std::string& text);
 
 // Whether GLSL text assigns gl_Position (or a component of it) itself.
 bool textWritesPosition(const std::string& text);
+
+// Whether GLSL text names gl_Position anywhere (code or macro).
+bool textNamesPosition(const std::string& text);
 
 // The text's 2D proof: whether every write of gl_Position in GLSL text leaves its w the literal 1
 // (`gl_Position = vec4(..., 1.0);`, `gl_Position.w = 1.0;`) or untouched (lanes without w); a

@@ -100,8 +100,7 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   if (glslangsGap(plan, options).empty()) return false;
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
-  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, options.positionWrittenByOtherUnit,
-                                                options.otherUnitsKeepUnitW);
+  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, options.units);
   return takeTextOnlyShift(plan, stage, std::move(shifted), route) && checkOutputWithMesa(plan);
 }
 
@@ -249,11 +248,18 @@ bool takeTextOnlyShift(StagePlan& plan, Stage stage, Result<TextOnlyShift> shift
     return false;
   }
   std::string reason = demoteGlslangErrors(plan);
-  if (shifted->twoD) {
-    plan.diags.warning(file, "glslang cannot analyse this shader; its text writes gl_Position with the literal w = 1 "
-                             "only (a 2D stage, which the runtime cutoff would keep mono in both eyes), so it is copied "
-                             "unchanged; --require-analysis makes this an error");
-    plan.record.classification = Classification::ConstantW1;
+  if (shifted->copiedAs) {
+    const Classification as = *shifted->copiedAs;
+    const std::string why = as == Classification::ConstantW1
+                                ? "its text writes gl_Position with the literal w = 1 only (a 2D stage, which the "
+                                  "runtime cutoff would keep mono in both eyes)"
+                            : as == Classification::NoVertexEmitted
+                                ? "no unit of this geometry stage emits a vertex (EmitVertex, EmitStreamVertex): it "
+                                  "rasterizes nothing"
+                                : "no unit of this stage names gl_Position: it writes no clip position";
+    plan.diags.warning(file, "glslang cannot analyse this shader; " + why +
+                                 ", so it is copied unchanged; --require-analysis makes this an error");
+    plan.record.classification = *shifted->copiedAs;
     TextOutcome copy{std::move(shifted->output)};
     copy.textOnly = StageRecord::TextOnly{reason, {"per-eye view vectors", "deferred unprojection"}, {}, true};
     return writeTextOutcome(plan, stage, std::move(copy));

@@ -12,16 +12,28 @@
 
 namespace stereoshift {
 
+// What the compilation units of one stage say by their text, for the text route (a stage OpenGL
+// links from several shader objects, each in the pipeline).
+struct StageUnits {
+  // Another unit assigns gl_Position: a unit whose `main` only calls into the others still gets
+  // the shift around its `main`.
+  bool otherWritesPosition = false;
+  // Every other unit keeps gl_Position's w the literal 1 (textKeepsUnitW): with this unit's text,
+  // the stage's 2D proof.
+  bool othersKeepUnitW = true;
+  // A geometry stage: one of its units (this one or another) calls EmitVertex / EmitStreamVertex.
+  bool stageEmits = true;
+  // A stage of several units none of which names gl_Position: it writes no clip position.
+  bool noUnitNamesPosition = false;
+};
+
 struct TranspileOptions : FrontEndOptions, PassOptions, BackEndOptions {
   // A pipeline holds another compilation unit of this stage (OpenGL links a stage from several
   // shader objects): a unit that does not link alone may be one of them (stage_plan.h).
   bool stageHasOtherUnits = false;
-  // ... and one of those assigns gl_Position (by its text): a unit whose `main` only calls into the
-  // others still gets the shift around its `main` (text_only_shift.h).
-  bool positionWrittenByOtherUnit = false;
-  // ... and every one of those keeps gl_Position's w the literal 1 by its text (textKeepsUnitW):
-  // with this unit's text, the stage's 2D proof where glslang cannot analyse it.
-  bool otherUnitsKeepUnitW = true;
+  // What the stage's other units say by their text (text_only_shift.h reads it where glslang
+  // cannot analyse the stage).
+  StageUnits units;
 };
 
 // The eye parameters from 3Dmigoto's StereoParams texture (t125), as 3Dmigoto fills it
