@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace stereoshift {
 
@@ -18,6 +19,7 @@ struct BuildCommandOptions {
   uint64_t jobMemoryMiB = 4096;    // a worker that maps more is stopped and its pipeline reported (0: none)
   bool dryRun = false;             // list what would be done (converted, up to date, copied); write nothing
   std::string filesFrom;           // --files-from: the tree is the files this lists, not the whole directory
+  std::vector<std::string> commandLine;  // as given (the key of a rebuild with nothing changed, build_noop.h)
 };
 
 // Registers the build-specific options on the `build` subcommand.

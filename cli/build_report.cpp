@@ -3,6 +3,7 @@
 #include "cli/build_report.h"
 
 #include <iostream>
+#include <sstream>
 #include <map>
 #include <string_view>
 
@@ -92,16 +93,22 @@ BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& result
   return report;
 }
 
-void printSummaryLine(const BuildReport& report, const std::string& source, const std::string& output) {
-  std::cerr << "stereoshift: " << report.shaders << " shaders from " << source << " into " << output << ": "
-            << report.converted << " converted, " << report.upToDate << " up to date";
-  if (report.copied) std::cerr << ", " << report.copied << " copied (mono/post/UI passes)";
-  if (report.failed) std::cerr << ", " << report.failed << " failed";
-  if (report.notWritten) std::cerr << ", " << report.notWritten << " not written (another stage of their pipeline failed)";
-  if (report.removed) std::cerr << ", " << report.removed << " stale outputs removed";
+std::string summaryLine(const BuildReport& report, const std::string& source, const std::string& output) {
+  std::ostringstream line;
+  line << "stereoshift: " << report.shaders << " shaders from " << source << " into " << output << ": "
+       << report.converted << " converted, " << report.upToDate << " up to date";
+  if (report.copied) line << ", " << report.copied << " copied (mono/post/UI passes)";
+  if (report.failed) line << ", " << report.failed << " failed";
+  if (report.notWritten) line << ", " << report.notWritten << " not written (another stage of their pipeline failed)";
+  if (report.removed) line << ", " << report.removed << " stale outputs removed";
   // Converted, but nothing to inject (2D, fragment, already stereo): written as they were.
-  if (report.unchanged) std::cerr << "; " << report.unchanged << " of the converted unchanged (written as they were)";
-  std::cerr << "\n";
+  if (report.unchanged) line << "; " << report.unchanged << " of the converted unchanged (written as they were)";
+  line << "\n";
+  return line.str();
+}
+
+void printSummaryLine(const BuildReport& report, const std::string& source, const std::string& output) {
+  std::cerr << summaryLine(report, source, output);
 }
 
 }  // namespace stereoshift

@@ -37,6 +37,8 @@ struct BuildReport {
 // `includeCopies` the #include files copied into the output tree.
 BuildReport composeReport(const Plan& plan, const std::vector<JobResult>& results, int removed,
                           const std::string& source, const std::vector<std::filesystem::path>& includeCopies = {});
+// The summary line a run prints (unless --quiet), with its newline.
+std::string summaryLine(const BuildReport& report, const std::string& source, const std::string& output);
 // "stereoshift: N shaders from SRC into OUT: ..." on standard error.
 void printSummaryLine(const BuildReport& report, const std::string& source, const std::string& output);
 

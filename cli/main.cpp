@@ -142,6 +142,7 @@ static int runCommandLine(int argc, char** argv) {
       printErrorSummary(1);
       return 2;
     }
+    buildOptions.commandLine = spelled;
     return runBuildCommand(buildOptions, b);
   }
 
