@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 
 namespace fs = std::filesystem;
 using namespace stereoshift;
@@ -189,6 +190,24 @@ INSTANTIATE_TEST_SUITE_P(
 // and SV_POSITION0 kept) compiled again, run against the original with StereoParams texel 0 set
 // as 3Dmigoto sets it (x = eyeSign * separation, y = convergence): separation 0 is mono, bit for
 // bit; each eye within the bound of the exact shift.
+// The vertex stage of a converted dump as the harness runs it: the original's SPIR-V, and the
+// spliced text compiled again by the front end (as the game's D3D compiler would get it); empty with
+// the front end's messages in `why` when the text does not compile.
+std::optional<StageModules> splicedVertexStage(const SourceFile& input, const TranspileResult& converted,
+                                               const TranspileOptions& options, std::string* why) {
+  Diagnostics diags;
+  FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
+  if (!stereo.ok) {
+    *why = diags.format();
+    return std::nullopt;
+  }
+  StageModules stage;
+  stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stage.original = converted.originalSpirv;
+  stage.transpiled = stereo.spirv;
+  return stage;
+}
+
 class MigotoDumpExecution : public VulkanSuite<> {};
 
 TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
@@ -225,15 +244,11 @@ TEST_F(MigotoDumpExecution, SplicedDumpMatchesReference) {
         converted.originalSpirv = original.spirv;
       }
       ASSERT_NE(converted.output.find("StereoParams.Load(int3(0, 0, 0))"), std::string::npos) << converted.output;
-      Diagnostics diags;
-      FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
-      ASSERT_TRUE(stereo.ok) << diags.format();
-      StageModules stage;
-      stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
-      stage.original = converted.originalSpirv;
-      stage.transpiled = stereo.spirv;
+      std::string why;
+      std::optional<StageModules> stage = splicedVertexStage(input, converted, options, &why);
+      ASSERT_TRUE(stage) << why;
       VerifySettings settings;
-      VerifyResult r = verifyStereo(*context_, {stage}, settings);
+      VerifyResult r = verifyStereo(*context_, {*stage}, settings);
       ASSERT_TRUE(r.error.empty()) << r.error;
       std::cout << "[verify] 3dmigoto " << dump << (declared ? "" : " (texture declared by the splice)")
                 << (textOnly ? " (text-only route)" : "") << ": vertices "
@@ -268,16 +283,12 @@ TEST_F(MigotoDumpExecution, ScreenPositionLaneMovesWithTheShift) {
   TranspileResult converted = transpile(input, options);
   ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
   ASSERT_EQ(converted.report.value("route", ""), "hlsl-source-splice");
-  Diagnostics diags;
-  FrontEndResult stereo = compileToSpirv(SourceFile{input.path, converted.output}, options, diags);
-  ASSERT_TRUE(stereo.ok) << diags.format();
-  StageModules stage;
-  stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stage.original = converted.originalSpirv;
-  stage.transpiled = stereo.spirv;
-  stage.movedLanes = {{"o3", 0, 0.5f}};
+  std::string why;
+  std::optional<StageModules> stage = splicedVertexStage(input, converted, options, &why);
+  ASSERT_TRUE(stage) << why;
+  stage->movedLanes = {{"o3", 0, 0.5f}};
   VerifySettings settings;
-  VerifyResult r = verifyStereo(*context_, {stage}, settings);
+  VerifyResult r = verifyStereo(*context_, {*stage}, settings);
   ASSERT_TRUE(r.error.empty()) << r.error;
   std::cout << "[verify] 3dmigoto screen-pos-vs_replace.txt: vertices " << r.vertices << ", max stereo error "
             << r.maxStereoUlps << " ULP, o3.x against mono + 0.5 * shift: " << r.maxMovedLaneUlps << " ULP over "
