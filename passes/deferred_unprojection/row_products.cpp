@@ -294,13 +294,22 @@ bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<La
   return lanes == 7u && inputs.size() == 1;
 }
 
-// Whether a pixel coordinate term is a screen input read as it is or times one constant or uniform.
+// Whether a pixel coordinate term is a screen input read as it is or times one constant or uniform,
+// or over (or times) a value of uniforms alone (a pixel position over a texture's size: a UV; a
+// perspective divide by an input's w is NDC).
 bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   const Linear& f = d.form(term);
   if (f.size() != 1 || !f[0].term) return false;
   const Lane inner = *f[0].term;
   Sources s = sourcesOf(flow, d, inner);
-  return (s.fragCoord || s.varying) && !s.arithmetic;
+  if ((s.fragCoord || s.varying) && !s.arithmetic) return true;
+  const Instruction* def = d.definition(inner.id);
+  if (!def || (def->opcode != spv::OpFDiv && def->opcode != spv::OpFMul) || def->operands.size() != 2) return false;
+  auto laneOf = [&](uint32_t id) { return Lane{id, d.isVector(id) ? inner.lane : 0}; };
+  const Sources a = sourcesOf(flow, d, laneOf(def->operand(0))), b = sourcesOf(flow, d, laneOf(def->operand(1)));
+  auto plainScreen = [](const Sources& x) { return (x.fragCoord || x.varying) && !x.arithmetic && !x.texel && !x.other; };
+  auto uniformOnly = [](const Sources& x) { return !x.fragCoord && !x.varying && !x.texel && !x.other; };
+  return (plainScreen(a) && uniformOnly(b)) || (def->opcode == spv::OpFMul && plainScreen(b) && uniformOnly(a));
 }
 
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {

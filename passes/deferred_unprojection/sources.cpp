@@ -96,6 +96,14 @@ std::optional<Sources> SourceRules::leaf(const Instruction& def, const AccessPat
     case spv::OpSpecConstantComposite: case spv::OpSpecConstantOp:
       s.uniform = true;  // chosen by the application, like a uniform
       return s;
+    case spv::OpImageQuerySize: case spv::OpImageQuerySizeLod: case spv::OpImageQueryLevels:
+    case spv::OpImageQuerySamples:
+      // A texture's size (HLSL's GetDimensions, textureSize): the same for every pixel of a draw,
+      // chosen by the application like a uniform (a pixel position over the screen texture's
+      // size is a UV, as over a cbuffer's screen size).
+      s.uniform = true;
+      s.textures.insert(imageName(def.operand(0)));
+      return s;
     default:
       // A texel; a depth comparison is not a depth, and stays unknown.
       if (spirv::isTexelRead(def.opcode)) {

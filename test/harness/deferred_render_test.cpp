@@ -1112,6 +1112,19 @@ TEST_F(DeferredRender, DumpStyleDp4RowsFixedInItsTextByExecution) {
   checkRebuiltPositions("1a2b3c4d5e6f7081-ps_replace.txt", kDumpDp4Lighting.c_str(), "dump dp4", &rows);
 }
 
+// The pixel's UV from the depth texture's own size (`t2.GetDimensions(0, fDest.x, fDest.y,
+// fDest.z); r2.xy = v0.xy / fDest.xy;`, resinfo in assembly) instead of a cbuffer's inverse screen
+// size: a texture's size is the same for every pixel, like a uniform, so the UV and the NDC made
+// from it are the screen's as before (this form went unseen: the size query was opaque).
+TEST_F(DeferredRender, DumpStyleUvFromTheTextureSizeFixedInItsTextByExecution) {
+  std::string text = kDumpDp4Lighting;
+  const std::string uv = "  r2.xy = v0.xy * cb0[4].zw;\n";
+  ASSERT_NE(text.find(uv), std::string::npos);
+  text.replace(text.find(uv), uv.size(), "  t2.GetDimensions(0, fDest.x, fDest.y, fDest.z);\n  r2.xy = v0.xy / fDest.xy;\n");
+  DumpFeed rows{true, false};
+  checkRebuiltPositions("1a2b3c4d5e6f7082-ps_replace.txt", text.c_str(), "dump dp4, UV from the texture's size", &rows);
+}
+
 // The view-ray form: per eye, the G-buffer depth drawn with that eye's stereo projection, made
 // linear (the positive view depth d = -z_view, in double from the Vulkan depth), read back by
 // kViewRayFrag with the mono inverse projection: stereoshift's version with the eye parameters

@@ -219,7 +219,8 @@ std::array<double, 3> rebuild(const Program& program, const Pixel& p, const std:
   m.inputs[2] = vec(w, 0.0f, 0.0f, 0.0f);
   m.cbuffers[0] = {Vec4{}, Vec4{}, vec(0, 0, 1.0f / kSize, 1.0f / kSize)};
   m.cbuffers[1] = cb1;
-  m.resource = [&](uint32_t slot, const Vec4&, const std::string&) {
+  m.resource = [&](uint32_t slot, const Vec4&, const std::string& opcode) {
+    if (opcode.starts_with("resinfo")) return Vec4{kSize, kSize, 1u, 1u};  // `_uint`: the size of t0 as integers
     return slot == 125 ? stereo : slot == 0 ? vec(p.depth, 0, 0, 0) : Vec4{};
   };
   RunResult run = program.run(m);
@@ -307,6 +308,27 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
 TEST(AsmUnprojection, MadChainOverColumnsCorrectedByExecution) { checkByExecution(kDeferredMadPs, false, "asm mad"); }
 
 TEST(AsmUnprojection, Dp4RowsAfterAnEarlyReturnCorrectedByExecution) { checkByExecution(kDeferredDp4Ps, true, "asm dp4"); }
+
+// The pixel's UV over the depth texture's own size (`resinfo ... _uint`, `utof`, `div`) instead of a
+// cbuffer's inverse screen size: a texture's size is the same for every pixel, like a cbuffer
+// element, so the NDC made from it is the screen's (before, the size read as a texel and the
+// rebuild went unseen).
+TEST(AsmUnprojection, UvFromTheTextureSizeCorrectedByExecution) {
+  std::string shader = kDeferredMadPs;
+  const std::string uv = "mul r0.xy, v0.xyxx, cb0[2].zwzz\n";
+  ASSERT_NE(shader.find(uv), std::string::npos);
+  shader.replace(shader.find(uv), uv.size(),
+                 "resinfo_indexable(texture2d)(float,float,float,float)_uint r1.xy, l(0), t0.xyzw\n"
+                 "utof r1.xy, r1.xyxx\n"
+                 "div r0.xy, v0.xyxx, r1.xyxx\n");
+  checkByExecution(shader.c_str(), false, "asm mad, UV from resinfo");
+  // The unchanged half: that UV read by the matrix as it is (no `* 2 - 1`) is not known to be NDC.
+  const std::string ndc = "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
+  ASSERT_NE(shader.find(ndc), std::string::npos);
+  shader.erase(shader.find(ndc), ndc.size());
+  AsmShiftResult fromUv = shiftAssembly(shader, {});
+  EXPECT_TRUE(fromUv.corrections.empty()) << fromUv.output;
+}
 
 TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
   AsmShiftResult converted = shiftAssembly(kScreenToWorldPs, {});

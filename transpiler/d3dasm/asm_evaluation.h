@@ -394,7 +394,12 @@ class Evaluator {
       case Code::Dp4:
         arithmetic(op);
         return;
-      case Code::Resource: opaque(op, true); return;
+      // A texture's size (`resinfo`, `sampleinfo`, `bufinfo`) is the same for every pixel, like a
+      // cbuffer element: not a texel (a pixel position over it is a UV, as over a screen size).
+      case Code::Resource:
+        opaque(op, !(op.resourceOpcode.starts_with("resinfo") || op.resourceOpcode.starts_with("sampleinfo") ||
+                     op.resourceOpcode.starts_with("bufinfo")));
+        return;
       default: opaque(op, false);
     }
   }

@@ -219,13 +219,20 @@ std::optional<RayCandidate> rayCandidate(const std::vector<Value>& values, int i
   return c;
 }
 
-// Whether the pixel's x term is a screen input as it is, or times one constant or element.
+// Whether the pixel's x term is a screen input as it is, or times one constant or element, or over a
+// value read from no input and no texel (a pixel position over a texture's size, `resinfo`: a UV; a
+// perspective divide by an input's w is NDC).
 bool notKnownNdc(const std::vector<Value>& values, int term) {
   const Linear& f = values[term].form;
   if (f.size() != 1 || f[0].term < 0) return false;
+  auto plainInput = [&](const Value& v) {
+    return v.op == SIZE_MAX && !v.sources.empty() &&
+           std::all_of(v.sources.begin(), v.sources.end(), [](const Source& s) { return s.kind == Source::Input; });
+  };
   const Value& inner = values[f[0].term];
-  return inner.op == SIZE_MAX && !inner.sources.empty() &&
-         std::all_of(inner.sources.begin(), inner.sources.end(), [](const Source& s) { return s.kind == Source::Input; });
+  if (plainInput(inner)) return true;
+  const auto [numerator, denominator] = inner.quotient;
+  return numerator >= 0 && denominator >= 0 && plainInput(values[numerator]) && values[denominator].sources.empty();
 }
 
 // The camera c of a view vector `sign` * (c - p) whose linear form is `f`, p being the point q's
