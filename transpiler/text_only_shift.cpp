@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <charconv>
 #include <optional>
+#include <set>
 
 namespace stereoshift {
 
@@ -267,6 +268,30 @@ bool mayShiftFromText(Stage stage, SourceLanguage language, const PassOptions& p
 bool isVulkanGlslText(const std::string& text) { return readText(text).vulkan; }
 
 bool textWritesPosition(const std::string& text) { return readText(text).writesPosition; }
+
+bool textDefinesEveryPrototype(const std::string& text) {
+  source::LexedText lexed(text);
+  std::vector<size_t> code;
+  for (size_t k = 0; k < lexed.size(); ++k)
+    if (lexed[k].isCode()) code.push_back(k);
+  std::set<std::string> declared, defined;
+  int depth = 0;
+  for (size_t i = 0; i < code.size(); ++i) {
+    if (lexed.isPunct(code[i], '{')) ++depth;
+    if (lexed.isPunct(code[i], '}')) --depth;
+    if (depth != 0 || !lexed.isIdentifier(code[i]) || i + 1 >= code.size() || !lexed.isPunct(code[i + 1], '(')) continue;
+    size_t j = i + 1;  // past the matching ')'
+    for (int parens = 0; j < code.size(); ++j) {
+      if (lexed.isPunct(code[j], '(')) ++parens;
+      if (lexed.isPunct(code[j], ')') && --parens == 0) break;
+    }
+    if (j + 1 >= code.size()) break;
+    const std::string name(lexed.text(code[i]));
+    if (lexed.isPunct(code[j + 1], ';')) declared.insert(name);
+    if (lexed.isPunct(code[j + 1], '{')) defined.insert(name);
+  }
+  return std::includes(defined.begin(), defined.end(), declared.begin(), declared.end());
+}
 
 bool textNamesPosition(const std::string& text) {
   source::LexedText lexed(text);

@@ -71,6 +71,10 @@ bool textCallsEmit(const std::string& text);
 // Whether GLSL text assigns gl_Position (or a component of it) itself.
 bool textWritesPosition(const std::string& text);
 
+// Whether every function GLSL text declares at its top level without a body (a prototype) has its
+// body in the text too: a unit that calls no function of another unit (GLSL needs a prototype for one).
+bool textDefinesEveryPrototype(const std::string& text);
+
 // Whether GLSL text names gl_Position anywhere (code or macro).
 bool textNamesPosition(const std::string& text);
 

@@ -100,7 +100,11 @@ bool shiftGlslStageFromText(StagePlan& plan, const TranspileOptions& options, St
   if (glslangsGap(plan, options).empty()) return false;
   // Never a yes to a shader the driver refuses: Mesa compiles the original, then the output.
   if (!mesaAgreesOnOriginal(plan, options, "text-only")) return false;
-  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, options.units);
+  StageUnits units = options.units;
+  // A unit alone that declares a function it does not define calls into a unit the pipeline does
+  // not hold: what that function writes is unknown, so the unit's text proves nothing 2D.
+  if (!options.stageHasOtherUnits && !textDefinesEveryPrototype(plan.input->contents)) units.othersKeepUnitW = false;
+  Result<TextOnlyShift> shifted = shiftFromText(*plan.input, stage, options, units);
   return takeTextOnlyShift(plan, stage, std::move(shifted), route) && checkOutputWithMesa(plan);
 }
 

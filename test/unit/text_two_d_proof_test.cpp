@@ -57,5 +57,18 @@ TEST(TextTwoDProof, AnyOtherWriteOfWIsNoProof) {
   EXPECT_FALSE(textKeepsUnitW(mainWith("  const float w = 1.0;\n  gl_Position = vec4(p, w);")));
 }
 
+// A unit alone proves nothing when it calls into a unit the pipeline does not hold: GLSL needs a
+// prototype for such a function, and the unit has no body for it.
+TEST(TextTwoDProof, PrototypesWithoutBodiesAreCallsIntoAnotherUnit) {
+  EXPECT_TRUE(textDefinesEveryPrototype("#version 150\nvoid main() { }\n"));
+  EXPECT_TRUE(textDefinesEveryPrototype("#version 150\nvec4 corner(int i);\nvoid main() { corner(0); }\n"
+                                        "vec4 corner(int i) { return vec4(float(i)); }\n"));
+  EXPECT_TRUE(textDefinesEveryPrototype("#version 150\nlayout(location = 0) in vec3 p;\nstruct S { vec4 v; };\n"
+                                        "uniform Block { vec4 tint; } block;\nvoid main() { }\n"));
+  EXPECT_FALSE(textDefinesEveryPrototype("#version 150\nvoid adjust();\nvoid main() { adjust(); }\n"));
+  EXPECT_FALSE(textDefinesEveryPrototype("#version 150\nvec4 corner(int i);\n/* vec4 corner(int i) { } */\n"
+                                         "void main() { corner(0); }\n"));
+}
+
 }  // namespace
 }  // namespace stereoshift
