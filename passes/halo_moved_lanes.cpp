@@ -159,6 +159,27 @@ bool moveInModule(PassContext& ctx, uint32_t output, const std::vector<std::pair
   return false;
 }
 
+// Whether the module writes vector temporaries a lane at a time, over and over, as a decompiler
+// writes its registers (`r0.x = ...; r0.yz = ...;`): where a function-local vector takes at least
+// `kLaneWrites` stores of single components. Hand-written HLSL keeps its values whole, and the
+// module's own flow (halo_pass.cpp) sees through it; the register copy (an optimizer run) is made
+// only where it can show what that flow cannot.
+constexpr int kLaneWrites = 4;
+bool writesRegistersLaneByLane(const spirv::Module& m) {
+  int laneWrites = 0;
+  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpStore) return;
+    const Instruction* chain = m.definition(inst.operand(0));
+    if (!chain || chain->opcode != spv::OpAccessChain || chain->operands.size() != 2) return;
+    const uint32_t base = chain->operand(0);
+    const Instruction* variable = m.definition(base);
+    if (!variable || variable->opcode != spv::OpVariable || m.storageClassOf(base) != spv::StorageClassFunction) return;
+    const Instruction* type = m.definition(m.pointeeType(variable->typeId));
+    if (type && type->opcode == spv::OpTypeVector) ++laneWrites;
+  });
+  return laneWrites >= kLaneWrites;
+}
+
 }  // namespace
 
 bool moveLanesDerivedFromPositionX(PassContext& ctx, const std::vector<std::string>& fixed) {
@@ -178,7 +199,7 @@ bool moveLanesDerivedFromPositionX(PassContext& ctx, const std::vector<std::stri
     const bool floats = type && (type->resultId == f32 || (type->opcode == spv::OpTypeVector && type->operand(0) == f32));
     if (floats && std::find(fixed.begin(), fixed.end(), m.name(id)) == fixed.end()) candidates.insert(id);
   }
-  if (candidates.empty()) return false;
+  if (candidates.empty() || !writesRegistersLaneByLane(m)) return false;
   const spirv::Module* registers = ctx.analyses.registerSsaCopy();
   if (!registers) return false;
   ClipPositionAnalysis registerPositions(*registers);  // global ids are the module's own
