@@ -1058,6 +1058,17 @@ TEST_F(DeferredRender, DumpStyleScreenToWorldFixedInItsTextByExecution) {
   checkScreenToWorld("4a5b6c7d8e9f0123-ps_replace.txt", kDumpScreenToWorld.c_str(), "dump screen to world");
 }
 
+// A call between the depth read and the rebuild (`sincos(r0.z, r3.z, r3.w);`: a call writes
+// registers only through its arguments, and none of these is the depth's r1.x): the correction that
+// reads the depth from its register is placed past it, and still right.
+TEST_F(DeferredRender, DumpStyleScreenToWorldPastACallFixedInItsTextByExecution) {
+  std::string text = kDumpScreenToWorld;
+  const std::string first = "  r2.xy = r2.xy * r1.xx;\n";
+  ASSERT_NE(text.find(first), std::string::npos);
+  text.insert(text.find(first), "  sincos(r0.z, r3.z, r3.w);\n");
+  checkScreenToWorld("4a5b6c7d8e9f0124-ps_replace.txt", text.c_str(), "dump screen to world past a call");
+}
+
 // The NDC from an interpolated copy of the clip position divided by its w, a scalar input of its own
 // (`r2.xy = v1.xy / v2.xx;`): the w tells no x from y, and the point is corrected all the same.
 TEST_F(DeferredRender, DumpStyleScreenToWorldFromAnInterpolatedClipPositionFixedByExecution) {

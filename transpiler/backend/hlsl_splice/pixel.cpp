@@ -99,6 +99,17 @@ bool controlOnly(const std::string& line) {
   return std::regex_match(line, form);
 }
 
+// Whether a line is one call statement (`t1.GetDimensions(0, fDest.x, fDest.y, fDest.z);`,
+// `sincos(r0.x, r1.x, r2.x);`): in a pixel shader's HLSL a call writes registers only through its
+// arguments, so a register its line does not name keeps its value.
+bool callStatement(const std::string& line) {
+  static const std::regex form(R"(^\s*(([A-Za-z_]\w*)\.)?([A-Za-z_]\w*)\s*\(.*\)\s*;\s*(//.*)?$)");
+  std::smatch m;
+  if (!std::regex_match(line, m, form)) return false;
+  static const std::set<std::string> keywords = {"if", "for", "while", "switch", "return", "do"};
+  return !m[2].matched ? !keywords.count(m[3]) : true;
+}
+
 // Whether a line holds no code (blank, or a comment only).
 bool blankCode(const std::string& text) {
   return text.substr(0, text.find("//")).find_first_not_of(" \t") == std::string::npos;
@@ -122,6 +133,13 @@ std::optional<std::string> locateDepth(const Lines& lines, uint32_t depthLine, u
     if (blankCode(text)) continue;
     auto later = assignmentOn(text);
     if (!later && controlOnly(text)) continue;  // writes nothing
+    if (!later && callStatement(text)) {
+      if (reads(text, depth->reg, c)) {
+        out = failedAt(out, l, "register " + component + " (the depth) may be written by the call on this line before " + done);
+        return std::nullopt;
+      }
+      continue;
+    }
     if (!later) {
       out = failedAt(out, l, "a line between the depth and " + what + " is not a plain assignment");
       return std::nullopt;
@@ -150,7 +168,7 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
       std::string text = lines.line(l);
       if (blankCode(text)) continue;
       auto later = assignmentOn(text);
-      if (!later && controlOnly(text)) {
+      if (!later && (controlOnly(text) || callStatement(text))) {
         if (reads(text, a->reg, c)) return fail(l, out.component[i] + " is read before the rebuilt position is complete");
         continue;
       }
