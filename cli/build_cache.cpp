@@ -154,11 +154,17 @@ std::string hashFile(const std::string& path) {
   return readFile(path, &bytes) ? hashBytes(bytes) : std::string();
 }
 
-nlohmann::json fileStamp(const fs::path& path) {
+FileStamp statStamp(const fs::path& path) {
   struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) return nullptr;
+  if (::stat(path.c_str(), &info) != 0) return {};
   auto ns = [](const struct timespec& t) { return std::int64_t(t.tv_sec) * 1000000000 + t.tv_nsec; };
   return {std::int64_t(info.st_size), std::uint64_t(info.st_ino), ns(info.st_mtim), ns(info.st_ctim)};
+}
+
+nlohmann::json fileStamp(const fs::path& path) {
+  const FileStamp s = statStamp(path);
+  if (s.size < 0) return nullptr;
+  return {s.size, s.inode, s.modifiedNs, s.changedNs};
 }
 
 std::string toolIdentity() {
@@ -292,9 +298,7 @@ int removeStaleOutputs(const Plan& plan, const Cache& previous, const fs::path& 
 
 Status writeIfChanged(const fs::path& outDir, const fs::path& path, const std::string& bytes) {
   if (std::string escape = linkOutOfOutputDirectory(path, outDir); !escape.empty()) return plainError(escape);
-  std::string existing;
-  if (readFile(path.string(), &existing) && existing == bytes) return Done{};
-  return writeAtomically(path, bytes);
+  return writeUnlessHolding(path, bytes);
 }
 
 }  // namespace stereoshift

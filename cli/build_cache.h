@@ -44,6 +44,14 @@ using FileDigest = std::function<std::string(const std::string& path)>;
 // write and cannot be set back, so an unchanged stamp means unchanged bytes, except within the
 // clock's granularity of the moment the stamp was taken (see outputIntact in build_cache.cpp).
 nlohmann::json fileStamp(const std::filesystem::path& path);
+// The same as a value: size -1 when the file cannot be examined.
+struct FileStamp {
+  std::int64_t size = -1;
+  std::uint64_t inode = 0;
+  std::int64_t modifiedNs = 0, changedNs = 0;
+  bool operator==(const FileStamp&) const = default;
+};
+FileStamp statStamp(const std::filesystem::path& path);
 
 // What a cached result depends on besides its inputs: this very build of the tool.
 std::string toolIdentity();

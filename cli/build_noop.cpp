@@ -5,8 +5,6 @@
 #include "cli/output_commit.h"
 #include "transpiler/source/file_io.h"
 
-#include <sys/stat.h>
-
 #include <charconv>
 #include <chrono>
 #include <cstdint>
@@ -22,22 +20,6 @@ namespace {
 constexpr const char* kNoopFile = ".stereoshift-noop";
 constexpr const char* kMarkerFile = ".stereoshift-noop.clock";
 constexpr const char* kFormat = "stereoshift-noop 1";
-
-struct Stamp {
-  std::int64_t size = -1;
-  std::uint64_t inode = 0;
-  std::int64_t modifiedNs = 0, changedNs = 0;
-  bool operator==(const Stamp&) const = default;
-};
-
-std::int64_t nanoseconds(const struct timespec& t) { return std::int64_t(t.tv_sec) * 1000000000 + t.tv_nsec; }
-
-// The file's stamp (a link followed); size -1 when it cannot be examined (gone: that is a stamp too).
-Stamp stampOf(const std::string& path) {
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) return {};
-  return {std::int64_t(info.st_size), std::uint64_t(info.st_ino), nanoseconds(info.st_mtim), nanoseconds(info.st_ctim)};
-}
 
 // Length-prefixed blobs: "<bytes>\n<text>\n".
 void putBlob(std::string& out, const std::string& text) { out += std::to_string(text.size()) + "\n" + text + "\n"; }
@@ -66,7 +48,7 @@ class Reader {
     return true;
   }
   // "<size> <inode> <modified> <changed> <path>"
-  bool stamp(std::string* path, Stamp* s) {
+  bool stamp(std::string* path, FileStamp* s) {
     std::string_view text;
     if (!line(&text)) return false;
     std::string_view words[4];
@@ -106,28 +88,17 @@ void outputTree(const fs::path& outDir, const NoopOutcome& outcome, std::vector<
 // within the current tick or later (recording it could miss a change in the same tick).
 std::optional<std::string> stampsAgainstTheClock(const fs::path& outDir, const std::vector<std::string>& paths) {
   if (Status marked = writeAtomically(outDir / kMarkerFile, "clock\n"); !marked) return std::nullopt;
-  const Stamp clock = stampOf((outDir / kMarkerFile).string());
+  const FileStamp clock = statStamp(outDir / kMarkerFile);
   if (clock.size < 0) return std::nullopt;
   std::string out = std::to_string(paths.size()) + "\n";
   for (const auto& path : paths) {
     if (path.find('\n') != std::string::npos) return std::nullopt;
-    const Stamp s = stampOf(path);
+    const FileStamp s = statStamp(path);
     if (s.size >= 0 && s.changedNs >= clock.changedNs) return std::nullopt;
     out += std::to_string(s.size) + " " + std::to_string(s.inode) + " " + std::to_string(s.modifiedNs) + " " +
            std::to_string(s.changedNs) + " " + path + "\n";
   }
   return out;
-}
-
-// Writes `bytes` to `path` unless it holds them already.
-bool writeIfDifferent(const fs::path& path, const std::string& bytes) {
-  std::string current;
-  if (readFile(path.string(), &current) && current == bytes) return true;
-  if (Status written = writeAtomically(path, bytes); !written) {
-    std::cerr << path.string() << ": error: " << written.error().message << "\n";
-    return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -177,11 +148,15 @@ bool replayNoop(const fs::path& outDir, const std::string& runKey) {
   size_t count = 0;
   if (!in.line(&countText) || !in.number(countText, &count)) return false;
   std::string path;
-  Stamp recorded;
+  FileStamp recorded;
   for (size_t i = 0; i < count; ++i)
-    if (!in.stamp(&path, &recorded) || !(stampOf(path) == recorded)) return false;
+    if (!in.stamp(&path, &recorded) || !(statStamp(path) == recorded)) return false;
   if (!writeReportText(reportPath, reportText)) return false;
-  if (!depfilePath.empty() && !writeIfDifferent(depfilePath, depfileText)) return false;
+  if (!depfilePath.empty())
+    if (Status written = writeUnlessHolding(depfilePath, depfileText); !written) {
+      std::cerr << located(written.error(), depfilePath).format() << "\n";
+      return false;
+    }
   std::cerr << messages;
   return true;
 }

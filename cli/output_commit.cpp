@@ -153,6 +153,12 @@ bool writeReport(const std::string& path, const nlohmann::json& report) {
   return writeReportText(path, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
+Status writeUnlessHolding(const fs::path& path, const std::string& bytes) {
+  std::string existing;
+  if (readFile(path.string(), &existing) && existing == bytes) return Done{};
+  return writeAtomically(path, bytes);
+}
+
 bool writeReportText(const std::string& path, const std::string& text) {
   if (path.empty()) return true;
   if (path == "-") {
@@ -160,9 +166,7 @@ bool writeReportText(const std::string& path, const std::string& text) {
     return true;
   }
   // An identical report is left alone (a repeated no-op build rewrites nothing).
-  std::string existing;
-  if (readFile(path, &existing) && existing == text) return true;
-  if (Status written = writeAtomically(path, text); !written) {
+  if (Status written = writeUnlessHolding(path, text); !written) {
     std::cerr << "stereoshift: error: " << written.error().message << "\n";
     return false;
   }

@@ -17,6 +17,8 @@ namespace stereoshift {
 
 // Writes through a temporary file renamed into place: a failure never leaves a partial output.
 Status writeAtomically(const std::filesystem::path& path, const std::string& bytes);
+// The same, unless the file already holds `bytes` (then it is left alone, its timestamp kept).
+Status writeUnlessHolding(const std::filesystem::path& path, const std::string& bytes);
 
 // One output waiting to be written ("-": standard output).
 struct PendingOutput {

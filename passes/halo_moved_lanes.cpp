@@ -116,11 +116,7 @@ std::vector<std::pair<uint32_t, float>> movedLanesOf(Decomposer& d, LaneDependen
 bool moveInModule(PassContext& ctx, uint32_t output, const std::vector<std::pair<uint32_t, float>>& lanes) {
   spirv::Module& m = ctx.module;
   const ClipPositionAnalysis& positions = ctx.analyses.clipPositions();
-  int stores = 0;
-  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
-    if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == output) ++stores;
-  });
-  if (stores != 1) return false;
+  if (spirv::storesTo(m, output) != 1) return false;
   for (auto& fn : m.functions)
     for (auto& block : fn.blocks) {
       size_t outputAt = block.instructions.size(), positionAt = block.instructions.size();

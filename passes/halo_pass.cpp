@@ -57,15 +57,6 @@ std::pair<size_t, size_t> valueOperands(const Instruction& inst) {
   return {inst.opcode == spv::OpExtInst ? 2 : 0, std::min(last, inst.operands.size())};
 }
 
-// How many stores in the module write (any part of) `variable`.
-int storesTo(const spirv::Module& m, uint32_t variable) {
-  int stores = 0;
-  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
-    if (inst.opcode == spv::OpStore && m.rootVariable(inst.operand(0)) == variable) ++stores;
-  });
-  return stores;
-}
-
 // The source spelling of the output part `pointer` addresses (`vClip`, `surf.clip`, `copies[1]`):
 // its variable's name and, through constant access-chain indices, struct member names and array
 // indices. Empty for a vector component, a variable index or a missing name.
@@ -179,7 +170,7 @@ class HaloPass final : public Pass {
       }
     // Only an output written once has one mono value to read back.
     for (auto it = monoStoredTo.begin(); it != monoStoredTo.end();)
-      it = storesTo(m, it->first) == 1 ? std::next(it) : monoStoredTo.erase(it);
+      it = spirv::storesTo(m, it->first) == 1 ? std::next(it) : monoStoredTo.erase(it);
     readBackMonoValues(ctx, monoStoredTo);
     isPosition_ = nullptr;  // it refers to this run's numbering
     shiftExactCopiesSeenAfterInlining(ctx, fixed);
@@ -195,7 +186,7 @@ class HaloPass final : public Pass {
     // The derived outputs as text: each stored once, by a store whose computation the text can show.
     facts.derivedTexts.clear();
     for (const auto& [target, text] : derivedTexts) {
-      if (!text || storesTo(m, target) != 1) {
+      if (!text || spirv::storesTo(m, target) != 1) {
         facts.derivedTexts.clear();
         break;
       }

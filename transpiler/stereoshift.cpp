@@ -79,15 +79,11 @@ bool definesMain(const SourceFile& input) {
   return false;
 }
 
-// Whether GLSL text calls EmitVertex or EmitStreamVertex: where a geometry stage's vertices are
-// emitted, and so where its shift goes.
-bool callsEmit(const SourceFile& input) { return textCallsEmit(input.contents); }
-
 // Of several compilation units of the stage that gets the shift, which takes it: the one that
 // defines `main` (its wrapper shifts what the others write), or, in a geometry stage, the one that
 // emits the vertices (the shift goes before each emit, wherever `main` is).
 int shiftPreference(std::optional<Stage> stage, const SourceFile& input) {
-  if (stage == Stage::Geometry && callsEmit(input)) return 2;
+  if (stage == Stage::Geometry && textCallsEmit(input.contents)) return 2;  // where its vertices are emitted
   return definesMain(input) ? 1 : 0;
 }
 
@@ -312,7 +308,7 @@ std::vector<TranspileResult> transpilePipeline(const std::vector<SourceFile>& st
              other->stage->stage == plans[i]->stage->stage;
     };
     stageOptions.stageHasOtherUnits = std::any_of(plans.begin(), plans.end(), otherUnit);
-    stageOptions.units = stageUnits(plans, i, [&](const auto& other) { return otherUnit(other); });
+    stageOptions.units = stageUnits(plans, i, otherUnit);
     results.push_back(convertStage(*plans[i], stageOptions));
     if (dumpDefault && kinds[i] == InputKind::Source) note3DMigotoDefault(stages[i], results.back());
   }

@@ -39,6 +39,15 @@ bool anyFunctionInstruction(ModuleT& module, Pred&& pred) {
   return false;
 }
 
+// How many stores in the module's function bodies write (any part of) `variable`.
+inline int storesTo(const Module& module, uint32_t variable) {
+  int stores = 0;
+  forEachFunctionInstruction(module, [&](const Instruction& inst, const Function&, const Block&) {
+    if (inst.opcode == spv::OpStore && module.rootVariable(inst.operand(0)) == variable) ++stores;
+  });
+  return stores;
+}
+
 // Calls visit(inst, function, block) for every instruction of the module in encoding order: the
 // global sections (function and block are null), then each function's OpFunction (block null),
 // its parameters (block null) and its block instructions. OpLabel and OpFunctionEnd are implied

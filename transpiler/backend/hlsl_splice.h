@@ -51,15 +51,10 @@ namespace stereoshift {
 struct HlslSplicedEntry {
   std::string name;
   std::vector<std::string> copies;
-  // Lanes of `out` parameters computed from the position's x (HaloFacts::movedLanes): before every
+  // Lanes of `out` parameters computed from the position's x (the halo pass's): before every
   // return, `o3.x += 0.5f * (stereoshift_shift_position(o0).x - o0.x);` (o0 the SV_Position out
   // parameter), with or without --corrections-only.
-  struct MovedLane {
-    std::string output;
-    uint32_t lane = 0;
-    float coefficient = 0.0f;
-  };
-  std::vector<MovedLane> movedLanes;
+  std::vector<HaloFacts::MovedLane> movedLanes;
 };
 
 // Where the shift goes, and the shift itself (the ShiftSpec it extends: cutoff, epsilon, form,

@@ -80,9 +80,7 @@ void hlslCameras(const PassContext& ctx, HlslSpliceOptions& splice) {
 // them: glslang names the outputs of an entry point's returned struct `@entryPointOutput.<member>`
 // and an `out` parameter by its own name.
 HlslSplicedEntry splicedVertexEntry(const std::string& name, const RunRecord& record) {
-  HlslSplicedEntry entry{name, {}, {}};
-  for (const auto& moved : record.halo.movedLanes)
-    entry.movedLanes.push_back({moved.output, moved.lane, moved.coefficient});
+  HlslSplicedEntry entry{name, {}, record.halo.movedLanes};
   if (!record.halo.shiftedOutputs) return entry;
   static constexpr std::string_view kReturned = "@entryPointOutput";
   for (const auto& output : *record.halo.shiftedOutputs) {

@@ -6,6 +6,7 @@
 #include "transpiler/verify/vk_harness.h"
 #include "transpiler/stereoshift.h"
 #include "passes/ir/module.h"
+#include "passes/run_record.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,14 +29,9 @@ struct StageModules {
   std::vector<uint32_t> transpiled;  // SPIR-V after stereoshift's passes
   std::string entry = "main";
   std::vector<std::string> haloOutputs;  // outputs the halo pass re-derived from the shifted position
-  // Lanes the halo pass moved by `coefficient` times the shift of x (HaloFacts::movedLanes): each
-  // held to the mono value plus coefficient * (reference x - x), within kMovedLaneUlps.
-  struct MovedLane {
-    std::string output;
-    uint32_t lane = 0;
-    float coefficient = 0.0f;
-  };
-  std::vector<MovedLane> movedLanes;
+  // Lanes the halo pass moved by `coefficient` times the shift of x: each held to the mono value
+  // plus coefficient * (reference x - x), within kMovedLaneUlps.
+  std::vector<HaloFacts::MovedLane> movedLanes;
   BindingClasses bindings = BindingClasses::Shared;
   // The last stage only, optional: another conversion of the same shader (the SPIR-V route's, beside
   // a spliced text) whose every captured output must equal the transpiled one's, bit for bit, in

@@ -150,9 +150,7 @@ bool buildStageModules(const std::vector<SourceFile>& sources, const TranspileOp
     std::vector<std::string> halo = outputsExpectedToDiffer(result);
     const BindingClasses bindings = bindingClassesOf(result);
     stages->push_back({toVk(original->executionModel()), std::move(result.originalSpirv), std::move(words),
-                       original->entryPointName(), std::move(halo), {}, bindings});
-    for (const auto& moved : result.record.passes.halo.movedLanes)
-      stages->back().movedLanes.push_back({moved.output, moved.lane, moved.coefficient});
+                       original->entryPointName(), std::move(halo), result.record.passes.halo.movedLanes, bindings});
   }
   return true;
 }
