@@ -58,6 +58,7 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
   const ShiftSpec shift = assemblyShiftSpec(options);
   settings.cutoff = shift.cutoff;
   settings.cutoffEpsilon = shift.epsilon;
+  if (converted.record.assembly) settings.movedLanes = converted.record.assembly->movedLanes;
   d3dasm::AsmVerifyResult r = d3dasm::verifyAssemblyConversion(input.contents, converted.output, settings);
   if (!r.ran) {
     if (verify.json)
@@ -81,10 +82,15 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
                                 {"cutoff_mismatches", r.cutoffMismatches}, {"shifted_runs", r.shiftedRuns},
                                 {"shifted_failures", r.shiftedFailures}, {"samples_with_w_one", r.samplesWithWOne},
                                 {"max_stereo_error", r.worstError}, {"bound_at_max", r.worstBound},
-                                {"max_error_over_bound", r.worstRatio}, {"first_failure", r.firstFailure},
+                                {"max_error_over_bound", r.worstRatio}, {"moved_lane_runs", r.movedLaneRuns},
+                                {"moved_lane_failures", r.movedLaneFailures},
+                                {"max_moved_lane_error_over_bound", r.worstMovedLaneRatio},
+                                {"first_failure", r.firstFailure},
                                 {"checked", {"separation 0: every output bit for bit the original's",
                                              "eye -1 and +1: x against x + s*(w - c) in double from the original's x "
-                                             "and w, every other output unchanged"}}}.dump(2)
+                                             "and w, every other output unchanged but the lanes moved with x: a copy "
+                                             "equal to the shifted x, another lane the original's plus its "
+                                             "coefficient times the exact shift"}}}.dump(2)
               << "\n";
     return r.ok ? 0 : 1;
   }
@@ -102,6 +108,12 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
             << "  vertices kept by the cutoff:   " << r.cutoffRuns << (r.cutoffMismatches ? " (x CHANGED)" : " (x bit-exact)")
             << "\n"
             << "  input sets with w = 1:         " << r.samplesWithWOne << " of " << r.samples << "\n";
+  if (r.movedLaneRuns) {
+    char moved[160];
+    std::snprintf(moved, sizeof moved, "%.2f of the bound at worst, %d of %d over it", r.worstMovedLaneRatio,
+                  r.movedLaneFailures, r.movedLaneRuns);
+    std::cout << "  lanes moved with x:            " << moved << "\n";
+  }
   if (r.runaway) std::cout << "  runaway input sets:            " << r.runaway << " (the instruction limit; left out)\n";
   if (!r.firstFailure.empty()) std::cout << "  problem: " << r.firstFailure << "\n";
   std::cout << (r.ok ? "verified" : "FAILED") << "\n";

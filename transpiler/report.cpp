@@ -239,6 +239,13 @@ json renderStageReport(const StageRecord& record) {
       report["eye_params"] = a.declaredStereoParams ? "3Dmigoto StereoParams texture (t125, declared)"
                                                     : "3Dmigoto StereoParams texture (t125, the dump's)";
       report["not_done"] = a.notDone;
+      for (const auto& moved : a.movedLanes)
+        report["moved_lanes"].push_back({{"output", "o" + std::to_string(moved.reg)},
+                                         {"lane", std::string(1, "xyzw"[moved.lane & 3])},
+                                         {"coefficient", moved.coefficient},
+                                         {"copy", moved.copy},
+                                         {"line", moved.line}});
+      if (a.positionLeftToDriver) report["position_left_to_driver"] = "--corrections-only: the driver shifts it";
     }
     if (!a.corrections.empty()) {
       nlohmann::json fixed = nlohmann::json::array();

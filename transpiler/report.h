@@ -7,6 +7,7 @@
 #include "passes/run_record.h"
 #include "core/shader.h"
 #include "transpiler/backend/emit_facts.h"
+#include "transpiler/d3dasm/asm_halo.h"
 
 #include <nlohmann/json.hpp>
 
@@ -70,6 +71,10 @@ struct StageRecord {
     };
     std::vector<Correction> corrections;
     std::vector<std::string> leftAlone;  // seen in a pixel shader and left for a person, with why
+    // A vertex or domain shader: output lanes moved with the position's x (d3dasm/asm_halo.h), and
+    // whether the position itself was left to the driver (--corrections-only).
+    std::vector<d3dasm::AsmMovedLane> movedLanes;
+    bool positionLeftToDriver = false;
   };
   std::optional<Assembly> assembly;
   std::string lifted;  // analysed on a lifted copy (frontend/glsl_lift.h): what was lifted

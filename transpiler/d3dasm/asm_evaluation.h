@@ -51,6 +51,7 @@ struct Value {
   std::optional<std::pair<uint32_t, uint32_t>> at;  // the temporary component it was written to
   std::vector<int> factors;      // a product of values (a new term): the values multiplied
   std::pair<int, int> quotient{-1, -1};  // a division of two values: numerator, denominator
+  std::vector<int> from;         // a new term of an instruction looked into no further: the values it read
 };
 
 // A temporary's component as the text names it: "r2.x".
@@ -92,6 +93,11 @@ inline Linear sum(Linear a, const Linear& b) {
 
 constexpr size_t kMaxFactors = 8;
 
+// Output registers are kept beside the temporaries, their numbers offset by this (an output is
+// written, never read, in SM4+): what each holds at a return is its value there.
+constexpr uint32_t kOutputKey = 1u << 30;
+using RegisterState = std::map<std::pair<uint32_t, uint32_t>, int>;
+
 class Evaluator {
  public:
   explicit Evaluator(const Program::Impl& program) : p_(program) {}
@@ -111,6 +117,18 @@ class Evaluator {
   bool stillIn(const Value& v, size_t at) const { return v.at && v.op != SIZE_MAX && !writtenBetween(*v.at, v.op, at); }
   // Straight-line stretches: ops with the same number have no control flow between them.
   size_t region(size_t op) const { return regions_[op]; }
+  // What each output lane holds at each return (`ret`, `retc_nz`, `retc_z`; a program with
+  // subroutines is not decoded): the op and the lanes written by then, keyed {reg, lane}.
+  struct Exit {
+    size_t op = 0;
+    RegisterState outputs;
+  };
+  const std::vector<Exit>& exits() const { return exits_; }
+  // Whether value `id` may depend on value `on`: through its linear form's terms, the factors of a
+  // product, the parts of a quotient, what an instruction looked into no further read; a value the
+  // evaluation lost track of (merged at an endif, written in a loop, read before any write) may
+  // depend on anything. Inputs depend on nothing.
+  bool mayDependOn(int id, int on) const { return dependsWalk(id, on); }
 
  private:
   int fresh(std::set<Source> sources, size_t op) {
@@ -129,6 +147,31 @@ class Evaluator {
     v.op = op;
     values_.push_back(std::move(v));
     return static_cast<int>(values_.size()) - 1;
+  }
+  // Depth first over what each value was computed from, with a stack of its own (a dump's chains
+  // are thousands of values long).
+  bool dependsWalk(int id, int on) const {
+    std::vector<char> seen(values_.size(), 0);
+    std::vector<int> stack{id};
+    while (!stack.empty()) {
+      const int at = stack.back();
+      stack.pop_back();
+      if (at < 0 || seen[at]) continue;
+      seen[at] = 1;
+      if (at == on) return true;
+      const Value& v = values_[at];
+      if (v.op == SIZE_MAX && v.from.empty()) {
+        if (v.sources.empty()) return true;  // lost track of (an input has its lane as a source)
+        continue;
+      }
+      stack.insert(stack.end(), v.from.begin(), v.from.end());
+      stack.insert(stack.end(), v.factors.begin(), v.factors.end());
+      stack.push_back(v.quotient.first);
+      stack.push_back(v.quotient.second);
+      for (const Part& part : v.form)
+        if (part.term >= 0 && part.term != at) stack.push_back(part.term);
+    }
+    return false;
   }
 
   Read read(const Src& s, uint32_t component) {
@@ -167,7 +210,10 @@ class Evaluator {
     }
     if (s.absolute) {
       if (!isConstant(r.form)) {
+        const int inner = r.value;
         r.value = fresh(r.sources, SIZE_MAX);
+        if (inner >= 0) values_[r.value].from = {inner};
+        else for (const Part& part : r.form) if (part.term >= 0) values_[r.value].from.push_back(part.term);
         r.form = values_[r.value].form;
       } else if (!r.form.empty()) {
         r.form[0].coefficient.scale = std::abs(r.form[0].coefficient.scale);
@@ -203,11 +249,22 @@ class Evaluator {
   }
 
   void write(const Dst& d, uint32_t component, int value) {
+    if (d.file == File::Output && !d.index.relative) {
+      temps_[{kOutputKey + d.reg, component}] = value;
+      return;
+    }
     if (d.file != File::Temp) return;
     const std::pair<uint32_t, uint32_t> at{d.reg, component};
     temps_[at] = value;
     writes_[at].push_back(current_);
     if (values_[value].op == current_ && !values_[value].at) values_[value].at = at;
+  }
+
+  void recordExit(size_t op) {
+    Exit exit{op, {}};
+    for (const auto& [at, value] : temps_)
+      if (at.first >= kOutputKey) exit.outputs[{at.first - kOutputKey, at.second}] = value;
+    exits_.push_back(std::move(exit));
   }
 
   void arithmetic(const Op& op) {
@@ -217,14 +274,17 @@ class Evaluator {
       const uint32_t n = op.code == Code::Dp2 ? 2 : op.code == Code::Dp3 ? 3 : 4;
       std::optional<Linear> total = Linear{};
       std::set<Source> sources;
+      std::vector<int> reads;
       for (uint32_t k = 0; k < n; ++k) {
         Read a = read(op.src[0], k), b = read(op.src[1], k);
         sources.merge(joined({&a, &b}));
+        readValues({&a, &b}, reads);
         std::optional<Linear> term = product(a, b);
         if (!term || !total) total.reset();
         else total = sum(*total, *term);
       }
       const int value = op.saturate || !total ? fresh(sources, current_) : make(*total, sources, current_);
+      if (op.saturate || !total) values_[value].from = std::move(reads);
       for (uint32_t c = 0; c < 4; ++c)
         if (d.mask & (1u << c)) write(d, c, value);
       return;
@@ -234,6 +294,8 @@ class Evaluator {
       Read a = read(op.src[0], c);
       std::optional<Linear> form;
       std::set<Source> sources = a.sources;
+      std::vector<int> reads;
+      readValues({&a}, reads);
       if (op.code == Code::Mov) {
         if (!op.saturate && a.value >= 0) {
           write(d, c, a.value);  // the same value in another place
@@ -243,6 +305,7 @@ class Evaluator {
       } else {
         Read b = read(op.src[1], c);
         sources.merge(joined({&b}));
+        readValues({&b}, reads);
         if (op.code == Code::Add) {
           form = sum(a.form, b.form);
         } else if (op.code == Code::Mul) {
@@ -251,6 +314,7 @@ class Evaluator {
             // A product of two values: a new term that remembers its factors (a handful at most: a
             // chain that squares a value again and again stays linear in size, its product an atom).
             const int value = fresh(sources, current_);
+            values_[value].from = {a.value, b.value};
             std::vector<int> factors;
             for (int factor : {a.value, b.value}) {
               const auto& inner = values_[factor].factors;
@@ -281,10 +345,17 @@ class Evaluator {
         } else if (op.code == Code::Mad) {
           Read e = read(op.src[2], c);
           sources.merge(joined({&e}));
+          readValues({&e}, reads);
           if (auto p = product(a, b)) form = sum(*p, e.form);
         }
       }
-      write(d, c, op.saturate || !form ? fresh(sources, current_) : make(*form, sources, current_));
+      if (op.saturate || !form) {
+        const int value = fresh(sources, current_);
+        values_[value].from = std::move(reads);
+        write(d, c, value);
+      } else {
+        write(d, c, make(*form, sources, current_));
+      }
     }
   }
 
@@ -293,17 +364,32 @@ class Evaluator {
   // in the sense the roles ask: a depth read at the pixel is a depth).
   void opaque(const Op& op, bool texel) {
     std::set<Source> sources;
-    for (uint8_t s = 0; s < op.srcCount && !texel; ++s) {
-      if (op.src[s].file == File::Resource) continue;
+    std::vector<int> reads;
+    for (uint8_t s = 0; s < op.srcCount; ++s) {
+      if (op.src[s].file == File::Resource || op.src[s].file == File::Sampler) continue;
       for (uint32_t c = 0; c < 4; ++c) {
         Read r = read(op.src[s], c);
-        sources.merge(r.sources);
+        if (!texel) sources.merge(r.sources);
+        readValues({&r}, reads);
       }
     }
     if (texel) sources.insert({Source::Texel, op.src[1].reg, 0});
     for (uint8_t k = 0; k < op.dstCount; ++k)
       for (uint32_t c = 0; c < 4; ++c)
-        if (op.dst[k].mask & (1u << c)) write(op.dst[k], c, fresh(sources, current_));
+        if (op.dst[k].mask & (1u << c)) {
+          const int value = fresh(sources, current_);
+          values_[value].from = reads;
+          write(op.dst[k], c, value);
+        }
+  }
+
+  // The values a read stands for: the value itself, or the terms of its form.
+  static void readValues(std::initializer_list<const Read*> list, std::vector<int>& reads) {
+    for (const Read* r : list) {
+      if (r->value >= 0) reads.push_back(r->value);
+      for (const Part& part : r->form)
+        if (part.term >= 0) reads.push_back(part.term);
+    }
   }
 
   // What a loop body writes is unknown at its start and after it.
@@ -315,7 +401,8 @@ class Evaluator {
       if (op.code == Code::Endloop && --depth == 0) break;
       for (uint8_t d = 0; d < op.dstCount; ++d)
         for (uint32_t c = 0; c < 4; ++c)
-          if (op.dst[d].file == File::Temp && (op.dst[d].mask & (1u << c))) temps_[{op.dst[d].reg, c}] = fresh({}, SIZE_MAX);
+          if ((op.dst[d].file == File::Temp || op.dst[d].file == File::Output) && (op.dst[d].mask & (1u << c)))
+            temps_[{op.dst[d].reg + (op.dst[d].file == File::Output ? kOutputKey : 0), c}] = fresh({}, SIZE_MAX);
     }
   }
 
@@ -382,11 +469,16 @@ class Evaluator {
         ++region_;
         return;
       case Code::Ret:
+        recordExit(k);
         returned_ = true;
         ++region_;
         return;
+      case Code::RetcNz: case Code::RetcZ:
+        recordExit(k);
+        ++region_;
+        return;
       case Code::Break: case Code::BreakcNz: case Code::BreakcZ: case Code::Continue: case Code::ContinuecNz:
-      case Code::ContinuecZ: case Code::RetcNz: case Code::RetcZ:
+      case Code::ContinuecZ:
         ++region_;
         return;
       case Code::Nop: return;
@@ -410,6 +502,7 @@ class Evaluator {
   std::map<std::pair<uint32_t, uint32_t>, std::vector<size_t>> writes_;
   std::vector<Branch> branches_;
   std::vector<size_t> regions_;
+  std::vector<Exit> exits_;
   size_t region_ = 0, current_ = 0;
   bool returned_ = false;
 };

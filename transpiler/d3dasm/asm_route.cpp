@@ -40,8 +40,8 @@ Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const Transpi
   // What the assembler would refuse when 3Dmigoto loads the dump is refused here, located.
   if (Result<d3dasm::AsmText> parsed = d3dasm::parseAssembly(input.contents); parsed.ok() && parsed->model.major >= 4)
     if (auto error = d3dasm::findAssemblerError(*parsed)) return errorAt(error->line, error->column, error->message);
-  d3dasm::AsmShiftResult shifted =
-      d3dasm::shiftAssembly(input.contents, assemblyShiftSpec(options), options.deferredUnprojection);
+  d3dasm::AsmShiftResult shifted = d3dasm::shiftAssembly(input.contents, assemblyShiftSpec(options),
+                                                         options.deferredUnprojection, !options.correctionsOnly);
   if (!shifted.ok) return errorAt(shifted.error.line, shifted.error.column, shifted.error.message);
   const std::optional<Stage> stage = shifted.stage;
   record.stage = stage;
@@ -67,10 +67,8 @@ Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const Transpi
     record.changed = true;
     return ConvertedAssembly{std::move(shifted.output), false};
   }
-  if (!shifted.shifted || !options.shiftThisStage || options.correctionsOnly) {
-    assembly.unchangedBecause = !shifted.shifted          ? shifted.whyUnchanged
-                                : options.correctionsOnly ? "--corrections-only: the position is left to the driver's shift"
-                                                          : "an earlier stage of the pipeline";
+  if (!shifted.shifted || !options.shiftThisStage) {
+    assembly.unchangedBecause = !shifted.shifted ? shifted.whyUnchanged : "an earlier stage of the pipeline";
     record.assembly = assembly;
     record.output = StageRecord::Output::Copied;
     return ConvertedAssembly{input.contents, true};
@@ -79,8 +77,10 @@ Result<ConvertedAssembly> convertAssembly(const SourceFile& input, const Transpi
   assembly.positionTemp = shifted.positionTemp;
   assembly.redirectedWrites = shifted.redirectedWrites;
   assembly.declaredStereoParams = shifted.declaredStereoParams;
-  assembly.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)", "halo copies of the position",
-                      "per-eye fixes"};
+  assembly.movedLanes = shifted.movedLanes;
+  assembly.positionLeftToDriver = !shifted.positionShifted;
+  assembly.notDone = {"2D proof (the runtime cutoff keeps w = 1 draws mono)",
+                      "halos other than copies and lanes linear in x with a constant coefficient", "per-eye fixes"};
   record.assembly = assembly;
   record.emit.spliceSites = shifted.sites;
   record.output = StageRecord::Output::Emitted;

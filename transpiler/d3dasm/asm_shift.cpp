@@ -1,13 +1,16 @@
 #include "transpiler/d3dasm/asm_shift.h"
 
+#include "transpiler/d3dasm/asm_halo.h"
 #include "transpiler/d3dasm/asm_interpreter.h"
 #include "transpiler/d3dasm/asm_unprojection.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace stereoshift::d3dasm {
@@ -130,6 +133,11 @@ std::string render(const AsmText& text, const Edits& edits) {
   return joined;
 }
 
+std::string countWord(size_t n) {
+  static const char* const words[] = {"no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine"};
+  return n < 10 ? words[n] : std::to_string(n);
+}
+
 bool isEmit(const std::string& base) {
   return base == "emit" || base == "emit_stream" || base == "emitThenCut" || base == "emitThenCut_stream";
 }
@@ -221,10 +229,25 @@ std::string stereoParamsLoad(const std::string& rS, bool sm5) {
 
 // The block before each return or emit: read StereoParams into rS, shift rP.x into rS.x where the
 // cutoff lets it, write the position out.
+// With `halos`, each redirected output register (its temporary, its declared mask) is written out
+// with its moved lanes: a copy of x takes the shifted x where x is shifted (`movc` on the same
+// condition), another lane its value plus a times the shift. `shiftPosition` false
+// (--corrections-only: the driver shifts the position) writes the position out as it is.
+struct HaloOutput {
+  std::string out, temp, mask;
+  std::vector<AsmMovedLane> lanes;
+};
+
 std::vector<std::string> shiftBlock(const std::string& out, const std::string& mask, const std::string& rP,
-                                    const std::string& rS, bool sm5, const ShiftSpec& spec) {
+                                    const std::string& rS, bool sm5, const ShiftSpec& spec,
+                                    const std::vector<HaloOutput>& halos = {}, bool shiftPosition = true) {
+  std::string lanes;
+  for (const HaloOutput& halo : halos)
+    for (const AsmMovedLane& lane : halo.lanes) lanes += std::string(lanes.empty() ? "" : ", ") + halo.out + "." + "xyzw"[lane.lane];
   std::vector<std::string> shift = {
-      "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)",
+      !shiftPosition ? "what moves with " + out + ".x (" + lanes + "; the driver shifts " + out + ": --corrections-only)"
+      : halos.empty() ? "clip-space shift of " + out + " (3Dmigoto StereoParams, t125)"
+                      : "clip-space shift of " + out + " and what moves with its x (" + lanes + ") (3Dmigoto StereoParams, t125)",
       stereoParamsLoad(rS, sm5),
       "add " + rS + ".w, " + rP + ".w, -" + rS + ".y",
       "mad " + rS + ".w, " + rS + ".x, " + rS + ".w, " + rP + ".x",
@@ -240,6 +263,24 @@ std::vector<std::string> shiftBlock(const std::string& out, const std::string& m
     shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
     shift.push_back("lt " + rS + ".y, |" + rP + ".w|, l(" + floatLiteral(FLT_MAX) + ")");
     shift.push_back("and " + rS + ".x, " + rS + ".x, " + rS + ".y");
+  }
+  // rS.x: whether x is shifted; rS.w: the shifted x; rS.y is free.
+  for (const HaloOutput& halo : halos) {
+    shift.push_back("mov " + halo.out + "." + halo.mask + ", " + halo.temp + "." + halo.mask);
+    for (const AsmMovedLane& lane : halo.lanes) {
+      const std::string at = halo.temp + "." + "xyzw"[lane.lane], to = halo.out + "." + "xyzw"[lane.lane];
+      if (lane.copy) {
+        shift.push_back("movc " + to + ", " + rS + ".x, " + rS + ".w, " + at);
+        continue;
+      }
+      shift.push_back("add " + rS + ".y, " + rS + ".w, -" + rP + ".x");
+      shift.push_back("mad " + rS + ".y, " + rS + ".y, l(" + floatLiteral(lane.coefficient) + "), " + at);
+      shift.push_back("movc " + to + ", " + rS + ".x, " + rS + ".y, " + at);
+    }
+  }
+  if (!shiftPosition) {
+    shift.push_back("mov " + out + "." + mask + ", " + rP + "." + mask);
+    return shift;
   }
   shift.push_back("movc " + rS + ".x, " + rS + ".x, " + rS + ".w, " + rP + ".x");
   shift.push_back("mov " + out + "." + mask + ", " + rP + "." + mask);
@@ -443,9 +484,54 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
   return result;
 }
 
+// The halos (asm_halo.h): output lanes that move with x, grouped by register, each register given
+// a temporary of its own after the shift's rP and rS.
+std::vector<HaloOutput> haloOutputs(const AsmText& text, const Declarations& d) {
+  std::vector<HaloOutput> halos;
+  AsmError why;
+  std::unique_ptr<Program> program = Program::decode(text, &why, DecodeFor::Analysis);
+  if (!program) return halos;
+  for (const AsmMovedLane& lane : findAsmMovedLanes(*program)) {
+    const std::string o = "o" + std::to_string(lane.reg);
+    if (halos.empty() || halos.back().out != o) {
+      std::string mask;
+      for (uint32_t c = 0; c < 4; ++c)
+        if (program->outputMasks().at(lane.reg) & (1u << c)) mask += "xyzw"[c];
+      halos.push_back({o, "r" + std::to_string(d.temps + 2 + halos.size()), mask, {}});
+    }
+    halos.back().lanes.push_back(lane);
+  }
+  return halos;
+}
+
+// Line k's writes of the redirected output registers (`redirected`: output, its temporary; the
+// position first) replaced by their temporaries, as a marked edit; how many writes of the position
+// it had.
+int redirectWrites(const AsmLine& line, size_t k, const std::vector<std::pair<std::string, std::string>>& redirected,
+                   Edits& edits) {
+  std::vector<std::pair<size_t, size_t>> offsets;  // offset, index in `redirected`
+  for (size_t r = 0; r < redirected.size(); ++r)
+    for (size_t offset : registerTokenOffsets(line, redirected[r].first)) offsets.push_back({offset, r});
+  if (offsets.empty()) return 0;
+  std::sort(offsets.begin(), offsets.end());
+  std::string edited = line.text, why;
+  int positionWrites = 0;
+  for (auto it = offsets.rbegin(); it != offsets.rend(); ++it)
+    edited.replace(it->first, redirected[it->second].first.size(), redirected[it->second].second);
+  for (const auto& [offset, r] : offsets) {
+    if (r == 0) ++positionWrites;
+    const std::string what = r == 0 ? "the position is written to " + redirected[0].second
+                                    : redirected[r].first + " is written to " + redirected[r].second;
+    if (why.find(what) == std::string::npos) why += (why.empty() ? "" : "; ") + what;
+  }
+  edits.replaced[k] = edited;
+  edits.why[k] = why + " (outputs cannot be read back)";
+  return positionWrites;
+}
+
 }  // namespace
 
-AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec, bool pixelCorrections) {
+AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec, bool pixelCorrections, bool shiftPosition) {
   AsmShiftResult result;
   Result<AsmText> parsed = parseAssembly(source);
   if (!parsed) {
@@ -496,9 +582,17 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec, b
   result.positionTemp = rP;
   result.scratchTemp = rS;
 
+  const std::vector<HaloOutput> halos = stage == Stage::Geometry ? std::vector<HaloOutput>{} : haloOutputs(text, d);
+  for (const HaloOutput& halo : halos) result.movedLanes.insert(result.movedLanes.end(), halo.lanes.begin(), halo.lanes.end());
+  if (!shiftPosition && halos.empty())
+    return unchanged("--corrections-only: the position is left to the driver's shift");  // and nothing moves with x
+
   Edits edits;
-  // The writes of the position, into rP. An output register is never a source in SM4+, so every
-  // mention in an instruction is a write (mov, mad, ..., and two-result instructions alike).
+  // The writes of the position into rP, of each halo register into its temporary. An output
+  // register is never a source in SM4+, so every mention in an instruction is a write (mov, mad,
+  // ..., and two-result instructions alike).
+  std::vector<std::pair<std::string, std::string>> redirected = {{out, rP}};
+  for (const HaloOutput& halo : halos) redirected.push_back({halo.out, halo.temp});
   bool inSubroutine = false;
   std::vector<size_t> sites;
   for (size_t k = 0; k < text.lines.size(); ++k) {
@@ -506,14 +600,7 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec, b
     if (line.kind != LineKind::Instruction) continue;
     const std::string base = line.baseOpcode();
     if (base == "label") inSubroutine = true;
-    std::vector<size_t> offsets = registerTokenOffsets(line, out);
-    if (!offsets.empty()) {
-      std::string edited = line.text;
-      for (auto it = offsets.rbegin(); it != offsets.rend(); ++it) edited.replace(*it, out.size(), rP);
-      edits.replaced[k] = edited;
-      edits.why[k] = "the position is written to " + rP + " (outputs cannot be read back)";
-      ++result.redirectedWrites;
-    }
+    result.redirectedWrites += redirectWrites(line, k, redirected, edits);
     if (stage == Stage::Geometry ? isEmit(base) : (isReturn(base) && !inSubroutine)) sites.push_back(k);
   }
   if (result.redirectedWrites == 0) {
@@ -527,12 +614,17 @@ AsmShiftResult shiftAssembly(const std::string& source, const ShiftSpec& spec, b
     return result;
   }
 
-  const std::vector<std::string> shift = shiftBlock(out, d.positionMask, rP, rS, text.model.major >= 5, spec);
+  const std::vector<std::string> shift =
+      shiftBlock(out, d.positionMask, rP, rS, text.model.major >= 5, spec, halos, shiftPosition);
   for (size_t k : sites) edits.before[k] = shift;
   result.sites = static_cast<int>(sites.size());
 
-  // Two more temporaries; t125 declared unless the dump has it.
-  declareScratch(text, d, 2, "two temporaries for the shift (" + rP + ", " + rS + ")", edits, result);
+  // Two more temporaries (and one per halo register); t125 declared unless the dump has it.
+  std::string temporaries = rP + ", " + rS;
+  for (const HaloOutput& halo : halos) temporaries += ", " + halo.temp;
+  declareScratch(text, d, static_cast<uint32_t>(2 + halos.size()),
+                 countWord(2 + halos.size()) + " temporaries for the shift (" + temporaries + ")", edits, result);
+  result.positionShifted = shiftPosition;
   result.output = render(text, edits);
   result.ok = true;
   result.shifted = true;

@@ -41,6 +41,7 @@
 #pragma once
 
 #include "core/shift_spec.h"
+#include "transpiler/d3dasm/asm_halo.h"
 #include "transpiler/d3dasm/asm_text.h"
 
 #include <optional>
@@ -63,6 +64,8 @@ struct AsmShiftResult {
   std::string positionTemp, scratchTemp;  // "r6", "r7"
   int redirectedWrites = 0;     // instructions that wrote the position
   int sites = 0;                // blocks written (returns or emits)
+  std::vector<AsmMovedLane> movedLanes;  // output lanes moved with x (asm_halo.h)
+  bool positionShifted = false; // false with moved lanes only (shiftPosition false)
   bool declaredStereoParams = false;  // t125 declared by the edit (false: the dump's own reused)
   // A pixel shader: the position rebuilds corrected (the output is `output` when any was).
   struct Correction {
@@ -77,7 +80,11 @@ struct AsmShiftResult {
 // in 3Dmigoto's separation: branch-free (`movc`), the product and sum as one `mad`, whose fusing D3D
 // leaves to the driver; the spec's form, fused, compensated and names have no assembly spelling.
 // `pixelCorrections` false: a pixel shader is copied as it is (--no-deferred-unprojection).
-AsmShiftResult shiftAssembly(const std::string& text, const ShiftSpec& spec, bool pixelCorrections = true);
+// `shiftPosition` false (--corrections-only: the driver shifts the position): only the output lanes
+// that move with x are written (the same block, the position written out unshifted); a stage
+// without such lanes is copied.
+AsmShiftResult shiftAssembly(const std::string& text, const ShiftSpec& spec, bool pixelCorrections = true,
+                             bool shiftPosition = true);
 
 // The original text of an output of shiftAssembly: the marked blocks dropped and each
 // `// stereoshift was:` line restored (the check that the edits are all marked).

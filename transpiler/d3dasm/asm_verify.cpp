@@ -5,6 +5,7 @@
 
 #include "transpiler/d3dasm/asm_interpreter.h"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cfloat>
@@ -131,9 +132,10 @@ struct Runner {
   }
 };
 
-// Whether the outputs agree bit for bit, leaving out the components of `skipReg` in `skipMask`.
+// Whether the outputs agree bit for bit, leaving out the components of `skipReg` in `skipMask` and
+// the lanes in `skipLanes`.
 bool sameOutputs(const std::map<uint32_t, Vec4>& a, const std::map<uint32_t, Vec4>& b, uint32_t skipReg,
-                 uint32_t skipMask, std::string* where) {
+                 uint32_t skipMask, std::string* where, const std::vector<AsmMovedLane>& skipLanes = {}) {
   std::set<uint32_t> registers;
   for (const auto& [r, v] : a) registers.insert(r);
   for (const auto& [r, v] : b) registers.insert(r);
@@ -146,6 +148,9 @@ bool sameOutputs(const std::map<uint32_t, Vec4>& a, const std::map<uint32_t, Vec
     }
     for (int k = 0; k < 4; ++k) {
       if (r == skipReg && ((skipMask >> k) & 1)) continue;
+      if (std::any_of(skipLanes.begin(), skipLanes.end(),
+                      [&](const AsmMovedLane& m) { return m.reg == r && m.lane == static_cast<uint32_t>(k); }))
+        continue;
       if (va[k] != vb[k]) {
         *where = "o" + std::to_string(r) + "." + "xyzw"[k] + " is " + vecText(vb).substr(0) + " for the original's " +
                  vecText(va);
@@ -204,7 +209,7 @@ struct Checker {
       return;
     }
     double error = std::fabs(double(got) - ref);
-    double bound = 0x1p-24 * (std::fabs(ref) + 2.0 * std::fabs(shift)) * (1.0 + 0x1p-20) + double(FLT_MIN);
+    double bound = xBound(ref, shift);
     double ratio = error / bound;
     if (ratio >= result.worstRatio) {
       result.worstRatio = ratio;
@@ -216,6 +221,57 @@ struct Checker {
       char buffer[200];
       std::snprintf(buffer, sizeof buffer, "x is %.9g for the reference %.17g (x %.9g, w %.9g): error %.3g > bound %.3g",
                     double(got), ref, double(x), double(w), error, bound);
+      failure(sample, run, buffer);
+    }
+  }
+
+  // checkX's bound at x's reference: 2^-24 (|ref| + 2|s(w - c)|), as derived there.
+  static double xBound(double ref, double shift) {
+    return 0x1p-24 * (std::fabs(ref) + 2.0 * std::fabs(shift)) * (1.0 + 0x1p-20) + double(FLT_MIN);
+  }
+
+  // A moved lane of one stereo run. Where x is shifted: a copy is the converted x bit for bit;
+  // another lane, the original's value l plus a times the shift, computed as
+  // g = fl(l + fl(a * fl(x' - x))) (the `mad` fused or not) from the converted x', itself within
+  // B = xBound of x + s(w - c). With u = 2^-24, to first order:
+  //   fl(x' - x) = (x' - x)(1 + e1), |x' - x - s(w - c)| <= B
+  //   |g - (l + a s(w - c))| <= |a| B + 2u |a| (|s(w - c)| + B) + u (|l + a s(w - c)| + |a| B)
+  // (the difference, the product, the sum; a fused mad rounds once less); the second-order terms
+  // are covered by the factor (1 + 2^-20), a subnormal's absolute half-steps (3 * 2^-150) by 2 FLT_MIN.
+  // Where x is not shifted (the cutoff, or separation 0): the original's bits.
+  void checkMovedLane(const Sample& sample, const std::string& run, const AsmMovedLane& lane, float x, float w, float s,
+                      float c, float shiftedX, float original, float got) {
+    ++result.movedLaneRuns;
+    const std::string name = "o" + std::to_string(lane.reg) + "." + "xyzw"[lane.lane & 3];
+    if (cutoffKeepsMono(w) || s == 0.0f) {
+      if (bitsOf(got) != bitsOf(original)) {
+        ++result.movedLaneFailures;
+        failure(sample, run, name + " moved where x is not shifted");
+      }
+      return;
+    }
+    if (lane.copy) {
+      if (bitsOf(got) != bitsOf(shiftedX)) {
+        ++result.movedLaneFailures;
+        failure(sample, run, name + " (a copy of x) is " + std::to_string(got) + ", not the shifted x " + std::to_string(shiftedX));
+      }
+      return;
+    }
+    const double shift = double(s) * (double(w) - double(c));
+    const double a = std::fabs(double(lane.coefficient));
+    const double ref = double(original) + double(lane.coefficient) * shift;
+    const double b = xBound(double(x) + shift, shift);
+    const double bound =
+        (a * b + 0x1p-23 * a * (std::fabs(shift) + b) + 0x1p-24 * (std::fabs(ref) + a * b)) * (1.0 + 0x1p-20) +
+        2.0 * double(FLT_MIN);
+    const double error = std::isfinite(ref) && std::isfinite(got) ? std::fabs(double(got) - ref) : INFINITY;
+    if (std::isnan(ref) && std::isnan(got)) return;
+    result.worstMovedLaneRatio = std::max(result.worstMovedLaneRatio, error / bound);
+    if (!(error <= bound)) {
+      ++result.movedLaneFailures;
+      char buffer[220];
+      std::snprintf(buffer, sizeof buffer, "%s is %.9g for the reference %.17g (moved by %g times the shift): error %.3g > bound %.3g",
+                    name.c_str(), double(got), ref, double(lane.coefficient), error, bound);
       failure(sample, run, buffer);
     }
   }
@@ -255,11 +311,17 @@ struct Checker {
         failure(sample, run, "the converted shader did not finish");
         continue;
       }
-      if (!sameOutputs(reference, shifted, position, 0xF, &where)) {
+      if (!sameOutputs(reference, shifted, position, 0xF, &where, options.movedLanes)) {
         ++result.otherOutputMismatches;
         failure(sample, run, where);
       }
       Vec4 got = shifted.count(position) ? shifted[position] : Vec4{};
+      for (const AsmMovedLane& lane : options.movedLanes) {
+        auto before = reference.find(lane.reg), after = shifted.find(lane.reg);
+        if (before == reference.end() || after == shifted.end()) continue;  // sameOutputs said so
+        checkMovedLane(sample, run, lane, floatOf(pos[0]), floatOf(pos[3]), floatOf(params[0]), convergence,
+                       floatOf(got[0]), floatOf(before->second[lane.lane & 3]), floatOf(after->second[lane.lane & 3]));
+      }
       if (got[1] != pos[1] || got[2] != pos[2] || got[3] != pos[3]) {
         ++result.positionYzwMismatches;
         failure(sample, run, "the position's y, z, w are " + vecText(got) + " for the original's " + vecText(pos));
@@ -310,7 +372,7 @@ AsmVerifyResult verifyAssemblyConversion(const std::string& originalText, const 
     return result;
   }
   result.ok = result.monoMismatches == 0 && result.otherOutputMismatches == 0 && result.positionYzwMismatches == 0 &&
-              result.cutoffMismatches == 0 && result.shiftedFailures == 0;
+              result.cutoffMismatches == 0 && result.shiftedFailures == 0 && result.movedLaneFailures == 0;
   return result;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/shift_spec.h"
+#include "transpiler/d3dasm/asm_halo.h"
 
 #include <array>
 #include <cstdint>
@@ -22,6 +23,10 @@ struct AsmVerifyOptions {
   // Explicit values for the first declared input register instead of random ones (set k takes
   // entry k modulo the list), so a stress table reaches the guard with the w values it chose.
   std::vector<std::array<float, 4>> firstInputValues;
+  // The output lanes the conversion moved with x (asm_halo.h): a copy must carry the converted x bit
+  // for bit, another lane the original's value plus coefficient * (x + s*(w - c) - x), within the
+  // bound checkMovedLane derives; where x is not shifted, the original's bits.
+  std::vector<AsmMovedLane> movedLanes;
 };
 
 struct AsmVerifyResult {
@@ -40,6 +45,8 @@ struct AsmVerifyResult {
   int shiftedRuns = 0, shiftedFailures = 0;        // stereo runs shifted: x within the bound
   int samplesWithWOne = 0;                         // samples whose original position w is exactly 1
   double worstError = 0, worstBound = 0, worstRatio = 0;  // the shifted run nearest its bound
+  int movedLaneRuns = 0, movedLaneFailures = 0;    // moved lanes compared (one per lane per stereo run)
+  double worstMovedLaneRatio = 0;                  // the moved lane nearest its bound: error / bound
   std::string firstFailure;                        // the first failing run: which check, its inputs
 };
 
