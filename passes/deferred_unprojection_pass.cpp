@@ -384,9 +384,14 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
       facts.leftAlone.push_back(entry);
       continue;
     }
-    entry.construct = p.fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)" : "matrix in cbuffer rows * vector";
+    entry.construct = p.fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)"
+                      : p.fix.uvOfTheDepthTexture ? "matrix in cbuffer rows * (uv, depth, 1)"
+                                                  : "matrix in cbuffer rows * vector";
     entry.form = p.fix.scaledByDepth
                      ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"
+                 : p.fix.uvOfTheDepthTexture
+                     ? "position rebuilt through a matrix from UV space held as four cbuffer rows (decompiled mul; the "
+                       "UV is the one the depth is sampled at, NDC = 2u - 1: half the matrix's column of u)"
                      : "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
     entry.matrix = p.rows;
     entry.depth = joined(p.z.textures);

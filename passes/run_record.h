@@ -200,6 +200,9 @@ struct RowProductTextFix {
   // the statement computing z and z's lane in its value.
   bool scaledByDepth = false;
   uint32_t depthLine = 0, depthLane = 0;
+  // The pixel's x and y are the UV the depth is sampled at (no `* 2 - 1`): the matrix maps UV
+  // space, its column of u twice InvM's column of NDC x, so `column` holds half of it.
+  bool uvOfTheDepthTexture = false;
 };
 
 // A fix only the source text carries: a view-space x rebuilt from depth one component at a time,

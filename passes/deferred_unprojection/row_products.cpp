@@ -312,6 +312,28 @@ bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   return (plainScreen(a) && uniformOnly(b)) || (def->opcode == spv::OpFMul && plainScreen(b) && uniformOnly(a));
 }
 
+// Whether the depth `z` is a texel read at the pixel's own coordinates: the coordinate of the
+// image sample that reads it has lane 0 the value `x` is made of (x itself, or the one term x is a
+// multiple of) and lane 1 the one `y` is. A pixel coordinate the depth texture is sampled at runs
+// over [0, 1] across it: a UV of the screen-sized depth buffer, whose NDC is 2u - 1.
+bool depthSampledAt(Decomposer& d, Lane z, Lane x, Lane y) {
+  const Instruction* sample = d.definition(d.canonical(z).id);
+  if (!sample || sample->operands.size() < 2) return false;
+  switch (sample->opcode) {
+    case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod: case spv::OpImageGather: break;
+    default: return false;
+  }
+  const uint32_t coordinate = sample->operand(1);
+  auto is = [&](Lane term, uint32_t lane) {
+    const Lane at = d.canonical({coordinate, lane});
+    if (d.canonical(term) == at) return true;
+    const Linear& f = d.form(term);
+    return f.size() == 1 && f[0].term && !f[0].coefficient.uniform() && f[0].coefficient.scale == 1.0f &&
+           d.canonical(*f[0].term) == at;
+  };
+  return is(x, 0) && is(y, 1);
+}
+
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const spirv::Module& registers = a.registers;
   SourceAnalysis& flow = a.flow;
@@ -377,7 +399,10 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     // A pixel's x that is a screen input as it is, or scaled by one constant or uniform (a UV, a pixel
     // position), is not known to run from -1 to 1 across the screen: a matrix from UV space has
     // twice InvM's column where the correction needs InvM's own. Reported, not fixed.
-    if (!*scaled && notKnownNdc(d, flow, *x))
+    // Unless the depth is sampled at those very coordinates: then they are the depth buffer's UV, over
+    // [0, 1] where NDC is over [-1, 1], and the correction takes half the matrix's column of u.
+    const bool uv = !*scaled && notKnownNdc(d, flow, *x) && depthSampledAt(d, *z, *x, *y);
+    if (!*scaled && notKnownNdc(d, flow, *x) && !uv)
       p.reason = "the pixel's x is a texture coordinate or pixel position as it is, not NDC (no -1 offset): the "
                  "matrix may map UV space, whose column is not the correction's; left for a person";
     if (*scaled) {
@@ -386,12 +411,16 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       p.fix.depthLane = z->lane;
       if (!p.fix.depthLine && p.reason.empty()) p.reason = "the depth is computed outside the main file (an #include or a macro)";
     }
+    auto halvedForUv = [uv](std::string element) { return uv && !element.empty() ? "(0.5 * " + element + ")" : element; };
     if (q[0] && q[1] && q[2] && (q[3] || *scaled)) p.cameras = findCameraVectors(a, q, *x, *z, *scaled);
+    for (CameraTextFix& camera : p.cameras)
+      for (std::string& element : camera.columnX) element = halvedForUv(element);
+    p.fix.uvOfTheDepthTexture = uv;
     p.rows = rowsText(registers, q);
     for (uint32_t i = 0; i < 4; ++i) {
       p.fix.present[i] = q[i] != nullptr;
       if (!q[i]) continue;  // a lane the shader does not compute
-      p.fix.column[i] = elementText(registers, q[i]->byTerm.at(*x));
+      p.fix.column[i] = halvedForUv(elementText(registers, q[i]->byTerm.at(*x)));
       p.fix.lines[i] = lines.lineOf(q[i]->at.id);
       p.fix.lanes[i] = q[i]->at.lane;
       p.fix.afterLine = std::max(p.fix.afterLine, p.fix.lines[i]);

@@ -561,7 +561,13 @@ std::array<double, 4> times(const Mat4& m, const std::array<double, 4>& v) {
 struct DumpFeed {
   bool rows = false, stereoParams = false;
   std::optional<std::array<float, 4>> row5;  // cb0[5] instead of the light's position (a camera)
+  // The matrix maps UV space: the inverse view-projection times uvToNdc() is uploaded, and a
+  // sampler at set 1, binding 3 (the dump's `SamplerState s3_s : register(s3, space1)`).
+  bool uvSpace = false;
 };
+
+// NDC from the depth buffer's UV: ndc = 2 uv - 1 in x and y (Vulkan's y runs down, as the UV does).
+Mat4 uvToNdc() { return {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1, 0, -1, -1, 0, 1}; }
 
 class DeferredRender : public ::testing::Test {
  protected:
@@ -619,10 +625,11 @@ class DeferredRender : public ::testing::Test {
   RenderResult renderLighting(const GBuffer& g, const std::vector<uint32_t>& frag, const Mat4& inverseViewProj,
                               const Transpiled* eyeParams, double eye, DumpFeed dump = {}) {
     std::vector<uint8_t> frame;
-    Mat4 uploaded = inverseViewProj;
+    const Mat4 matrix = dump.uvSpace ? multiply(inverseViewProj, uvToNdc()) : inverseViewProj;
+    Mat4 uploaded = matrix;
     if (dump.rows)
       for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) uploaded[c * 4 + r] = inverseViewProj[r * 4 + c];
+        for (int r = 0; r < 4; ++r) uploaded[c * 4 + r] = matrix[r * 4 + c];
     auto inv = toFloat(uploaded);
     const float viewport[4] = {float(kSize), float(kSize), 1.0f / kSize, 1.0f / kSize};
     float light[8] = {0.8f, 1.5f, -5.0f, 22.0f, 1.0f, 0.95f, 0.85f, 0.0f};
@@ -647,6 +654,11 @@ class DeferredRender : public ::testing::Test {
       draw.pipeline.uniformBuffers.push_back({eyeParams->eyeSet, eyeParams->eyeBinding, bytes});
     }
     draw.pipeline.textures = {g.albedo, g.normal, g.depth};
+    if (dump.uvSpace) {
+      SampledTexture sampler{1, 3, 1, 1, {0, 0, 0, 0}};
+      sampler.type = VK_DESCRIPTOR_TYPE_SAMPLER;
+      draw.pipeline.textures.push_back(sampler);
+    }
     if (dump.stereoParams)
       draw.pipeline.textures.push_back(
           SampledTexture{0, 125, 1, 1, {float(eye * kSeparation), kConvergence, float(eye), 0.0f}});
@@ -693,7 +705,9 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
       options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
       auto original = compileOriginal(name, text, options);
       if (dump) {
-        DumpFeed mono{dump->rows, false}, stereo{dump->rows, true};
+        DumpFeed mono = *dump, stereo = *dump;
+        mono.stereoParams = false;
+        stereo.stereoParams = true;
         std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options);
         truth[component] = renderLighting(g, original, stereoInverse, nullptr, eye, mono);
         fixedPosition[component] = renderLighting(g, fixedDump, monoInverse, nullptr, eye, stereo);
@@ -715,8 +729,17 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
         ++pixels;
         std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
         const std::array<double, 4> exact = times(stereoInverse, v);
-        auto truthBound = positionBound(stereoInverseF, v, false, eye * kSeparation, kConvergence);
-        auto fixBound = positionBound(monoInverseF, v, true, eye * kSeparation, kConvergence);
+        std::array<double, 3> truthBound, fixBound;
+        if (dump && dump->uvSpace) {  // the shader multiplies the UV by the matrix from UV space
+          const std::array<double, 4> uv = {(x + 0.5) / kSize, (y + 0.5) / kSize, g.depthValues[i], 1.0};
+          truthBound = positionBound(toDouble(toFloat(multiply(stereoInverse, uvToNdc()))), uv, false, eye * kSeparation,
+                                     kConvergence);
+          fixBound = positionBound(toDouble(toFloat(multiply(monoInverse, uvToNdc()))), uv, true, eye * kSeparation,
+                                   kConvergence, 0.5);
+        } else {
+          truthBound = positionBound(stereoInverseF, v, false, eye * kSeparation, kConvergence);
+          fixBound = positionBound(monoInverseF, v, true, eye * kSeparation, kConvergence);
+        }
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           double p = exact[c] / exact[3];
@@ -1134,6 +1157,26 @@ TEST_F(DeferredRender, DumpStyleUvFromTheTextureSizeFixedInItsTextByExecution) {
   text.replace(text.find(uv), uv.size(), "  t2.GetDimensions(0, fDest.x, fDest.y, fDest.z);\n  r2.xy = v0.xy / fDest.xy;\n");
   DumpFeed rows{true, false};
   checkRebuiltPositions("1a2b3c4d5e6f7082-ps_replace.txt", text.c_str(), "dump dp4, UV from the texture's size", &rows);
+}
+
+// A matrix from UV space (the inverse view-projection times the UV-to-NDC map, as an engine bakes
+// it): the pixel's UV (`v0.xy * cb0[4].zw`, no `* 2 - 1`) goes into the product as it is, and the
+// depth is sampled at that very UV. That makes it the depth buffer's UV, over [0, 1] where NDC is
+// over [-1, 1]: the correction takes half the matrix's column of u, InvM's column of NDC x. (Read
+// without the depth sampled there it stays a UV or a pixel position of unknown scale, left alone.)
+TEST_F(DeferredRender, DumpStyleMatrixFromUvSpaceFixedInItsTextByExecution) {
+  std::string text = kDumpDp4Lighting;
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"Texture2D<float4> t2 : register(t2, space1);\n",
+            "Texture2D<float4> t2 : register(t2, space1);\nSamplerState s3_s : register(s3, space1);\n"},
+           {"  r1.x = t2.Load(r0.xyz).x;\n  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n",
+            "  r2.xy = v0.xy * cb0[4].zw;\n  r1.x = t2.SampleLevel(s3_s, r2.xy, 0).x;\n"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  DumpFeed rows{true, false};
+  rows.uvSpace = true;
+  checkRebuiltPositions("1a2b3c4d5e6f7083-ps_replace.txt", text.c_str(), "dump dp4, matrix from UV space", &rows);
 }
 
 // The view-ray form: per eye, the G-buffer depth drawn with that eye's stereo projection, made

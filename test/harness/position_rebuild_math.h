@@ -82,8 +82,10 @@ inline std::array<double, 3> quotientBound(const std::array<double, 4>& q, const
 //   p = fl(q.xyz / q.w): |dp_i| <= (|dq_i| + |p_i| |dq_w|) / |q_w| + u |p_i|.
 // v (pixel-centre NDC and the sampled depth) is exact in fp32. Second-order terms are below
 // 1e-6 of the bound and ignored.
+// `columnScale`: the fix subtracts that much of column 0 (a matrix from UV space: half its column
+// of u, InvM's column of NDC x; a power of two, so no rounding of its own).
 inline std::array<double, 3> positionBound(const Mat4& a, const std::array<double, 4>& v, bool fixed, double eyeSeparation,
-                                          double convergence) {
+                                          double convergence, double columnScale = 1.0) {
   const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
   std::array<double, 4> q{}, dq{};
   for (int i = 0; i < 4; ++i) {
@@ -100,7 +102,7 @@ inline std::array<double, 3> positionBound(const Mat4& a, const std::array<doubl
     double dk = std::abs(es) * (c * dq[3] + u * c * std::abs(q[3]) + u * std::abs(1 - c * q[3])) + 2 * u * std::abs(k);
     double dw = dq[3];
     for (int i = 0; i < 4; ++i) {
-      double column0 = a[i];
+      double column0 = a[i] * columnScale;
       q[i] -= column0 * k;
       dq[i] += std::abs(column0) * dk + 2 * u * std::abs(column0 * k) + u * std::abs(q[i]);
     }

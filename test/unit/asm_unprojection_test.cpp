@@ -241,7 +241,9 @@ std::unique_ptr<Program> decoded(const std::string& text) {
 
 // `screenToWorld`: the shader reads the linear view depth and multiplies (ndc * z, z, 1) by
 // ScreenToWorld = inverse(P V) * (the map from (ndc * z, z, 1) to clip space).
-void checkByExecution(const char* shader, bool rows, const char* tag, bool screenToWorld = false) {
+// `uvSpace`: the shader multiplies (uv, depth, 1) by inverse(P V) * (the map from the UV to NDC,
+// ndc = (2u - 1, 1 - 2v)), the UV being the one the depth is sampled at.
+void checkByExecution(const char* shader, bool rows, const char* tag, bool screenToWorld = false, bool uvSpace = false) {
   AsmShiftResult converted = shiftAssembly(shader, {});
   ASSERT_TRUE(converted.ok) << converted.error.message;
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
@@ -253,9 +255,10 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
   toClip[0] = toClip[5] = toClip[11] = 1.0;
   toClip[10] = -mono[10];
   toClip[14] = mono[14];
+  const Mat4 uvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
   auto matrixOf = [&](double eye) {
     const Mat4 inverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
-    return screenToWorld ? harness::multiply(inverse, toClip) : inverse;
+    return screenToWorld ? harness::multiply(inverse, toClip) : uvSpace ? harness::multiply(inverse, uvToNdc) : inverse;
   };
   const Mat4 monoInverse = matrixOf(0);
   for (double eye : {-1.0, 1.0}) {
@@ -273,8 +276,9 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         const float depth = static_cast<float>(screenToWorld ? w : (mono[10] * -w + mono[14]) / w);
         const Pixel pixel{px + 0.5f, py + 0.5f, depth};
         const double nx = 2.0 * pixel.x / kSize - 1.0, ny = 1.0 - 2.0 * pixel.y / kSize;
-        const std::array<double, 4> v =
-            screenToWorld ? std::array<double, 4>{nx * depth, ny * depth, depth, 1.0} : std::array<double, 4>{nx, ny, depth, 1.0};
+        const std::array<double, 4> v = screenToWorld ? std::array<double, 4>{nx * depth, ny * depth, depth, 1.0}
+                                        : uvSpace ? std::array<double, 4>{pixel.x / kSize, pixel.y / kSize, depth, 1.0}
+                                                  : std::array<double, 4>{nx, ny, depth, 1.0};
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
@@ -284,7 +288,7 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         auto truthBound = screenToWorld ? harness::screenToWorldBound(stereoF, nx, ny, depth, false, 0.0, kConvergence)
                                         : harness::positionBound(stereoF, v, false, 0.0, kConvergence);
         auto fixBound = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence)
-                                      : harness::positionBound(monoF, v, true, es, kConvergence);
+                                      : harness::positionBound(monoF, v, true, es, kConvergence, uvSpace ? 0.5 : 1.0);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           const double position = exact[c] / exact[3];
@@ -322,12 +326,20 @@ TEST(AsmUnprojection, UvFromTheTextureSizeCorrectedByExecution) {
                  "utof r1.xy, r1.xyxx\n"
                  "div r0.xy, v0.xyxx, r1.xyxx\n");
   checkByExecution(shader.c_str(), false, "asm mad, UV from resinfo");
-  // The unchanged half: that UV read by the matrix as it is (no `* 2 - 1`) is not known to be NDC.
+  // That UV read by the matrix as it is (no `* 2 - 1`), the depth sampled at it: the depth buffer's
+  // UV, the matrix one from UV space, corrected with half its column of u.
   const std::string ndc = "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
   ASSERT_NE(shader.find(ndc), std::string::npos);
   shader.erase(shader.find(ndc), ndc.size());
+  checkByExecution(shader.c_str(), false, "asm mad, matrix from UV space", false, true);
+  // The unchanged half: the depth loaded at the pixel instead, so the UV's scale is not shown.
+  const std::string sampled = "sample_l_indexable(texture2d)(float,float,float,float) r0.z, r0.xyxx, t0.yzxw, s0, l(0.000000)\n";
+  ASSERT_NE(shader.find(sampled), std::string::npos);
+  shader.replace(shader.find(sampled), sampled.size(),
+                 "ftoi r1.zw, v0.xxxy\nmov r1.xy, r1.zwzz\nmov r1.zw, l(0,0,0,0)\nld_indexable(texture2d)(float,float,float,float) r0.z, r1.xyzw, t0.yzxw\n");
   AsmShiftResult fromUv = shiftAssembly(shader, {});
   EXPECT_TRUE(fromUv.corrections.empty()) << fromUv.output;
+  EXPECT_FALSE(fromUv.leftAlone.empty());
 }
 
 TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
@@ -574,12 +586,17 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   clobbered.replace(clobbered.find("dp4 r1.w"), 0, "mov r0.x, l(0.000000)\n");
   EXPECT_TRUE(shiftAssembly(clobbered, {}).corrections.empty());
 
-  // The pixel's x a UV as it is (no `* 2 - 1`): the matrix may map UV space, whose column is twice
-  // the correction's: left for a person, and said.
+  // The pixel's x a UV as it is (no `* 2 - 1`), the depth sampled elsewhere (at an interpolated
+  // coordinate): the matrix may map UV space of a scale the shader does not show, whose column is
+  // not the correction's: left for a person, and said. (Sampled at that UV, it is corrected:
+  // UvFromTheTextureSizeCorrectedByExecution.)
   std::string uv = kDeferredMadPs;
   const std::string toNdc =
       "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
   uv.erase(uv.find(toNdc), toNdc.size());
+  uv.replace(uv.find("dcl_output o0.xyzw"), 0, "dcl_input_ps linear v1.xy\n");
+  const std::string sampledAtUv = "r0.z, r0.xyxx, t0.yzxw";
+  uv.replace(uv.find(sampledAtUv), sampledAtUv.size(), "r0.z, v1.xyxx, t0.yzxw");
   AsmShiftResult u = shiftAssembly(uv, {});
   EXPECT_TRUE(u.corrections.empty());
   EXPECT_EQ(u.output, uv);

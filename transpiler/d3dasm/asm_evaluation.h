@@ -52,6 +52,9 @@ struct Value {
   std::vector<int> factors;      // a product of values (a new term): the values multiplied
   std::pair<int, int> quotient{-1, -1};  // a division of two values: numerator, denominator
   std::vector<int> from;         // a new term of an instruction looked into no further: the values it read
+  // A texel of a `sample*` / `gather*`: the values its coordinate's lanes 0 and 1 are (-1: not one
+  // value, a constant or an element).
+  std::pair<int, int> sampledAt{-1, -1};
 };
 
 // A temporary's component as the text names it: "r2.x".
@@ -374,13 +377,25 @@ class Evaluator {
       }
     }
     if (texel) sources.insert({Source::Texel, op.src[1].reg, 0});
+    std::pair<int, int> sampledAt{-1, -1};
+    if (texel && (op.resourceOpcode.starts_with("sample") || op.resourceOpcode.starts_with("gather")))
+      sampledAt = {valueOf(read(op.src[0], 0)), valueOf(read(op.src[0], 1))};
     for (uint8_t k = 0; k < op.dstCount; ++k)
       for (uint32_t c = 0; c < 4; ++c)
         if (op.dst[k].mask & (1u << c)) {
           const int value = fresh(sources, current_);
           values_[value].from = reads;
+          values_[value].sampledAt = sampledAt;
           write(op.dst[k], c, value);
         }
+  }
+
+  // The value a read is: itself, or the one term its form is with coefficient 1; -1 otherwise.
+  static int valueOf(const Read& r) {
+    if (r.value >= 0) return r.value;
+    if (r.form.size() == 1 && r.form[0].term >= 0 && !r.form[0].coefficient.element && r.form[0].coefficient.scale == 1.0f)
+      return r.form[0].term;
+    return -1;
   }
 
   // The values a read stands for: the value itself, or the terms of its form.

@@ -324,7 +324,9 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
                                 ? "line " + std::to_string(u.lastLineNumber)
                                 : "lines " + std::to_string(u.firstLineNumber) + "-" + std::to_string(u.lastLineNumber);
   std::vector<std::string> block = {
-      "this eye's position rebuild (" + lines + (u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over " : ": q = InvM * (ndc, depth, 1) over ") +
+      "this eye's position rebuild (" + lines + (u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over "
+                                : u.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over "
+                                                        : ": q = InvM * (ndc, depth, 1) over ") +
           u.rows + ")",
       stereoParamsLoad(rS, sm5),
   };
@@ -391,8 +393,14 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
   block.push_back("and " + rT + ".x, " + rT + ".x, " + rT + ".z");
   block.push_back("mul " + rS + ".z, " + rS + ".x, " + rS + ".y");
   for (int i = 0; i < 3; ++i) {
-    // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much.
-    block.push_back("mad " + rT + ".w, " + (c.fromCamera ? "-" : "") + rS + ".z, " + u.column[i] + ", " + c.v[i]);
+    // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much. InvM's column
+    // is the element times its scale (half of it for a matrix from UV space).
+    std::string factor = rS + ".z";
+    if (u.columnScale[i] != 1.0f) {
+      block.push_back("mul " + rT + ".w, " + rS + ".z, l(" + floatLiteral(u.columnScale[i]) + ")");
+      factor = rT + ".w";
+    }
+    block.push_back("mad " + rT + ".w, " + (c.fromCamera ? "-" : "") + factor + ", " + u.column[i] + ", " + c.v[i]);
     block.push_back("movc " + c.v[i] + ", " + rT + ".x, " + rT + ".w, " + c.v[i]);
   }
   return block;

@@ -235,6 +235,19 @@ bool notKnownNdc(const std::vector<Value>& values, int term) {
   return numerator >= 0 && denominator >= 0 && plainInput(values[numerator]) && values[denominator].sources.empty();
 }
 
+// Whether the depth of `role` is a texel sampled at the pixel's own x and y (the values the x and
+// y terms are, or the one term each is a multiple of).
+bool depthSampledAt(const std::vector<Value>& values, const Roles& role) {
+  const auto [atX, atY] = values[role.depth].sampledAt;
+  auto is = [&](int term, int at) {
+    if (at < 0) return false;
+    if (term == at) return true;
+    const Linear& f = values[term].form;
+    return f.size() == 1 && f[0].term == at && !f[0].coefficient.element && f[0].coefficient.scale == 1.0f;
+  };
+  return is(role.x, atX) && is(role.y, atY);
+}
+
 // The camera c of a view vector `sign` * (c - p) whose linear form is `f`, p being the point q's
 // component `point` itself (the screen-to-world form without w): q's parts all in f times -sign, c
 // the one element left over, times sign.
@@ -430,7 +443,10 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     const Value& z = values[role.depth];
     if (role.scaled && !evaluation.stillIn(z, last)) placeable = false;
     if (!placeable) continue;
-    if (!role.scaled && notKnownNdc(values, role.x)) {
+    // A UV the depth is sampled at is the depth buffer's, over [0, 1] where NDC is over [-1, 1]: the
+    // matrix maps UV space and the correction takes half its column of u.
+    const bool uv = !role.scaled && notKnownNdc(values, role.x) && depthSampledAt(values, role);
+    if (!role.scaled && notKnownNdc(values, role.x) && !uv) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
                                  ": a position rebuilt from a texture coordinate or pixel position as it is, not NDC "
                                  "(no -1 offset): the matrix may map UV space, whose column is not the correction's");
@@ -447,12 +463,13 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
       u.q[i] = registerText(*v.at);
       const Coefficient& column = q[i]->byTerm.at(role.x);
       u.column[i] = elementText(*column.element);
-      u.columnScale[i] = column.scale;
+      u.columnScale[i] = uv ? 0.5f * column.scale : column.scale;
       for (const auto& [term, c] : q[i]->byTerm) rows.insert({c.element->slot, c.element->row, 0});
       rows.insert({q[i]->translation.slot, q[i]->translation.row, 0});
     }
     for (const auto& row : rows) u.rows += (u.rows.empty() ? "" : ", ") + elementText(row, false);
     u.storage = key.front() == 'c' ? "columns (mad)" : "rows (dp4)";
+    u.uvOfTheDepthTexture = uv;
     u.depth = "t" + std::to_string(role.texture);
     if (role.scaled) {
       u.scaledByDepth = true;

@@ -44,6 +44,9 @@ struct AsmUnprojection {
   std::string storage;                  // "columns (mad)" or "rows (dp4)"
   std::string depth;                    // the texture the depth is read from: "t0"
   std::string ndc;                      // the input the pixel's x and y come from: "v0"
+  // The pixel's x and y are the UV the depth is sampled at (no `* 2 - 1`): the matrix maps UV
+  // space, and columnScale holds half of its column of u.
+  bool uvOfTheDepthTexture = false;
   // The screen-to-world form, q = M * (ndc.x * z, ndc.y * z, z, 1): corrected by
   // q -= M[column of x] * s.x * (|z| - s.y) * sign(z), z read from `depthRegister` ("r1.x").
   bool scaledByDepth = false;

@@ -202,8 +202,9 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   std::string lines = first == fix.afterLine ? "line " + std::to_string(first)
                                               : "lines " + std::to_string(first) + "-" + std::to_string(fix.afterLine);
   std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
-                  (fix.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
-                                     : ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----") +
+                  (fix.scaledByDepth         ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
+                   : fix.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over cbuffer rows) ----"
+                                             : ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----") +
                   nl;
   t += indent + "{" + nl;
   t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
