@@ -166,6 +166,7 @@ struct Factors;
 void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth);
 bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
+bool plainScreenFactor(Decomposer& d, SourceAnalysis& flow, Lane term, std::optional<Lane> besides, size_t& visits);
 
 // The camera c of a view vector `sign` * (c - p) that one lane of `f` (its linear form) is, where p
 // is the affine q's component `component` itself (its parts all in f times -sign, c the one part
@@ -312,26 +313,63 @@ bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   return (plainScreen(a) && uniformOnly(b)) || (def->opcode == spv::OpFMul && plainScreen(b) && uniformOnly(a));
 }
 
-// Whether the depth `z` is a texel read at the pixel's own coordinates: the coordinate of the
-// image sample that reads it has lane 0 the value `x` is made of (x itself, or the one term x is a
-// multiple of) and lane 1 the one `y` is. A pixel coordinate the depth texture is sampled at runs
-// over [0, 1] across it: a UV of the screen-sized depth buffer, whose NDC is 2u - 1.
-bool depthSampledAt(Decomposer& d, Lane z, Lane x, Lane y) {
-  const Instruction* sample = d.definition(d.canonical(z).id);
-  if (!sample || sample->operands.size() < 2) return false;
-  switch (sample->opcode) {
-    case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod: case spv::OpImageGather: break;
-    default: return false;
+// The coordinate of the one image sample the depth `z` is computed from (z itself, or z made linear
+// from it), or nothing when there is none or more than one.
+std::optional<uint32_t> depthSampleCoordinate(Decomposer& d, Lane z) {
+  std::optional<uint32_t> coordinate;
+  int samples = 0;
+  std::set<uint32_t> seen;
+  std::vector<std::pair<uint32_t, int>> stack{{d.canonical(z).id, 0}};
+  while (!stack.empty()) {
+    auto [id, depth] = stack.back();
+    stack.pop_back();
+    if (!seen.insert(id).second) continue;
+    const Instruction* def = d.definition(id);
+    if (!def) continue;
+    switch (def->opcode) {
+      case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod: case spv::OpImageGather:
+        if (def->operands.size() >= 2) coordinate = def->operand(1);
+        ++samples;
+        continue;
+      default: break;
+    }
+    if (depth >= 12) continue;
+    for (uint32_t operand : def->operands)
+      if (d.definition(operand)) stack.push_back({operand, depth + 1});
   }
-  const uint32_t coordinate = sample->operand(1);
+  return samples == 1 ? coordinate : std::nullopt;
+}
+
+// Whether `screenX` and `screenY` (the pixel's coordinates as the product reads them: the lanes, or
+// the one term each is) are the coordinate the depth `z` is sampled at: then they run over [0, 1]
+// across the screen-sized depth buffer, a UV whose NDC is 2u - 1.
+bool depthSampledAt(Decomposer& d, Lane z, Lane screenX, Lane screenY) {
+  const std::optional<uint32_t> coordinate = depthSampleCoordinate(d, z);
+  if (!coordinate) return false;
   auto is = [&](Lane term, uint32_t lane) {
-    const Lane at = d.canonical({coordinate, lane});
+    const Lane at = d.canonical({*coordinate, lane});
     if (d.canonical(term) == at) return true;
     const Linear& f = d.form(term);
     return f.size() == 1 && f[0].term && !f[0].coefficient.uniform() && f[0].coefficient.scale == 1.0f &&
            d.canonical(*f[0].term) == at;
   };
-  return is(x, 0) && is(y, 1);
+  return is(screenX, 0) && is(screenY, 1);
+}
+
+// The screen-to-world form's term `term` = (the pixel's coordinate) * z: the coordinate, the operand of
+// the product that is not z.
+std::optional<Lane> screenPartOf(Decomposer& d, Lane term, Lane z) {
+  const Lane at = d.canonical(term);
+  const Instruction* def = d.definition(at.id);
+  if (!def || def->opcode != spv::OpFMul || def->operands.size() != 2) {
+    if (!def || def->opcode != spv::OpVectorTimesScalar || def->operands.size() != 2) return std::nullopt;
+    if (d.canonical({def->operand(1), 0}) != d.canonical(z)) return std::nullopt;
+    return Lane{def->operand(0), at.lane};
+  }
+  auto lane = [&](uint32_t id) { return Lane{id, d.isVector(id) ? at.lane : 0}; };
+  if (d.canonical(lane(def->operand(0))) == d.canonical(z)) return lane(def->operand(1));
+  if (d.canonical(lane(def->operand(1))) == d.canonical(z)) return lane(def->operand(0));
+  return std::nullopt;
 }
 
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
@@ -400,12 +438,22 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     // position), is not known to run from -1 to 1 across the screen: a matrix from UV space has
     // twice InvM's column where the correction needs InvM's own. Reported, not fixed.
     // Unless the depth is sampled at those very coordinates: then they are the depth buffer's UV, over
-    // [0, 1] where NDC is over [-1, 1], and the correction takes half the matrix's column of u.
-    const bool uv = !*scaled && notKnownNdc(d, flow, *x) && depthSampledAt(d, *z, *x, *y);
-    if (!*scaled && notKnownNdc(d, flow, *x) && !uv)
+    // [0, 1] where NDC is over [-1, 1], and the correction takes half the matrix's column of u. The
+    // screen-to-world form's terms are the coordinate times the depth: the same, on the coordinate.
+    bool uv = false, notNdc = false;
+    if (!*scaled) {
+      notNdc = notKnownNdc(d, flow, *x);
+      uv = notNdc && depthSampledAt(d, *z, *x, *y);
+    } else if (plainScreenFactor(d, flow, *x, *z, a.factorVisits)) {
+      notNdc = true;
+      auto screenX = screenPartOf(d, *x, *z), screenY = screenPartOf(d, *y, *z);
+      uv = screenX && screenY && depthSampledAt(d, *z, *screenX, *screenY);
+    }
+    if (notNdc && !uv)
       p.reason = "the pixel's x is a texture coordinate or pixel position as it is, not NDC (no -1 offset): the "
                  "matrix may map UV space, whose column is not the correction's; left for a person";
     if (*scaled) {
+      for (const Lane& term : {*x, *y}) p.scaledTerms.insert({lines.lineOf(d.canonical(term).id), d.canonical(term).lane});
       p.fix.scaledByDepth = true;
       p.fix.depthLine = lines.lineOf(z->id);
       p.fix.depthLane = z->lane;
@@ -491,12 +539,35 @@ bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth
   const Lane z = d.canonical(depth);
   for (const auto& [factor, divides] : f.factors) {
     if (d.constant(factor)) continue;
+    // A screen size with the coordinate (a UV: `v0.xy * cb0[4].zw`): told from NDC by the caller.
+    if (d.uniformElement(factor)) continue;
     Sources s = sourcesOf(flow, d, factor);
     if (!divides && factor == z) ++depths;
     else if ((s.fragCoord || s.varying) && !s.texel && !s.other) lanes |= s.inputLanes;
     else return false;
   }
   return depths == 1 && (lanes & 3u) == lane;
+}
+
+// Whether a product's factors, besides `besides` (its depth) and constants and uniforms, are one
+// screen input lane read as it is: a pixel position or a texture coordinate, not known to be NDC
+// (an NDC is computed: `* 2 - 1`, a viewport map, a divide by an interpolated w).
+bool plainScreenFactor(Decomposer& d, SourceAnalysis& flow, Lane term, std::optional<Lane> besides, size_t& visits) {
+  Factors f;
+  collectFactors(d, flow, term, false, f, 0);
+  visits += static_cast<size_t>(f.visits);
+  if (f.tooLarge) return false;
+  int plain = 0;
+  for (const auto& [factor, divides] : f.factors) {
+    if (d.constant(factor) || d.uniformElement(factor)) continue;
+    if (besides && factor == d.canonical(*besides)) continue;
+    const Sources s = sourcesOf(flow, d, factor);
+    if (!s.fragCoord && !s.varying && !s.texel && !s.other) continue;  // uniforms alone (a texture's size)
+    if ((s.fragCoord || s.varying) && !s.arithmetic && !s.texel && !s.other && !divides) ++plain;
+    else if (texelOnly(s)) continue;  // a depth factor the caller did not name
+    else return false;
+  }
+  return plain == 1;
 }
 
 // One candidate: the pixel's coordinate (axis 0 or 1), the depth factor, the cbuffer element.
@@ -507,6 +578,7 @@ struct RayCandidate {
   bool divides = false;
   Sources screen, depthSources;
   std::set<uint32_t> through;
+  bool notNdc = false;  // the pixel's coordinate is a screen input read as it is
 };
 
 std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, Lane at, size_t& visits) {
@@ -514,7 +586,7 @@ std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, La
   collectFactors(d, flow, at, false, f, 0);
   visits += static_cast<size_t>(f.visits);
   if (f.through.empty() || f.tooLarge) return std::nullopt;
-  RayCandidate c{at, {}, 0, {}, false, {}, {}, f.through};
+  RayCandidate c{at, {}, 0, {}, false, {}, {}, f.through, false};
   int screens = 0, depths = 0, scales = 0;
   for (const auto& [factor, divides] : f.factors) {
     if (d.constant(factor)) continue;
@@ -530,6 +602,9 @@ std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, La
       if (++screens > 1) return std::nullopt;
       c.axis = (s.inputLanes & 3u) == 1u ? 0 : 1;
       c.screen = s;
+      // Read as it is, it is a pixel position or a texture coordinate, and the element with it a
+      // screen size, not NDC and 1/P00.
+      c.notNdc = !s.arithmetic;
     } else if (texelOnly(s) && !divides) {
       if (++depths > 1) return std::nullopt;
       c.depth = factor;
@@ -586,7 +661,10 @@ std::vector<ComponentRay> findComponentRays(RegisterAnalyses& a) {
     r.fix.depthLine = lines.lineOf(c.depth.id);
     r.fix.depthLane = c.depth.lane;
     r.fix.scale = scaleText(registers, c);
-    if (r.fix.scale.empty()) r.reason = "the projection scale is not a cbuffer element the source can name";
+    if (c.notNdc)
+      r.reason = "the pixel's x is a screen input as it is (a pixel position or a texture coordinate), not NDC, and the "
+                 "element with it a screen size, not the projection's 1/P00; left for a person";
+    else if (r.fix.scale.empty()) r.reason = "the projection scale is not a cbuffer element the source can name";
     else if (!r.fix.line || !r.fix.depthLine)
       r.reason = lines.present() ? "x or the depth is computed outside the main file (an #include or a macro)"
                                  : "the module has no source lines";
@@ -602,6 +680,12 @@ DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, c
   DecompiledForms forms;
   forms.products = findRowProducts(analyses);
   forms.rays = findComponentRays(analyses);
+  // A screen-to-world product's x * z term is a product of the screen and the depth like a view ray's
+  // x: one correction, the product's.
+  std::erase_if(forms.rays, [&](const ComponentRay& r) {
+    return std::any_of(forms.products.begin(), forms.products.end(),
+                       [&](const RowProduct& p) { return p.scaledTerms.count({r.fix.line, r.fix.lane}) > 0; });
+  });
   forms.work = analyses.d.computed() + analyses.factorVisits;
   return forms;
 }

@@ -20,6 +20,7 @@
 #include "passes/deferred_unprojection/sources.h"
 #include "passes/run_record.h"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ struct RowProduct {
   bool interpolated = false;
   // View vectors from a camera position to the rebuilt position (CameraTextFix), when q is.
   std::vector<CameraTextFix> cameras;
+  // The screen-to-world form: the statements (line, lane) computing its x * z and y * z terms,
+  // which are not view rays of their own.
+  std::set<std::pair<uint32_t, uint32_t>> scaledTerms;
 };
 
 // The view-ray form spelled per component (decompiled HLSL): a scalar x that is a product of the

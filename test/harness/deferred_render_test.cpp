@@ -561,9 +561,11 @@ std::array<double, 4> times(const Mat4& m, const std::array<double, 4>& v) {
 struct DumpFeed {
   bool rows = false, stereoParams = false;
   std::optional<std::array<float, 4>> row5;  // cb0[5] instead of the light's position (a camera)
-  // The matrix maps UV space: the inverse view-projection times uvToNdc() is uploaded, and a
-  // sampler at set 1, binding 3 (the dump's `SamplerState s3_s : register(s3, space1)`).
+  // The matrix maps UV space: the inverse view-projection times uvToNdc() is uploaded (and the
+  // sampler bound).
   bool uvSpace = false;
+  // A sampler at set 1, binding 3 (the dump's `SamplerState s3_s : register(s3, space1)`).
+  bool sampler = false;
 };
 
 // NDC from the depth buffer's UV: ndc = 2 uv - 1 in x and y (Vulkan's y runs down, as the UV does).
@@ -654,7 +656,7 @@ class DeferredRender : public ::testing::Test {
       draw.pipeline.uniformBuffers.push_back({eyeParams->eyeSet, eyeParams->eyeBinding, bytes});
     }
     draw.pipeline.textures = {g.albedo, g.normal, g.depth};
-    if (dump.uvSpace) {
+    if (dump.uvSpace || dump.sampler) {
       SampledTexture sampler{1, 3, 1, 1, {0, 0, 0, 0}};
       sampler.type = VK_DESCRIPTOR_TYPE_SAMPLER;
       draw.pipeline.textures.push_back(sampler);
@@ -676,7 +678,9 @@ class DeferredRender : public ::testing::Test {
   void checkViewRay(const char* name, const char* text, const char* tag, const DumpFeed* dump = nullptr);
   void checkLitImage(const char* name, const char* text, const char* tag, const std::string& pngPrefix);
   // The screen-to-world check: truth, fix and baseline of kDumpScreenToWorld against the exact point.
-  void checkScreenToWorld(const char* name, const char* text, const char* tag);
+  // `uvSpace`: the dump reads the pixel's UV, the one the depth is sampled at, and the map takes
+  // (u z, v z, z, 1).
+  void checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace = false);
   // The camera check: the view vector to the rebuilt position from this eye's camera.
   // `screenToWorldForm`: the dump rebuilds through a screen-to-world map (linear depth); `fromCamera`:
   // its vector is p - c, not c - p.
@@ -907,13 +911,16 @@ GBuffer linearDepth(const GBuffer& g, const Mat4& mono) {
 // matrix, fix (converted, StereoParams) and baseline with the mono one. The exact position is the
 // eye's exact matrix applied in double to the fp32 inputs; truth and fix must be within
 // screenToWorldBound() of it, the baseline beyond the truth's bound at more than 90 % of the pixels.
-void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag) {
+void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace) {
   const Mat4 mono = projection(0), viewMatrix = view();
-  const Mat4 monoMatrix = screenToWorld(inverse(multiply(mono, viewMatrix)), mono);
+  // From UV space: (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1), ndc = 2 uv - 1.
+  const Mat4 fromUv = {2, 0, 0, 0, 0, 2, 0, 0, -1, -1, 1, 0, 0, 0, 0, 1}, identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const Mat4& screenMap = uvSpace ? fromUv : identity;
+  const Mat4 monoMatrix = multiply(screenToWorld(inverse(multiply(mono, viewMatrix)), mono), screenMap);
   for (double eye : {-1.0, 1.0}) {
     GBuffer g = renderGBuffer(eye);
     const GBuffer linear = linearDepth(g, mono);
-    const Mat4 stereoMatrix = screenToWorld(inverse(multiply(projection(eye), viewMatrix)), mono);
+    const Mat4 stereoMatrix = multiply(screenToWorld(inverse(multiply(projection(eye), viewMatrix)), mono), screenMap);
     const Mat4 stereoF = toDouble(toFloat(stereoMatrix)), monoF = toDouble(toFloat(monoMatrix));
     std::array<RenderResult, 3> truth, fixedPosition, baseline;
     for (int component = 0; component < 3; ++component) {
@@ -924,6 +931,7 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
       std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options, &pass);
       EXPECT_EQ(pass["fixed"][0].value("construct", ""), "matrix in cbuffer rows * (ndc * depth, depth, 1)") << pass.dump(2);
       DumpFeed monoFeed{false, false}, stereoFeed{false, true};
+      monoFeed.sampler = stereoFeed.sampler = uvSpace;
       truth[component] = renderLighting(linear, original, stereoMatrix, nullptr, eye, monoFeed);
       fixedPosition[component] = renderLighting(linear, fixedDump, monoMatrix, nullptr, eye, stereoFeed);
       baseline[component] = renderLighting(linear, original, monoMatrix, nullptr, eye, monoFeed);
@@ -936,11 +944,13 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
         size_t i = size_t(y) * kSize + x;
         if (g.depthValues[i] >= 1.0f) continue;
         ++pixels;
-        const double nx = (x + 0.5) / kSize * 2 - 1, ny = (y + 0.5) / kSize * 2 - 1, z = linear.depth.rgba[4 * i];
+        // The pixel's coordinates as the shader reads them: NDC, or the UV.
+        const double nx = uvSpace ? (x + 0.5) / kSize : (x + 0.5) / kSize * 2 - 1;
+        const double ny = uvSpace ? (y + 0.5) / kSize : (y + 0.5) / kSize * 2 - 1, z = linear.depth.rgba[4 * i];
         const std::array<double, 4> v = {nx * z, ny * z, z, 1.0};
         const std::array<double, 4> exact = times(stereoMatrix, v);
         auto truthBound = screenToWorldBound(stereoF, nx, ny, z, false, 0.0, kConvergence);
-        auto fixBound = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence);
+        auto fixBound = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence, uvSpace ? 0.5 : 1.0);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           const double p = exact[c] / exact[3];
@@ -1177,6 +1187,23 @@ TEST_F(DeferredRender, DumpStyleMatrixFromUvSpaceFixedInItsTextByExecution) {
   DumpFeed rows{true, false};
   rows.uvSpace = true;
   checkRebuiltPositions("1a2b3c4d5e6f7083-ps_replace.txt", text.c_str(), "dump dp4, matrix from UV space", &rows);
+}
+
+// The screen-to-world form from UV space: the pixel's UV (`v0.xy * cb0[4].zw`), the one the linear
+// depth is sampled at, times that depth, through a map that takes (u z, v z, z, 1): corrected with
+// half the map's column of u. (Before, the product with the screen size was not taken, and the
+// same product read as a view ray with 1/P00 = the screen size was "corrected" by 1/width of it.)
+TEST_F(DeferredRender, DumpStyleScreenToWorldFromUvSpaceFixedInItsTextByExecution) {
+  std::string text = kDumpScreenToWorld;
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"Texture2D<float4> t2 : register(t2, space1);\n",
+            "Texture2D<float4> t2 : register(t2, space1);\nSamplerState s3_s : register(s3, space1);\n"},
+           {"  r1.x = t2.Load(r0.xyz).x;\n  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n",
+            "  r2.xy = v0.xy * cb0[4].zw;\n  r1.x = t2.SampleLevel(s3_s, r2.xy, 0).x;\n"}}) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  }
+  checkScreenToWorld("5a6b7c8d9e0f1a2c-ps_replace.txt", text.c_str(), "dump screen-to-world from UV space", true);
 }
 
 // The view-ray form: per eye, the G-buffer depth drawn with that eye's stereo projection, made

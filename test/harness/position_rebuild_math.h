@@ -117,8 +117,9 @@ inline std::array<double, 3> positionBound(const Mat4& a, const std::array<doubl
 // The fix subtracts c = fl(col0 * k) with k = fl(fl(eS) * fl(|z| - C)) * sign(z):
 //     |dk| <= |eS| u ||z| - C| + 2u |k|,  |dq'_i| <= |dq_i| + |col0_i| |dk| + 2u |col0_i k| + u |q'_i|;
 // p = fl(q.xyz / q.w) as above.
+// `columnScale` as for positionBound (a map from UV space: half its column of u).
 inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double y, double z, bool fixed,
-                                                double eyeSeparation, double convergence) {
+                                                double eyeSeparation, double convergence, double columnScale = 1.0) {
   const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
   const std::array<double, 4> v = {x * z, y * z, z, 1.0};
   std::array<double, 4> q{}, dq{};
@@ -134,8 +135,9 @@ inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double 
     const double k = eyeSeparation * (std::abs(z) - convergence) * (z < 0 ? -1.0 : 1.0);
     const double dk = std::abs(eyeSeparation) * u * std::abs(std::abs(z) - convergence) + 2 * u * std::abs(k);
     for (int i = 0; i < 4; ++i) {
-      q[i] -= a[i] * k;
-      dq[i] += std::abs(a[i]) * dk + 2 * u * std::abs(a[i] * k) + u * std::abs(q[i]);
+      const double column0 = a[i] * columnScale;
+      q[i] -= column0 * k;
+      dq[i] += std::abs(column0) * dk + 2 * u * std::abs(column0 * k) + u * std::abs(q[i]);
     }
   }
   return quotientBound(q, dq);

@@ -602,6 +602,19 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   EXPECT_EQ(u.output, uv);
   EXPECT_NE(u.whyUnchanged.find("left for a person"), std::string::npos) << u.whyUnchanged;
 
+  // The screen-to-world form with the pixel's coordinate a UV (`mul r1.xy, v0.xyxx, cb0[2].zwzz`
+  // with no `* 2 - 1`) times the depth: a map from UV or pixel space, whose column is not the
+  // correction's: left for a person, and said (before, it was corrected as if from NDC).
+  std::string pixelTimesDepth = kScreenToWorldPs;
+  const std::string ndcMap =
+      "mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
+  ASSERT_NE(pixelTimesDepth.find(ndcMap), std::string::npos);
+  pixelTimesDepth.erase(pixelTimesDepth.find(ndcMap), ndcMap.size());
+  AsmShiftResult p = shiftAssembly(pixelTimesDepth, {});
+  EXPECT_TRUE(p.corrections.empty()) << p.output;
+  EXPECT_EQ(p.output, pixelTimesDepth);
+  EXPECT_NE(p.whyUnchanged.find("left for a person"), std::string::npos) << p.whyUnchanged;
+
   // t125 taken by another resource: the correction cannot read StereoParams there; the pixel shader
   // is copied with the reason, as it was before it could be corrected (not refused).
   std::string clash = kDeferredMadPs;

@@ -445,8 +445,18 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     if (!placeable) continue;
     // A UV the depth is sampled at is the depth buffer's, over [0, 1] where NDC is over [-1, 1]: the
     // matrix maps UV space and the correction takes half its column of u.
-    const bool uv = !role.scaled && notKnownNdc(values, role.x) && depthSampledAt(values, role);
-    if (!role.scaled && notKnownNdc(values, role.x) && !uv) {
+    // The screen-to-world form's x term is the pixel's coordinate times the depth: the same rule on
+    // the coordinate (a UV read as it is times a linear depth is left alone here: the linear depth
+    // is not the texel the sample's coordinate is known for).
+    bool notNdc = !role.scaled && notKnownNdc(values, role.x);
+    if (role.scaled) {
+      std::vector<int> screenFactors;
+      for (int factor : values[role.x].factors)
+        if (factor != role.depth) screenFactors.push_back(factor);
+      notNdc = screenFactors.size() == 1 && notKnownNdc(values, screenFactors[0]);
+    }
+    const bool uv = !role.scaled && notNdc && depthSampledAt(values, role);
+    if (notNdc && !uv) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
                                  ": a position rebuilt from a texture coordinate or pixel position as it is, not NDC "
                                  "(no -1 offset): the matrix may map UV space, whose column is not the correction's");
