@@ -166,7 +166,13 @@ struct Factors;
 void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth);
 bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
-bool plainScreenFactor(Decomposer& d, SourceAnalysis& flow, Lane term, std::optional<Lane> besides, size_t& visits);
+// The one screen input lane a product reads as it is (plainScreenFactor).
+struct PlainScreen {
+  Lane lane;
+  bool fragCoord = false;
+};
+std::optional<PlainScreen> plainScreenFactor(Decomposer& d, SourceAnalysis& flow, Lane term, std::optional<Lane> besides,
+                                             size_t& visits);
 
 // The camera c of a view vector `sign` * (c - p) that one lane of `f` (its linear form) is, where p
 // is the affine q's component `component` itself (its parts all in f times -sign, c the one part
@@ -444,10 +450,12 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     if (!*scaled) {
       notNdc = notKnownNdc(d, flow, *x);
       uv = notNdc && depthSampledAt(d, *z, *x, *y);
-    } else if (plainScreenFactor(d, flow, *x, *z, a.factorVisits)) {
-      notNdc = true;
+    } else if (auto plain = plainScreenFactor(d, flow, *x, *z, a.factorVisits)) {
+      // A texture coordinate read as it is may carry NDC (a full-screen pass that hands its corners
+      // on): taken as such unless the depth is sampled at it. A pixel position never is.
       auto screenX = screenPartOf(d, *x, *z), screenY = screenPartOf(d, *y, *z);
       uv = screenX && screenY && depthSampledAt(d, *z, *screenX, *screenY);
+      notNdc = uv || plain->fragCoord;
     }
     if (notNdc && !uv)
       p.reason = "the pixel's x is a texture coordinate or pixel position as it is, not NDC (no -1 offset): the "
@@ -549,25 +557,27 @@ bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth
   return depths == 1 && (lanes & 3u) == lane;
 }
 
-// Whether a product's factors, besides `besides` (its depth) and constants and uniforms, are one
-// screen input lane read as it is: a pixel position or a texture coordinate, not known to be NDC
-// (an NDC is computed: `* 2 - 1`, a viewport map, a divide by an interpolated w).
-bool plainScreenFactor(Decomposer& d, SourceAnalysis& flow, Lane term, std::optional<Lane> besides, size_t& visits) {
+// The one screen input lane, read as it is, among a product's factors besides `besides` (its depth),
+// constants and uniforms: a pixel position (gl_FragCoord / SV_Position) or a texture coordinate as
+// the rasterizer hands it on. Nothing when a factor is computed from the screen (an NDC: `* 2 - 1`,
+// a viewport map, a divide by an interpolated w) or there is not exactly one such lane.
+std::optional<PlainScreen> plainScreenFactor(Decomposer& d, SourceAnalysis& flow, Lane term, std::optional<Lane> besides,
+                                             size_t& visits) {
   Factors f;
   collectFactors(d, flow, term, false, f, 0);
   visits += static_cast<size_t>(f.visits);
-  if (f.tooLarge) return false;
-  int plain = 0;
+  if (f.tooLarge) return std::nullopt;
+  std::optional<PlainScreen> plain;
   for (const auto& [factor, divides] : f.factors) {
     if (d.constant(factor) || d.uniformElement(factor)) continue;
     if (besides && factor == d.canonical(*besides)) continue;
     const Sources s = sourcesOf(flow, d, factor);
     if (!s.fragCoord && !s.varying && !s.texel && !s.other) continue;  // uniforms alone (a texture's size)
-    if ((s.fragCoord || s.varying) && !s.arithmetic && !s.texel && !s.other && !divides) ++plain;
+    if ((s.fragCoord || s.varying) && !s.arithmetic && !s.texel && !s.other && !divides && !plain) plain = PlainScreen{factor, s.fragCoord};
     else if (texelOnly(s)) continue;  // a depth factor the caller did not name
-    else return false;
+    else return std::nullopt;
   }
-  return plain == 1;
+  return plain;
 }
 
 // One candidate: the pixel's coordinate (axis 0 or 1), the depth factor, the cbuffer element.
@@ -602,9 +612,9 @@ std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, La
       if (++screens > 1) return std::nullopt;
       c.axis = (s.inputLanes & 3u) == 1u ? 0 : 1;
       c.screen = s;
-      // Read as it is, it is a pixel position or a texture coordinate, and the element with it a
-      // screen size, not NDC and 1/P00.
-      c.notNdc = !s.arithmetic;
+      // A pixel position read as it is, and the element with it a screen size, not NDC and 1/P00 (a
+      // texture coordinate read as it is may carry NDC: a full-screen pass's corners).
+      c.notNdc = !s.arithmetic && s.fragCoord;
     } else if (texelOnly(s) && !divides) {
       if (++depths > 1) return std::nullopt;
       c.depth = factor;
@@ -662,7 +672,7 @@ std::vector<ComponentRay> findComponentRays(RegisterAnalyses& a) {
     r.fix.depthLane = c.depth.lane;
     r.fix.scale = scaleText(registers, c);
     if (c.notNdc)
-      r.reason = "the pixel's x is a screen input as it is (a pixel position or a texture coordinate), not NDC, and the "
+      r.reason = "the pixel's x is the pixel position as it is (SV_Position, no -1 offset), not NDC, and the "
                  "element with it a screen size, not the projection's 1/P00; left for a person";
     else if (r.fix.scale.empty()) r.reason = "the projection scale is not a cbuffer element the source can name";
     else if (!r.fix.line || !r.fix.depthLine)

@@ -1118,6 +1118,34 @@ TEST_F(DeferredRender, DumpStyleScreenToWorldFromAnInterpolatedClipPositionFixed
   fullScreenVert_ = fullScreen;
 }
 
+// A full-screen pass that hands its NDC corners on in a texture coordinate (`r2.xy = v1.xy;`, read
+// as it is): a texture coordinate may carry NDC, and where the depth is not sampled at it (here it
+// is loaded at the pixel) it is taken as such, corrected with the map's own column. (A pixel
+// position read as it is never is: ps-deferred-screen-to-world-uv.test.)
+TEST_F(DeferredRender, DumpStyleScreenToWorldFromNdcCornersInATexcoordFixedByExecution) {
+  std::string text = kDumpScreenToWorldPoint;
+  auto replace = [&](const std::string& from, const std::string& to) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("  float4 v0 : SV_POSITION0,\n", "  float4 v0 : SV_POSITION0,\n  float4 v1 : TEXCOORD0,\n");
+  replace("  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n", "  r2.xy = v1.xy;\n");
+  const char* ndcCornersVert = R"(#version 450
+layout(location = 0) out vec4 outNdc;
+out gl_PerVertex { vec4 gl_Position; };
+void main() {
+  const vec2 positions[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+  vec2 p = positions[gl_VertexIndex];
+  outNdc = vec4(p, 0.0, 0.0);
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+  const std::vector<uint32_t> fullScreen = fullScreenVert_;
+  fullScreenVert_ = compileOriginal("ndc_corners.vert", ndcCornersVert, TranspileOptions{});
+  checkScreenToWorld("4a5b6c7d8e9f0126-ps_replace.txt", text.c_str(), "dump screen to world, NDC in a texcoord");
+  fullScreenVert_ = fullScreen;
+}
+
 // The direction from the camera, p - c (as a reflection or a fog ray reads it), in both forms: this
 // eye's camera subtracted.
 TEST_F(DeferredRender, DumpStyleVectorFromTheCameraGetsThisEyesCameraByExecution) {

@@ -248,6 +248,22 @@ bool depthSampledAt(const std::vector<Value>& values, const Roles& role) {
   return is(role.x, atX) && is(role.y, atY);
 }
 
+// Whether the pixel's coordinate of `role` is not known to be NDC (notKnownNdc). The screen-to-world
+// form's x term is the coordinate times the depth: the same rule on the coordinate, where a texture
+// coordinate read as it is may carry NDC (a full-screen pass that hands its corners on) and is taken
+// as such; the pixel position (SV_Position) never is. (A UV read as it is times a linear depth is
+// left alone: the linear depth is not the texel the sample's coordinate is known for.)
+bool coordinateNotNdc(const std::vector<Value>& values, const Roles& role, const Program::Impl& p) {
+  if (!role.scaled) return notKnownNdc(values, role.x);
+  std::vector<int> screenFactors;
+  for (int factor : values[role.x].factors)
+    if (factor != role.depth) screenFactors.push_back(factor);
+  return screenFactors.size() == 1 && notKnownNdc(values, screenFactors[0]) &&
+         std::any_of(p.inputs.begin(), p.inputs.end(), [&](const InputDeclaration& input) {
+           return input.index == role.input && input.systemValue == "position";
+         });
+}
+
 // The camera c of a view vector `sign` * (c - p) whose linear form is `f`, p being the point q's
 // component `point` itself (the screen-to-world form without w): q's parts all in f times -sign, c
 // the one element left over, times sign.
@@ -445,16 +461,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     if (!placeable) continue;
     // A UV the depth is sampled at is the depth buffer's, over [0, 1] where NDC is over [-1, 1]: the
     // matrix maps UV space and the correction takes half its column of u.
-    // The screen-to-world form's x term is the pixel's coordinate times the depth: the same rule on
-    // the coordinate (a UV read as it is times a linear depth is left alone here: the linear depth
-    // is not the texel the sample's coordinate is known for).
-    bool notNdc = !role.scaled && notKnownNdc(values, role.x);
-    if (role.scaled) {
-      std::vector<int> screenFactors;
-      for (int factor : values[role.x].factors)
-        if (factor != role.depth) screenFactors.push_back(factor);
-      notNdc = screenFactors.size() == 1 && notKnownNdc(values, screenFactors[0]);
-    }
+    const bool notNdc = coordinateNotNdc(values, role, p);
     const bool uv = !role.scaled && notNdc && depthSampledAt(values, role);
     if (notNdc && !uv) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
