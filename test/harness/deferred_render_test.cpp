@@ -1197,21 +1197,29 @@ TEST_F(DeferredRender, DumpStyleUvFromTheTextureSizeFixedInItsTextByExecution) {
   checkRebuiltPositions("1a2b3c4d5e6f7082-ps_replace.txt", text.c_str(), "dump dp4, UV from the texture's size", &rows);
 }
 
+// A dump (kDumpPrologue's) with the depth sampled at the pixel's UV (`v0.xy * cb0[4].zw`, no
+// `* 2 - 1`) through a sampler at s3, instead of loaded at the pixel and made NDC; "" if the
+// prologue is not there.
+std::string withTheDepthSampledAtTheUv(std::string text) {
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"Texture2D<float4> t2 : register(t2, space1);\n",
+            "Texture2D<float4> t2 : register(t2, space1);\nSamplerState s3_s : register(s3, space1);\n"},
+           {"  r1.x = t2.Load(r0.xyz).x;\n  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n",
+            "  r2.xy = v0.xy * cb0[4].zw;\n  r1.x = t2.SampleLevel(s3_s, r2.xy, 0).x;\n"}}) {
+    if (text.find(from) == std::string::npos) return "";
+    text.replace(text.find(from), from.size(), to);
+  }
+  return text;
+}
+
 // A matrix from UV space (the inverse view-projection times the UV-to-NDC map, as an engine bakes
 // it): the pixel's UV (`v0.xy * cb0[4].zw`, no `* 2 - 1`) goes into the product as it is, and the
 // depth is sampled at that very UV. That makes it the depth buffer's UV, over [0, 1] where NDC is
 // over [-1, 1]: the correction takes half the matrix's column of u, InvM's column of NDC x. (Read
 // without the depth sampled there it stays a UV or a pixel position of unknown scale, left alone.)
 TEST_F(DeferredRender, DumpStyleMatrixFromUvSpaceFixedInItsTextByExecution) {
-  std::string text = kDumpDp4Lighting;
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"Texture2D<float4> t2 : register(t2, space1);\n",
-            "Texture2D<float4> t2 : register(t2, space1);\nSamplerState s3_s : register(s3, space1);\n"},
-           {"  r1.x = t2.Load(r0.xyz).x;\n  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n",
-            "  r2.xy = v0.xy * cb0[4].zw;\n  r1.x = t2.SampleLevel(s3_s, r2.xy, 0).x;\n"}}) {
-    ASSERT_NE(text.find(from), std::string::npos) << from;
-    text.replace(text.find(from), from.size(), to);
-  }
+  const std::string text = withTheDepthSampledAtTheUv(kDumpDp4Lighting);
+  ASSERT_FALSE(text.empty());
   DumpFeed rows{true, false};
   rows.uvSpace = true;
   checkRebuiltPositions("1a2b3c4d5e6f7083-ps_replace.txt", text.c_str(), "dump dp4, matrix from UV space", &rows);
@@ -1222,15 +1230,8 @@ TEST_F(DeferredRender, DumpStyleMatrixFromUvSpaceFixedInItsTextByExecution) {
 // half the map's column of u. (Before, the product with the screen size was not taken, and the
 // same product read as a view ray with 1/P00 = the screen size was "corrected" by 1/width of it.)
 TEST_F(DeferredRender, DumpStyleScreenToWorldFromUvSpaceFixedInItsTextByExecution) {
-  std::string text = kDumpScreenToWorld;
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"Texture2D<float4> t2 : register(t2, space1);\n",
-            "Texture2D<float4> t2 : register(t2, space1);\nSamplerState s3_s : register(s3, space1);\n"},
-           {"  r1.x = t2.Load(r0.xyz).x;\n  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n",
-            "  r2.xy = v0.xy * cb0[4].zw;\n  r1.x = t2.SampleLevel(s3_s, r2.xy, 0).x;\n"}}) {
-    ASSERT_NE(text.find(from), std::string::npos) << from;
-    text.replace(text.find(from), from.size(), to);
-  }
+  const std::string text = withTheDepthSampledAtTheUv(kDumpScreenToWorld);
+  ASSERT_FALSE(text.empty());
   checkScreenToWorld("5a6b7c8d9e0f1a2c-ps_replace.txt", text.c_str(), "dump screen-to-world from UV space", true);
 }
 
