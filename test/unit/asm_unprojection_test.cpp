@@ -256,9 +256,15 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
   toClip[10] = -mono[10];
   toClip[14] = mono[14];
   const Mat4 uvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
+  // (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1): the screen-to-world form from UV space.
+  const Mat4 scaledUvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, -1, 1, 1, 0, 0, 0, 0, 1};
   auto matrixOf = [&](double eye) {
     const Mat4 inverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
-    return screenToWorld ? harness::multiply(inverse, toClip) : uvSpace ? harness::multiply(inverse, uvToNdc) : inverse;
+    if (screenToWorld) {
+      const Mat4 map = harness::multiply(inverse, toClip);
+      return uvSpace ? harness::multiply(map, scaledUvToNdc) : map;
+    }
+    return uvSpace ? harness::multiply(inverse, uvToNdc) : inverse;
   };
   const Mat4 monoInverse = matrixOf(0);
   for (double eye : {-1.0, 1.0}) {
@@ -275,7 +281,9 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         const double w = 1.5 + 58.5 * std::fmod((px * 37 + py * 61) / 997.0, 1.0);
         const float depth = static_cast<float>(screenToWorld ? w : (mono[10] * -w + mono[14]) / w);
         const Pixel pixel{px + 0.5f, py + 0.5f, depth};
-        const double nx = 2.0 * pixel.x / kSize - 1.0, ny = 1.0 - 2.0 * pixel.y / kSize;
+        // The pixel's coordinates as the shader reads them: NDC, or the UV.
+        const double nx = uvSpace ? pixel.x / kSize : 2.0 * pixel.x / kSize - 1.0;
+        const double ny = uvSpace ? pixel.y / kSize : 1.0 - 2.0 * pixel.y / kSize;
         const std::array<double, 4> v = screenToWorld ? std::array<double, 4>{nx * depth, ny * depth, depth, 1.0}
                                         : uvSpace ? std::array<double, 4>{pixel.x / kSize, pixel.y / kSize, depth, 1.0}
                                                   : std::array<double, 4>{nx, ny, depth, 1.0};
@@ -287,7 +295,8 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         auto baseline = rebuild(*original, pixel, monoRows, {});
         auto truthBound = screenToWorld ? harness::screenToWorldBound(stereoF, nx, ny, depth, false, 0.0, kConvergence)
                                         : harness::positionBound(stereoF, v, false, 0.0, kConvergence);
-        auto fixBound = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence)
+        auto fixBound = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence,
+                                                                    uvSpace ? 0.5 : 1.0)
                                       : harness::positionBound(monoF, v, true, es, kConvergence, uvSpace ? 0.5 : 1.0);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
@@ -350,6 +359,23 @@ TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
 }
 
 // Corrected by the same s.x * (|z| - s.y) * sign(z), which needs no w: three lanes, the fourth none.
+// The screen-to-world form from UV space: the pixel's UV (`mul r1.xy, v0.xyxx, cb0[2].zwzz`, no
+// `* 2 - 1`), the one the depth is sampled at, times that depth, through a map that takes
+// (u z, v z, z, 1): the UV found through the depth back to its sample, half the map's column taken.
+TEST(AsmUnprojection, ScreenToWorldFromUvSpaceCorrectedByExecution) {
+  std::string shader = kScreenToWorldPs;
+  const std::string depthAndNdc =
+      "ftoi r0.xy, v0.xyxx\nmov r0.zw, l(0,0,0,0)\nld_indexable(texture2d)(float,float,float,float) r0.z, r0.xyzw, t0.yzxw\n"
+      "mul r1.xy, v0.xyxx, cb0[2].zwzz\n"
+      "mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
+  ASSERT_NE(shader.find(depthAndNdc), std::string::npos);
+  shader.replace(shader.find(depthAndNdc), depthAndNdc.size(),
+                 "mul r1.xy, v0.xyxx, cb0[2].zwzz\n"
+                 "sample_l_indexable(texture2d)(float,float,float,float) r0.z, r1.xyxx, t0.yzxw, s0, l(0.000000)\n");
+  shader.replace(shader.find("dcl_resource_texture2d"), 0, "dcl_sampler s0, mode_default\n");
+  checkByExecution(shader.c_str(), false, "asm screen to world from UV space", true, true);
+}
+
 TEST(AsmUnprojection, ScreenToWorldPointWithoutWCorrectedByExecution) {
   AsmShiftResult converted = shiftAssembly(kScreenToWorldPointPs, {});
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;

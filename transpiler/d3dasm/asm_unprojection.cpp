@@ -237,8 +237,14 @@ bool notKnownNdc(const std::vector<Value>& values, int term) {
 
 // Whether the depth of `role` is a texel sampled at the pixel's own x and y (the values the x and
 // y terms are, or the one term each is a multiple of).
+bool sampledAtIs(const std::vector<Value>& values, const Roles& role, std::pair<int, int> sampledAt);
 bool depthSampledAt(const std::vector<Value>& values, const Roles& role) {
-  const auto [atX, atY] = values[role.depth].sampledAt;
+  return sampledAtIs(values, role, values[role.depth].sampledAt);
+}
+
+// Whether `sampledAt` (a sample's coordinate lanes 0 and 1) is the pixel's x and y of `role`.
+bool sampledAtIs(const std::vector<Value>& values, const Roles& role, std::pair<int, int> sampledAt) {
+  const auto [atX, atY] = sampledAt;
   auto is = [&](int term, int at) {
     if (at < 0) return false;
     if (term == at) return true;
@@ -248,6 +254,48 @@ bool depthSampledAt(const std::vector<Value>& values, const Roles& role) {
   return is(role.x, atX) && is(role.y, atY);
 }
 
+// The screen-to-world form's coordinates (x * z and y * z, each the coordinate times the depth):
+// each term's one factor besides the depth, or -1.
+std::pair<int, int> screenFactorsOf(const std::vector<Value>& values, const Roles& role) {
+  auto of = [&](int term) {
+    std::vector<int> screen;
+    for (int factor : values[term].factors)
+      if (factor != role.depth) screen.push_back(factor);
+    return screen.size() == 1 ? screen[0] : -1;
+  };
+  return {of(role.x), of(role.y)};
+}
+
+// Whether the screen-to-world form's coordinates are read as they are (notKnownNdc) and are the UV
+// the one texel its linear depth is made from is sampled at (found through what the depth was
+// computed from): the depth buffer's UV, whose NDC is 2u - 1.
+bool scaledTermsSampledAt(const std::vector<Value>& values, const Roles& role) {
+  const auto [x, y] = screenFactorsOf(values, role);
+  if (x < 0 || y < 0 || !notKnownNdc(values, x) || !notKnownNdc(values, y)) return false;
+  std::set<std::pair<int, int>> samples;
+  std::vector<char> seen(values.size(), 0);
+  std::vector<int> stack{role.depth};
+  while (!stack.empty()) {
+    const int at = stack.back();
+    stack.pop_back();
+    if (at < 0 || seen[at]) continue;
+    seen[at] = 1;
+    const Value& v = values[at];
+    if (v.sampledAt.first >= 0) samples.insert(v.sampledAt);
+    stack.insert(stack.end(), v.from.begin(), v.from.end());
+    stack.insert(stack.end(), v.factors.begin(), v.factors.end());
+    stack.push_back(v.quotient.first);
+    stack.push_back(v.quotient.second);
+    for (const Part& part : v.form)
+      if (part.term >= 0 && part.term != at) stack.push_back(part.term);
+  }
+  if (samples.size() != 1) return false;
+  Roles screen = role;
+  screen.x = x;
+  screen.y = y;
+  return sampledAtIs(values, screen, *samples.begin());
+}
+
 // Whether the pixel's coordinate of `role` is not known to be NDC (notKnownNdc). The screen-to-world
 // form's x term is the coordinate times the depth: the same rule on the coordinate, where a texture
 // coordinate read as it is may carry NDC (a full-screen pass that hands its corners on) and is taken
@@ -255,10 +303,8 @@ bool depthSampledAt(const std::vector<Value>& values, const Roles& role) {
 // left alone: the linear depth is not the texel the sample's coordinate is known for.)
 bool coordinateNotNdc(const std::vector<Value>& values, const Roles& role, const Program::Impl& p) {
   if (!role.scaled) return notKnownNdc(values, role.x);
-  std::vector<int> screenFactors;
-  for (int factor : values[role.x].factors)
-    if (factor != role.depth) screenFactors.push_back(factor);
-  return screenFactors.size() == 1 && notKnownNdc(values, screenFactors[0]) &&
+  const int screenX = screenFactorsOf(values, role).first;
+  return screenX >= 0 && notKnownNdc(values, screenX) &&
          std::any_of(p.inputs.begin(), p.inputs.end(), [&](const InputDeclaration& input) {
            return input.index == role.input && input.systemValue == "position";
          });
@@ -462,7 +508,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     // A UV the depth is sampled at is the depth buffer's, over [0, 1] where NDC is over [-1, 1]: the
     // matrix maps UV space and the correction takes half its column of u.
     const bool notNdc = coordinateNotNdc(values, role, p);
-    const bool uv = !role.scaled && notNdc && depthSampledAt(values, role);
+    const bool uv = role.scaled ? scaledTermsSampledAt(values, role) : notNdc && depthSampledAt(values, role);
     if (notNdc && !uv) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
                                  ": a position rebuilt from a texture coordinate or pixel position as it is, not NDC "
