@@ -449,6 +449,19 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     facts.rayTextFixes.push_back(r.fix);
     recorded = true;
   }
+  for (const InterpolatedRay& r : forms.interpolatedRays) {
+    ViewDependentUse entry;
+    entry.construct = "interpolated ray / its z * depth";
+    entry.form = "position rebuilt from a ray the vertex shader interpolates (a far-plane corner or a light "
+                 "volume's view-space position), scaled by one over its z and by the depth";
+    entry.depth = joined(r.depth.textures);
+    entry.ndc = r.input;
+    if (r.line) entry.line = static_cast<int>(r.line);
+    entry.reason = "not fixed: the ray's 1/P00 is not in the pixel shader, and the correction depends on whether "
+                   "the vertex shader's vertices were shifted (a light volume) or kept mono (a full-screen quad at "
+                   "w = 1); left for a person";
+    facts.leftAlone.push_back(entry);
+  }
   return recorded;
 }
 

@@ -612,9 +612,10 @@ std::optional<RayCandidate> rayCandidate(Decomposer& d, SourceAnalysis& flow, La
       if (++screens > 1) return std::nullopt;
       c.axis = (s.inputLanes & 3u) == 1u ? 0 : 1;
       c.screen = s;
-      // A pixel position read as it is, and the element with it a screen size, not NDC and 1/P00 (a
-      // texture coordinate read as it is may carry NDC: a full-screen pass's corners).
-      c.notNdc = !s.arithmetic && s.fragCoord;
+      // Read as it is: a pixel position (and the element with it a screen size, not 1/P00), or a
+      // texture coordinate that may carry a UV, NDC or a colour (`v1.x * texel * cb0[2].x` is a
+      // tinted colour as often as a view ray): not taken, reported.
+      c.notNdc = !s.arithmetic;
     } else if (texelOnly(s) && !divides) {
       if (++depths > 1) return std::nullopt;
       c.depth = factor;
@@ -672,14 +673,64 @@ std::vector<ComponentRay> findComponentRays(RegisterAnalyses& a) {
     r.fix.depthLane = c.depth.lane;
     r.fix.scale = scaleText(registers, c);
     if (c.notNdc)
-      r.reason = "the pixel's x is the pixel position as it is (SV_Position, no -1 offset), not NDC, and the "
-                 "element with it a screen size, not the projection's 1/P00; left for a person";
+      r.reason = "the pixel's x is a screen input read as it is: the pixel position (its element a screen size, not "
+                 "1/P00), or a texture coordinate that may carry a UV, NDC or a colour; not known to be a view ray, "
+                 "left for a person";
     else if (r.fix.scale.empty()) r.reason = "the projection scale is not a cbuffer element the source can name";
     else if (!r.fix.line || !r.fix.depthLine)
       r.reason = lines.present() ? "x or the depth is computed outside the main file (an #include or a macro)"
                                  : "the module has no source lines";
     found.push_back(std::move(r));
   }
+  return found;
+}
+
+// The interpolated rays of `a` (InterpolatedRay): every product lane whose factors are one lane of a
+// vector input read as it is, that input's z divided by, one texel-only depth, and uniforms or
+// constants; one report per input and depth with lanes x, y and z.
+std::vector<InterpolatedRay> findInterpolatedRays(RegisterAnalyses& a) {
+  Decomposer& d = a.d;
+  struct Seen {
+    uint32_t lanes = 0, line = 0;
+    Sources depth;
+  };
+  std::map<std::pair<std::string, Lane>, Seen> byInputAndDepth;
+  std::set<Lane> seen;
+  spirv::forEachFunctionInstruction(a.registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (inst.opcode != spv::OpFMul && inst.opcode != spv::OpVectorTimesScalar) return;
+    const Instruction* type = a.registers.definition(inst.typeId);
+    const uint32_t count = type && type->opcode == spv::OpTypeVector ? type->operand(1) : 1;
+    for (uint32_t lane = 0; lane < count; ++lane) {
+      const Lane at = d.canonical({inst.resultId, lane});
+      if (!seen.insert(at).second) continue;
+      Factors f;
+      collectFactors(d, a.flow, at, false, f, 0);
+      a.factorVisits += static_cast<size_t>(f.visits);
+      if (f.tooLarge) continue;
+      std::optional<Sources> ray, overZ, depth;
+      std::optional<Lane> depthLane;
+      bool other = false;
+      for (const auto& [factor, divides] : f.factors) {
+        if (d.constant(factor) || d.uniformElement(factor)) continue;
+        const Sources s = sourcesOf(a.flow, d, factor);
+        const bool plainInput = s.varying && !s.fragCoord && !s.arithmetic && !s.texel && !s.other &&
+                                std::popcount(s.inputLanes) == 1 && s.inputs.size() == 1;
+        if (plainInput && !divides && !ray) ray = s;
+        else if (plainInput && divides && s.inputLanes == 4u && !overZ) overZ = s;
+        else if (texelOnly(s) && !divides && !depth) depth = s, depthLane = factor;
+        else other = true;
+      }
+      if (other || !ray || !overZ || !depth || ray->inputs != overZ->inputs || ray->inputLanes > 4u) continue;
+      Seen& entry = byInputAndDepth[{*ray->inputs.begin(), *depthLane}];
+      entry.lanes |= ray->inputLanes;
+      entry.depth = *depth;
+      const uint32_t line = a.lines.lineOf(at.id);
+      if (line && (!entry.line || line < entry.line)) entry.line = line;
+    }
+  });
+  std::vector<InterpolatedRay> found;
+  for (const auto& [key, entry] : byInputAndDepth)
+    if (entry.lanes == 7u) found.push_back({key.first, entry.depth, entry.line});
   return found;
 }
 
@@ -690,6 +741,7 @@ DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, c
   DecompiledForms forms;
   forms.products = findRowProducts(analyses);
   forms.rays = findComponentRays(analyses);
+  forms.interpolatedRays = findInterpolatedRays(analyses);
   // A screen-to-world product's x * z term is a product of the screen and the depth like a view ray's
   // x: one correction, the product's.
   std::erase_if(forms.rays, [&](const ComponentRay& r) {

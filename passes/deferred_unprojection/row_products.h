@@ -55,10 +55,23 @@ struct ComponentRay {
   std::string reason;  // empty when x and the depth have lines of the main file
 };
 
+// A position rebuilt from a ray the vertex shader interpolates, scaled to depth 1 by its own z
+// (Unity's `i.ray * (_ProjectionParams.z / i.ray.z) * Linear01Depth(d)`): lanes x, y and z of one
+// vector input, each times one over that input's z, a depth made from a texel, and uniforms or
+// constants. Never fixed: the ray's 1/P00, and whether the vertex shader's vertices were moved
+// (a light volume) or not (a full-screen quad the cutoff keeps mono), are not in the pixel shader,
+// and the correction differs between them. Reported, so a person knows where to look.
+struct InterpolatedRay {
+  std::string input;  // the vector input: "v2"
+  Sources depth;
+  uint32_t line = 0;  // the first statement computing a lane of the product
+};
+
 // Both forms of one shader.
 struct DecompiledForms {
   std::vector<RowProduct> products;
   std::vector<ComponentRay> rays;
+  std::vector<InterpolatedRay> interpolatedRays;
   // Lanes decomposed, parts built and factors visited: linear in the shader's size, whatever its
   // shape (the complexity tests count it).
   size_t work = 0;
