@@ -96,6 +96,33 @@ inline Linear sum(Linear a, const Linear& b) {
 
 constexpr size_t kMaxFactors = 8;
 
+// Depth first from value `start` over what each value was computed from (its linear form's terms, a
+// product's factors, a quotient's parts, what an instruction looked into no further read), each
+// value once, with a stack of its own (a dump's chains are thousands of values long). `visit(id)`
+// says whether to go on into what that value was computed from, past it, or to stop.
+enum class Walk { Into, Past, Stop };
+template <class Visit>
+void walkComputedFrom(const std::vector<Value>& values, int start, Visit visit) {
+  std::vector<char> seen(values.size(), 0);
+  std::vector<int> stack{start};
+  while (!stack.empty()) {
+    const int at = stack.back();
+    stack.pop_back();
+    if (at < 0 || seen[at]) continue;
+    seen[at] = 1;
+    const Walk next = visit(at);
+    if (next == Walk::Stop) return;
+    if (next == Walk::Past) continue;
+    const Value& v = values[at];
+    stack.insert(stack.end(), v.from.begin(), v.from.end());
+    stack.insert(stack.end(), v.factors.begin(), v.factors.end());
+    stack.push_back(v.quotient.first);
+    stack.push_back(v.quotient.second);
+    for (const Part& part : v.form)
+      if (part.term >= 0 && part.term != at) stack.push_back(part.term);
+  }
+}
+
 // Output registers are kept beside the temporaries, their numbers offset by this (an output is
 // written, never read, in SM4+): what each holds at a return is its value there.
 constexpr uint32_t kOutputKey = 1u << 30;
@@ -151,30 +178,17 @@ class Evaluator {
     values_.push_back(std::move(v));
     return static_cast<int>(values_.size()) - 1;
   }
-  // Depth first over what each value was computed from, with a stack of its own (a dump's chains
-  // are thousands of values long).
   bool dependsWalk(int id, int on) const {
-    std::vector<char> seen(values_.size(), 0);
-    std::vector<int> stack{id};
-    while (!stack.empty()) {
-      const int at = stack.back();
-      stack.pop_back();
-      if (at < 0 || seen[at]) continue;
-      seen[at] = 1;
-      if (at == on) return true;
+    bool depends = false;
+    walkComputedFrom(values_, id, [&](int at) {
       const Value& v = values_[at];
-      if (v.op == SIZE_MAX && v.from.empty()) {
-        if (v.sources.empty()) return true;  // lost track of (an input has its lane as a source)
-        continue;
+      if (at == on || (v.op == SIZE_MAX && v.from.empty() && v.sources.empty())) {  // or lost track of
+        depends = true;
+        return Walk::Stop;
       }
-      stack.insert(stack.end(), v.from.begin(), v.from.end());
-      stack.insert(stack.end(), v.factors.begin(), v.factors.end());
-      stack.push_back(v.quotient.first);
-      stack.push_back(v.quotient.second);
-      for (const Part& part : v.form)
-        if (part.term >= 0 && part.term != at) stack.push_back(part.term);
-    }
-    return false;
+      return v.op == SIZE_MAX && v.from.empty() ? Walk::Past : Walk::Into;  // an input: computed from nothing
+    });
+    return depends;
   }
 
   Read read(const Src& s, uint32_t component) {

@@ -273,22 +273,10 @@ bool scaledTermsSampledAt(const std::vector<Value>& values, const Roles& role) {
   const auto [x, y] = screenFactorsOf(values, role);
   if (x < 0 || y < 0 || !notKnownNdc(values, x) || !notKnownNdc(values, y)) return false;
   std::set<std::pair<int, int>> samples;
-  std::vector<char> seen(values.size(), 0);
-  std::vector<int> stack{role.depth};
-  while (!stack.empty()) {
-    const int at = stack.back();
-    stack.pop_back();
-    if (at < 0 || seen[at]) continue;
-    seen[at] = 1;
-    const Value& v = values[at];
-    if (v.sampledAt.first >= 0) samples.insert(v.sampledAt);
-    stack.insert(stack.end(), v.from.begin(), v.from.end());
-    stack.insert(stack.end(), v.factors.begin(), v.factors.end());
-    stack.push_back(v.quotient.first);
-    stack.push_back(v.quotient.second);
-    for (const Part& part : v.form)
-      if (part.term >= 0 && part.term != at) stack.push_back(part.term);
-  }
+  walkComputedFrom(values, role.depth, [&](int at) {
+    if (values[at].sampledAt.first >= 0) samples.insert(values[at].sampledAt);
+    return Walk::Into;
+  });
   if (samples.size() != 1) return false;
   Roles screen = role;
   screen.x = x;
