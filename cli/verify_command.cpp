@@ -58,7 +58,10 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
   const ShiftSpec shift = assemblyShiftSpec(options);
   settings.cutoff = shift.cutoff;
   settings.cutoffEpsilon = shift.epsilon;
-  if (converted.record.assembly) settings.movedLanes = converted.record.assembly->movedLanes;
+  if (converted.record.assembly) {
+    settings.movedLanes = converted.record.assembly->movedLanes;
+    settings.positionLeftToDriver = converted.record.assembly->positionLeftToDriver;
+  }
   d3dasm::AsmVerifyResult r = d3dasm::verifyAssemblyConversion(input.contents, converted.output, settings);
   if (!r.ran) {
     if (verify.json)
@@ -102,8 +105,9 @@ int runAssemblyVerify(const SourceFile& input, const TranspileOptions& options, 
                "drawn per input set\n"
             << "  mono identity (separation 0):  " << (r.monoMismatches ? "DIFFERS" : "bit-exact") << "\n"
             << "  other outputs per eye:         " << (r.otherOutputMismatches ? "CHANGED" : "unchanged") << "\n"
-            << "  position y, z, w per eye:      " << (r.positionYzwMismatches ? "CHANGED" : "unchanged") << "\n"
-            << "  stereo x error:                " << error << ", " << r.shiftedFailures << " of " << r.shiftedRuns
+            << (settings.positionLeftToDriver ? "  position (left to the driver): " : "  position y, z, w per eye:      ")
+            << (r.positionYzwMismatches ? "CHANGED" : "unchanged") << "\n"
+            << (settings.positionLeftToDriver ? "  shifted x of its copies:       " : "  stereo x error:                ") << error << ", " << r.shiftedFailures << " of " << r.shiftedRuns
             << " runs over it\n"
             << "  vertices kept by the cutoff:   " << r.cutoffRuns << (r.cutoffMismatches ? " (x CHANGED)" : " (x bit-exact)")
             << "\n"

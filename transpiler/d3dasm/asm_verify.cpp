@@ -319,8 +319,22 @@ struct Checker {
       for (const AsmMovedLane& lane : options.movedLanes) {
         auto before = reference.find(lane.reg), after = shifted.find(lane.reg);
         if (before == reference.end() || after == shifted.end()) continue;  // sameOutputs said so
+        const float moved = floatOf(after->second[lane.lane & 3]);
+        if (options.positionLeftToDriver && lane.copy) {
+          // The position is the driver's to shift: its copy carries the shifted x on its own.
+          ++result.movedLaneRuns;
+          checkX(sample, run, floatOf(pos[0]), floatOf(pos[3]), floatOf(params[0]), convergence, moved);
+          continue;
+        }
         checkMovedLane(sample, run, lane, floatOf(pos[0]), floatOf(pos[3]), floatOf(params[0]), convergence,
-                       floatOf(got[0]), floatOf(before->second[lane.lane & 3]), floatOf(after->second[lane.lane & 3]));
+                       floatOf(got[0]), floatOf(before->second[lane.lane & 3]), moved);
+      }
+      if (options.positionLeftToDriver) {
+        if (got != pos) {
+          ++result.positionYzwMismatches;
+          failure(sample, run, "the position, left to the driver, is " + vecText(got) + " for the original's " + vecText(pos));
+        }
+        continue;
       }
       if (got[1] != pos[1] || got[2] != pos[2] || got[3] != pos[3]) {
         ++result.positionYzwMismatches;

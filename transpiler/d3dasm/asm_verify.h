@@ -27,6 +27,10 @@ struct AsmVerifyOptions {
   // for bit, another lane the original's value plus coefficient * (x + s*(w - c) - x), within the
   // bound checkMovedLane derives; where x is not shifted, the original's bits.
   std::vector<AsmMovedLane> movedLanes;
+  // --corrections-only: the conversion leaves the position to the driver's shift, so the position
+  // must be the original's bit for bit, and a copy of x carries the shifted x on its own (checked
+  // against the exact reference as x is).
+  bool positionLeftToDriver = false;
 };
 
 struct AsmVerifyResult {
