@@ -301,6 +301,10 @@ bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<La
   return lanes == 7u && inputs.size() == 1;
 }
 
+// A screen input (gl_FragCoord / SV_Position, or another fragment input) read as the rasterizer
+// hands it on: moved, not computed, and made from nothing else.
+bool screenReadAsItIs(const Sources& s) { return (s.fragCoord || s.varying) && !s.arithmetic && !s.texel && !s.other; }
+
 // Whether a pixel coordinate term is a screen input read as it is or times one constant or uniform,
 // or over (or times) a value of uniforms alone (a pixel position over a texture's size: a UV; a
 // perspective divide by an input's w is NDC).
@@ -314,9 +318,8 @@ bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
   if (!def || (def->opcode != spv::OpFDiv && def->opcode != spv::OpFMul) || def->operands.size() != 2) return false;
   auto laneOf = [&](uint32_t id) { return Lane{id, d.isVector(id) ? inner.lane : 0}; };
   const Sources a = sourcesOf(flow, d, laneOf(def->operand(0))), b = sourcesOf(flow, d, laneOf(def->operand(1)));
-  auto plainScreen = [](const Sources& x) { return (x.fragCoord || x.varying) && !x.arithmetic && !x.texel && !x.other; };
   auto uniformOnly = [](const Sources& x) { return !x.fragCoord && !x.varying && !x.texel && !x.other; };
-  return (plainScreen(a) && uniformOnly(b)) || (def->opcode == spv::OpFMul && plainScreen(b) && uniformOnly(a));
+  return (screenReadAsItIs(a) && uniformOnly(b)) || (def->opcode == spv::OpFMul && screenReadAsItIs(b) && uniformOnly(a));
 }
 
 // The coordinate of the one image sample the depth `z` is computed from (z itself, or z made linear
@@ -573,7 +576,7 @@ std::optional<PlainScreen> plainScreenFactor(Decomposer& d, SourceAnalysis& flow
     if (besides && factor == d.canonical(*besides)) continue;
     const Sources s = sourcesOf(flow, d, factor);
     if (!s.fragCoord && !s.varying && !s.texel && !s.other) continue;  // uniforms alone (a texture's size)
-    if ((s.fragCoord || s.varying) && !s.arithmetic && !s.texel && !s.other && !divides && !plain) plain = PlainScreen{factor, s.fragCoord};
+    if (screenReadAsItIs(s) && !divides && !plain) plain = PlainScreen{factor, s.fragCoord};
     else if (texelOnly(s)) continue;  // a depth factor the caller did not name
     else return std::nullopt;
   }
@@ -713,7 +716,7 @@ std::vector<InterpolatedRay> findInterpolatedRays(RegisterAnalyses& a) {
       for (const auto& [factor, divides] : f.factors) {
         if (d.constant(factor) || d.uniformElement(factor)) continue;
         const Sources s = sourcesOf(a.flow, d, factor);
-        const bool plainInput = s.varying && !s.fragCoord && !s.arithmetic && !s.texel && !s.other &&
+        const bool plainInput = screenReadAsItIs(s) && !s.fragCoord &&
                                 std::popcount(s.inputLanes) == 1 && s.inputs.size() == 1;
         if (plainInput && !divides && !ray) ray = s;
         else if (plainInput && divides && s.inputLanes == 4u && !overZ) overZ = s;

@@ -681,6 +681,15 @@ class DeferredRender : public ::testing::Test {
   // `uvSpace`: the dump reads the pixel's UV, the one the depth is sampled at, and the map takes
   // (u z, v z, z, 1).
   void checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace = false);
+  // checkScreenToWorld behind `vertex` (GLSL, named `vertexName`) instead of the harness's own
+  // full-screen vertex stage, for a dump that reads what that stage hands on.
+  void checkScreenToWorldAfter(const char* vertexName, const char* vertex, const char* name, const char* text,
+                               const char* tag) {
+    const std::vector<uint32_t> fullScreen = fullScreenVert_;
+    fullScreenVert_ = compileOriginal(vertexName, vertex, TranspileOptions{});
+    checkScreenToWorld(name, text, tag);
+    fullScreenVert_ = fullScreen;
+  }
   // The camera check: the view vector to the rebuilt position from this eye's camera.
   // `screenToWorldForm`: the dump rebuilds through a screen-to-world map (linear depth); `fromCamera`:
   // its vector is p - c, not c - p.
@@ -1112,10 +1121,8 @@ TEST_F(DeferredRender, DumpStyleScreenToWorldFromAnInterpolatedClipPositionFixed
   };
   replace("  float4 v0 : SV_POSITION0,\n", "  float4 v0 : SV_POSITION0,\n  float4 v1 : TEXCOORD0,\n  float v2 : TEXCOORD1,\n");
   replace("  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n", "  r2.xy = v1.xy / v2.xx;\n");
-  const std::vector<uint32_t> fullScreen = fullScreenVert_;
-  fullScreenVert_ = compileOriginal("clip_copy.vert", kClipCopyVert, TranspileOptions{});
-  checkScreenToWorld("4a5b6c7d8e9f0125-ps_replace.txt", text.c_str(), "dump screen to world, v1.xy / v2.x");
-  fullScreenVert_ = fullScreen;
+  checkScreenToWorldAfter("clip_copy.vert", kClipCopyVert, "4a5b6c7d8e9f0125-ps_replace.txt", text.c_str(),
+                          "dump screen to world, v1.xy / v2.x");
 }
 
 // A full-screen pass that hands its NDC corners on in a texture coordinate (`r2.xy = v1.xy;`, read
@@ -1140,10 +1147,8 @@ void main() {
   gl_Position = vec4(p, 0.0, 1.0);
 }
 )";
-  const std::vector<uint32_t> fullScreen = fullScreenVert_;
-  fullScreenVert_ = compileOriginal("ndc_corners.vert", ndcCornersVert, TranspileOptions{});
-  checkScreenToWorld("4a5b6c7d8e9f0126-ps_replace.txt", text.c_str(), "dump screen to world, NDC in a texcoord");
-  fullScreenVert_ = fullScreen;
+  checkScreenToWorldAfter("ndc_corners.vert", ndcCornersVert, "4a5b6c7d8e9f0126-ps_replace.txt", text.c_str(),
+                          "dump screen to world, NDC in a texcoord");
 }
 
 // The direction from the camera, p - c (as a reflection or a fog ray reads it), in both forms: this

@@ -158,7 +158,18 @@ class Evaluator {
   // product, the parts of a quotient, what an instruction looked into no further read; a value the
   // evaluation lost track of (merged at an endif, written in a loop, read before any write) may
   // depend on anything. Inputs depend on nothing.
-  bool mayDependOn(int id, int on) const { return dependsWalk(id, on); }
+  bool mayDependOn(int id, int on) const {
+    bool depends = false;
+    walkComputedFrom(values_, id, [&](int at) {
+      const Value& v = values_[at];
+      if (at == on || (v.op == SIZE_MAX && v.from.empty() && v.sources.empty())) {  // or lost track of
+        depends = true;
+        return Walk::Stop;
+      }
+      return v.op == SIZE_MAX && v.from.empty() ? Walk::Past : Walk::Into;  // an input: computed from nothing
+    });
+    return depends;
+  }
 
  private:
   int fresh(std::set<Source> sources, size_t op) {
@@ -177,18 +188,6 @@ class Evaluator {
     v.op = op;
     values_.push_back(std::move(v));
     return static_cast<int>(values_.size()) - 1;
-  }
-  bool dependsWalk(int id, int on) const {
-    bool depends = false;
-    walkComputedFrom(values_, id, [&](int at) {
-      const Value& v = values_[at];
-      if (at == on || (v.op == SIZE_MAX && v.from.empty() && v.sources.empty())) {  // or lost track of
-        depends = true;
-        return Walk::Stop;
-      }
-      return v.op == SIZE_MAX && v.from.empty() ? Walk::Past : Walk::Into;  // an input: computed from nothing
-    });
-    return depends;
   }
 
   Read read(const Src& s, uint32_t component) {

@@ -5,6 +5,7 @@
 #include "transpiler/d3dasm/asm_evaluation.h"
 #include "transpiler/d3dasm/asm_interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -75,35 +76,30 @@ std::vector<AsmMovedLane> findAsmMovedLanes(const Program& program) {
   evaluation.run();
   const auto& exits = evaluation.exits();
   if (exits.empty()) return {};
-  std::map<std::pair<uint32_t, uint32_t>, AsmMovedLane> taken;
-  std::map<std::pair<uint32_t, uint32_t>, bool> refused;
-  for (const auto& exit : exits) {
-    auto x = exit.outputs.find({*p.position, 0});
-    if (x == exit.outputs.end()) return {};
-    for (const auto& [reg, mask] : p.outputMasks) {
-      if (reg == *p.position) continue;
-      for (uint32_t lane = 0; lane < 4; ++lane) {
-        if (!(mask & (1u << lane))) continue;
-        const std::pair<uint32_t, uint32_t> at{reg, lane};
-        auto written = exit.outputs.find(at);
-        std::optional<Move> move;
-        if (written != exit.outputs.end()) move = moveOf(evaluation, written->second, x->second);
-        auto before = taken.find(at);
-        if (&exit == &exits.front() && move) {
-          const size_t op = evaluation.values()[written->second].op;
-          taken[at] = {reg, lane, move->coefficient, move->copy, op == SIZE_MAX ? 0 : p.ops[op].line};
-        } else if (before != taken.end() &&
-                   (!move || move->copy != before->second.copy || move->coefficient != before->second.coefficient)) {
-          refused[at] = true;
-        } else if (&exit != &exits.front() && move && before == taken.end()) {
-          refused[at] = true;
-        }
-      }
+  for (const auto& exit : exits)
+    if (!exit.outputs.count({*p.position, 0})) return {};
+  // How lane `at` moves at one return, if it does.
+  auto moveAt = [&](const Evaluator::Exit& exit, std::pair<uint32_t, uint32_t> at) -> std::optional<Move> {
+    auto written = exit.outputs.find(at);
+    if (written == exit.outputs.end()) return std::nullopt;
+    return moveOf(evaluation, written->second, exit.outputs.at({*p.position, 0}));
+  };
+  std::vector<AsmMovedLane> lanes;
+  for (const auto& [reg, mask] : p.outputMasks) {
+    if (reg == *p.position) continue;
+    for (uint32_t lane = 0; lane < 4; ++lane) {
+      if (!(mask & (1u << lane))) continue;
+      const std::optional<Move> move = moveAt(exits.front(), {reg, lane});
+      // Taken only where it moves the same way at every return.
+      const bool everywhere = move && std::all_of(exits.begin() + 1, exits.end(), [&](const Evaluator::Exit& exit) {
+                                auto there = moveAt(exit, {reg, lane});
+                                return there && there->copy == move->copy && there->coefficient == move->coefficient;
+                              });
+      if (!everywhere) continue;
+      const size_t op = evaluation.values()[exits.front().outputs.at({reg, lane})].op;
+      lanes.push_back({reg, lane, move->coefficient, move->copy, op == SIZE_MAX ? 0 : p.ops[op].line});
     }
   }
-  std::vector<AsmMovedLane> lanes;
-  for (const auto& [at, lane] : taken)
-    if (!refused.count(at)) lanes.push_back(lane);
   return lanes;
 }
 
