@@ -85,7 +85,8 @@ std::vector<AsmMovedLane> findAsmMovedLanes(const Program& program) {
     return moveOf(evaluation, written->second, exit.outputs.at({*p.position, 0}));
   };
   std::vector<AsmMovedLane> lanes;
-  for (const auto& [reg, mask] : p.outputMasks) {
+  for (const auto& output : p.outputMasks) {
+    const uint32_t reg = output.first, mask = output.second;  // (clang 14 captures no structured binding)
     if (reg == *p.position) continue;
     for (uint32_t lane = 0; lane < 4; ++lane) {
       if (!(mask & (1u << lane))) continue;
