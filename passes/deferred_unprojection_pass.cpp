@@ -351,6 +351,24 @@ void decideProducts(const std::vector<Product>& products, const std::set<uint32_
 // each one found becomes a text fix for the HLSL splice (the module is not changed: the register
 // copy it is found on is not the module); otherwise, or where the text cannot carry it, it is
 // reported with the reason. True when a text fix was recorded.
+// The construct and form a found cbuffer-row product is reported as.
+void nameTheForm(const RowProductTextFix& fix, ViewDependentUse& entry) {
+  entry.construct = fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)"
+                    : fix.uvOfTheDepthTexture ? "matrix in cbuffer rows * (uv, depth, 1)"
+                    : fix.scaleFromTheMatrix  ? "matrix in cbuffer rows * (screen coordinate, depth, 1)"
+                                                : "matrix in cbuffer rows * vector";
+  entry.form = fix.scaledByDepth
+                   ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"
+               : fix.uvOfTheDepthTexture
+                   ? "position rebuilt through a matrix from UV space held as four cbuffer rows (decompiled mul; the "
+                     "UV is the one the depth is sampled at, NDC = 2u - 1: half the matrix's column of u)"
+               : fix.scaleFromTheMatrix
+                   ? "position rebuilt through a matrix from the screen coordinate as the shader reads it (a pixel "
+                     "position or a UV) held as four cbuffer rows (decompiled mul; the coordinate's half-width from "
+                     "the matrix's optical axis, at run time; a view vector from its camera is not corrected)"
+                   : "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
+}
+
 bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
   if (ctx.source.language != SourceLanguage::Hlsl || !hasCbufferRows(ctx.module)) return false;
   const spirv::Module* registers = ctx.analyses.registerSsaCopy();
@@ -384,15 +402,7 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
       facts.leftAlone.push_back(entry);
       continue;
     }
-    entry.construct = p.fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)"
-                      : p.fix.uvOfTheDepthTexture ? "matrix in cbuffer rows * (uv, depth, 1)"
-                                                  : "matrix in cbuffer rows * vector";
-    entry.form = p.fix.scaledByDepth
-                     ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"
-                 : p.fix.uvOfTheDepthTexture
-                     ? "position rebuilt through a matrix from UV space held as four cbuffer rows (decompiled mul; the "
-                       "UV is the one the depth is sampled at, NDC = 2u - 1: half the matrix's column of u)"
-                     : "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
+    nameTheForm(p.fix, entry);
     entry.matrix = p.rows;
     entry.depth = joined(p.z.textures);
     std::set<std::string> ndc = p.x.inputs;
@@ -406,7 +416,10 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     }
     std::string column;
     for (size_t i = 0; i < 4; ++i) column += (i ? ", " : "") + (p.fix.present[i] ? p.fix.column[i] : std::string("-"));
-    entry.fix = "q - (" + column + ") * " + (p.fix.scaledByDepth ? "s.x*(|z| - s.y)*sign(z)" : "s.x*(1 - s.y*q.w)") +
+    entry.fix = "q - (" + column + ") * " +
+                (p.fix.scaledByDepth        ? "s.x*(|z| - s.y)*sign(z)"
+                 : p.fix.scaleFromTheMatrix ? "s.x*(1 - s.y*q.w) * h (h the coordinate's half-width the matrix shows)"
+                                            : "s.x*(1 - s.y*q.w)") +
                 " after line " + std::to_string(p.fix.afterLine) +
                 (p.fix.present[3] ? ", before the divide" : " (the point has no w: an affine map)");
     facts.fixed.push_back(entry);

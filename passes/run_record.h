@@ -203,6 +203,14 @@ struct RowProductTextFix {
   // The pixel's x and y are the UV the depth is sampled at (no `* 2 - 1`): the matrix maps UV
   // space, its column of u twice InvM's column of NDC x, so `column` holds half of it.
   bool uvOfTheDepthTexture = false;
+  // The pixel's x is a screen coordinate of unknown scale as the shader reads it (a pixel position,
+  // a UV not the depth's, or what an input carries): the correction's column is `column` times the
+  // coordinate's half-width h, which the matrix itself shows (docs/3dmigoto.md): its optical axis,
+  // the coordinate where NDC x is 0, is at h from the coordinate's left edge (0 for a UV or a pixel
+  // position), and at 0 for NDC (h = 1). `columnZ` and `translation` name InvM's column of the
+  // depth and its constant column, i = 0..3, for that run-time computation.
+  bool scaleFromTheMatrix = false;
+  std::array<std::string, 4> columnZ, translation;
 };
 
 // A fix only the source text carries: a view-space x rebuilt from depth one component at a time,

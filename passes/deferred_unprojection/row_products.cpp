@@ -381,6 +381,18 @@ std::optional<Lane> screenPartOf(Decomposer& d, Lane term, Lane z) {
   return std::nullopt;
 }
 
+// The columns the run-time half-width of the screen coordinate reads (RowProductTextFix::
+// scaleFromTheMatrix), as the source names them: the depth's and the constant one.
+void nameTheScalesColumns(const spirv::Module& registers, const std::array<const Member*, 4>& q, Lane z, RowProduct& p) {
+  p.fix.scaleFromTheMatrix = true;
+  for (uint32_t i = 0; i < 4; ++i) {
+    p.fix.columnZ[i] = elementText(registers, q[i]->byTerm.at(z));
+    p.fix.translation[i] = elementText(registers, q[i]->translation);
+    if (p.fix.columnZ[i].empty() || p.fix.translation[i].empty())
+      p.reason = "a matrix element is not a cbuffer element the source can name";
+  }
+}
+
 std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const spirv::Module& registers = a.registers;
   SourceAnalysis& flow = a.flow;
@@ -460,9 +472,13 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       uv = screenX && screenY && depthSampledAt(d, *z, *screenX, *screenY);
       notNdc = uv || plain->fragCoord;
     }
-    if (notNdc && !uv)
+    // A coordinate of unknown scale into a matrix with a w: the matrix shows the scale (its optical
+    // axis), computed where the correction runs. The screen-to-world form's is not derived here.
+    const bool scaleFromTheMatrix = notNdc && !uv && !*scaled && q[0] && q[1] && q[2] && q[3];
+    if (notNdc && !uv && !scaleFromTheMatrix)
       p.reason = "the pixel's x is a texture coordinate or pixel position as it is, not NDC (no -1 offset): the "
                  "matrix may map UV space, whose column is not the correction's; left for a person";
+    if (scaleFromTheMatrix) nameTheScalesColumns(registers, q, *z, p);
     if (*scaled) {
       for (const Lane& term : {*x, *y}) p.scaledTerms.insert({lines.lineOf(d.canonical(term).id), d.canonical(term).lane});
       p.fix.scaledByDepth = true;
@@ -471,7 +487,9 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       if (!p.fix.depthLine && p.reason.empty()) p.reason = "the depth is computed outside the main file (an #include or a macro)";
     }
     auto halvedForUv = [uv](std::string element) { return uv && !element.empty() ? "(0.5 * " + element + ")" : element; };
-    if (q[0] && q[1] && q[2] && (q[3] || *scaled)) p.cameras = findCameraVectors(a, q, *x, *z, *scaled);
+    // (A camera moved by the scaled column is not written: the camera block has no scale of its own.)
+    if (q[0] && q[1] && q[2] && (q[3] || *scaled) && !p.fix.scaleFromTheMatrix)
+      p.cameras = findCameraVectors(a, q, *x, *z, *scaled);
     for (CameraTextFix& camera : p.cameras)
       for (std::string& element : camera.columnX) element = halvedForUv(element);
     p.fix.uvOfTheDepthTexture = uv;

@@ -564,12 +564,17 @@ struct DumpFeed {
   // The matrix maps UV space: the inverse view-projection times uvToNdc() is uploaded (and the
   // sampler bound).
   bool uvSpace = false;
+  // The matrix maps pixel positions (SV_Position's x and y as they are): the inverse view-projection
+  // times pixelToNdc() is uploaded.
+  bool pixelSpace = false;
   // A sampler at set 1, binding 3 (the dump's `SamplerState s3_s : register(s3, space1)`).
   bool sampler = false;
 };
 
 // NDC from the depth buffer's UV: ndc = 2 uv - 1 in x and y (Vulkan's y runs down, as the UV does).
 Mat4 uvToNdc() { return {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1, 0, -1, -1, 0, 1}; }
+// NDC from the pixel position: ndc = 2 p / size - 1 in x and y (exact in fp32: the size is a power of 2).
+Mat4 pixelToNdc() { return {2.0 / kSize, 0, 0, 0, 0, 2.0 / kSize, 0, 0, 0, 0, 1, 0, -1, -1, 0, 1}; }
 
 class DeferredRender : public ::testing::Test {
  protected:
@@ -627,7 +632,9 @@ class DeferredRender : public ::testing::Test {
   RenderResult renderLighting(const GBuffer& g, const std::vector<uint32_t>& frag, const Mat4& inverseViewProj,
                               const Transpiled* eyeParams, double eye, DumpFeed dump = {}) {
     std::vector<uint8_t> frame;
-    const Mat4 matrix = dump.uvSpace ? multiply(inverseViewProj, uvToNdc()) : inverseViewProj;
+    const Mat4 matrix = dump.uvSpace       ? multiply(inverseViewProj, uvToNdc())
+                        : dump.pixelSpace ? multiply(inverseViewProj, pixelToNdc())
+                                          : inverseViewProj;
     Mat4 uploaded = matrix;
     if (dump.rows)
       for (int c = 0; c < 4; ++c)
@@ -743,7 +750,16 @@ void DeferredRender::checkRebuiltPositions(const char* name, const char* text, c
         std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
         const std::array<double, 4> exact = times(stereoInverse, v);
         std::array<double, 3> truthBound, fixBound;
-        if (dump && dump->uvSpace) {  // the shader multiplies the UV by the matrix from UV space
+        if (dump && dump->pixelSpace) {  // the pixel position as it is, by the matrix from pixels
+          const std::array<double, 4> pixel = {x + 0.5, y + 0.5, g.depthValues[i], 1.0};
+          const Mat4 stereoF = toDouble(toFloat(multiply(stereoInverse, pixelToNdc())));
+          const Mat4 monoF = toDouble(toFloat(multiply(monoInverse, pixelToNdc())));
+          // The fix's column is the matrix's times the half-width it computes from the matrix.
+          const MatrixHalfWidth h = matrixHalfWidth(monoF);
+          truthBound = positionBound(stereoF, pixel, false, eye * kSeparation, kConvergence);
+          fixBound = positionBound(monoF, pixel, true, eye * kSeparation, kConvergence, kSize / 2.0,
+                                   std::abs(h.value - kSize / 2.0) + h.bound);
+        } else if (dump && dump->uvSpace) {  // the shader multiplies the UV by the matrix from UV space
           const std::array<double, 4> uv = {(x + 0.5) / kSize, (y + 0.5) / kSize, g.depthValues[i], 1.0};
           truthBound = positionBound(toDouble(toFloat(multiply(stereoInverse, uvToNdc()))), uv, false, eye * kSeparation,
                                      kConvergence);
@@ -1200,6 +1216,22 @@ TEST_F(DeferredRender, DumpStyleUvFromTheTextureSizeFixedInItsTextByExecution) {
   text.replace(text.find(uv), uv.size(), "  t2.GetDimensions(0, fDest.x, fDest.y, fDest.z);\n  r2.xy = v0.xy / fDest.xy;\n");
   DumpFeed rows{true, false};
   checkRebuiltPositions("1a2b3c4d5e6f7082-ps_replace.txt", text.c_str(), "dump dp4, UV from the texture's size", &rows);
+}
+
+// A matrix from pixel positions (Unreal's SVPositionToTranslatedWorld: the inverse view-projection
+// times the viewport's inverse): the pixel position goes into the product as the rasterizer hands
+// it on (`r2.xy = v0.xy;`), the depth loaded at the pixel. The correction's column is the
+// matrix's column of x times the half-width in pixels, which the matrix itself shows (its optical
+// axis); the bound counts that computation's rounding (matrixHalfWidth). Before, reported and left
+// alone (a coordinate of unknown scale).
+TEST_F(DeferredRender, DumpStyleMatrixFromPixelPositionsFixedInItsTextByExecution) {
+  std::string text = kDumpDp4Lighting;
+  const std::string ndc = "  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n";
+  ASSERT_NE(text.find(ndc), std::string::npos);
+  text.replace(text.find(ndc), ndc.size(), "  r2.xy = v0.xy;\n");
+  DumpFeed rows{true, false};
+  rows.pixelSpace = true;
+  checkRebuiltPositions("1a2b3c4d5e6f7084-ps_replace.txt", text.c_str(), "dump dp4, matrix from pixel positions", &rows);
 }
 
 // A dump (kDumpPrologue's) with the depth sampled at the pixel's UV (`v0.xy * cb0[4].zw`, no

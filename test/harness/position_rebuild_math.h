@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <cmath>
 #include <utility>
 
@@ -84,8 +85,12 @@ inline std::array<double, 3> quotientBound(const std::array<double, 4>& q, const
 // 1e-6 of the bound and ignored.
 // `columnScale`: the fix subtracts that much of column 0 (a matrix from UV space: half its column
 // of u, InvM's column of NDC x; a power of two, so no rounding of its own).
+// `scaleError`: the shader computes the column's scale itself (a half-width it derives from the
+// matrix, matrixHalfWidth), off from `columnScale` by at most this much; then k is multiplied by the
+// scale in one more rounding, |d(k h)| <= |dk| |h| + |k| scaleError + u |k h|.
 inline std::array<double, 3> positionBound(const Mat4& a, const std::array<double, 4>& v, bool fixed, double eyeSeparation,
-                                          double convergence, double columnScale = 1.0) {
+                                          double convergence, double columnScale = 1.0,
+                                          std::optional<double> scaleError = std::nullopt) {
   const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
   std::array<double, 4> q{}, dq{};
   for (int i = 0; i < 4; ++i) {
@@ -101,6 +106,11 @@ inline std::array<double, 3> positionBound(const Mat4& a, const std::array<doubl
     double k = es * (1 - c * q[3]);
     double dk = std::abs(es) * (c * dq[3] + u * c * std::abs(q[3]) + u * std::abs(1 - c * q[3])) + 2 * u * std::abs(k);
     double dw = dq[3];
+    if (scaleError) {
+      dk = dk * columnScale + std::abs(k) * *scaleError + u * std::abs(k * columnScale);
+      k *= columnScale;
+      columnScale = 1.0;
+    }
     for (int i = 0; i < 4; ++i) {
       double column0 = a[i] * columnScale;
       q[i] -= column0 * k;
@@ -109,6 +119,34 @@ inline std::array<double, 3> positionBound(const Mat4& a, const std::array<doubl
     dq[3] = std::max(dq[3], dw);
   }
   return quotientBound(q, dq);
+}
+
+// The half-width h of the screen coordinate a matrix `a` (column-major: a[4j + i], column j) takes,
+// as the text fix computes it in fp32 (pixel.cpp, screenScaleLines): with x, z, t the columns of the
+// coordinate, the depth and the constant, A = t.xyz z.w - z.xyz t.w and
+//     h = -dot(A, x.xyz) / (dot(x.xyz, x.xyz) z.w).
+// `value` in exact arithmetic on a's elements; `bound`, first order on fp32 evaluation: each A_i
+// off by 2u (|t_i z.w| + |z_i t.w|), the dot product adding gamma_4 sum |A_i x_i|, the denominator
+// gamma_4 relative, the quotient u.
+struct MatrixHalfWidth {
+  double value = 0, bound = 0;
+};
+inline MatrixHalfWidth matrixHalfWidth(const Mat4& a) {
+  const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
+  double numerator = 0, numeratorError = 0, magnitude = 0, columnLength = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double difference = a[12 + i] * a[11] - a[8 + i] * a[15];
+    const double differenceError = 2 * u * (std::abs(a[12 + i] * a[11]) + std::abs(a[8 + i] * a[15]));
+    numerator += difference * a[i];
+    numeratorError += differenceError * std::abs(a[i]);
+    magnitude += std::abs(difference * a[i]);
+    columnLength += a[i] * a[i];
+  }
+  numeratorError += gamma4 * magnitude;
+  MatrixHalfWidth h;
+  h.value = -numerator / (columnLength * a[11]);
+  h.bound = std::abs(h.value) * (numeratorError / std::abs(numerator) + 2 * gamma4 + u);
+  return h;
 }
 
 // The same bound for the screen-to-world form, q = fl(M v') with v' = (fl(x z), fl(y z), z, 1) for

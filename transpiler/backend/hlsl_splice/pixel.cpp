@@ -193,6 +193,24 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
 
 std::string indentOf(const std::string& line) { return line.substr(0, line.find_first_not_of(" \t")); }
 
+// The screen coordinate's half-width h, from M (RowProductTextFix::scaleFromTheMatrix): with x, z
+// and t M's columns of the coordinate, the depth and the constant (x.w = 0), the camera is z.xyz /
+// z.w and the coordinate c0 on the optical axis solves dot(q(c0).xyz / q.w - camera, x.xyz) = 0:
+//     c0 = -dot(t.xyz * z.w - z.xyz * t.w, x.xyz) / (dot(x.xyz, x.xyz) * z.w)
+// (the axis is orthogonal to the image's right and up, M's columns of x and y). A UV or a pixel
+// position starts at 0, so c0 is its half-width; NDC is centred (c0 = 0, up to a jitter): h = 1.
+// `d` is scaled by h.
+std::string screenScaleLines(const RowProductTextFix& fix, const std::string& d, const std::string& in,
+                             const std::string& nl) {
+  const std::string x = std::string(kPrefix) + "_column", h = std::string(kPrefix) + "_half_width";
+  auto vec3 = [](const std::array<std::string, 4>& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
+  std::string t = in + "float3 " + x + " = " + vec3(fix.column) + ";" + nl;
+  t += in + "float " + h + " = -dot(" + vec3(fix.translation) + " * " + fix.columnZ[3] + " - " + vec3(fix.columnZ) +
+       " * " + fix.translation[3] + ", " + x + ") / (dot(" + x + ", " + x + ") * " + fix.columnZ[3] + ");" + nl;
+  t += in + d + " *= " + h + " > 0.25 ? " + h + " : 1;" + nl;
+  return t;
+}
+
 std::string correctionBlock(const RowProductTextFix& fix, const Located& at, const std::string& indent,
                             const std::string& nl) {
   const std::string s = std::string(kPrefix) + "_stereo", d = std::string(kPrefix) + "_d", in = indent + "  ";
@@ -204,6 +222,7 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
                   (fix.scaledByDepth         ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
                    : fix.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over cbuffer rows) ----"
+                   : fix.scaleFromTheMatrix  ? ": q = M * (screen, depth, 1) over cbuffer rows, the screen's scale from M) ----"
                                              : ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----") +
                   nl;
   t += indent + "{" + nl;
@@ -212,6 +231,7 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
     t += in + "float " + d + " = " + s + ".x * (abs(" + at.depth + ") - " + s + ".y) * sign(" + at.depth + ");" + nl;
   else
     t += in + "float " + d + " = " + s + ".x * (1 - " + s + ".y * " + at.component[3] + ");" + nl;
+  if (fix.scaleFromTheMatrix) t += screenScaleLines(fix, d, in, nl);
   for (size_t i = 0; i < 4; ++i)
     if (fix.present[i]) t += in + at.component[i] + " -= " + fix.column[i] + " * " + d + ";" + nl;
   t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
