@@ -404,7 +404,7 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     }
     nameTheForm(p.fix, entry);
     entry.matrix = p.rows;
-    entry.depth = joined(p.z.textures);
+    entry.depth = p.z.texel ? joined(p.z.textures) : "the fragment's own depth (SV_Position.z)";
     std::set<std::string> ndc = p.x.inputs;
     ndc.insert(p.y.inputs.begin(), p.y.inputs.end());
     entry.ndc = joined(ndc);

@@ -287,6 +287,13 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
   return found;
 }
 
+// The fragment's own depth, SV_Position.z read as it is: a forward pass (Unreal's materials:
+// `mul(float4(SvPosition.xyz, 1), View.SVPositionToTranslatedWorld)`) rebuilds the point it shades
+// from it, with the pixel position beside it, as a deferred pass does from the depth buffer.
+bool fragmentDepth(const Sources& s) {
+  return s.fragmentDepth && !s.fragCoord && !s.varying && !s.texel && !s.uniform && !s.arithmetic;
+}
+
 // Whether the three terms are lanes x, y and z of one interpolated input, no texel in them.
 bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<Lane, Coefficient>& terms) {
   uint32_t lanes = 0;
@@ -434,7 +441,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       const bool plainX = screen(s, 1u), plainY = screen(s, 2u), scaledX = scaledScreen(s, 1u), scaledY = scaledScreen(s, 2u);
       if ((plainX || scaledX) && !x && (!scaled || *scaled == scaledX)) x = term, p.x = s, scaled = scaledX;
       else if ((plainY || scaledY) && !y && (!scaled || *scaled == scaledY)) y = term, p.y = s, scaled = scaledY;
-      else if (texelOnly(s) && !z) z = term, p.z = s;
+      else if ((texelOnly(s) || fragmentDepth(s)) && !z) z = term, p.z = s;
       else other = true;
     }
     if (other || !x || !y || !z) {

@@ -124,7 +124,11 @@ Sources SourceRules::moduleVariable(const Instruction& variable, const AccessPat
       if (isFragCoord(m, root, path)) {
         // Only x, y are the pixel position; z (the fragment's depth) and w are the same per eye.
         size_t component = m.hasDecoration(root, spv::DecorationBuiltIn) ? 0 : 1;
-        if (path.size() > component && (path[component] == 2 || path[component] == 3)) return unknown();
+        if (path.size() > component && (path[component] == 2 || path[component] == 3)) {
+          Sources depthOrW = unknown();
+          depthOrW.fragmentDepth = path[component] == 2;
+          return depthOrW;
+        }
         s.fragCoord = true;
         s.inputLanes = inputLanesOf(m, root, path);
         s.inputs.insert(hlsl_ ? "SV_Position" : "gl_FragCoord");

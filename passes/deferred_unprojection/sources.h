@@ -28,6 +28,9 @@ struct Sources {
   bool arithmetic = false;            // computed, not only moved
   bool constantOtherThanOne = false;  // some constant leaf is not the float 1.0
   bool eyeParameter = false;          // stereoshift's own eye parameters: injected code
+  // gl_FragCoord.z / SV_Position.z, the fragment's own depth: the same per eye, so `other` as far as
+  // a pixel position goes; a forward pass's rebuild reads it as its depth (row_products.cpp).
+  bool fragmentDepth = false;
   // Which lanes of gl_FragCoord / of a vector input the value is computed from (bit k: lane k; a
   // whole vector read sets every lane it has): tells a pixel's x from its y.
   uint32_t inputLanes = 0;
@@ -44,6 +47,7 @@ struct Sources {
     arithmetic |= o.arithmetic;
     constantOtherThanOne |= o.constantOtherThanOne;
     eyeParameter |= o.eyeParameter;
+    fragmentDepth |= o.fragmentDepth;
     inputLanes |= o.inputLanes;
     inputs.insert(o.inputs.begin(), o.inputs.end());
     textures.insert(o.textures.begin(), o.textures.end());

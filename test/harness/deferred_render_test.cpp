@@ -335,6 +335,43 @@ const std::string kDumpViewVector = kDumpPrologue + R"(  r3.xyzw = cb0[1].xyzw *
 }
 )";
 
+// A forward pass's dump (Unreal's materials: `mul(float4(SvPosition.xyz, 1),
+// View.SVPositionToTranslatedWorld)`): the point it shades rebuilt from its own pixel position and
+// depth, SV_Position read as it is, through a matrix from pixels held in cb0[0..3] as columns (a
+// `mad` chain). Drawn over the scene's geometry with the eye's projection; its cbuffer at b1 (set 0,
+// binding 1: the geometry's vertex stage has its camera at binding 0). POSITION_COMPONENT writes the
+// float's bits as RGBA8.
+const std::string kDumpForwardFromThePixel = R"(// ---- Created with 3Dmigoto v1.3.16 (a test dump written for stereoshift)
+cbuffer cb0 : register(b1)
+{
+  float4 cb0[7];
+}
+
+
+// 3Dmigoto declarations
+#define cmp -
+Texture2D<float4> StereoParams : register(t125);
+
+
+void main(
+  float4 v0 : SV_POSITION0,
+  out float4 o0 : SV_Target0)
+{
+  float4 r0,r1,r2,r3;
+  uint4 bitmask, uiDest;
+  float4 fDest;
+
+  r3.xyzw = cb0[1].xyzw * v0.yyyy;
+  r3.xyzw = v0.xxxx * cb0[0].xyzw + r3.xyzw;
+  r3.xyzw = v0.zzzz * cb0[2].xyzw + r3.xyzw;
+  r3.xyzw = cb0[3].xyzw + r3.xyzw;
+  r2.xyz = r3.xyz / r3.www;
+  uiDest.x = asuint(r2[POSITION_COMPONENT]);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+}
+)";
+
 // The view-ray form as a decompiled dump: the linear depth (the G-buffer's positive view depth, set 1
 // binding 2) times the NDC, times the inverse projection's scales read from the camera rows
 // (cb0[0].x = 1/P00, cb0[1].y = 1/P11), one component per statement; z = -depth.
@@ -567,6 +604,9 @@ struct DumpFeed {
   // The matrix maps pixel positions (SV_Position's x and y as they are): the inverse view-projection
   // times pixelToNdc() is uploaded.
   bool pixelSpace = false;
+  // A forward pass: the shader is drawn over the scene's geometry with the eye's projection (depth
+  // tested), its cbuffer at set 0, binding 1, instead of over a full-screen triangle.
+  bool forward = false;
   // A sampler at set 1, binding 3 (the dump's `SamplerState s3_s : register(s3, space1)`).
   bool sampler = false;
 };
@@ -591,13 +631,19 @@ class DeferredRender : public ::testing::Test {
     vertexCount_ = static_cast<uint32_t>(scene().size() * 6);
   }
 
-  // The G-buffer of one eye, rendered with that eye's stereo projection.
-  GBuffer renderGBuffer(double eye) {
-    GBuffer g;
+  // The scene's camera block (kGBufferVert's) for one eye: its stereo projection and the view.
+  static std::vector<uint8_t> cameraOf(double eye) {
     std::vector<uint8_t> camera;
     auto proj = toFloat(projection(eye)), viewMatrix = toFloat(view());
     append(camera, proj.data(), 16);
     append(camera, viewMatrix.data(), 16);
+    return camera;
+  }
+
+  // The G-buffer of one eye, rendered with that eye's stereo projection.
+  GBuffer renderGBuffer(double eye) {
+    GBuffer g;
+    const std::vector<uint8_t> camera = cameraOf(eye);
     auto pass = [&](const std::vector<uint32_t>& frag, bool readDepth) {
       RenderRequest request;
       request.width = request.height = kSize;
@@ -673,6 +719,14 @@ class DeferredRender : public ::testing::Test {
           SampledTexture{0, 125, 1, 1, {float(eye * kSeparation), kConvergence, float(eye), 0.0f}});
     draw.depthTest = false;
     draw.depthWrite = false;
+    if (dump.forward) {
+      draw.pipeline.stages[0] = {VK_SHADER_STAGE_VERTEX_BIT, gbufferVert_, "main"};
+      draw.pipeline.vertices = vertices_;
+      draw.pipeline.vertexCount = vertexCount_;
+      draw.pipeline.uniformBuffers[0] = {0, 1, frame};
+      draw.pipeline.uniformBuffers.push_back({0, 0, cameraOf(eye)});
+      draw.depthTest = draw.depthWrite = true;
+    }
     request.draws = {draw};
     RenderResult r = context_->render(request);
     EXPECT_TRUE(r.ok()) << r.error;
@@ -1232,6 +1286,18 @@ TEST_F(DeferredRender, DumpStyleMatrixFromPixelPositionsFixedInItsTextByExecutio
   DumpFeed rows{true, false};
   rows.pixelSpace = true;
   checkRebuiltPositions("1a2b3c4d5e6f7084-ps_replace.txt", text.c_str(), "dump dp4, matrix from pixel positions", &rows);
+}
+
+// A forward pass (kDumpForwardFromThePixel) rebuilds the point it shades from its own SV_Position,
+// x, y and z read as they are, through the matrix from pixels: drawn over the scene with the eye's
+// projection, the converted text (mono matrix, StereoParams) must give the eye's exact point within
+// the rounding bound, the original with the mono matrix must not. Before, the fragment's own depth
+// was not taken as a depth, and the rebuild went unseen.
+TEST_F(DeferredRender, DumpStyleForwardRebuildFromThePixelFixedInItsTextByExecution) {
+  DumpFeed forward{false, false};
+  forward.pixelSpace = forward.forward = true;
+  checkRebuiltPositions("1a2b3c4d5e6f7085-ps_replace.txt", kDumpForwardFromThePixel.c_str(),
+                        "forward dump, SV_Position through a matrix from pixels", &forward);
 }
 
 // A dump (kDumpPrologue's) with the depth sampled at the pixel's UV (`v0.xy * cb0[4].zw`, no
