@@ -211,7 +211,7 @@ struct Pixel {
 // The world position the program writes for one pixel.
 std::array<double, 3> rebuild(const Program& program, const Pixel& p, const std::vector<Vec4>& cb1, Vec4 stereo) {
   Machine m;
-  m.inputs[0] = vec(p.x, p.y, 0.0f, 1.0f);
+  m.inputs[0] = vec(p.x, p.y, p.depth, 1.0f);  // SV_Position: z the fragment's depth (a forward pass reads it)
   // A copy of the clip position's x and y (the pixel's NDC times a w) in v1, that w alone in v2, as a
   // shader that divides them reads them.
   const float w = 1.75f, nx = 2.0f * p.x / kSize - 1.0f, ny = 1.0f - 2.0f * p.y / kSize;
@@ -243,7 +243,13 @@ std::unique_ptr<Program> decoded(const std::string& text) {
 // ScreenToWorld = inverse(P V) * (the map from (ndc * z, z, 1) to clip space).
 // `uvSpace`: the shader multiplies (uv, depth, 1) by inverse(P V) * (the map from the UV to NDC,
 // ndc = (2u - 1, 1 - 2v)), the UV being the one the depth is sampled at.
-void checkByExecution(const char* shader, bool rows, const char* tag, bool screenToWorld = false, bool uvSpace = false) {
+// `pixelSpace`: the shader multiplies (SV_Position.xy as it is, depth, 1) by inverse(P V) * (the map
+// from the pixel position to NDC); the fix computes the pixel's half-width from that matrix, and its
+// bound counts that computation (harness::matrixHalfWidth).
+// `derivedScale` (with `uvSpace`): the fix computes the UV's half-width from the matrix likewise (the
+// depth is not sampled at the UV, which would show it).
+void checkByExecution(const char* shader, bool rows, const char* tag, bool screenToWorld = false, bool uvSpace = false,
+                      bool pixelSpace = false, bool derivedScale = false) {
   AsmShiftResult converted = shiftAssembly(shader, {});
   ASSERT_TRUE(converted.ok) << converted.error.message;
   ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
@@ -256,6 +262,7 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
   toClip[10] = -mono[10];
   toClip[14] = mono[14];
   const Mat4 uvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
+  const Mat4 pixelToNdc = {2.0 / kSize, 0, 0, 0, 0, -2.0 / kSize, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
   // (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1): the screen-to-world form from UV space.
   const Mat4 scaledUvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, -1, 1, 1, 0, 0, 0, 0, 1};
   auto matrixOf = [&](double eye) {
@@ -264,6 +271,7 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
       const Mat4 map = harness::multiply(inverse, toClip);
       return uvSpace ? harness::multiply(map, scaledUvToNdc) : map;
     }
+    if (pixelSpace) return harness::multiply(inverse, pixelToNdc);
     return uvSpace ? harness::multiply(inverse, uvToNdc) : inverse;
   };
   const Mat4 monoInverse = matrixOf(0);
@@ -273,6 +281,8 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
     const std::vector<Vec4> monoRows = constants(monoInverse, rows), stereoRows = constants(stereoInverse, rows);
     const Vec4 stereoParams = vec(static_cast<float>(eye * kSeparation), kConvergence, static_cast<float>(eye), 0.0f);
     const double es = static_cast<float>(eye * kSeparation);
+    const harness::MatrixHalfWidth halfWidth = harness::matrixHalfWidth(monoF);
+    const double scale = pixelSpace ? kSize / 2.0 : 0.5;  // the coordinate's half-width
     size_t pixels = 0, outside = 0, baselineOutside = 0;
     double worstTruth = 0, worstFix = 0;
     for (uint32_t py = 4; py < kSize; py += 8)
@@ -285,8 +295,9 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         const double nx = uvSpace ? pixel.x / kSize : 2.0 * pixel.x / kSize - 1.0;
         const double ny = uvSpace ? pixel.y / kSize : 1.0 - 2.0 * pixel.y / kSize;
         const std::array<double, 4> v = screenToWorld ? std::array<double, 4>{nx * depth, ny * depth, depth, 1.0}
-                                        : uvSpace ? std::array<double, 4>{pixel.x / kSize, pixel.y / kSize, depth, 1.0}
-                                                  : std::array<double, 4>{nx, ny, depth, 1.0};
+                                        : uvSpace    ? std::array<double, 4>{pixel.x / kSize, pixel.y / kSize, depth, 1.0}
+                                        : pixelSpace ? std::array<double, 4>{pixel.x, pixel.y, depth, 1.0}
+                                                     : std::array<double, 4>{nx, ny, depth, 1.0};
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
@@ -297,7 +308,10 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
                                         : harness::positionBound(stereoF, v, false, 0.0, kConvergence);
         auto fixBound = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence,
                                                                     uvSpace ? 0.5 : 1.0)
-                                      : harness::positionBound(monoF, v, true, es, kConvergence, uvSpace ? 0.5 : 1.0);
+                        : pixelSpace || derivedScale
+                            ? harness::positionBound(monoF, v, true, es, kConvergence, scale,
+                                                     std::abs(halfWidth.value - scale) + halfWidth.bound)
+                                     : harness::positionBound(monoF, v, true, es, kConvergence, uvSpace ? 0.5 : 1.0);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           const double position = exact[c] / exact[3];
@@ -341,14 +355,74 @@ TEST(AsmUnprojection, UvFromTheTextureSizeCorrectedByExecution) {
   ASSERT_NE(shader.find(ndc), std::string::npos);
   shader.erase(shader.find(ndc), ndc.size());
   checkByExecution(shader.c_str(), false, "asm mad, matrix from UV space", false, true);
-  // The unchanged half: the depth loaded at the pixel instead, so the UV's scale is not shown.
+  // The depth loaded at the pixel instead, so the code does not show the UV's scale: the matrix does
+  // (its optical axis), and the fix computes it where it runs. (Before, left alone.)
   const std::string sampled = "sample_l_indexable(texture2d)(float,float,float,float) r0.z, r0.xyxx, t0.yzxw, s0, l(0.000000)\n";
   ASSERT_NE(shader.find(sampled), std::string::npos);
   shader.replace(shader.find(sampled), sampled.size(),
                  "ftoi r1.zw, v0.xxxy\nmov r1.xy, r1.zwzz\nmov r1.zw, l(0,0,0,0)\nld_indexable(texture2d)(float,float,float,float) r0.z, r1.xyzw, t0.yzxw\n");
-  AsmShiftResult fromUv = shiftAssembly(shader, {});
-  EXPECT_TRUE(fromUv.corrections.empty()) << fromUv.output;
-  EXPECT_FALSE(fromUv.leftAlone.empty());
+  checkByExecution(shader.c_str(), false, "asm mad, matrix from UV space, depth loaded", false, true, false, true);
+}
+
+// A matrix from pixel positions (Unreal's SVPositionToTranslatedWorld): SV_Position's x and y into
+// the product as they are, the depth loaded at the pixel. The correction's column is the matrix's
+// times the pixel's half-width, which the fix computes from the matrix's optical axis (before, left
+// alone: a coordinate of unknown scale).
+TEST(AsmUnprojection, MatrixFromPixelPositionsCorrectedByExecution) {
+  std::string shader = kDeferredMadPs;
+  const std::string screen =
+      "mul r0.xy, v0.xyxx, cb0[2].zwzz\n"
+      "sample_l_indexable(texture2d)(float,float,float,float) r0.z, r0.xyxx, t0.yzxw, s0, l(0.000000)\n"
+      "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
+  ASSERT_NE(shader.find(screen), std::string::npos);
+  shader.replace(shader.find(screen), screen.size(),
+                 "ftoi r1.xy, v0.xyxx\n"
+                 "mov r1.zw, l(0,0,0,0)\n"
+                 "ld_indexable(texture2d)(float,float,float,float) r0.z, r1.xyzw, t0.yzxw\n"
+                 "mov r0.xy, v0.xyxx\n");
+  checkByExecution(shader.c_str(), false, "asm mad, matrix from pixel positions", false, false, true);
+  // In row storage (dp4 over cb1[20..23]) the same.
+  const std::string chain = "mul r1.xyzw, r0.yyyy, cb1[21].xyzw\n"
+                            "mad r1.xyzw, r0.xxxx, cb1[20].xyzw, r1.xyzw\n"
+                            "mad r1.xyzw, r0.zzzz, cb1[22].xyzw, r1.xyzw\n"
+                            "add r1.xyzw, r1.xyzw, cb1[23].xyzw\n";
+  ASSERT_NE(shader.find(chain), std::string::npos);
+  shader.replace(shader.find(chain), chain.size(),
+                 "mov r0.w, l(1.000000)\n"
+                 "dp4 r1.x, r0.xyzw, cb1[20].xyzw\n"
+                 "dp4 r1.y, r0.xyzw, cb1[21].xyzw\n"
+                 "dp4 r1.z, r0.xyzw, cb1[22].xyzw\n"
+                 "dp4 r1.w, r0.xyzw, cb1[23].xyzw\n");
+  checkByExecution(shader.c_str(), true, "asm dp4, matrix from pixel positions", false, false, true);
+}
+
+// A forward pass: the point it shades rebuilt from its own SV_Position, x, y and z read as they are
+// (`mad r1.xyzw, v0.zzzz, cb1[22].xyzw, r1.xyzw`), through the matrix from pixel positions. Before,
+// read as a light-space transform of an interpolated position and left alone.
+const char* kForwardFromThePixelPs = R"(//
+// Generated by Microsoft (R) HLSL Shader Compiler 10.1 (a test shader written for stereoshift)
+//
+ps_5_0
+dcl_globalFlags refactoringAllowed
+dcl_constantbuffer cb1[24], immediateIndexed
+dcl_input_ps_siv linear noperspective v0.xyz, position
+dcl_output o0.xyzw
+dcl_temps 1
+mul r0.xyzw, v0.yyyy, cb1[21].xyzw
+mad r0.xyzw, v0.xxxx, cb1[20].xyzw, r0.xyzw
+mad r0.xyzw, v0.zzzz, cb1[22].xyzw, r0.xyzw
+add r0.xyzw, r0.xyzw, cb1[23].xyzw
+div o0.xyz, r0.xyzx, r0.wwww
+mov o0.w, l(1.000000)
+ret
+// Approximately 7 instruction slots used
+)";
+
+TEST(AsmUnprojection, ForwardRebuildFromThePixelCorrectedByExecution) {
+  AsmShiftResult converted = shiftAssembly(kForwardFromThePixelPs, {});
+  ASSERT_EQ(converted.corrections.size(), 1u) << converted.whyUnchanged;
+  EXPECT_EQ(converted.corrections[0].depth, "the fragment's own depth (v0.z)");
+  checkByExecution(kForwardFromThePixelPs, false, "asm forward, SV_Position through a matrix from pixels", false, false, true);
 }
 
 TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
@@ -613,9 +687,9 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   EXPECT_TRUE(shiftAssembly(clobbered, {}).corrections.empty());
 
   // The pixel's x a UV as it is (no `* 2 - 1`), the depth sampled elsewhere (at an interpolated
-  // coordinate): the matrix may map UV space of a scale the shader does not show, whose column is
-  // not the correction's: left for a person, and said. (Sampled at that UV, it is corrected:
-  // UvFromTheTextureSizeCorrectedByExecution.)
+  // coordinate): the code does not show the UV's scale, the matrix does, and the correction computes
+  // it where it runs (checked by execution with the depth loaded at the pixel:
+  // UvFromTheTextureSizeCorrectedByExecution). Before, left for a person.
   std::string uv = kDeferredMadPs;
   const std::string toNdc =
       "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
@@ -624,9 +698,9 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   const std::string sampledAtUv = "r0.z, r0.xyxx, t0.yzxw";
   uv.replace(uv.find(sampledAtUv), sampledAtUv.size(), "r0.z, v1.xyxx, t0.yzxw");
   AsmShiftResult u = shiftAssembly(uv, {});
-  EXPECT_TRUE(u.corrections.empty());
-  EXPECT_EQ(u.output, uv);
-  EXPECT_NE(u.whyUnchanged.find("left for a person"), std::string::npos) << u.whyUnchanged;
+  ASSERT_EQ(u.corrections.size(), 1u) << u.whyUnchanged;
+  EXPECT_NE(u.corrections[0].fix.find("half-width the matrix shows"), std::string::npos) << u.corrections[0].fix;
+  EXPECT_NE(u.output.find("div r3.x, -r3.x, r3.y"), std::string::npos) << u.output;
 
   // The screen-to-world form with the pixel's coordinate a UV (`mul r1.xy, v0.xyxx, cb0[2].zwzz`
   // with no `* 2 - 1`) times the depth: a map from UV or pixel space, whose column is not the

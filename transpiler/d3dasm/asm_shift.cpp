@@ -318,14 +318,44 @@ size_t readsStereoParams(const AsmText& text) {
   return 0;
 }
 
+// d *= h, the screen coordinate's half-width from the matrix (AsmUnprojection::scaleFromTheMatrix;
+// docs/3dmigoto.md): with x, z, t InvM's columns of the coordinate, the depth and the constant,
+// h = -dot(t.xyz z.w - z.xyz t.w, x.xyz) / (dot(x.xyz, x.xyz) z.w), taken where it is over 0.25 (a
+// UV or a pixel position: its half-width), 1 otherwise (NDC). rT holds the parts.
+void appendScreenScale(const AsmUnprojection& u, const std::string& rS, const std::string& rT,
+                       std::vector<std::string>& block) {
+  auto negated = [](const std::string& operand) { return operand[0] == '-' ? operand.substr(1) : "-" + operand; };
+  std::array<std::string, 3> x;
+  for (size_t i = 0; i < 3; ++i) x[i] = (u.columnScale[i] < 0 ? "-" : "") + u.column[i];
+  const char lanes[] = "xyz";
+  for (size_t i = 0; i < 3; ++i) {
+    const std::string a = rT + "." + lanes[i];
+    block.push_back("mul " + a + ", " + u.translation[i] + ", " + u.columnZ[3]);
+    block.push_back("mad " + a + ", " + negated(u.columnZ[i]) + ", " + u.translation[3] + ", " + a);
+  }
+  block.push_back("mul " + rT + ".x, " + rT + ".x, " + x[0]);
+  block.push_back("mad " + rT + ".x, " + rT + ".y, " + x[1] + ", " + rT + ".x");
+  block.push_back("mad " + rT + ".x, " + rT + ".z, " + x[2] + ", " + rT + ".x");
+  block.push_back("mul " + rT + ".y, " + x[0] + ", " + x[0]);
+  block.push_back("mad " + rT + ".y, " + x[1] + ", " + x[1] + ", " + rT + ".y");
+  block.push_back("mad " + rT + ".y, " + x[2] + ", " + x[2] + ", " + rT + ".y");
+  block.push_back("mul " + rT + ".y, " + rT + ".y, " + u.columnZ[3]);
+  block.push_back("div " + rT + ".x, -" + rT + ".x, " + rT + ".y");
+  block.push_back("lt " + rT + ".y, l(0.250000), " + rT + ".x");
+  block.push_back("movc " + rT + ".x, " + rT + ".y, " + rT + ".x, l(1.000000)");
+  block.push_back("mul " + rS + ".w, " + rS + ".w, " + rT + ".x");
+}
+
 // The correction of one position rebuild (see asm_shift.h), after the instruction completing q.
-std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::string& rS, bool sm5) {
+std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::string& rS, const std::string& rT,
+                                         bool sm5) {
   const std::string lines = u.firstLineNumber == u.lastLineNumber
                                 ? "line " + std::to_string(u.lastLineNumber)
                                 : "lines " + std::to_string(u.firstLineNumber) + "-" + std::to_string(u.lastLineNumber);
   std::vector<std::string> block = {
       "this eye's position rebuild (" + lines + (u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over "
                                 : u.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over "
+                                : u.scaleFromTheMatrix  ? ": q = M * (screen, depth, 1), the screen's scale from M, over "
                                                         : ": q = InvM * (ndc, depth, 1) over ") +
           u.rows + ")",
       stereoParamsLoad(rS, sm5),
@@ -342,6 +372,7 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
     block.push_back("mad " + rS + ".w, -" + rS + ".y, " + u.q[3] + ", l(1.000000)");
     block.push_back("mul " + rS + ".w, " + rS + ".w, " + rS + ".x");
   }
+  if (u.scaleFromTheMatrix) appendScreenScale(u, rS, rT, block);
   for (size_t i = 0; i < 4; ++i) {
     if (u.q[i].empty()) continue;  // the w of a point the shader never computes
     if (u.columnScale[i] == 1.0f || u.columnScale[i] == -1.0f) {
@@ -442,14 +473,18 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
   const std::string rS = "r" + std::to_string(d.temps), rT = "r" + std::to_string(d.temps + 1);
   result.scratchTemp = rS;
   Edits edits;
-  bool cameras = false;
+  bool cameras = false, scaled = false;
   for (const AsmUnprojection& u : found) {
     std::vector<std::string>& after = edits.after[u.afterLine];
     if (!after.empty()) continue;  // two rebuilds completed by one instruction: corrected once
-    after = correctionBlock(u, rS, text.model.major >= 5);
+    after = correctionBlock(u, rS, rT, text.model.major >= 5);
+    scaled |= u.scaleFromTheMatrix;  // its half-width's parts in rT
     std::string fix = "q -= (";
     for (size_t i = 0; i < 4; ++i) fix += (i ? ", " : "") + (u.q[i].empty() ? std::string("-") : u.column[i]);
-    fix += std::string(") * ") + (u.scaledByDepth ? "s.x*(|z| - s.y)*sign(z), z in " + u.depthRegister + "," : "s.x*(1 - s.y*q.w)") +
+    fix += std::string(") * ") +
+           (u.scaledByDepth        ? "s.x*(|z| - s.y)*sign(z), z in " + u.depthRegister + ","
+            : u.scaleFromTheMatrix ? "s.x*(1 - s.y*q.w) * h (h the screen coordinate's half-width the matrix shows)"
+                                   : "s.x*(1 - s.y*q.w)") +
            " after line " + std::to_string(u.lastLineNumber) +
            (u.q[3].empty() ? " (the point has no w: an affine map)" : ", before the divide");
     result.corrections.push_back({std::string(u.scaledByDepth ? "position rebuilt through a screen-to-world matrix (ndc * depth, depth, 1) "
@@ -482,9 +517,10 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
                                       std::to_string(r.lineNumber),
                                   r.lineNumber, r.lineNumber});
   }
-  declareScratch(text, d, cameras ? 2 : 1,
+  declareScratch(text, d, cameras || scaled ? 2 : 1,
                  cameras ? "two temporaries for this eye's position rebuild and camera (" + rS + ", " + rT + ")"
-                         : "a temporary for this eye's position rebuild (" + rS + ")",
+                 : scaled ? "two temporaries for this eye's position rebuild and its screen's scale (" + rS + ", " + rT + ")"
+                          : "a temporary for this eye's position rebuild (" + rS + ")",
                  edits, result);
   result.sites = static_cast<int>(result.corrections.size());
   result.output = render(text, edits);

@@ -72,6 +72,7 @@ struct Roles {
   int x = -1, y = -1, depth = -1;
   uint32_t input = 0, texture = 0;
   bool scaled = false;
+  bool fragmentDepth = false;  // the depth is SV_Position.z as it is (a forward pass), no texture
 };
 
 // What a value was computed from: the texture (if any) and the input lanes.
@@ -113,7 +114,17 @@ std::optional<std::set<std::pair<uint32_t, uint32_t>>> screenLanes(const std::ve
   return lanes;
 }
 
-std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) {
+// Whether `term` is lane z of the SV_Position input `position` read as it is: the fragment's own
+// depth, which a forward pass rebuilds the point it shades from (Unreal's materials,
+// `mul(float4(SvPosition.xyz, 1), View.SVPositionToTranslatedWorld)`).
+bool fragmentDepth(const std::vector<Value>& values, int term, std::optional<uint32_t> position) {
+  const Value& v = values[term];
+  return position && v.op == SIZE_MAX && v.sources.size() == 1 && v.sources.begin()->kind == Source::Input &&
+         v.sources.begin()->reg == *position && v.sources.begin()->lane == 2;
+}
+
+// `position`: the pixel shader's SV_Position input register, if it declares one.
+std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m, std::optional<uint32_t> position) {
   Roles r;
   std::vector<std::pair<int, int>> scaled;  // (term, the texel factor it is scaled by)
   // Lanes every screen term reads (an interpolated w both are divided by: `div r0.xy, v1.xyxx,
@@ -121,7 +132,8 @@ std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) 
   std::map<int, std::set<std::pair<uint32_t, uint32_t>>> screen;  // each term's but the depth's
   std::optional<std::set<std::pair<uint32_t, uint32_t>>> common;
   for (const auto& [term, c] : m.byTerm)
-    if (auto lanes = screenLanes(values, term)) {
+    if (fragmentDepth(values, term, position)) continue;
+    else if (auto lanes = screenLanes(values, term)) {
       if (!common) common = *lanes;
       else std::erase_if(*common, [&](const auto& lane) { return !lanes->count(lane); });
       screen[term] = std::move(*lanes);
@@ -140,6 +152,12 @@ std::optional<Roles> rolesOf(const std::vector<Value>& values, const Member& m) 
   };
   for (const auto& [term, c] : m.byTerm) {
     const Origin o = originOf(values[term]);
+    if (fragmentDepth(values, term, position)) {
+      if (r.depth >= 0) return std::nullopt;
+      r.depth = term;
+      r.fragmentDepth = true;
+      continue;
+    }
     if (o.texture && o.lanes.empty()) {
       if (r.depth >= 0) return std::nullopt;
       r.depth = term;
@@ -289,6 +307,24 @@ bool scaledTermsSampledAt(const std::vector<Value>& values, const Roles& role) {
 // coordinate read as it is may carry NDC (a full-screen pass that hands its corners on) and is taken
 // as such; the pixel position (SV_Position) never is. (A UV read as it is times a linear depth is
 // left alone: the linear depth is not the texel the sample's coordinate is known for.)
+// The operands of InvM's column of the depth and of its constant column (with their signs), for the
+// run-time half-width of a screen coordinate (AsmUnprojection::scaleFromTheMatrix); nothing when a
+// component is not computed or an element the computation reads (those and the column of x) is
+// scaled by other than 1 or -1.
+std::optional<std::array<std::array<std::string, 4>, 2>> columnsForTheScale(const std::array<const Member*, 4>& q,
+                                                                           const Roles& role) {
+  std::array<std::array<std::string, 4>, 2> columns;
+  for (size_t i = 0; i < 4; ++i) {
+    if (!q[i]) return std::nullopt;
+    const Coefficient& x = q[i]->byTerm.at(role.x);
+    const Coefficient& z = q[i]->byTerm.at(role.depth);
+    if (std::abs(x.scale) != 1.0f || std::abs(z.scale) != 1.0f || x.inverse || z.inverse) return std::nullopt;
+    columns[0][i] = (z.scale < 0 ? "-" : "") + elementText(*z.element);
+    columns[1][i] = elementText(q[i]->translation);  // a translation's scale is 1 (memberOf)
+  }
+  return columns;
+}
+
 bool coordinateNotNdc(const std::vector<Value>& values, const Roles& role, const Program::Impl& p) {
   if (!role.scaled) return notKnownNdc(values, role.x);
   const int screenX = screenFactorsOf(values, role).first;
@@ -437,6 +473,9 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
   Evaluator evaluation(p);
   evaluation.run();
   const auto& values = evaluation.values();
+  std::optional<uint32_t> position;  // SV_Position's register
+  for (const InputDeclaration& input : p.inputs)
+    if (input.systemValue == "position") position = input.index;
   // Candidates grouped by matrix and terms, each group's components by index.
   std::map<std::string, std::map<uint32_t, Member>> groups;
   std::map<std::string, Roles> roles;
@@ -445,7 +484,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     if (values[id].op == SIZE_MAX || !values[id].at) continue;
     auto member = memberOf(values, id);
     if (!member) continue;
-    auto role = rolesOf(values, *member);
+    auto role = rolesOf(values, *member, position);
     if (!role) {
       if (auto input = interpolatedPosition(values, *member)) {
         auto& seen = lightSpace[member->matrix];
@@ -497,7 +536,10 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     // matrix maps UV space and the correction takes half its column of u.
     const bool notNdc = coordinateNotNdc(values, role, p);
     const bool uv = role.scaled ? scaledTermsSampledAt(values, role) : notNdc && depthSampledAt(values, role);
-    if (notNdc && !uv) {
+    // A coordinate of unknown scale into a matrix with a w: the matrix shows its scale.
+    std::optional<std::array<std::array<std::string, 4>, 2>> scaleColumns;
+    if (notNdc && !uv && !role.scaled) scaleColumns = columnsForTheScale(q, role);
+    if (notNdc && !uv && !scaleColumns) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
                                  ": a position rebuilt from a texture coordinate or pixel position as it is, not NDC "
                                  "(no -1 offset): the matrix may map UV space, whose column is not the correction's");
@@ -521,13 +563,20 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     for (const auto& row : rows) u.rows += (u.rows.empty() ? "" : ", ") + elementText(row, false);
     u.storage = key.front() == 'c' ? "columns (mad)" : "rows (dp4)";
     u.uvOfTheDepthTexture = uv;
-    u.depth = "t" + std::to_string(role.texture);
+    if (scaleColumns) {
+      u.scaleFromTheMatrix = true;
+      u.columnZ = (*scaleColumns)[0];
+      u.translation = (*scaleColumns)[1];
+    }
+    u.depth = role.fragmentDepth ? "the fragment's own depth (v" + std::to_string(role.input) + ".z)"
+                                 : "t" + std::to_string(role.texture);
     if (role.scaled) {
       u.scaledByDepth = true;
       u.depthRegister = registerText(*z.at);
     }
     u.ndc = "v" + std::to_string(role.input);
-    u.cameras = camerasOf(values, p, lineIndex, q, role);
+    // (A camera moved by the scaled column is not written: the camera block has no scale of its own.)
+    if (!u.scaleFromTheMatrix) u.cameras = camerasOf(values, p, lineIndex, q, role);
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });

@@ -47,6 +47,14 @@ struct AsmUnprojection {
   // The pixel's x and y are the UV the depth is sampled at (no `* 2 - 1`): the matrix maps UV
   // space, and columnScale holds half of its column of u.
   bool uvOfTheDepthTexture = false;
+  // The pixel's x is a screen coordinate of unknown scale (a pixel position, a UV not the depth's):
+  // the correction's column is InvM's times the coordinate's half-width, computed where it runs from
+  // the matrix's optical axis (as the decompiled route's RowProductTextFix::scaleFromTheMatrix).
+  // `columnZ` and `translation` are the operands of InvM's column of the depth and of its constant
+  // column, i = 0..3, with their signs ("-cb1[22].x"); every element the computation reads has a
+  // scale of 1 or -1.
+  bool scaleFromTheMatrix = false;
+  std::array<std::string, 4> columnZ, translation;
   // The screen-to-world form, q = M * (ndc.x * z, ndc.y * z, z, 1): corrected by
   // q -= M[column of x] * s.x * (|z| - s.y) * sign(z), z read from `depthRegister` ("r1.x").
   bool scaledByDepth = false;
