@@ -353,11 +353,16 @@ void decideProducts(const std::vector<Product>& products, const std::set<uint32_
 // reported with the reason. True when a text fix was recorded.
 // The construct and form a found cbuffer-row product is reported as.
 void nameTheForm(const RowProductTextFix& fix, ViewDependentUse& entry) {
-  entry.construct = fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)"
+  entry.construct = fix.scaledByDepth && fix.scaleFromTheMatrix ? "matrix in cbuffer rows * (screen * depth, depth, 1)"
+                    : fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)"
                     : fix.uvOfTheDepthTexture ? "matrix in cbuffer rows * (uv, depth, 1)"
                     : fix.scaleFromTheMatrix  ? "matrix in cbuffer rows * (screen coordinate, depth, 1)"
                                                 : "matrix in cbuffer rows * vector";
-  entry.form = fix.scaledByDepth
+  entry.form = fix.scaledByDepth && fix.scaleFromTheMatrix
+                   ? "position rebuilt through a screen-to-world matrix from the screen coordinate as the shader reads "
+                     "it (a pixel position) held as four cbuffer rows (decompiled mul; the coordinate's half-width from "
+                     "the matrix's optical axis, at run time; a view vector from its camera is not corrected)"
+               : fix.scaledByDepth
                    ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"
                : fix.uvOfTheDepthTexture
                    ? "position rebuilt through a matrix from UV space held as four cbuffer rows (decompiled mul; the "
@@ -417,7 +422,9 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     std::string column;
     for (size_t i = 0; i < 4; ++i) column += (i ? ", " : "") + (p.fix.present[i] ? p.fix.column[i] : std::string("-"));
     entry.fix = "q - (" + column + ") * " +
-                (p.fix.scaledByDepth        ? "s.x*(|z| - s.y)*sign(z)"
+                (p.fix.scaledByDepth && p.fix.scaleFromTheMatrix
+                     ? "s.x*(|z| - s.y)*sign(z) * h (h the coordinate's half-width the matrix shows)"
+                 : p.fix.scaledByDepth      ? "s.x*(|z| - s.y)*sign(z)"
                  : p.fix.scaleFromTheMatrix ? "s.x*(1 - s.y*q.w) * h (h the coordinate's half-width the matrix shows)"
                                             : "s.x*(1 - s.y*q.w)") +
                 " after line " + std::to_string(p.fix.afterLine) +

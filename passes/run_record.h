@@ -208,7 +208,9 @@ struct RowProductTextFix {
   // coordinate's half-width h, which the matrix itself shows (docs/3dmigoto.md): its optical axis,
   // the coordinate where NDC x is 0, is at h from the coordinate's left edge (0 for a UV or a pixel
   // position), and at 0 for NDC (h = 1). `columnZ` and `translation` name InvM's column of the
-  // depth and its constant column, i = 0..3, for that run-time computation.
+  // depth and its constant column, i = 0..3, for that run-time computation. In the screen-to-world
+  // form (scaledByDepth) M maps (c z, c' z, z, 1), its camera is M's constant column, and the axis
+  // reads M's column of the depth alone.
   bool scaleFromTheMatrix = false;
   std::array<std::string, 4> columnZ, translation;
 };

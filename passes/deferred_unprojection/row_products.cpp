@@ -389,10 +389,12 @@ std::optional<Lane> screenPartOf(Decomposer& d, Lane term, Lane z) {
 }
 
 // The columns the run-time half-width of the screen coordinate reads (RowProductTextFix::
-// scaleFromTheMatrix), as the source names them: the depth's and the constant one.
+// scaleFromTheMatrix), as the source names them: the depth's and the constant one (the
+// screen-to-world form's reads the depth's alone).
 void nameTheScalesColumns(const spirv::Module& registers, const std::array<const Member*, 4>& q, Lane z, RowProduct& p) {
   p.fix.scaleFromTheMatrix = true;
   for (uint32_t i = 0; i < 4; ++i) {
+    if (!q[i]) continue;  // the w of an affine map's point (the screen-to-world form's scale reads x, y, z)
     p.fix.columnZ[i] = elementText(registers, q[i]->byTerm.at(z));
     p.fix.translation[i] = elementText(registers, q[i]->translation);
     if (p.fix.columnZ[i].empty() || p.fix.translation[i].empty())
@@ -481,7 +483,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     }
     // A coordinate of unknown scale into a matrix with a w: the matrix shows the scale (its optical
     // axis), computed where the correction runs. The screen-to-world form's is not derived here.
-    const bool scaleFromTheMatrix = notNdc && !uv && !*scaled && q[0] && q[1] && q[2] && q[3];
+    const bool scaleFromTheMatrix = notNdc && !uv && q[0] && q[1] && q[2] && (q[3] || *scaled);
     if (notNdc && !uv && !scaleFromTheMatrix)
       p.reason = "the pixel's x is a texture coordinate or pixel position as it is, not NDC (no -1 offset): the "
                  "matrix may map UV space, whose column is not the correction's; left for a person";

@@ -741,7 +741,10 @@ class DeferredRender : public ::testing::Test {
   // The screen-to-world check: truth, fix and baseline of kDumpScreenToWorld against the exact point.
   // `uvSpace`: the dump reads the pixel's UV, the one the depth is sampled at, and the map takes
   // (u z, v z, z, 1).
-  void checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace = false);
+  // `pixelSpace`: it reads the pixel position as it is (the depth loaded there), the map takes
+  // (p.x z, p.y z, z, 1), and the fix computes the pixel's half-width from the map.
+  void checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace = false,
+                          bool pixelSpace = false);
   // checkScreenToWorld behind `vertex` (GLSL, named `vertexName`) instead of the harness's own
   // full-screen vertex stage, for a dump that reads what that stage hands on.
   void checkScreenToWorldAfter(const char* vertexName, const char* vertex, const char* name, const char* text,
@@ -990,17 +993,21 @@ GBuffer linearDepth(const GBuffer& g, const Mat4& mono) {
 // matrix, fix (converted, StereoParams) and baseline with the mono one. The exact position is the
 // eye's exact matrix applied in double to the fp32 inputs; truth and fix must be within
 // screenToWorldBound() of it, the baseline beyond the truth's bound at more than 90 % of the pixels.
-void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace) {
+void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace,
+                                        bool pixelSpace) {
   const Mat4 mono = projection(0), viewMatrix = view();
-  // From UV space: (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1), ndc = 2 uv - 1.
+  // From UV space: (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1), ndc = 2 uv - 1; from pixels likewise,
+  // ndc = 2 p / size - 1.
   const Mat4 fromUv = {2, 0, 0, 0, 0, 2, 0, 0, -1, -1, 1, 0, 0, 0, 0, 1}, identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  const Mat4& screenMap = uvSpace ? fromUv : identity;
+  const Mat4 fromPixels = {2.0 / kSize, 0, 0, 0, 0, 2.0 / kSize, 0, 0, -1, -1, 1, 0, 0, 0, 0, 1};
+  const Mat4& screenMap = uvSpace ? fromUv : pixelSpace ? fromPixels : identity;
   const Mat4 monoMatrix = multiply(screenToWorld(inverse(multiply(mono, viewMatrix)), mono), screenMap);
   for (double eye : {-1.0, 1.0}) {
     GBuffer g = renderGBuffer(eye);
     const GBuffer linear = linearDepth(g, mono);
     const Mat4 stereoMatrix = multiply(screenToWorld(inverse(multiply(projection(eye), viewMatrix)), mono), screenMap);
     const Mat4 stereoF = toDouble(toFloat(stereoMatrix)), monoF = toDouble(toFloat(monoMatrix));
+    const MatrixHalfWidth halfWidth = affineMapHalfWidth(monoF);
     std::array<RenderResult, 3> truth, fixedPosition, baseline;
     for (int component = 0; component < 3; ++component) {
       TranspileOptions options;
@@ -1008,7 +1015,9 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
       auto original = compileOriginal(name, text, options);
       nlohmann::json pass;
       std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options, &pass);
-      EXPECT_EQ(pass["fixed"][0].value("construct", ""), "matrix in cbuffer rows * (ndc * depth, depth, 1)") << pass.dump(2);
+      EXPECT_EQ(pass["fixed"][0].value("construct", ""), pixelSpace ? "matrix in cbuffer rows * (screen * depth, depth, 1)"
+                                                                    : "matrix in cbuffer rows * (ndc * depth, depth, 1)")
+          << pass.dump(2);
       DumpFeed monoFeed{false, false}, stereoFeed{false, true};
       monoFeed.sampler = stereoFeed.sampler = uvSpace;
       truth[component] = renderLighting(linear, original, stereoMatrix, nullptr, eye, monoFeed);
@@ -1024,12 +1033,16 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
         if (g.depthValues[i] >= 1.0f) continue;
         ++pixels;
         // The pixel's coordinates as the shader reads them: NDC, or the UV.
-        const double nx = uvSpace ? (x + 0.5) / kSize : (x + 0.5) / kSize * 2 - 1;
-        const double ny = uvSpace ? (y + 0.5) / kSize : (y + 0.5) / kSize * 2 - 1, z = linear.depth.rgba[4 * i];
+        const double nx = uvSpace ? (x + 0.5) / kSize : pixelSpace ? x + 0.5 : (x + 0.5) / kSize * 2 - 1;
+        const double ny = uvSpace ? (y + 0.5) / kSize : pixelSpace ? y + 0.5 : (y + 0.5) / kSize * 2 - 1;
+        const double z = linear.depth.rgba[4 * i];
         const std::array<double, 4> v = {nx * z, ny * z, z, 1.0};
         const std::array<double, 4> exact = times(stereoMatrix, v);
         auto truthBound = screenToWorldBound(stereoF, nx, ny, z, false, 0.0, kConvergence);
-        auto fixBound = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence, uvSpace ? 0.5 : 1.0);
+        auto fixBound = pixelSpace ? screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence, kSize / 2.0,
+                                                        std::abs(halfWidth.value - kSize / 2.0) + halfWidth.bound)
+                                   : screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence,
+                                                        uvSpace ? 0.5 : 1.0);
         bool baselineWrong = false;
         for (int c = 0; c < 3; ++c) {
           const double p = exact[c] / exact[3];
@@ -1298,6 +1311,20 @@ TEST_F(DeferredRender, DumpStyleForwardRebuildFromThePixelFixedInItsTextByExecut
   forward.pixelSpace = forward.forward = true;
   checkRebuiltPositions("1a2b3c4d5e6f7085-ps_replace.txt", kDumpForwardFromThePixel.c_str(),
                         "forward dump, SV_Position through a matrix from pixels", &forward);
+}
+
+// The screen-to-world form from pixel positions: SV_Position's x and y as they are (`r2.xy = v0.xy;`,
+// the depth loaded at the pixel) times the linear depth, through a map that takes (p.x z, p.y z, z,
+// 1). The correction's column is the map's times the pixel's half-width, which the fix computes from
+// the map (the camera is its constant column; the axis is where the point minus the camera is
+// orthogonal to its column of x). Before, reported and left alone.
+TEST_F(DeferredRender, DumpStyleScreenToWorldFromPixelPositionsFixedInItsTextByExecution) {
+  std::string text = kDumpScreenToWorld;
+  const std::string ndc = "  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n";
+  ASSERT_NE(text.find(ndc), std::string::npos);
+  text.replace(text.find(ndc), ndc.size(), "  r2.xy = v0.xy;\n");
+  checkScreenToWorld("5a6b7c8d9e0f1a2d-ps_replace.txt", text.c_str(), "dump screen-to-world from pixel positions", false,
+                     true);
 }
 
 // A dump (kDumpPrologue's) with the depth sampled at the pixel's UV (`v0.xy * cb0[4].zw`, no

@@ -149,6 +149,24 @@ inline MatrixHalfWidth matrixHalfWidth(const Mat4& a) {
   return h;
 }
 
+// The half-width of the screen coordinate an affine screen-to-world map `a` takes ((c z, c' z, z, 1)
+// to the world), as the text fix computes it in fp32: h = -dot(z.xyz, x.xyz) / dot(x.xyz, x.xyz),
+// x and z its columns of the coordinate and the depth. `bound`, first order: each dot product
+// gamma_3 relative to its sum of magnitudes, the quotient u.
+inline MatrixHalfWidth affineMapHalfWidth(const Mat4& a) {
+  const double u = kUnitRoundoff, gamma3 = 3 * u / (1 - 3 * u);
+  double numerator = 0, magnitude = 0, columnLength = 0;
+  for (int i = 0; i < 3; ++i) {
+    numerator += a[8 + i] * a[i];
+    magnitude += std::abs(a[8 + i] * a[i]);
+    columnLength += a[i] * a[i];
+  }
+  MatrixHalfWidth h;
+  h.value = -numerator / columnLength;
+  h.bound = std::abs(h.value) * (gamma3 * magnitude / std::abs(numerator) + gamma3 + u);
+  return h;
+}
+
 // The same bound for the screen-to-world form, q = fl(M v') with v' = (fl(x z), fl(y z), z, 1) for
 // the pixel's NDC x, y (exact in fp32) and the view depth z (as the shader reads it): the two
 // products add u |M_i0 x z| + u |M_i1 y z| to the dot product's (gamma_4 + u) sum_j |M_ij v'_j|.
@@ -156,8 +174,10 @@ inline MatrixHalfWidth matrixHalfWidth(const Mat4& a) {
 //     |dk| <= |eS| u ||z| - C| + 2u |k|,  |dq'_i| <= |dq_i| + |col0_i| |dk| + 2u |col0_i k| + u |q'_i|;
 // p = fl(q.xyz / q.w) as above.
 // `columnScale` as for positionBound (a map from UV space: half its column of u).
+// `scaleError` as for positionBound (a half-width the shader computes: affineMapHalfWidth).
 inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double y, double z, bool fixed,
-                                                double eyeSeparation, double convergence, double columnScale = 1.0) {
+                                                double eyeSeparation, double convergence, double columnScale = 1.0,
+                                                std::optional<double> scaleError = std::nullopt) {
   const double u = kUnitRoundoff, gamma4 = 4 * u / (1 - 4 * u);
   const std::array<double, 4> v = {x * z, y * z, z, 1.0};
   std::array<double, 4> q{}, dq{};
@@ -170,8 +190,13 @@ inline std::array<double, 3> screenToWorldBound(const Mat4& a, double x, double 
     dq[i] = (gamma4 + u) * magnitude + u * (std::abs(a[i] * v[0]) + std::abs(a[4 + i] * v[1]));
   }
   if (fixed) {
-    const double k = eyeSeparation * (std::abs(z) - convergence) * (z < 0 ? -1.0 : 1.0);
-    const double dk = std::abs(eyeSeparation) * u * std::abs(std::abs(z) - convergence) + 2 * u * std::abs(k);
+    double k = eyeSeparation * (std::abs(z) - convergence) * (z < 0 ? -1.0 : 1.0);
+    double dk = std::abs(eyeSeparation) * u * std::abs(std::abs(z) - convergence) + 2 * u * std::abs(k);
+    if (scaleError) {
+      dk = dk * columnScale + std::abs(k) * *scaleError + u * std::abs(k * columnScale);
+      k *= columnScale;
+      columnScale = 1.0;
+    }
     for (int i = 0; i < 4; ++i) {
       const double column0 = a[i] * columnScale;
       q[i] -= column0 * k;

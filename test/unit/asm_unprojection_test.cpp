@@ -263,12 +263,15 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
   toClip[14] = mono[14];
   const Mat4 uvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
   const Mat4 pixelToNdc = {2.0 / kSize, 0, 0, 0, 0, -2.0 / kSize, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
+  // (p.x z, p.y z, z, 1) to (ndc.x z, ndc.y z, z, 1): the screen-to-world form from pixel positions.
+  const Mat4 scaledPixelToNdc = {2.0 / kSize, 0, 0, 0, 0, -2.0 / kSize, 0, 0, -1, 1, 1, 0, 0, 0, 0, 1};
   // (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1): the screen-to-world form from UV space.
   const Mat4 scaledUvToNdc = {2, 0, 0, 0, 0, -2, 0, 0, -1, 1, 1, 0, 0, 0, 0, 1};
   auto matrixOf = [&](double eye) {
     const Mat4 inverse = harness::inverse(harness::multiply(projection(eye), viewMatrix));
     if (screenToWorld) {
       const Mat4 map = harness::multiply(inverse, toClip);
+      if (pixelSpace) return harness::multiply(map, scaledPixelToNdc);
       return uvSpace ? harness::multiply(map, scaledUvToNdc) : map;
     }
     if (pixelSpace) return harness::multiply(inverse, pixelToNdc);
@@ -281,7 +284,8 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
     const std::vector<Vec4> monoRows = constants(monoInverse, rows), stereoRows = constants(stereoInverse, rows);
     const Vec4 stereoParams = vec(static_cast<float>(eye * kSeparation), kConvergence, static_cast<float>(eye), 0.0f);
     const double es = static_cast<float>(eye * kSeparation);
-    const harness::MatrixHalfWidth halfWidth = harness::matrixHalfWidth(monoF);
+    const harness::MatrixHalfWidth halfWidth =
+        screenToWorld ? harness::affineMapHalfWidth(monoF) : harness::matrixHalfWidth(monoF);
     const double scale = pixelSpace ? kSize / 2.0 : 0.5;  // the coordinate's half-width
     size_t pixels = 0, outside = 0, baselineOutside = 0;
     double worstTruth = 0, worstFix = 0;
@@ -292,8 +296,8 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         const float depth = static_cast<float>(screenToWorld ? w : (mono[10] * -w + mono[14]) / w);
         const Pixel pixel{px + 0.5f, py + 0.5f, depth};
         // The pixel's coordinates as the shader reads them: NDC, or the UV.
-        const double nx = uvSpace ? pixel.x / kSize : 2.0 * pixel.x / kSize - 1.0;
-        const double ny = uvSpace ? pixel.y / kSize : 1.0 - 2.0 * pixel.y / kSize;
+        const double nx = uvSpace ? pixel.x / kSize : pixelSpace && screenToWorld ? pixel.x : 2.0 * pixel.x / kSize - 1.0;
+        const double ny = uvSpace ? pixel.y / kSize : pixelSpace && screenToWorld ? pixel.y : 1.0 - 2.0 * pixel.y / kSize;
         const std::array<double, 4> v = screenToWorld ? std::array<double, 4>{nx * depth, ny * depth, depth, 1.0}
                                         : uvSpace    ? std::array<double, 4>{pixel.x / kSize, pixel.y / kSize, depth, 1.0}
                                         : pixelSpace ? std::array<double, 4>{pixel.x, pixel.y, depth, 1.0}
@@ -306,8 +310,11 @@ void checkByExecution(const char* shader, bool rows, const char* tag, bool scree
         auto baseline = rebuild(*original, pixel, monoRows, {});
         auto truthBound = screenToWorld ? harness::screenToWorldBound(stereoF, nx, ny, depth, false, 0.0, kConvergence)
                                         : harness::positionBound(stereoF, v, false, 0.0, kConvergence);
-        auto fixBound = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence,
-                                                                    uvSpace ? 0.5 : 1.0)
+        auto fixBound = screenToWorld && pixelSpace
+                            ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence, scale,
+                                                          std::abs(halfWidth.value - scale) + halfWidth.bound)
+                        : screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence,
+                                                                      uvSpace ? 0.5 : 1.0)
                         : pixelSpace || derivedScale
                             ? harness::positionBound(monoF, v, true, es, kConvergence, scale,
                                                      std::abs(halfWidth.value - scale) + halfWidth.bound)
@@ -436,6 +443,19 @@ TEST(AsmUnprojection, ScreenToWorldCorrectedByExecution) {
 // The screen-to-world form from UV space: the pixel's UV (`mul r1.xy, v0.xyxx, cb0[2].zwzz`, no
 // `* 2 - 1`), the one the depth is sampled at, times that depth, through a map that takes
 // (u z, v z, z, 1): the UV found through the depth back to its sample, half the map's column taken.
+// The screen-to-world form from pixel positions: SV_Position's x and y as they are times the linear
+// depth (loaded at the pixel), through a map that takes (p.x z, p.y z, z, 1): the fix computes the
+// pixel's half-width from the map (-dot(z, x) / dot(x, x) of its columns). Before, left alone.
+TEST(AsmUnprojection, ScreenToWorldFromPixelPositionsCorrectedByExecution) {
+  std::string shader = kScreenToWorldPs;
+  const std::string ndc = "mul r1.xy, v0.xyxx, cb0[2].zwzz\n"
+                          "mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n"
+                          "mul r1.xy, r0.zzzz, r1.xyxx\n";
+  ASSERT_NE(shader.find(ndc), std::string::npos);
+  shader.replace(shader.find(ndc), ndc.size(), "mul r1.xy, r0.zzzz, v0.xyxx\n");
+  checkByExecution(shader.c_str(), false, "asm screen to world from pixel positions", true, false, true);
+}
+
 TEST(AsmUnprojection, ScreenToWorldFromUvSpaceCorrectedByExecution) {
   std::string shader = kScreenToWorldPs;
   const std::string depthAndNdc =
@@ -703,17 +723,17 @@ TEST(AsmUnprojection, ShadowLookupsAndBrokenChainsAreLeftAlone) {
   EXPECT_NE(u.output.find("div r3.x, -r3.x, r3.y"), std::string::npos) << u.output;
 
   // The screen-to-world form with the pixel's coordinate a UV (`mul r1.xy, v0.xyxx, cb0[2].zwzz`
-  // with no `* 2 - 1`) times the depth: a map from UV or pixel space, whose column is not the
-  // correction's: left for a person, and said (before, it was corrected as if from NDC).
+  // with no `* 2 - 1`) times the depth: a map from UV or pixel space, whose scale the map shows and
+  // the correction computes (ScreenToWorldFromPixelPositionsCorrectedByExecution runs it). Before this
+  // it was left for a person, and before that corrected as if from NDC.
   std::string pixelTimesDepth = kScreenToWorldPs;
   const std::string ndcMap =
       "mad r1.xy, r1.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
   ASSERT_NE(pixelTimesDepth.find(ndcMap), std::string::npos);
   pixelTimesDepth.erase(pixelTimesDepth.find(ndcMap), ndcMap.size());
   AsmShiftResult p = shiftAssembly(pixelTimesDepth, {});
-  EXPECT_TRUE(p.corrections.empty()) << p.output;
-  EXPECT_EQ(p.output, pixelTimesDepth);
-  EXPECT_NE(p.whyUnchanged.find("left for a person"), std::string::npos) << p.whyUnchanged;
+  ASSERT_EQ(p.corrections.size(), 1u) << p.whyUnchanged;
+  EXPECT_NE(p.corrections[0].fix.find("half-width the matrix shows"), std::string::npos) << p.corrections[0].fix;
 
   // t125 taken by another resource: the correction cannot read StereoParams there; the pixel shader
   // is copied with the reason, as it was before it could be corrected (not refused).

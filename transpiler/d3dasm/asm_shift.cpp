@@ -328,18 +328,24 @@ void appendScreenScale(const AsmUnprojection& u, const std::string& rS, const st
   std::array<std::string, 3> x;
   for (size_t i = 0; i < 3; ++i) x[i] = (u.columnScale[i] < 0 ? "-" : "") + u.column[i];
   const char lanes[] = "xyz";
-  for (size_t i = 0; i < 3; ++i) {
-    const std::string a = rT + "." + lanes[i];
-    block.push_back("mul " + a + ", " + u.translation[i] + ", " + u.columnZ[3]);
-    block.push_back("mad " + a + ", " + negated(u.columnZ[i]) + ", " + u.translation[3] + ", " + a);
+  if (u.scaledByDepth) {  // M (c z, c' z, z, 1): h = -dot(z.xyz, x.xyz) / dot(x.xyz, x.xyz)
+    block.push_back("mul " + rT + ".x, " + u.columnZ[0] + ", " + x[0]);
+    block.push_back("mad " + rT + ".x, " + u.columnZ[1] + ", " + x[1] + ", " + rT + ".x");
+    block.push_back("mad " + rT + ".x, " + u.columnZ[2] + ", " + x[2] + ", " + rT + ".x");
+  } else {
+    for (size_t i = 0; i < 3; ++i) {
+      const std::string a = rT + "." + lanes[i];
+      block.push_back("mul " + a + ", " + u.translation[i] + ", " + u.columnZ[3]);
+      block.push_back("mad " + a + ", " + negated(u.columnZ[i]) + ", " + u.translation[3] + ", " + a);
+    }
+    block.push_back("mul " + rT + ".x, " + rT + ".x, " + x[0]);
+    block.push_back("mad " + rT + ".x, " + rT + ".y, " + x[1] + ", " + rT + ".x");
+    block.push_back("mad " + rT + ".x, " + rT + ".z, " + x[2] + ", " + rT + ".x");
   }
-  block.push_back("mul " + rT + ".x, " + rT + ".x, " + x[0]);
-  block.push_back("mad " + rT + ".x, " + rT + ".y, " + x[1] + ", " + rT + ".x");
-  block.push_back("mad " + rT + ".x, " + rT + ".z, " + x[2] + ", " + rT + ".x");
   block.push_back("mul " + rT + ".y, " + x[0] + ", " + x[0]);
   block.push_back("mad " + rT + ".y, " + x[1] + ", " + x[1] + ", " + rT + ".y");
   block.push_back("mad " + rT + ".y, " + x[2] + ", " + x[2] + ", " + rT + ".y");
-  block.push_back("mul " + rT + ".y, " + rT + ".y, " + u.columnZ[3]);
+  if (!u.scaledByDepth) block.push_back("mul " + rT + ".y, " + rT + ".y, " + u.columnZ[3]);
   block.push_back("div " + rT + ".x, -" + rT + ".x, " + rT + ".y");
   block.push_back("lt " + rT + ".y, l(0.250000), " + rT + ".x");
   block.push_back("movc " + rT + ".x, " + rT + ".y, " + rT + ".x, l(1.000000)");
@@ -353,7 +359,9 @@ std::vector<std::string> correctionBlock(const AsmUnprojection& u, const std::st
                                 ? "line " + std::to_string(u.lastLineNumber)
                                 : "lines " + std::to_string(u.firstLineNumber) + "-" + std::to_string(u.lastLineNumber);
   std::vector<std::string> block = {
-      "this eye's position rebuild (" + lines + (u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over "
+      "this eye's position rebuild (" + lines + (u.scaledByDepth && u.scaleFromTheMatrix
+                                                     ? ": q = M * (screen * depth, depth, 1), the screen's scale from M, over "
+                                : u.scaledByDepth ? ": q = M * (ndc * depth, depth, 1) over "
                                 : u.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over "
                                 : u.scaleFromTheMatrix  ? ": q = M * (screen, depth, 1), the screen's scale from M, over "
                                                         : ": q = InvM * (ndc, depth, 1) over ") +
@@ -482,7 +490,10 @@ AsmShiftResult correctPixelShader(const std::string& source, const AsmText& text
     std::string fix = "q -= (";
     for (size_t i = 0; i < 4; ++i) fix += (i ? ", " : "") + (u.q[i].empty() ? std::string("-") : u.column[i]);
     fix += std::string(") * ") +
-           (u.scaledByDepth        ? "s.x*(|z| - s.y)*sign(z), z in " + u.depthRegister + ","
+           (u.scaledByDepth && u.scaleFromTheMatrix
+                ? "s.x*(|z| - s.y)*sign(z) * h (h the screen coordinate's half-width the matrix shows), z in " +
+                      u.depthRegister + ","
+            : u.scaledByDepth      ? "s.x*(|z| - s.y)*sign(z), z in " + u.depthRegister + ","
             : u.scaleFromTheMatrix ? "s.x*(1 - s.y*q.w) * h (h the screen coordinate's half-width the matrix shows)"
                                    : "s.x*(1 - s.y*q.w)") +
            " after line " + std::to_string(u.lastLineNumber) +

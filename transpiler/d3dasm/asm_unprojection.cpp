@@ -315,6 +315,7 @@ std::optional<std::array<std::array<std::string, 4>, 2>> columnsForTheScale(cons
                                                                            const Roles& role) {
   std::array<std::array<std::string, 4>, 2> columns;
   for (size_t i = 0; i < 4; ++i) {
+    if (!q[i] && role.scaled && i == 3) continue;  // an affine map's point: its scale reads x, y and z
     if (!q[i]) return std::nullopt;
     const Coefficient& x = q[i]->byTerm.at(role.x);
     const Coefficient& z = q[i]->byTerm.at(role.depth);
@@ -538,7 +539,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     const bool uv = role.scaled ? scaledTermsSampledAt(values, role) : notNdc && depthSampledAt(values, role);
     // A coordinate of unknown scale into a matrix with a w: the matrix shows its scale.
     std::optional<std::array<std::array<std::string, 4>, 2>> scaleColumns;
-    if (notNdc && !uv && !role.scaled) scaleColumns = columnsForTheScale(q, role);
+    if (notNdc && !uv) scaleColumns = columnsForTheScale(q, role);
     if (notNdc && !uv && !scaleColumns) {
       result.leftAlone.push_back("line " + std::to_string(p.ops[last].line) +
                                  ": a position rebuilt from a texture coordinate or pixel position as it is, not NDC "

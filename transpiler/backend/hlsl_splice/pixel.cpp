@@ -205,8 +205,11 @@ std::string screenScaleLines(const RowProductTextFix& fix, const std::string& d,
   const std::string x = std::string(kPrefix) + "_column", h = std::string(kPrefix) + "_half_width";
   auto vec3 = [](const std::array<std::string, 4>& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
   std::string t = in + "float3 " + x + " = " + vec3(fix.column) + ";" + nl;
-  t += in + "float " + h + " = -dot(" + vec3(fix.translation) + " * " + fix.columnZ[3] + " - " + vec3(fix.columnZ) +
-       " * " + fix.translation[3] + ", " + x + ") / (dot(" + x + ", " + x + ") * " + fix.columnZ[3] + ");" + nl;
+  if (fix.scaledByDepth)  // M (c z, c' z, z, 1): the point minus the camera (M's constant column) is z (x c + y c' + z)
+    t += in + "float " + h + " = -dot(" + vec3(fix.columnZ) + ", " + x + ") / dot(" + x + ", " + x + ");" + nl;
+  else
+    t += in + "float " + h + " = -dot(" + vec3(fix.translation) + " * " + fix.columnZ[3] + " - " + vec3(fix.columnZ) +
+         " * " + fix.translation[3] + ", " + x + ") / (dot(" + x + ", " + x + ") * " + fix.columnZ[3] + ");" + nl;
   t += in + d + " *= " + h + " > 0.25 ? " + h + " : 1;" + nl;
   return t;
 }
@@ -220,7 +223,9 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   std::string lines = first == fix.afterLine ? "line " + std::to_string(first)
                                               : "lines " + std::to_string(first) + "-" + std::to_string(fix.afterLine);
   std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
-                  (fix.scaledByDepth         ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
+                  (fix.scaledByDepth && fix.scaleFromTheMatrix
+                       ? ": q = M * (screen * depth, depth, 1) over cbuffer rows, the screen's scale from M) ----"
+                   : fix.scaledByDepth       ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
                    : fix.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over cbuffer rows) ----"
                    : fix.scaleFromTheMatrix  ? ": q = M * (screen, depth, 1) over cbuffer rows, the screen's scale from M) ----"
                                              : ": q = InvM * (ndc, depth, 1) over cbuffer rows) ----") +
