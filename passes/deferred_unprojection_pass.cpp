@@ -361,7 +361,7 @@ void nameTheForm(const RowProductTextFix& fix, ViewDependentUse& entry) {
   entry.form = fix.scaledByDepth && fix.scaleFromTheMatrix
                    ? "position rebuilt through a screen-to-world matrix from the screen coordinate as the shader reads "
                      "it (a pixel position) held as four cbuffer rows (decompiled mul; the coordinate's half-width from "
-                     "the matrix's optical axis, at run time; a view vector from its camera is not corrected)"
+                     "the matrix's optical axis, at run time)"
                : fix.scaledByDepth
                    ? "position rebuilt through a screen-to-world matrix held as four cbuffer rows (decompiled mul)"
                : fix.uvOfTheDepthTexture
@@ -370,7 +370,7 @@ void nameTheForm(const RowProductTextFix& fix, ViewDependentUse& entry) {
                : fix.scaleFromTheMatrix
                    ? "position rebuilt through a matrix from the screen coordinate as the shader reads it (a pixel "
                      "position or a UV) held as four cbuffer rows (decompiled mul; the coordinate's half-width from "
-                     "the matrix's optical axis, at run time; a view vector from its camera is not corrected)"
+                     "the matrix's optical axis, at run time)"
                    : "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
 }
 

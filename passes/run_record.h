@@ -239,6 +239,11 @@ struct CameraTextFix {
   // The column whose xyz / w is the camera the matrix shows, i = 0..3: InvM[i][z] (the projection
   // centre), or a screen-to-world map's translation M[i][3] ("1" for the w of an affine map).
   std::array<std::string, 4> centre;
+  // The matrix takes a screen coordinate of unknown scale (RowProductTextFix::scaleFromTheMatrix):
+  // the offset is times the half-width the matrix shows, computed from these columns (i = 0..3;
+  // `affine`: the screen-to-world form, which reads the depth's column alone).
+  bool scaleFromTheMatrix = false, affine = false;
+  std::array<std::string, 4> columnZ, translation;
 };
 
 // An unprojection `InvM * v` of source text as a splice can carry it: the product, found in the

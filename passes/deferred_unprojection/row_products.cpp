@@ -203,8 +203,9 @@ std::optional<Coefficient> cameraBesidesPoint(const Linear& f, const Linear& com
 // point). The camera the matrix shows, which c is compared with in the text: InvM's projection
 // centre, its column of z over that column's w; or where the screen-to-world map sends depth 0,
 // its translation column.
+// `position`: the rebuild's fix, whose screen scale (scaleFromTheMatrix) each camera fix takes too.
 std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::array<const Member*, 4>& q, Lane x, Lane z,
-                                             bool scaled) {
+                                             bool scaled, const RowProductTextFix& position) {
   const spirv::Module& registers = a.registers;
   Decomposer& d = a.d;
   struct Hit {
@@ -282,6 +283,10 @@ std::vector<CameraTextFix> findCameraVectors(RegisterAnalyses& a, const std::arr
       else fix.centre[i] = elementText(registers, scaled ? q[i]->translation : q[i]->byTerm.at(z));
       named &= (i == 3 || (!fix.columnX[i].empty() && !fix.camera[i].empty())) && !fix.centre[i].empty();
     }
+    fix.scaleFromTheMatrix = position.scaleFromTheMatrix;  // moved by the scaled column: the half-width's columns
+    fix.affine = scaled;
+    fix.columnZ = position.columnZ;
+    fix.translation = position.translation;
     if (named) found.push_back(std::move(fix));
   }
   return found;
@@ -496,9 +501,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       if (!p.fix.depthLine && p.reason.empty()) p.reason = "the depth is computed outside the main file (an #include or a macro)";
     }
     auto halvedForUv = [uv](std::string element) { return uv && !element.empty() ? "(0.5 * " + element + ")" : element; };
-    // (A camera moved by the scaled column is not written: the camera block has no scale of its own.)
-    if (q[0] && q[1] && q[2] && (q[3] || *scaled) && !p.fix.scaleFromTheMatrix)
-      p.cameras = findCameraVectors(a, q, *x, *z, *scaled);
+    if (q[0] && q[1] && q[2] && (q[3] || *scaled)) p.cameras = findCameraVectors(a, q, *x, *z, *scaled, p.fix);
     for (CameraTextFix& camera : p.cameras)
       for (std::string& element : camera.columnX) element = halvedForUv(element);
     p.fix.uvOfTheDepthTexture = uv;

@@ -757,8 +757,10 @@ class DeferredRender : public ::testing::Test {
   // The camera check: the view vector to the rebuilt position from this eye's camera.
   // `screenToWorldForm`: the dump rebuilds through a screen-to-world map (linear depth); `fromCamera`:
   // its vector is p - c, not c - p.
+  // `pixelSpace` (the (ndc, depth, 1) form): it reads the pixel position as it is through the matrix
+  // from pixels, the fix computing the pixel's half-width from it.
   void checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm = false,
-                       bool fromCamera = false);
+                       bool fromCamera = false, bool pixelSpace = false);
 
   bool splicedText_ = false;  // the fix through the GLSL splice's text (compileTranspiled)
   std::unique_ptr<VulkanContext> context_;
@@ -1073,7 +1075,8 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
 // than 90 % of the pixels: its highlight is the mono camera's. With the light's position in cb0[5]
 // instead (not the camera the matrix shows) the camera block must leave the vector as it is.
 void DeferredRender::checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm,
-                                     bool fromCamera) {
+                                     bool fromCamera, bool pixelSpace) {
+  ASSERT_FALSE(screenToWorldForm && pixelSpace) << "the pixel-space view vector check is the matrix form's";
   const Mat4 viewMatrix = view(), mono = projection(0);
   const Mat4 monoInverse = inverse(multiply(mono, viewMatrix));
   // The matrix the dump is fed: the inverse view-projection, or its screen-to-world form (which reads
@@ -1107,6 +1110,7 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
       const std::string end = "// ---- end stereoshift ----\n";
       withoutCamera.erase(from, withoutCamera.find(end, from) + end.size() - from);
       DumpFeed stereoFeed{false, true, camera}, lightFeed{false, true, std::array<float, 4>{0.8f, 1.5f, -5.0f, 22.0f}};
+      stereoFeed.pixelSpace = lightFeed.pixelSpace = pixelSpace;  // renderLighting multiplies by pixelToNdc()
       fixedView[component] = renderLighting(g, compileOriginal(name, r.output.c_str(), options), monoMatrix, nullptr, eye, stereoFeed);
       positionOnly[component] =
           renderLighting(g, compileOriginal(name, withoutCamera.c_str(), options), monoMatrix, nullptr, eye, stereoFeed);
@@ -1116,13 +1120,18 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
       ASSERT_TRUE(fixedView[component].ok() && positionOnly[component].ok() && lightKept[component].ok());
       EXPECT_EQ(lightKept[component].pixels, lightWithout.pixels) << "a light's position must not be moved per eye";
     }
-    const Mat4 monoF = toDouble(toFloat(monoMatrix));
+    const Mat4 monoF = toDouble(toFloat(pixelSpace ? multiply(monoMatrix, pixelToNdc()) : monoMatrix));
     double cameraLength = 0, offsetLength = 0;
     for (int c = 0; c < 3; ++c) {
       cameraLength += double(camera[c]) * camera[c];
       offsetLength += std::pow(kSeparation * kConvergence * monoInverse[c], 2);
     }
-    const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength));
+    // A half-width the fix computes (pixelSpace): the offset off by its relative error, and one more
+    // rounding for the product with it.
+    const MatrixHalfWidth halfWidth = matrixHalfWidth(monoF);
+    const double scaleError = pixelSpace ? std::abs(halfWidth.value - kSize / 2.0) + halfWidth.bound : 0.0;
+    const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength)) +
+                               (pixelSpace ? std::sqrt(offsetLength) * (scaleError / (kSize / 2.0) + u) : 0.0);
     double worst = 0;
     size_t pixels = 0, outside = 0, monoOutside = 0;
     for (uint32_t y = 0; y < kSize; ++y)
@@ -1138,6 +1147,10 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
           const double z = g.depth.rgba[4 * i];
           exact = times(stereoInverse, {nx * z, ny * z, z * -mono[10] + mono[14], z});
           positionError = screenToWorldBound(monoF, nx, ny, z, true, eye * kSeparation, kConvergence);
+        } else if (pixelSpace) {
+          exact = times(stereoInverse, {nx, ny, g.depthValues[i], 1.0});
+          positionError = positionBound(monoF, {x + 0.5, y + 0.5, g.depthValues[i], 1.0}, true, eye * kSeparation,
+                                        kConvergence, kSize / 2.0, scaleError);
         } else {
           const std::array<double, 4> v = {nx, ny, g.depthValues[i], 1.0};
           exact = times(stereoInverse, v);
@@ -1167,6 +1180,19 @@ void DeferredRender::checkViewVector(const char* name, const char* text, const c
 
 TEST_F(DeferredRender, DumpStyleViewVectorGetsThisEyesCameraByExecution) {
   checkViewVector("5a6b7c8d9e0f1234-ps_replace.txt", kDumpViewVector.c_str(), "dump view vector");
+}
+
+// The view vector from a matrix that takes the pixel position as it is (`r2.xy = v0.xy;`): the
+// camera moves by the matrix's column of x times the pixel's half-width, which the camera block
+// computes from the matrix as the position's does. Before, the position was corrected and the
+// camera left mono.
+TEST_F(DeferredRender, DumpStyleViewVectorFromPixelPositionsGetsThisEyesCameraByExecution) {
+  std::string text = kDumpViewVector;
+  const std::string ndc = "  r2.xy = v0.xy * cb0[4].zw;\n  r2.xy = r2.xy * float2(2,2) + float2(-1,-1);\n";
+  ASSERT_NE(text.find(ndc), std::string::npos);
+  text.replace(text.find(ndc), ndc.size(), "  r2.xy = v0.xy;\n");
+  checkViewVector("5a6b7c8d9e0f1239-ps_replace.txt", text.c_str(), "dump view vector from pixel positions", false, false,
+                  true);
 }
 
 // The same with the perspective divide written as fxc often compiles it, a reciprocal then a

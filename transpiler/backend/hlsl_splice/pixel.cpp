@@ -200,18 +200,29 @@ std::string indentOf(const std::string& line) { return line.substr(0, line.find_
 // (the axis is orthogonal to the image's right and up, M's columns of x and y). A UV or a pixel
 // position starts at 0, so c0 is its half-width; NDC is centred (c0 = 0, up to a jitter): h = 1.
 // `d` is scaled by h.
+// The half-width's declaration (`h`), from InvM's columns of x, of the depth and the constant:
+// `affine` for the screen-to-world form, whose camera is its constant column.
+std::string halfWidthLines(const std::array<std::string, 3>& columnX, const std::array<std::string, 4>& columnZ,
+                           const std::array<std::string, 4>& translation, bool affine, const std::string& h,
+                           const std::string& in, const std::string& nl) {
+  const std::string x = std::string(kPrefix) + "_column";
+  auto vec3 = [](const auto& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
+  std::string t = in + "float3 " + x + " = " + vec3(columnX) + ";" + nl;
+  if (affine)  // M (c z, c' z, z, 1): the point minus the camera (M's constant column) is z (x c + y c' + z)
+    t += in + "float " + h + " = -dot(" + vec3(columnZ) + ", " + x + ") / dot(" + x + ", " + x + ");" + nl;
+  else
+    t += in + "float " + h + " = -dot(" + vec3(translation) + " * " + columnZ[3] + " - " + vec3(columnZ) + " * " +
+         translation[3] + ", " + x + ") / (dot(" + x + ", " + x + ") * " + columnZ[3] + ");" + nl;
+  t += in + h + " = " + h + " > 0.25 ? " + h + " : 1;" + nl;
+  return t;
+}
+
 std::string screenScaleLines(const RowProductTextFix& fix, const std::string& d, const std::string& in,
                              const std::string& nl) {
-  const std::string x = std::string(kPrefix) + "_column", h = std::string(kPrefix) + "_half_width";
-  auto vec3 = [](const std::array<std::string, 4>& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
-  std::string t = in + "float3 " + x + " = " + vec3(fix.column) + ";" + nl;
-  if (fix.scaledByDepth)  // M (c z, c' z, z, 1): the point minus the camera (M's constant column) is z (x c + y c' + z)
-    t += in + "float " + h + " = -dot(" + vec3(fix.columnZ) + ", " + x + ") / dot(" + x + ", " + x + ");" + nl;
-  else
-    t += in + "float " + h + " = -dot(" + vec3(fix.translation) + " * " + fix.columnZ[3] + " - " + vec3(fix.columnZ) +
-         " * " + fix.translation[3] + ", " + x + ") / (dot(" + x + ", " + x + ") * " + fix.columnZ[3] + ");" + nl;
-  t += in + d + " *= " + h + " > 0.25 ? " + h + " : 1;" + nl;
-  return t;
+  const std::string h = std::string(kPrefix) + "_half_width";
+  std::string t = halfWidthLines({fix.column[0], fix.column[1], fix.column[2]}, fix.columnZ, fix.translation,
+                                 fix.scaledByDepth, h, in, nl);
+  return t + in + d + " *= " + h + ";" + nl;
 }
 
 std::string correctionBlock(const RowProductTextFix& fix, const Located& at, const std::string& indent,
@@ -297,10 +308,16 @@ std::string cameraBlock(const CameraTextFix& fix, const Located& at, const std::
        (fix.centre[3] == "1" ? "" : " / " + fix.centre[3]) + ";" + nl;
   t += in + "if (all(abs(float3(" + fix.camera[0] + ", " + fix.camera[1] + ", " + fix.camera[2] + ") - " + c +
        ") <= 0.0001 * (abs(" + c + ") + 1))) {" + nl;
-  // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much.
-  const std::string op = fix.fromCamera ? " -= " : " += ";
+  // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much. (InvM's column
+  // is the matrix's times the screen coordinate's half-width where that is not NDC.)
+  const std::string op = fix.fromCamera ? " -= " : " += ", h = std::string(kPrefix) + "_half_width";
+  std::string scale;
+  if (fix.scaleFromTheMatrix) {
+    t += halfWidthLines(fix.columnX, fix.columnZ, fix.translation, fix.affine, h, in + "  ", nl);
+    scale = h + " * ";
+  }
   for (size_t i = 0; i < 3; ++i)
-    t += in + "  " + at.component[i] + op + s + ".x * " + s + ".y * " + fix.columnX[i] + ";" + nl;
+    t += in + "  " + at.component[i] + op + s + ".x * " + s + ".y * " + scale + fix.columnX[i] + ";" + nl;
   t += in + "}" + nl;
   t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
   return t;
