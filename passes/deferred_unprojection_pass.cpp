@@ -353,12 +353,16 @@ void decideProducts(const std::vector<Product>& products, const std::set<uint32_
 // reported with the reason. True when a text fix was recorded.
 // The construct and form a found cbuffer-row product is reported as.
 void nameTheForm(const RowProductTextFix& fix, ViewDependentUse& entry) {
-  entry.construct = fix.scaledByDepth && fix.scaleFromTheMatrix ? "matrix in cbuffer rows * (screen * depth, depth, 1)"
+  entry.construct = fix.basisRay ? "basis vectors in cbuffer rows: (bx * x + by * y + bz) * depth"
+                    : fix.scaledByDepth && fix.scaleFromTheMatrix ? "matrix in cbuffer rows * (screen * depth, depth, 1)"
                     : fix.scaledByDepth ? "matrix in cbuffer rows * (ndc * depth, depth, 1)"
                     : fix.uvOfTheDepthTexture ? "matrix in cbuffer rows * (uv, depth, 1)"
                     : fix.scaleFromTheMatrix  ? "matrix in cbuffer rows * (screen coordinate, depth, 1)"
                                                 : "matrix in cbuffer rows * vector";
-  entry.form = fix.scaledByDepth && fix.scaleFromTheMatrix
+  entry.form = fix.basisRay
+                   ? "position rebuilt as a ray of cbuffer basis vectors times the view depth (the screen-to-world map "
+                     "in another order; corrected where the ray's part along the view axis is 1, checked at run time)"
+               : fix.scaledByDepth && fix.scaleFromTheMatrix
                    ? "position rebuilt through a screen-to-world matrix from the screen coordinate as the shader reads "
                      "it (a pixel position) held as four cbuffer rows (decompiled mul; the coordinate's half-width from "
                      "the matrix's optical axis, at run time)"

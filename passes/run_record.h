@@ -213,6 +213,11 @@ struct RowProductTextFix {
   // reads M's column of the depth alone.
   bool scaleFromTheMatrix = false;
   std::array<std::string, 4> columnZ, translation;
+  // The screen-to-world map applied as a ray of basis vectors times the depth (basis_rays.cpp);
+  // `columnY` names the basis of y, for the check that the depth is the view depth (the ray's part
+  // along the view axis, orthogonal to the bases of x and y, is 1: not a ray to the far plane).
+  bool basisRay = false;
+  std::array<std::string, 4> columnY;
 };
 
 // A fix only the source text carries: a view-space x rebuilt from depth one component at a time,

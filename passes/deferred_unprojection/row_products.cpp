@@ -2,6 +2,7 @@
 #include "passes/deferred_unprojection/row_products.h"
 
 #include "passes/deferred_unprojection/linear_form.h"
+#include "passes/deferred_unprojection/register_analyses.h"
 
 #include <bit>
 #include <map>
@@ -150,21 +151,9 @@ bool hasCbufferRows(const spirv::Module& m) {
 
 namespace {
 
-// The register copy's analyses both forms read, built once.
-struct RegisterAnalyses {
-  const spirv::Module& registers;
-  ValueFlow index;
-  SourceAnalysis flow;
-  Decomposer d;
-  LineMap lines;
-  size_t factorVisits = 0;
-  RegisterAnalyses(const spirv::Module& m, bool hlsl, const std::string& mainFile)
-      : registers(m), index(m), flow(index, hlsl, {}), d(index), lines(m, mainFile) {}
-};
 
 struct Factors;
 void collectFactors(Decomposer& d, SourceAnalysis& flow, Lane at, bool divides, Factors& out, int depth);
-bool texelOnly(const Sources& s) { return s.texel && !s.fragCoord && !s.varying && !s.other; }
 bool scaledScreenTerm(Decomposer& d, SourceAnalysis& flow, Lane term, Lane depth, uint32_t lane, size_t& visits);
 // The one screen input lane a product reads as it is (plainScreenFactor).
 struct PlainScreen {
@@ -313,69 +302,9 @@ bool interpolatedPosition(SourceAnalysis& flow, Decomposer& d, const std::map<La
   return lanes == 7u && inputs.size() == 1;
 }
 
-// A screen input (gl_FragCoord / SV_Position, or another fragment input) read as the rasterizer
-// hands it on: moved, not computed, and made from nothing else.
-bool screenReadAsItIs(const Sources& s) { return (s.fragCoord || s.varying) && !s.arithmetic && !s.texel && !s.other; }
 
-// Whether a pixel coordinate term is a screen input read as it is or times one constant or uniform,
-// or over (or times) a value of uniforms alone (a pixel position over a texture's size: a UV; a
-// perspective divide by an input's w is NDC).
-bool notKnownNdc(Decomposer& d, SourceAnalysis& flow, Lane term) {
-  const Linear& f = d.form(term);
-  if (f.size() != 1 || !f[0].term) return false;
-  const Lane inner = *f[0].term;
-  Sources s = sourcesOf(flow, d, inner);
-  if ((s.fragCoord || s.varying) && !s.arithmetic) return true;
-  const Instruction* def = d.definition(inner.id);
-  if (!def || (def->opcode != spv::OpFDiv && def->opcode != spv::OpFMul) || def->operands.size() != 2) return false;
-  auto laneOf = [&](uint32_t id) { return Lane{id, d.isVector(id) ? inner.lane : 0}; };
-  const Sources a = sourcesOf(flow, d, laneOf(def->operand(0))), b = sourcesOf(flow, d, laneOf(def->operand(1)));
-  auto uniformOnly = [](const Sources& x) { return !x.fragCoord && !x.varying && !x.texel && !x.other; };
-  return (screenReadAsItIs(a) && uniformOnly(b)) || (def->opcode == spv::OpFMul && screenReadAsItIs(b) && uniformOnly(a));
-}
 
-// The coordinate of the one image sample the depth `z` is computed from (z itself, or z made linear
-// from it), or nothing when there is none or more than one.
-std::optional<uint32_t> depthSampleCoordinate(Decomposer& d, Lane z) {
-  std::optional<uint32_t> coordinate;
-  int samples = 0;
-  std::set<uint32_t> seen;
-  std::vector<std::pair<uint32_t, int>> stack{{d.canonical(z).id, 0}};
-  while (!stack.empty()) {
-    auto [id, depth] = stack.back();
-    stack.pop_back();
-    if (!seen.insert(id).second) continue;
-    const Instruction* def = d.definition(id);
-    if (!def) continue;
-    switch (def->opcode) {
-      case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod: case spv::OpImageGather:
-        if (def->operands.size() >= 2) coordinate = def->operand(1);
-        ++samples;
-        continue;
-      default: break;
-    }
-    if (depth >= 12) continue;
-    for (uint32_t operand : def->operands)
-      if (d.definition(operand)) stack.push_back({operand, depth + 1});
-  }
-  return samples == 1 ? coordinate : std::nullopt;
-}
 
-// Whether `screenX` and `screenY` (the pixel's coordinates as the product reads them: the lanes, or
-// the one term each is) are the coordinate the depth `z` is sampled at: then they run over [0, 1]
-// across the screen-sized depth buffer, a UV whose NDC is 2u - 1.
-bool depthSampledAt(Decomposer& d, Lane z, Lane screenX, Lane screenY) {
-  const std::optional<uint32_t> coordinate = depthSampleCoordinate(d, z);
-  if (!coordinate) return false;
-  auto is = [&](Lane term, uint32_t lane) {
-    const Lane at = d.canonical({*coordinate, lane});
-    if (d.canonical(term) == at) return true;
-    const Linear& f = d.form(term);
-    return f.size() == 1 && f[0].term && !f[0].coefficient.uniform() && f[0].coefficient.scale == 1.0f &&
-           d.canonical(*f[0].term) == at;
-  };
-  return is(screenX, 0) && is(screenY, 1);
-}
 
 // The screen-to-world form's term `term` = (the pixel's coordinate) * z: the coordinate, the operand of
 // the product that is not z.
@@ -775,6 +704,7 @@ DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, c
   forms.products = findRowProducts(analyses);
   forms.rays = findComponentRays(analyses);
   forms.interpolatedRays = findInterpolatedRays(analyses);
+  for (RowProduct& p : findBasisRays(analyses)) forms.products.push_back(std::move(p));
   // A screen-to-world product's x * z term is a product of the screen and the depth like a view ray's
   // x: one correction, the product's.
   std::erase_if(forms.rays, [&](const ComponentRay& r) {

@@ -743,8 +743,9 @@ class DeferredRender : public ::testing::Test {
   // (u z, v z, z, 1).
   // `pixelSpace`: it reads the pixel position as it is (the depth loaded there), the map takes
   // (p.x z, p.y z, z, 1), and the fix computes the pixel's half-width from the map.
+  // `basis`: the dump is the basis form (its report's construct), the map's w row unread.
   void checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace = false,
-                          bool pixelSpace = false);
+                          bool pixelSpace = false, bool basis = false);
   // checkScreenToWorld behind `vertex` (GLSL, named `vertexName`) instead of the harness's own
   // full-screen vertex stage, for a dump that reads what that stage hands on.
   void checkScreenToWorldAfter(const char* vertexName, const char* vertex, const char* name, const char* text,
@@ -996,7 +997,7 @@ GBuffer linearDepth(const GBuffer& g, const Mat4& mono) {
 // eye's exact matrix applied in double to the fp32 inputs; truth and fix must be within
 // screenToWorldBound() of it, the baseline beyond the truth's bound at more than 90 % of the pixels.
 void DeferredRender::checkScreenToWorld(const char* name, const char* text, const char* tag, bool uvSpace,
-                                        bool pixelSpace) {
+                                        bool pixelSpace, bool basis) {
   const Mat4 mono = projection(0), viewMatrix = view();
   // From UV space: (u z, v z, z, 1) to (ndc.x z, ndc.y z, z, 1), ndc = 2 uv - 1; from pixels likewise,
   // ndc = 2 p / size - 1.
@@ -1017,8 +1018,10 @@ void DeferredRender::checkScreenToWorld(const char* name, const char* text, cons
       auto original = compileOriginal(name, text, options);
       nlohmann::json pass;
       std::vector<uint32_t> fixedDump = compileDumpFixed(name, text, options, &pass);
-      EXPECT_EQ(pass["fixed"][0].value("construct", ""), pixelSpace ? "matrix in cbuffer rows * (screen * depth, depth, 1)"
-                                                                    : "matrix in cbuffer rows * (ndc * depth, depth, 1)")
+      EXPECT_EQ(pass["fixed"][0].value("construct", ""),
+                basis        ? "basis vectors in cbuffer rows: (bx * x + by * y + bz) * depth"
+                : pixelSpace ? "matrix in cbuffer rows * (screen * depth, depth, 1)"
+                             : "matrix in cbuffer rows * (ndc * depth, depth, 1)")
           << pass.dump(2);
       DumpFeed monoFeed{false, false}, stereoFeed{false, true};
       monoFeed.sampler = stereoFeed.sampler = uvSpace;
@@ -1351,6 +1354,22 @@ TEST_F(DeferredRender, DumpStyleScreenToWorldFromPixelPositionsFixedInItsTextByE
   text.replace(text.find(ndc), ndc.size(), "  r2.xy = v0.xy;\n");
   checkScreenToWorld("5a6b7c8d9e0f1a2d-ps_replace.txt", text.c_str(), "dump screen-to-world from pixel positions", false,
                      true);
+}
+
+// The basis form (CryEngine's `(vWBasisX * x + (vWBasisY * y + vWBasisZ)) * depth + cameraPos`): the
+// same screen-to-world map, its columns cb0[0..3] read as basis vectors and the camera, applied in
+// another order, a ray first and then the ray times the linear depth. The linear forms see that
+// product as one term; the basis recogniser looks into the ray. Before, unseen.
+TEST_F(DeferredRender, DumpStyleBasisRayTimesDepthFixedInItsTextByExecution) {
+  std::string text = kDumpScreenToWorld;
+  const std::string chain = "  r2.xy = r2.xy * r1.xx;\n  r2.z = r1.x;\n  r3.xyzw = cb0[1].xyzw * r2.yyyy;\n"
+                            "  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;\n  r3.xyzw = r2.zzzz * cb0[2].xyzw + r3.xyzw;\n"
+                            "  r3.xyzw = cb0[3].xyzw + r3.xyzw;\n  r2.xyz = r3.xyz / r3.www;\n";
+  ASSERT_NE(text.find(chain), std::string::npos);
+  text.replace(text.find(chain), chain.size(),
+               "  r3.xyz = cb0[1].xyz * r2.yyy;\n  r3.xyz = r2.xxx * cb0[0].xyz + r3.xyz;\n  r3.xyz = cb0[2].xyz + r3.xyz;\n"
+               "  r2.xyz = r3.xyz * r1.xxx + cb0[3].xyz;\n");
+  checkScreenToWorld("5a6b7c8d9e0f1a2e-ps_replace.txt", text.c_str(), "dump basis ray times depth", false, false, true);
 }
 
 // A dump (kDumpPrologue's) with the depth sampled at the pixel's UV (`v0.xy * cb0[4].zw`, no

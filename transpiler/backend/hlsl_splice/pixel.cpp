@@ -225,6 +225,18 @@ std::string screenScaleLines(const RowProductTextFix& fix, const std::string& d,
   return t + in + d + " *= " + h + ";" + nl;
 }
 
+// The basis form's depth must be the view depth: the ray's part along the view axis (orthogonal to
+// the bases of x and y) is 1. A ray to the far plane (a depth over the far distance) has the far
+// distance there, and the correction's convergence would be in the wrong units: none then (d = 0).
+std::string viewDepthCheck(const RowProductTextFix& fix, const std::string& d, const std::string& in,
+                           const std::string& nl) {
+  const std::string n = std::string(kPrefix) + "_view_axis";
+  auto vec3 = [](const auto& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
+  std::string t = in + "float3 " + n + " = cross(" + vec3(fix.column) + ", " + vec3(fix.columnY) + ");" + nl;
+  t += in + "if (abs(abs(dot(" + vec3(fix.columnZ) + ", " + n + ")) / length(" + n + ") - 1) > 0.001) " + d + " = 0;" + nl;
+  return t;
+}
+
 std::string correctionBlock(const RowProductTextFix& fix, const Located& at, const std::string& indent,
                             const std::string& nl) {
   const std::string s = std::string(kPrefix) + "_stereo", d = std::string(kPrefix) + "_d", in = indent + "  ";
@@ -234,7 +246,8 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   std::string lines = first == fix.afterLine ? "line " + std::to_string(first)
                                               : "lines " + std::to_string(first) + "-" + std::to_string(fix.afterLine);
   std::string t = indent + "// ---- stereoshift: this eye's position rebuild (" + lines +
-                  (fix.scaledByDepth && fix.scaleFromTheMatrix
+                  (fix.basisRay ? ": p = (bx * x + by * y + bz) * depth over cbuffer basis vectors) ----"
+                   : fix.scaledByDepth && fix.scaleFromTheMatrix
                        ? ": q = M * (screen * depth, depth, 1) over cbuffer rows, the screen's scale from M) ----"
                    : fix.scaledByDepth       ? ": q = M * (ndc * depth, depth, 1) over cbuffer rows) ----"
                    : fix.uvOfTheDepthTexture ? ": q = InvM * (uv, depth, 1) over cbuffer rows) ----"
@@ -248,6 +261,7 @@ std::string correctionBlock(const RowProductTextFix& fix, const Located& at, con
   else
     t += in + "float " + d + " = " + s + ".x * (1 - " + s + ".y * " + at.component[3] + ");" + nl;
   if (fix.scaleFromTheMatrix) t += screenScaleLines(fix, d, in, nl);
+  if (fix.basisRay) t += viewDepthCheck(fix, d, in, nl);
   for (size_t i = 0; i < 4; ++i)
     if (fix.present[i]) t += in + at.component[i] + " -= " + fix.column[i] + " * " + d + ";" + nl;
   t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
