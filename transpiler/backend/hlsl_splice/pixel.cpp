@@ -193,20 +193,26 @@ Located locate(const Lines& lines, const RowProductTextFix& fix) {
 
 std::string indentOf(const std::string& line) { return line.substr(0, line.find_first_not_of(" \t")); }
 
-// The screen coordinate's half-width h, from M (RowProductTextFix::scaleFromTheMatrix): with x, z
-// and t M's columns of the coordinate, the depth and the constant (x.w = 0), the camera is z.xyz /
-// z.w and the coordinate c0 on the optical axis solves dot(q(c0).xyz / q.w - camera, x.xyz) = 0:
+// `float3(c[0], c[1], c[2])` of a column's elements.
+template <class Column>
+std::string float3Of(const Column& c) {
+  return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")";
+}
+
+// The declaration of `h`, the screen coordinate's half-width, from M (RowProductTextFix::
+// scaleFromTheMatrix): with x, z and t M's columns of the coordinate, the depth and the constant
+// (x.w = 0), the camera is z.xyz / z.w and the coordinate c0 on the optical axis solves
+// dot(q(c0).xyz / q.w - camera, x.xyz) = 0:
 //     c0 = -dot(t.xyz * z.w - z.xyz * t.w, x.xyz) / (dot(x.xyz, x.xyz) * z.w)
-// (the axis is orthogonal to the image's right and up, M's columns of x and y). A UV or a pixel
-// position starts at 0, so c0 is its half-width; NDC is centred (c0 = 0, up to a jitter): h = 1.
-// `d` is scaled by h.
-// The half-width's declaration (`h`), from InvM's columns of x, of the depth and the constant:
-// `affine` for the screen-to-world form, whose camera is its constant column.
+// (the axis is orthogonal to the image's right and up, M's columns of x and y); `affine`, the
+// screen-to-world form (c z, c' z, z, 1), whose camera is its constant column: c0 = -dot(z.xyz,
+// x.xyz) / dot(x.xyz, x.xyz). A UV or a pixel position starts at 0, so c0 is its half-width; NDC is
+// centred (c0 = 0, up to a jitter): h = 1.
 std::string halfWidthLines(const std::array<std::string, 3>& columnX, const std::array<std::string, 4>& columnZ,
                            const std::array<std::string, 4>& translation, bool affine, const std::string& h,
                            const std::string& in, const std::string& nl) {
   const std::string x = std::string(kPrefix) + "_column";
-  auto vec3 = [](const auto& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
+  auto vec3 = [](const auto& c) { return float3Of(c); };
   std::string t = in + "float3 " + x + " = " + vec3(columnX) + ";" + nl;
   if (affine)  // M (c z, c' z, z, 1): the point minus the camera (M's constant column) is z (x c + y c' + z)
     t += in + "float " + h + " = -dot(" + vec3(columnZ) + ", " + x + ") / dot(" + x + ", " + x + ");" + nl;
@@ -217,6 +223,7 @@ std::string halfWidthLines(const std::array<std::string, 3>& columnX, const std:
   return t;
 }
 
+// `d` scaled by the half-width (halfWidthLines).
 std::string screenScaleLines(const RowProductTextFix& fix, const std::string& d, const std::string& in,
                              const std::string& nl) {
   const std::string h = std::string(kPrefix) + "_half_width";
@@ -231,9 +238,8 @@ std::string screenScaleLines(const RowProductTextFix& fix, const std::string& d,
 std::string viewDepthCheck(const RowProductTextFix& fix, const std::string& d, const std::string& in,
                            const std::string& nl) {
   const std::string n = std::string(kPrefix) + "_view_axis";
-  auto vec3 = [](const auto& c) { return "float3(" + c[0] + ", " + c[1] + ", " + c[2] + ")"; };
-  std::string t = in + "float3 " + n + " = cross(" + vec3(fix.column) + ", " + vec3(fix.columnY) + ");" + nl;
-  t += in + "if (abs(abs(dot(" + vec3(fix.columnZ) + ", " + n + ")) / length(" + n + ") - 1) > 0.001) " + d + " = 0;" + nl;
+  std::string t = in + "float3 " + n + " = cross(" + float3Of(fix.column) + ", " + float3Of(fix.columnY) + ");" + nl;
+  t += in + "if (abs(abs(dot(" + float3Of(fix.columnZ) + ", " + n + ")) / length(" + n + ") - 1) > 0.001) " + d + " = 0;" + nl;
   return t;
 }
 
