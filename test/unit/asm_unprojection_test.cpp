@@ -371,22 +371,28 @@ TEST(AsmUnprojection, UvFromTheTextureSizeCorrectedByExecution) {
   checkByExecution(shader.c_str(), false, "asm mad, matrix from UV space, depth loaded", false, true, false, true);
 }
 
+// kDeferredMadPs (or a shader made from it) with SV_Position's x and y handed to the product as they
+// are and the depth loaded at the pixel, instead of a UV made NDC and the depth sampled at it.
+std::string withThePixelReadAsItIs(std::string shader) {
+  const std::string screen =
+      "mul r0.xy, v0.xyxx, cb0[2].zwzz\n"
+      "sample_l_indexable(texture2d)(float,float,float,float) r0.z, r0.xyxx, t0.yzxw, s0, l(0.000000)\n"
+      "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
+  if (shader.find(screen) == std::string::npos) return "";
+  return shader.replace(shader.find(screen), screen.size(),
+                        "ftoi r1.xy, v0.xyxx\n"
+                        "mov r1.zw, l(0,0,0,0)\n"
+                        "ld_indexable(texture2d)(float,float,float,float) r0.z, r1.xyzw, t0.yzxw\n"
+                        "mov r0.xy, v0.xyxx\n");
+}
+
 // A matrix from pixel positions (Unreal's SVPositionToTranslatedWorld): SV_Position's x and y into
 // the product as they are, the depth loaded at the pixel. The correction's column is the matrix's
 // times the pixel's half-width, which the fix computes from the matrix's optical axis (before, left
 // alone: a coordinate of unknown scale).
 TEST(AsmUnprojection, MatrixFromPixelPositionsCorrectedByExecution) {
-  std::string shader = kDeferredMadPs;
-  const std::string screen =
-      "mul r0.xy, v0.xyxx, cb0[2].zwzz\n"
-      "sample_l_indexable(texture2d)(float,float,float,float) r0.z, r0.xyxx, t0.yzxw, s0, l(0.000000)\n"
-      "mad r0.xy, r0.xyxx, l(2.000000, -2.000000, 0.000000, 0.000000), l(-1.000000, 1.000000, 0.000000, 0.000000)\n";
-  ASSERT_NE(shader.find(screen), std::string::npos);
-  shader.replace(shader.find(screen), screen.size(),
-                 "ftoi r1.xy, v0.xyxx\n"
-                 "mov r1.zw, l(0,0,0,0)\n"
-                 "ld_indexable(texture2d)(float,float,float,float) r0.z, r1.xyzw, t0.yzxw\n"
-                 "mov r0.xy, v0.xyxx\n");
+  std::string shader = withThePixelReadAsItIs(kDeferredMadPs);
+  ASSERT_FALSE(shader.empty());
   checkByExecution(shader.c_str(), false, "asm mad, matrix from pixel positions", false, false, true);
   // In row storage (dp4 over cb1[20..23]) the same.
   const std::string chain = "mul r1.xyzw, r0.yyyy, cb1[21].xyzw\n"
@@ -551,7 +557,10 @@ const std::string kViewVectorPs = [] {
 // `fromCamera`: the shader's vector is p - c (the direction from the camera), the expected one negated.
 // `screenToWorld`: the shader reads the linear view depth and rebuilds through the screen-to-world
 // map (inverse(P V) times the map from (ndc * z, z, 1) to clip space).
-void checkViewVector(const std::string& shader, bool fromCamera, const char* tag, bool screenToWorld = false) {
+// `pixelSpace` (the (ndc, depth, 1) form): the shader reads the pixel position as it is through the
+// matrix from pixels; the fix computes the pixel's half-width from it (in the camera block too).
+void checkViewVector(const std::string& shader, bool fromCamera, const char* tag, bool screenToWorld = false,
+                     bool pixelSpace = false) {
   AsmShiftResult converted = shiftAssembly(shader, {});
   ASSERT_TRUE(converted.ok) << converted.error.message;
   ASSERT_EQ(converted.corrections.size(), 2u) << converted.whyUnchanged;
@@ -570,7 +579,10 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
   toClip[10] = -mono[10];
   toClip[14] = mono[14];
   // The matrix the shader is fed; its column of x is the inverse view-projection's either way.
-  const Mat4 monoMatrix = screenToWorld ? harness::multiply(monoInverse, toClip) : monoInverse;
+  const Mat4 pixelToNdc = {2.0 / kSize, 0, 0, 0, 0, -2.0 / kSize, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
+  const Mat4 monoMatrix = screenToWorld ? harness::multiply(monoInverse, toClip)
+                          : pixelSpace  ? harness::multiply(monoInverse, pixelToNdc)
+                                        : monoInverse;
   const Mat4 inverseView = harness::inverse(viewMatrix);
   const Vec4 camera = vec(float(inverseView[12]), float(inverseView[13]), float(inverseView[14]), 0.0f);
   const Vec4 light = vec(0.8f, 1.5f, -5.0f, 0.0f);
@@ -588,7 +600,12 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
       cameraLength += std::pow(floatOf(camera[c]), 2);
       offsetLength += std::pow(kSeparation * kConvergence * monoInverse[c], 2);
     }
-    const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength));
+    // A half-width the fix computes (pixelSpace): the offset off by its relative error, and one more
+    // rounding for the product with it.
+    const harness::MatrixHalfWidth halfWidth = harness::matrixHalfWidth(monoF);
+    const double scaleError = pixelSpace ? std::abs(halfWidth.value - kSize / 2.0) + halfWidth.bound : 0.0;
+    const double cameraBound = 4 * u * (std::sqrt(cameraLength) + std::sqrt(offsetLength)) +
+                               (pixelSpace ? std::sqrt(offsetLength) * (scaleError / (kSize / 2.0) + u) : 0.0);
     size_t pixels = 0, outside = 0, monoOutside = 0, lightMoved = 0;
     double worst = 0;
     std::vector<Vec4> cb1 = constants(monoMatrix, false);
@@ -610,8 +627,11 @@ void checkViewVector(const std::string& shader, bool fromCamera, const char* tag
         std::array<double, 4> exact{};
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) exact[r] += stereoInverse[c * 4 + r] * v[c];
-        const auto positionError = screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence)
-                                                 : harness::positionBound(monoF, v, true, es, kConvergence);
+        const auto positionError =
+            screenToWorld ? harness::screenToWorldBound(monoF, nx, ny, depth, true, es, kConvergence)
+            : pixelSpace  ? harness::positionBound(monoF, {pixel.x, pixel.y, depth, 1.0}, true, es, kConvergence,
+                                                   kSize / 2.0, scaleError)
+                          : harness::positionBound(monoF, v, true, es, kConvergence);
         const harness::ViewVector expectedVector = harness::viewVectorTo(eyeCamera, exact, positionError, cameraBound);
         const double bound = expectedVector.bound;
         auto fix = rebuild(*fixed, pixel, cb1, stereoParams), mono = rebuild(*withoutCamera, pixel, cb1, stereoParams);
@@ -647,6 +667,15 @@ TEST(AsmUnprojection, ScreenToWorldViewVectorGetsThisEyesCameraByExecution) {
                "mul o0.xyz, r0.wwww, r2.xyzx\n");
   text.replace(text.find("cb1[24], immediateIndexed"), 25, "cb1[25], immediateIndexed");
   checkViewVector(text, false, "asm screen to world view vector", true);
+}
+
+// The view vector from a matrix that takes the pixel position as it is: the camera moves by the
+// matrix's column of x times the pixel's half-width, which the camera block computes from the
+// matrix as the position's does (before, the camera was left mono).
+TEST(AsmUnprojection, ViewVectorFromPixelPositionsGetsThisEyesCameraByExecution) {
+  const std::string text = withThePixelReadAsItIs(kViewVectorPs);
+  ASSERT_FALSE(text.empty());
+  checkViewVector(text, false, "asm view vector from pixel positions", false, true);
 }
 
 // p - c, as a reflection or a fog ray reads it (`add r1.xyz, r1.xyzx, -cb1[24].xyzx`): this eye's

@@ -412,7 +412,8 @@ std::vector<std::string> rayBlock(const AsmViewRay& r, const std::string& rS, bo
 
 // This eye's camera for a view vector to a rebuilt position (see asm_unprojection.h), after the
 // instruction computing it: rT.xyz the camera InvM shows, each compared with c (within 1e-4 of
-// |camera| + 1), and v += s.x * s.y * InvM[column of x] where all three agree.
+// |camera| + 1), and v += s.x * s.y * InvM[column of x] where all three agree (InvM's column the
+// matrix's times the half-width in rS.w where the matrix takes a screen coordinate of unknown scale).
 std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojection::Camera& c, const std::string& rS,
                                      const std::string& rT, bool sm5) {
   std::vector<std::string> block = {
@@ -420,6 +421,10 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
           (c.fromCamera ? ": v = position - camera" : ": v = camera - position") + ", the camera the position's matrix shows)",
       stereoParamsLoad(rS, sm5),
   };
+  if (u.scaleFromTheMatrix) {  // rS.w = h, the screen coordinate's half-width (InvM's column is M's times it)
+    block.push_back("mov " + rS + ".w, l(1.000000)");
+    appendScreenScale(u, rS, rT, block);
+  }
   const char lanes[] = "xyz";
   for (int i = 0; i < 3; ++i) {
     const std::string t = rT + "." + lanes[i];
@@ -431,6 +436,7 @@ std::vector<std::string> cameraBlock(const AsmUnprojection& u, const AsmUnprojec
   block.push_back("and " + rT + ".x, " + rT + ".x, " + rT + ".y");
   block.push_back("and " + rT + ".x, " + rT + ".x, " + rT + ".z");
   block.push_back("mul " + rS + ".z, " + rS + ".x, " + rS + ".y");
+  if (u.scaleFromTheMatrix) block.push_back("mul " + rS + ".z, " + rS + ".z, " + rS + ".w");  // times h
   for (int i = 0; i < 3; ++i) {
     // c moves by +s.x*s.y*InvM[column of x]: c - p by as much, p - c by minus as much. InvM's column
     // is the element times its scale (half of it for a matrix from UV space).

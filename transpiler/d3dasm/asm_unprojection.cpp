@@ -576,8 +576,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
       u.depthRegister = registerText(*z.at);
     }
     u.ndc = "v" + std::to_string(role.input);
-    // (A camera moved by the scaled column is not written: the camera block has no scale of its own.)
-    if (!u.scaleFromTheMatrix) u.cameras = camerasOf(values, p, lineIndex, q, role);
+    u.cameras = camerasOf(values, p, lineIndex, q, role);
     found.push_back(std::move(u));
   }
   std::sort(found.begin(), found.end(), [](const AsmUnprojection& a, const AsmUnprojection& b) { return a.afterLine < b.afterLine; });
