@@ -24,11 +24,8 @@ struct BasisComponent {
 
 bool element(const Coefficient& c) { return c.uniform() && c.path.size() >= 2 && c.scale == 1.0f; }
 
-std::string vectorKey(const Coefficient& c) {
-  std::string key = std::to_string(c.root);
-  for (size_t k = 0; k + 1 < c.path.size(); ++k) key += "/" + std::to_string(c.path[k]);
-  return key;
-}
+// The vector a basis element is a lane of.
+std::string vectorKey(const Coefficient& c) { return pathKey(c.root, c.path, c.path.size() - 1); }
 
 // The ray's parts: the pixel's x and y (lanes 0 and 1 of one screen input, no texel) each times a
 // basis element, and one basis element on its own; all three elements lane `index` of their vectors.

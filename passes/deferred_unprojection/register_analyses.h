@@ -16,6 +16,13 @@ namespace stereoshift::deferred {
 
 using namespace linear;
 
+// A key naming the uniform a coefficient's path leads to, its first `length` steps: "5/0/20".
+inline std::string pathKey(uint32_t root, const AccessPath& path, size_t length) {
+  std::string key = std::to_string(root);
+  for (size_t k = 0; k < length && k < path.size(); ++k) key += "/" + std::to_string(path[k]);
+  return key;
+}
+
 // The register copy's analyses both forms read, built once.
 struct RegisterAnalyses {
   const spirv::Module& registers;

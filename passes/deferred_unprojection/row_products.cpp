@@ -29,12 +29,6 @@ struct Member {
   std::string matrix;  // the key of the matrix the elements belong to
 };
 
-std::string pathKey(uint32_t root, const AccessPath& path, size_t length) {
-  std::string key = std::to_string(root);
-  for (size_t k = 0; k < length && k < path.size(); ++k) key += "/" + std::to_string(path[k]);
-  return key;
-}
-
 std::optional<Member> memberOf(Decomposer& d, Lane at) {
   Member member{at, {}, {}, 0, ""};
   bool hasTranslation = false;

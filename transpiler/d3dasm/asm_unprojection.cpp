@@ -302,11 +302,6 @@ bool scaledTermsSampledAt(const std::vector<Value>& values, const Roles& role) {
   return sampledAtIs(values, screen, *samples.begin());
 }
 
-// Whether the pixel's coordinate of `role` is not known to be NDC (notKnownNdc). The screen-to-world
-// form's x term is the coordinate times the depth: the same rule on the coordinate, where a texture
-// coordinate read as it is may carry NDC (a full-screen pass that hands its corners on) and is taken
-// as such; the pixel position (SV_Position) never is. (A UV read as it is times a linear depth is
-// left alone: the linear depth is not the texel the sample's coordinate is known for.)
 // The operands of InvM's column of the depth and of its constant column (with their signs), for the
 // run-time half-width of a screen coordinate (AsmUnprojection::scaleFromTheMatrix); nothing when a
 // component is not computed or an element the computation reads (those and the column of x) is
@@ -326,13 +321,16 @@ std::optional<std::array<std::array<std::string, 4>, 2>> columnsForTheScale(cons
   return columns;
 }
 
-bool coordinateNotNdc(const std::vector<Value>& values, const Roles& role, const Program::Impl& p) {
+// Whether the pixel's coordinate of `role` is not known to be NDC (notKnownNdc). The screen-to-world
+// form's x term is the coordinate times the depth: the same rule on the coordinate, where a texture
+// coordinate read as it is may carry NDC (a full-screen pass that hands its corners on) and is taken
+// as such; the pixel position (SV_Position) never is. (Such a coordinate's scale is the map's to show:
+// AsmUnprojection::scaleFromTheMatrix.)
+// `position`: the SV_Position input register, if the shader declares one.
+bool coordinateNotNdc(const std::vector<Value>& values, const Roles& role, std::optional<uint32_t> position) {
   if (!role.scaled) return notKnownNdc(values, role.x);
   const int screenX = screenFactorsOf(values, role).first;
-  return screenX >= 0 && notKnownNdc(values, screenX) &&
-         std::any_of(p.inputs.begin(), p.inputs.end(), [&](const InputDeclaration& input) {
-           return input.index == role.input && input.systemValue == "position";
-         });
+  return screenX >= 0 && notKnownNdc(values, screenX) && position == role.input;
 }
 
 // The camera c of a view vector `sign` * (c - p) whose linear form is `f`, p being the point q's
@@ -535,7 +533,7 @@ AsmUnprojections findAsmUnprojections(const AsmText& text, const Program& progra
     if (!placeable) continue;
     // A UV the depth is sampled at is the depth buffer's, over [0, 1] where NDC is over [-1, 1]: the
     // matrix maps UV space and the correction takes half its column of u.
-    const bool notNdc = coordinateNotNdc(values, role, p);
+    const bool notNdc = coordinateNotNdc(values, role, position);
     const bool uv = role.scaled ? scaledTermsSampledAt(values, role) : notNdc && depthSampledAt(values, role);
     // A coordinate of unknown scale into a matrix with a w: the matrix shows its scale.
     std::optional<std::array<std::array<std::string, 4>, 2>> scaleColumns;
