@@ -378,6 +378,29 @@ void nameTheForm(const RowProductTextFix& fix, ViewDependentUse& entry) {
                    : "position rebuilt through a matrix held as four cbuffer rows (decompiled mul)";
 }
 
+// A re-projection of a corrected rebuild (reprojections.cpp) as a text fix, or reported with `why`
+// it is not fixed.
+void recordReprojection(const Reprojection& r, const std::string& why, DeferredFacts& facts) {
+  ViewDependentUse entry;
+  entry.construct = "re-projection VP * (p, 1) of a corrected position, read at in the depth texture";
+  entry.form = "a point computed from the corrected rebuild projected back to the screen through a matrix held "
+               "as four cbuffer rows, its clip x the coordinate the depth texture is read at again (SSAO samples, "
+               "a reflection's march): this eye's image has the point at clip.x + a*s.x*(clip.w - s.y)";
+  entry.matrix = r.rows;
+  entry.depth = r.texture;
+  if (r.fix.afterLine) entry.line = static_cast<int>(r.fix.afterLine);
+  if (!why.empty()) {
+    entry.reason = "not fixed: " + why;
+    facts.leftAlone.push_back(entry);
+    return;
+  }
+  entry.fix = "clip.x + a*s.x*(clip.w - s.y), a = dot((" + r.fix.rowX[0] + ", " + r.fix.rowX[1] + ", " +
+              r.fix.rowX[2] + "), (" + r.fix.column[0] + ", " + r.fix.column[1] + ", " + r.fix.column[2] +
+              ")) after line " + std::to_string(r.fix.afterLine);
+  facts.fixed.push_back(entry);
+  facts.reprojectionTextFixes.push_back(r.fix);
+}
+
 bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
   if (ctx.source.language != SourceLanguage::Hlsl || !hasCbufferRows(ctx.module)) return false;
   const spirv::Module* registers = ctx.analyses.registerSsaCopy();
@@ -451,6 +474,7 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
       facts.cameraTextFixes.push_back(camera);
     }
   }
+  for (const Reprojection& r : forms.reprojections) recordReprojection(r, notFixed(r.reason), facts);
   for (const ComponentRay& r : forms.rays) {
     ViewDependentUse entry;
     entry.construct = "view-space x = ndc.x * depth * k, per component";

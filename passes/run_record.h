@@ -251,6 +251,21 @@ struct CameraTextFix {
   std::array<std::string, 4> columnZ, translation;
 };
 
+// A fix only the source text carries: a re-projection `clip = VP * (p, 1)` over cbuffer rows of a
+// point p computed from a position a RowProductTextFix corrects (SSAO's samples, a reflection's
+// march), whose clip x is a coordinate of a read of the rebuild's depth texture: the corrected p is
+// the true point, VP the mono matrix, and this eye's image has it at clip.x + a * s.x * (clip.w -
+// s.y), with a = VP's row of x times InvM's column of NDC x (1 where VP is InvM's inverse, 0.5 for a
+// matrix to UV space), computed where it runs. Right after the statement completing clip x and w.
+struct ReprojectionTextFix {
+  uint32_t afterLine = 0;
+  // clip x (component 0) and w (component 1): the line of the statement computing each, its lane.
+  std::array<uint32_t, 2> lines{}, lanes{};
+  // VP's coefficients of p.x, p.y, p.z in clip x, and InvM's column of NDC x (the rebuild's
+  // RowProductTextFix::column, i = 0..2), as the source names them.
+  std::array<std::string, 3> rowX, column;
+};
+
 // An unprojection `InvM * v` of source text as a splice can carry it: the product, found in the
 // text as `<matrix> * <operand>` (GLSL) or `mul(<matrix>, <operand>)` (HLSL), goes through a helper that returns q' (deferred_unprojection
 // _pass.cpp's rewrite).
@@ -282,6 +297,7 @@ struct DeferredFacts {
   std::vector<RowProductTextFix> textFixes;  // with PassOptions::sourceTextFixes
   std::vector<ViewRayTextFix> rayTextFixes;  // likewise
   std::vector<CameraTextFix> cameraTextFixes;  // likewise
+  std::vector<ReprojectionTextFix> reprojectionTextFixes;  // likewise
   std::string leftAloneWhy;      // the whole shader left alone, and why
   std::string applicationFills;  // an injected parameter the application sets
 };

@@ -6,6 +6,8 @@
 #include "passes/deferred_unprojection/row_products.h"
 #include "passes/deferred_unprojection/sources.h"
 
+#include <array>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -23,6 +25,19 @@ inline std::string pathKey(uint32_t root, const AccessPath& path, size_t length)
   return key;
 }
 
+// One component of a candidate q: linear in three terms with a uniform element as each
+// coefficient, plus one uniform element; which component it is (`index`, 0-3) and of which matrix
+// (`matrix`) the elements say. Column storage (`mad` chains: `r1.xyzw = r0.xxxx * cb1[20].xyzw +
+// ...`): every element of component i is lane i of a column vector. Row storage (dp4: `r1.x =
+// dot(r0.xyzw, cb1[20].xyzw)`): every element of component i is in row vector k+i of one array.
+struct Member {
+  Lane at;
+  std::map<Lane, Coefficient> byTerm;
+  Coefficient translation;
+  uint32_t index = 0;
+  std::string matrix;  // the key of the matrix the elements belong to
+};
+
 // The register copy's analyses both forms read, built once.
 struct RegisterAnalyses {
   const spirv::Module& registers;
@@ -31,6 +46,11 @@ struct RegisterAnalyses {
   Decomposer d;
   LineMap lines;
   size_t factorVisits = 0;
+  // findRowProducts' candidates (every lane that is one component of a product, in module order)
+  // and, of them, the products whose terms are not a pixel and a depth (a point computed in the
+  // shader: a re-projection, a light-space transform), for findReprojections.
+  std::vector<Member> members;
+  std::vector<std::array<const Member*, 4>> otherProducts;
   RegisterAnalyses(const spirv::Module& m, bool hlsl, const std::string& mainFile)
       : registers(m), index(m), flow(index, hlsl, {}), d(index), lines(m, mainFile) {}
 };
@@ -102,6 +122,13 @@ inline bool depthSampledAt(Decomposer& d, Lane z, Lane screenX, Lane screenY) {
   };
   return is(screenX, 0) && is(screenY, 1);
 }
+
+// The cbuffer vectors a product's components read, as the source names them, in numeric order.
+std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>& q);
+
+// The re-projections (reprojections.cpp) of points computed from the fixed ones of `rebuilds`,
+// among the products findRowProducts found with other terms (a.otherProducts).
+std::vector<Reprojection> findReprojections(RegisterAnalyses& a, const std::vector<RowProduct>& rebuilds);
 
 // The basis form (basis_rays.cpp): a position rebuilt as (bx * x + by * y + bz) * depth (+ camera)
 // over cbuffer basis vectors, as the screen-to-world form's RowProduct.

@@ -16,19 +16,6 @@ using namespace linear;
 
 namespace {
 
-// One component of a candidate q: linear in three terms with a uniform element as each
-// coefficient, plus one uniform element; which component it is (`index`, 0-3) and of which matrix
-// (`matrix`) the elements say. Column storage (`mad` chains: `r1.xyzw = r0.xxxx * cb1[20].xyzw +
-// ...`): every element of component i is lane i of a column vector. Row storage (dp4: `r1.x =
-// dot(r0.xyzw, cb1[20].xyzw)`): every element of component i is in row vector k+i of one array.
-struct Member {
-  Lane at;
-  std::map<Lane, Coefficient> byTerm;
-  Coefficient translation;
-  uint32_t index = 0;
-  std::string matrix;  // the key of the matrix the elements belong to
-};
-
 std::optional<Member> memberOf(Decomposer& d, Lane at) {
   Member member{at, {}, {}, 0, ""};
   bool hasTranslation = false;
@@ -65,26 +52,6 @@ std::optional<Member> memberOf(Decomposer& d, Lane at) {
     return std::nullopt;
   }
   return member;
-}
-
-std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>& q) {
-  // In numeric order (cb3[8] before cb3[10]): keyed by the root and the path.
-  std::map<std::vector<uint32_t>, std::string> vectors;
-  auto add = [&](Coefficient c) {
-    c.path.pop_back();  // the element's vector
-    c.scale = 1.0f;
-    std::vector<uint32_t> key{c.root};
-    key.insert(key.end(), c.path.begin(), c.path.end());
-    vectors.emplace(std::move(key), elementText(m, c));
-  };
-  for (const Member* member : q) {
-    if (!member) continue;
-    add(member->translation);
-    for (const auto& [term, c] : member->byTerm) add(c);
-  }
-  std::string text;
-  for (const auto& [key, vector] : vectors) text += (text.empty() ? "" : ", ") + vector;
-  return text;
 }
 
 // The candidates, grouped into matrices and ordered into q's four components: column storage by
@@ -126,6 +93,26 @@ std::vector<std::array<const Member*, 4>> groupProducts(const std::vector<Member
 }
 
 }  // namespace
+
+std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>& q) {
+  // In numeric order (cb3[8] before cb3[10]): keyed by the root and the path.
+  std::map<std::vector<uint32_t>, std::string> vectors;
+  auto add = [&](Coefficient c) {
+    c.path.pop_back();  // the element's vector
+    c.scale = 1.0f;
+    std::vector<uint32_t> key{c.root};
+    key.insert(key.end(), c.path.begin(), c.path.end());
+    vectors.emplace(std::move(key), elementText(m, c));
+  };
+  for (const Member* member : q) {
+    if (!member) continue;
+    add(member->translation);
+    for (const auto& [term, c] : member->byTerm) add(c);
+  }
+  std::string text;
+  for (const auto& [key, vector] : vectors) text += (text.empty() ? "" : ", ") + vector;
+  return text;
+}
 
 bool hasCbufferRows(const spirv::Module& m) {
   for (const auto& inst : m.typesValues) {
@@ -337,7 +324,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   const LineMap& lines = a.lines;
   // Every lane of every float value that is one component of a product, once (by the value that
   // computes it), in module order.
-  std::vector<Member> members;
+  std::vector<Member>& members = a.members;
   std::set<Lane> seen;
   spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
     if (!inst.resultId || !inst.typeId) return;
@@ -384,6 +371,8 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
         for (uint32_t i = 0; i < 4; ++i)
           if (q[i]) seen.fix.afterLine = std::max(seen.fix.afterLine, lines.lineOf(q[i]->at.id));
         found.push_back(std::move(seen));
+      } else {
+        a.otherProducts.push_back(q);
       }
       continue;
     }
@@ -428,10 +417,12 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
     for (CameraTextFix& camera : p.cameras)
       for (std::string& element : camera.columnX) element = halvedForUv(element);
     p.fix.uvOfTheDepthTexture = uv;
+    p.depthId = d.canonical(*z).id;
     p.rows = rowsText(registers, q);
     for (uint32_t i = 0; i < 4; ++i) {
       p.fix.present[i] = q[i] != nullptr;
       if (!q[i]) continue;  // a lane the shader does not compute
+      p.qIds[i] = q[i]->at.id;
       p.fix.column[i] = halvedForUv(elementText(registers, q[i]->byTerm.at(*x)));
       p.fix.lines[i] = lines.lineOf(q[i]->at.id);
       p.fix.lanes[i] = q[i]->at.lane;
@@ -698,6 +689,7 @@ DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, c
   forms.products = findRowProducts(analyses);
   forms.rays = findComponentRays(analyses);
   forms.interpolatedRays = findInterpolatedRays(analyses);
+  forms.reprojections = findReprojections(analyses, forms.products);
   for (RowProduct& p : findBasisRays(analyses)) forms.products.push_back(std::move(p));
   // A screen-to-world product's x * z term is a product of the screen and the depth like a view ray's
   // x: one correction, the product's.

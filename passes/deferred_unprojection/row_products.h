@@ -20,6 +20,7 @@
 #include "passes/deferred_unprojection/sources.h"
 #include "passes/run_record.h"
 
+#include <array>
 #include <set>
 #include <string>
 #include <vector>
@@ -40,6 +41,22 @@ struct RowProduct {
   // The screen-to-world form: the statements (line, lane) computing its x * z and y * z terms,
   // which are not view rays of their own.
   std::set<std::pair<uint32_t, uint32_t>> scaledTerms;
+  // The register copy's values of q's components (0 where the shader does not compute one) and of
+  // the depth: what a re-projection of the rebuilt point is traced back to (findReprojections).
+  std::array<uint32_t, 4> qIds{};
+  uint32_t depthId = 0;
+};
+
+// A re-projection of a point computed from a corrected rebuild, `clip = VP * (p, 1)` over cbuffer
+// rows, whose clip x reaches the coordinate of a read of the rebuild's depth texture (SSAO's
+// samples, a screen-space reflection's march): a lookup in this eye's image, which must land where
+// this eye's image has the point, clip.x + s.x * (clip.w - s.y) in the re-projection's own units
+// (ReprojectionTextFix).
+struct Reprojection {
+  ReprojectionTextFix fix;
+  std::string rows;     // VP's vectors, as the source names them
+  std::string texture;  // the depth texture it reads again
+  std::string reason;   // empty when the text can carry it
 };
 
 // The view-ray form spelled per component (decompiled HLSL): a scalar x that is a product of the
@@ -72,6 +89,7 @@ struct DecompiledForms {
   std::vector<RowProduct> products;
   std::vector<ComponentRay> rays;
   std::vector<InterpolatedRay> interpolatedRays;
+  std::vector<Reprojection> reprojections;
   // Lanes decomposed, parts built and factors visited: linear in the shader's size, whatever its
   // shape (the complexity tests count it).
   size_t work = 0;

@@ -1565,4 +1565,91 @@ TEST_F(DeferredRender, DumpStyleViewRayComponentsFixedInItsTextByExecution) {
   checkViewRay("2a3b4c5d6e7f8091-ps_replace.txt", kDumpViewRay.c_str(), "dump view ray", &columns);
 }
 
+// SSAO's or a reflection's step as a decompiled dump writes it: kDumpMadLighting's rebuild, the point
+// projected back through the matrix the inverse undoes (cb0[7..10], renderLighting's `forward`, in
+// columns) and the depth texture read again where it lands. The pixel's own surface point: in this
+// eye's image it is the pixel itself, so the dump writes the NDC x it lands at minus the pixel's.
+std::string reprojectionDump() {
+  std::string text = kDumpPrologue + R"(  r4.xy = r2.xy;
+  r3.xyzw = cb0[1].xyzw * r2.yyyy;
+  r3.xyzw = r2.xxxx * cb0[0].xyzw + r3.xyzw;
+  r3.xyzw = r1.xxxx * cb0[2].xyzw + r3.xyzw;
+  r3.xyzw = cb0[3].xyzw + r3.xyzw;
+  r2.xyz = r3.xyz / r3.www;
+  r3.xyzw = cb0[8].xyzw * r2.yyyy;
+  r3.xyzw = r2.xxxx * cb0[7].xyzw + r3.xyzw;
+  r3.xyzw = r2.zzzz * cb0[9].xyzw + r3.xyzw;
+  r3.xyzw = cb0[10].xyzw + r3.xyzw;
+  r3.xy = r3.xy / r3.ww;
+  r5.xy = r3.xy * float2(0.5,0.5) + float2(0.5,0.5);
+  r5.xy = r5.xy * cb0[4].xy;
+  r5.xy = (int2)r5.xy;
+  r5.zw = float2(0,0);
+  r5.z = t2.Load(r5.xyz).x;
+  r5.w = cmp(2 < r5.z);
+  if (r5.w != 0) discard;
+  uiDest.x = asuint(r3.x - r4.x);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+}
+)";
+  const std::string registers = "float4 r0,r1,r2,r3;", rows = "float4 cb0[7];";
+  if (text.find(registers) == std::string::npos || text.find(rows) == std::string::npos) return "";
+  text.replace(text.find(registers), registers.size(), "float4 r0,r1,r2,r3,r4,r5;");
+  return text.replace(text.find(rows), rows.size(), "float4 cb0[11];");
+}
+
+// The re-projection's fix by execution: truth (the original with this eye's inverse and this eye's
+// view-projection) lands on the pixel; so must the converted dump with the mono matrices and
+// StereoParams (the rebuild corrected to the true point, then clip.x + a*s.x*(clip.w - s.y)); the
+// converted dump with the re-projection's block taken out (the rebuild alone corrected) lands where
+// the mono image has the point, off by s.x*(1 - s.y/w) in NDC: worse than no fix for a screen-space
+// effect, whose samples of this eye's image then miss by that much.
+TEST_F(DeferredRender, DumpStyleReprojectionOfTheCorrectedPointLandsOnItsPixelInThisEye) {
+  constexpr double kBound = 4e-6;  // a few ulps of NDC values near 1, through two matrix products
+  const std::string text = reprojectionDump();
+  ASSERT_FALSE(text.empty());
+  const char* name = "4b5c6d7e8f901234-ps_replace.txt";
+  TranspileResult converted = transpile(SourceFile{name, text}, dumpConversion(TranspileOptions{}));
+  ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
+  ASSERT_EQ(converted.report["passes"]["deferred-unprojection"]["fixed"].size(), 2u) << converted.report.dump(2);
+  const size_t header = converted.output.find("// ---- stereoshift: this eye's re-projection");
+  ASSERT_NE(header, std::string::npos) << converted.output;
+  const size_t from = converted.output.rfind('\n', header) + 1;
+  const std::string end = "// ---- end stereoshift ----\n";
+  const size_t to = converted.output.find(end, from);
+  ASSERT_NE(to, std::string::npos);
+  std::string rebuildOnly = converted.output;
+  rebuildOnly.erase(from, to + end.size() - from);
+  const auto original = compileOriginal(name, text.c_str(), TranspileOptions{});
+  const auto fixedDump = compileOriginal(name, converted.output.c_str(), TranspileOptions{});
+  const auto rebuildOnlyDump = compileOriginal(name, rebuildOnly.c_str(), TranspileOptions{});
+  const Mat4 viewMatrix = view();
+  const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    DumpFeed mono{false, false}, stereo{false, true};
+    RenderResult truth = renderLighting(g, original, inverse(multiply(projection(eye), viewMatrix)), nullptr, eye, mono);
+    RenderResult fixed = renderLighting(g, fixedDump, monoInverse, nullptr, eye, stereo);
+    RenderResult unfixed = renderLighting(g, rebuildOnlyDump, monoInverse, nullptr, eye, stereo);
+    ASSERT_TRUE(truth.ok() && fixed.ok() && unfixed.ok());
+    double worstTruth = 0, worstFix = 0;
+    size_t pixels = 0, unfixedWrong = 0;
+    for (size_t i = 0; i < g.depthValues.size(); ++i) {
+      if (g.depthValues[i] >= 1.0f) continue;
+      ++pixels;
+      worstTruth = std::max(worstTruth, std::abs(double(bitsAt(truth, i))));
+      worstFix = std::max(worstFix, std::abs(double(bitsAt(fixed, i))));
+      unfixedWrong += std::abs(double(bitsAt(unfixed, i))) > 1000 * kBound;
+    }
+    std::cout << std::setprecision(3) << "[dump re-projection] eye " << eye << ": max |ndc - pixel| over " << pixels
+              << " pixels: truth " << worstTruth << ", fix " << worstFix
+              << "; the rebuild alone corrected: beyond 1000x the bound at " << unfixedWrong << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_LT(worstTruth, kBound) << "eye " << eye;
+    EXPECT_LT(worstFix, kBound) << "eye " << eye;
+    EXPECT_GT(unfixedWrong, pixels * 9 / 10) << "eye " << eye << ": without the re-projection's fix it should be off";
+  }
+}
+
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 namespace stereoshift::test {
@@ -114,6 +115,67 @@ TEST(RowProducts, FindsThePerComponentViewRayWithItsDepthLine) {
   Compiled d = compile(dump(noY));
   ASSERT_TRUE(d.registers);
   EXPECT_TRUE(deferred::findDecompiledForms(*d.registers, true, kName).rays.empty());
+}
+
+// SSAO's sample as a decompiler writes it: the mad chain's point, divided by its w, moved by a kernel
+// offset, projected back through cb1[0..3] and read at in the depth texture again (lines 29-36).
+std::string withASampleProjectedBack(const std::string& texture) {
+  std::string body = kMadChain;
+  body.replace(body.find("  o0.xyzw = r1.xyzw / r1.wwww;\n"), std::string("  o0.xyzw = r1.xyzw / r1.wwww;\n").size(),
+               "  r1.xyz = r1.xyz / r1.www;\n"                            // 29
+               "  r1.xyz = cb1[25].xyz * cb1[24].www + r1.xyz;\n"         // 30
+               "  r2.xyzw = cb1[1].xyzw * r1.yyyy;\n"                     // 31
+               "  r2.xyzw = r1.xxxx * cb1[0].xyzw + r2.xyzw;\n"           // 32
+               "  r2.xyzw = r1.zzzz * cb1[2].xyzw + r2.xyzw;\n"           // 33
+               "  r2.xyzw = cb1[3].xyzw + r2.xyzw;\n"                     // 34
+               "  r2.xy = r2.xy / r2.ww;\n"                               // 35
+               "  r2.xy = r2.xy * float2(0.5,-0.5) + float2(0.5,0.5);\n"  // 36
+               "  r2.z = " + texture + ".Sample(s0_s, r2.xy).x;\n"
+               "  o0.xyzw = r2.zzzz - r1.zzzz;\n");
+  return body;
+}
+
+// The changed case: the point projected back through a matrix is read at in the depth texture again,
+// so its clip x is this eye's: found with the lines of clip x and w, VP's row of x and the rebuild's
+// column of NDC x.
+TEST(RowProducts, FindsTheReprojectionReadAtInTheDepthTexture) {
+  Compiled c = compile(dump(withASampleProjectedBack("t0")));
+  ASSERT_TRUE(c.registers);
+  auto forms = deferred::findDecompiledForms(*c.registers, true, kName);
+  ASSERT_EQ(forms.products.size(), 1u);
+  ASSERT_EQ(forms.reprojections.size(), 1u);
+  const auto& r = forms.reprojections[0];
+  EXPECT_TRUE(r.reason.empty()) << r.reason;
+  EXPECT_EQ(r.texture, "t0");
+  EXPECT_EQ(r.rows, "cb1[0], cb1[1], cb1[2], cb1[3]");
+  EXPECT_EQ(r.fix.lines[0], kFirstBodyLine + 12);
+  EXPECT_EQ(r.fix.lines[1], kFirstBodyLine + 12);
+  EXPECT_EQ(r.fix.lanes[0], 0u);
+  EXPECT_EQ(r.fix.lanes[1], 3u);
+  EXPECT_EQ(r.fix.afterLine, kFirstBodyLine + 12);
+  EXPECT_EQ(r.fix.rowX, (std::array<std::string, 3>{"cb1[0].x", "cb1[1].x", "cb1[2].x"}));
+  EXPECT_EQ(r.fix.column, (std::array<std::string, 3>{"cb1[20].x", "cb1[20].y", "cb1[20].z"}));
+}
+
+// The unchanged cases: the same transform read at in another texture (a shadow map, drawn once for
+// both eyes) is no re-projection into this eye's image; nor is one of a point not computed from the
+// rebuild (an interpolated one), read at in the depth texture.
+TEST(RowProducts, ATransformReadAtInAnotherTextureIsNoReprojection) {
+  std::string text = dump(withASampleProjectedBack("t1"));
+  const std::string t0 = "Texture2D<float4> t0 : register(t0);\n";
+  text.replace(text.find(t0), t0.size(), "Texture2D<float4> t0 : register(t0); Texture2D<float4> t1 : register(t1);\n");
+  Compiled c = compile(text);
+  ASSERT_TRUE(c.registers);
+  auto forms = deferred::findDecompiledForms(*c.registers, true, kName);
+  EXPECT_EQ(forms.products.size(), 1u);
+  EXPECT_TRUE(forms.reprojections.empty());
+
+  std::string interpolated = withASampleProjectedBack("t0");
+  const std::string offset = "  r1.xyz = cb1[25].xyz * cb1[24].www + r1.xyz;\n";
+  interpolated.replace(interpolated.find(offset), offset.size(), "  r1.xyz = float3(v1.xy, v0.w);\n");
+  Compiled d = compile(dump(interpolated));
+  ASSERT_TRUE(d.registers);
+  EXPECT_TRUE(deferred::findDecompiledForms(*d.registers, true, kName).reprojections.empty());
 }
 
 // Work of both finders for a shader with `steps` statements of shared sub-expression chains.

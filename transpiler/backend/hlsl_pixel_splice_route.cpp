@@ -43,7 +43,8 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
         (deferred.textFixes.empty() && deferred.rayTextFixes.empty()))
       return RouteDecision::decline("not an HLSL pixel shader with corrections for its text");
     if (!r.context.record.passesWithEditsBeyond(editSet(EditKind::UnprojectionCorrection)).empty() ||
-        deferred.fixed.size() != deferred.textFixes.size() + deferred.rayTextFixes.size() + deferred.cameraTextFixes.size())
+        deferred.fixed.size() != deferred.textFixes.size() + deferred.rayTextFixes.size() +
+                                     deferred.cameraTextFixes.size() + deferred.reprojectionTextFixes.size())
       return RouteDecision::decline("a pass changed what only the IR carries besides the text corrections", true);
     return RouteDecision::accept();
   }

@@ -343,6 +343,40 @@ std::string cameraBlock(const CameraTextFix& fix, const Located& at, const std::
   return t;
 }
 
+// Where a re-projection's clip x and w live: as a rebuild's components 0 and 3 (locate()), the
+// lines between them and the block neither rewriting nor reading x.
+Located locateReprojection(const Lines& lines, const ReprojectionTextFix& fix) {
+  RowProductTextFix asProduct;
+  asProduct.afterLine = fix.afterLine;
+  asProduct.present = {true, false, false, true};
+  asProduct.lines = {fix.lines[0], 0, 0, fix.lines[1]};
+  asProduct.lanes = {fix.lanes[0], 0, 0, fix.lanes[1]};
+  Located at = locate(lines, asProduct);
+  if (at.error.find("rebuilt position") != std::string::npos) {
+    // Say it of what it is.
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"the rebuilt position's statements", "clip x and w"},
+                                   {"the rebuilt position is complete", "clip x is corrected"},
+                                   {"component 0 of the rebuilt position", "clip x"},
+                                   {"component 3 of the rebuilt position", "clip w"}})
+      if (size_t k = at.error.find(from); k != std::string::npos) at.error.replace(k, from.size(), to);
+  }
+  return at;
+}
+
+// clip.x += a * s.x * (clip.w - s.y), a = VP's row of x times InvM's column of NDC x.
+std::string reprojectionBlock(const ReprojectionTextFix& fix, const Located& at, const std::string& indent,
+                              const std::string& nl) {
+  const std::string s = std::string(kPrefix) + "_stereo", in = indent + "  ";
+  std::string t = indent + "// ---- stereoshift: this eye's re-projection (line " + std::to_string(fix.afterLine) +
+                  ": clip = VP * (p, 1) of the corrected position, the depth read at it again) ----" + nl;
+  t += indent + "{" + nl;
+  t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
+  t += in + at.component[0] + " += dot(" + float3Of(fix.rowX) + ", " + float3Of(fix.column) + ") * " + s + ".x * (" +
+       at.component[3] + " - " + s + ".y);" + nl;
+  t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
+  return t;
+}
+
 // Inserts `block` after line `line`, with a line break first when the file's last line has none.
 void insertAfterLine(EditBuffer& edits, const Lines& lines, const std::string& source, uint32_t line, std::string block) {
   size_t end = lines.endOf(line);
@@ -389,6 +423,13 @@ HlslSpliceResult splicePixelCorrections(const std::string& source, const Deferre
     if (!at.error.empty()) return failAt(at, "camera");
     std::string indent = indentOf(lines.line(fix.line));
     insertAfterLine(edits, lines, source, fix.line, cameraBlock(fix, at, indent, edits.newline()));
+    ++result.sites;
+  }
+  for (const auto& fix : facts.reprojectionTextFixes) {
+    Located at = locateReprojection(lines, fix);
+    if (!at.error.empty()) return failAt(at, "re-projection");
+    std::string indent = indentOf(lines.line(fix.afterLine));
+    insertAfterLine(edits, lines, source, fix.afterLine, reprojectionBlock(fix, at, indent, edits.newline()));
     ++result.sites;
   }
   for (const auto& fix : facts.rayTextFixes) {
