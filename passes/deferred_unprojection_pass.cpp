@@ -401,6 +401,31 @@ void recordReprojection(const Reprojection& r, const std::string& why, DeferredF
   facts.reprojectionTextFixes.push_back(r.fix);
 }
 
+// A position rebuilt from an interpolated ray (row_products.h) as a text fix where it is a full-screen
+// pass's (checked where it runs), or reported with `why` it is not fixed. True when fixed.
+bool recordInterpolatedRay(const InterpolatedRay& r, const std::string& why, DeferredFacts& facts) {
+  ViewDependentUse entry;
+  entry.construct = "interpolated ray / its z * depth";
+  entry.form = "position rebuilt from a ray the vertex shader interpolates (a far-plane corner or a light "
+               "volume's view-space position), scaled by one over its z and by the depth";
+  entry.depth = joined(r.depth.textures);
+  entry.ndc = r.input;
+  if (r.line) entry.line = static_cast<int>(r.line);
+  if (!why.empty()) {
+    entry.reason = "not fixed: " + why;
+    facts.leftAlone.push_back(entry);
+    return false;
+  }
+  entry.projectionScale = "x * ddx(" + r.fix.rayX + " / " + r.fix.rayZ + ") - " + r.fix.rayX + " / " + r.fix.rayZ +
+                          " (x the pixel's, from SV_Position)";
+  entry.fix = "p.x - s.x*(|p.z| - s.y)*sign(p.z)*k after line " + std::to_string(r.fix.afterLine) +
+              ", where the ray is a full-screen pass's (" + r.fix.farPlane + " / " + r.fix.rayZ +
+              " = 1, checked at run time; a light volume's ray is left as it is)";
+  facts.fixed.push_back(entry);
+  facts.interpolatedRayTextFixes.push_back(r.fix);
+  return true;
+}
+
 bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
   if (ctx.source.language != SourceLanguage::Hlsl || !hasCbufferRows(ctx.module)) return false;
   const spirv::Module* registers = ctx.analyses.registerSsaCopy();
@@ -497,19 +522,7 @@ bool decideRowProducts(PassContext& ctx, DeferredFacts& facts) {
     facts.rayTextFixes.push_back(r.fix);
     recorded = true;
   }
-  for (const InterpolatedRay& r : forms.interpolatedRays) {
-    ViewDependentUse entry;
-    entry.construct = "interpolated ray / its z * depth";
-    entry.form = "position rebuilt from a ray the vertex shader interpolates (a far-plane corner or a light "
-                 "volume's view-space position), scaled by one over its z and by the depth";
-    entry.depth = joined(r.depth.textures);
-    entry.ndc = r.input;
-    if (r.line) entry.line = static_cast<int>(r.line);
-    entry.reason = "not fixed: the ray's 1/P00 is not in the pixel shader, and the correction depends on whether "
-                   "the vertex shader's vertices were shifted (a light volume) or kept mono (a full-screen quad at "
-                   "w = 1); left for a person";
-    facts.leftAlone.push_back(entry);
-  }
+  for (const InterpolatedRay& r : forms.interpolatedRays) recorded |= recordInterpolatedRay(r, notFixed(r.reason), facts);
   return recorded;
 }
 

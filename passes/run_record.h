@@ -266,6 +266,22 @@ struct ReprojectionTextFix {
   std::array<std::string, 3> rowX, column;
 };
 
+// A fix only the source text carries: a view-space position rebuilt from a ray the vertex stage
+// interpolates, scaled to depth 1 by its own z and then by the view depth, p = ray * (far / ray.z) *
+// depth01 (Unity's lights and screen-space shadows), where the ray is a full-screen pass's: its z is
+// the far plane's (far / ray.z = 1; a light volume's is its surface's depth, and its vertices were
+// shifted: another correction, none here). The pass is drawn at w = 1 and kept mono, so the ray at a
+// pixel is the mono ray through that pixel, and p.x is off by s.x * (D - s.y) / P00 with D = |p.z|.
+// 1/P00 is not in the pixel shader; the ray shows it: its x over z is k * (2 x / W - 1) at pixel x
+// (W the width), linear across the screen, so k = x * ddx(ratio) - ratio, computed where it runs.
+// p.x -= s.x * (|p.z| - s.y) * sign(p.z) * k after the statements completing p.x and p.z.
+struct InterpolatedRayTextFix {
+  uint32_t afterLine = 0;
+  std::array<uint32_t, 2> lines{}, lanes{};  // p.x (0) and p.z (1): statement lines, lanes
+  std::string rayX, rayZ;                    // the input's lanes, as the source names them: "v2.x"
+  std::string farPlane;                      // the element the ray is scaled by over its z: "cb1[5].z"
+};
+
 // An unprojection `InvM * v` of source text as a splice can carry it: the product, found in the
 // text as `<matrix> * <operand>` (GLSL) or `mul(<matrix>, <operand>)` (HLSL), goes through a helper that returns q' (deferred_unprojection
 // _pass.cpp's rewrite).
@@ -298,6 +314,7 @@ struct DeferredFacts {
   std::vector<ViewRayTextFix> rayTextFixes;  // likewise
   std::vector<CameraTextFix> cameraTextFixes;  // likewise
   std::vector<ReprojectionTextFix> reprojectionTextFixes;  // likewise
+  std::vector<InterpolatedRayTextFix> interpolatedRayTextFixes;  // likewise
   std::string leftAloneWhy;      // the whole shader left alone, and why
   std::string applicationFills;  // an injected parameter the application sets
 };

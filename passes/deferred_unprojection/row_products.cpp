@@ -640,6 +640,14 @@ std::vector<InterpolatedRay> findInterpolatedRays(RegisterAnalyses& a) {
   struct Seen {
     uint32_t lanes = 0, line = 0;
     Sources depth;
+    // By the ray's input lane bit: the first product's line and lane, and the cbuffer element it is
+    // scaled by ("" when not one element, not dividing).
+    struct First {
+      uint32_t line = 0;
+      Lane at;
+      std::string scale;
+    };
+    std::map<uint32_t, First> byLane;
   };
   std::map<std::pair<std::string, Lane>, Seen> byInputAndDepth;
   std::set<Lane> seen;
@@ -656,9 +664,14 @@ std::vector<InterpolatedRay> findInterpolatedRays(RegisterAnalyses& a) {
       if (f.tooLarge) continue;
       std::optional<Sources> ray, overZ, depth;
       std::optional<Lane> depthLane;
+      std::vector<std::string> scales;
       bool other = false;
       for (const auto& [factor, divides] : f.factors) {
-        if (d.constant(factor) || d.uniformElement(factor)) continue;
+        if (d.constant(factor)) continue;
+        if (auto element = d.uniformElement(factor)) {
+          scales.push_back(divides ? "" : elementText(a.registers, *element));
+          continue;
+        }
         const Sources s = sourcesOf(a.flow, d, factor);
         const bool plainInput = screenReadAsItIs(s) && !s.fragCoord &&
                                 std::popcount(s.inputLanes) == 1 && s.inputs.size() == 1;
@@ -673,11 +686,27 @@ std::vector<InterpolatedRay> findInterpolatedRays(RegisterAnalyses& a) {
       entry.depth = *depth;
       const uint32_t line = a.lines.lineOf(at.id);
       if (line && (!entry.line || line < entry.line)) entry.line = line;
+      const Seen::First here{line, at, scales.size() == 1 ? scales[0] : ""};
+      auto [it, inserted] = entry.byLane.try_emplace(ray->inputLanes, here);
+      if (!inserted && line && (!it->second.line || line < it->second.line)) it->second = here;
     }
   });
   std::vector<InterpolatedRay> found;
-  for (const auto& [key, entry] : byInputAndDepth)
-    if (entry.lanes == 7u) found.push_back({key.first, entry.depth, entry.line});
+  for (const auto& [key, entry] : byInputAndDepth) {
+    if (entry.lanes != 7u) continue;
+    InterpolatedRay r{key.first, entry.depth, entry.line, {}, ""};
+    const Seen::First &x = entry.byLane.at(1u), &z = entry.byLane.at(4u);
+    r.fix.lines = {x.line, z.line};
+    r.fix.lanes = {x.at.lane, z.at.lane};
+    r.fix.afterLine = std::max(x.line, z.line);
+    r.fix.rayX = key.first + ".x";
+    r.fix.rayZ = key.first + ".z";
+    if (!x.scale.empty() && x.scale == z.scale) r.fix.farPlane = x.scale;
+    else r.reason = "the ray is not scaled to depth 1 by one cbuffer element over its z (a full-screen pass's far "
+                    "plane), which tells a full-screen pass's ray from a light volume's";
+    if (r.reason.empty() && (!x.line || !z.line)) r.reason = "the position is computed outside the main file (an #include or a macro)";
+    found.push_back(std::move(r));
+  }
   return found;
 }
 

@@ -82,6 +82,8 @@ struct InterpolatedRay {
   std::string input;  // the vector input: "v2"
   Sources depth;
   uint32_t line = 0;  // the first statement computing a lane of the product
+  InterpolatedRayTextFix fix;
+  std::string reason;  // empty when the text can carry the full-screen pass's correction
 };
 
 // Both forms of one shader.

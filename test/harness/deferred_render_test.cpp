@@ -1565,6 +1565,145 @@ TEST_F(DeferredRender, DumpStyleViewRayComponentsFixedInItsTextByExecution) {
   checkViewRay("2a3b4c5d6e7f8091-ps_replace.txt", kDumpViewRay.c_str(), "dump view ray", &columns);
 }
 
+// A full-screen pass's vertex stage that hands on, beside its UV, the ray to each corner's point on
+// the far plane in view space, from the frame's inverse projection (Unity's directional lights and
+// screen-space shadows): drawn at w = 1, so the driver's cutoff keeps it mono.
+const char* kFarPlaneRayVert = R"(#version 450
+layout(set = 0, binding = 0) uniform FrameUBO { mat4 invProjection; } frame;
+layout(location = 0) out vec4 outUv;
+layout(location = 1) out vec3 outRay;
+out gl_PerVertex { vec4 gl_Position; };
+void main() {
+  const vec2 positions[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+  vec2 p = positions[gl_VertexIndex];
+  outUv = vec4(p * 0.5 + 0.5, 0.0, 1.0);
+  vec4 farPoint = frame.invProjection * vec4(p, 1.0, 1.0);
+  outRay = farPoint.xyz / farPoint.w;
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
+// Its pixel shader as a decompiled dump: the ray scaled to depth 1 by the far plane's z over its own
+// (cb0[5].x, the far plane's view z) and then by the depth over the far distance (the linear
+// G-buffer's view depth times cb0[5].y = 1 / far), `r0.x = cb0[5].x / v2.z; r0.xyz = v2.xyz * r0.xxx;
+// ... r0.xyz = r1.zzz * r0.xyz;`; writes the view-space point's component POSITION_COMPONENT.
+const std::string kDumpFarPlaneRay = R"(// ---- Created with 3Dmigoto v1.3.16 (a test dump written for stereoshift)
+cbuffer cb0 : register(b0)
+{
+  float4 cb0[7];
+}
+
+Texture2D<float4> t2 : register(t2, space1);
+
+
+// 3Dmigoto declarations
+#define cmp -
+Texture2D<float4> StereoParams : register(t125);
+
+
+void main(
+  float4 v0 : SV_POSITION0,
+  float4 v1 : TEXCOORD0,
+  float3 v2 : TEXCOORD1,
+  out float4 o0 : SV_Target0)
+{
+  float4 r0,r1;
+  uint4 bitmask, uiDest;
+  float4 fDest;
+
+  r0.x = cb0[5].x / v2.z;
+  r0.xyz = v2.xyz * r0.xxx;
+  r1.xy = (int2)v0.xy;
+  r1.zw = float2(0,0);
+  r1.z = t2.Load(r1.xyz).x;
+  r1.z = cb0[5].y * r1.z;
+  r0.xyz = r1.zzz * r0.xyz;
+  uiDest.x = asuint(r0[POSITION_COMPONENT]);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+}
+)";
+
+// The far-plane ray's fix by execution: the view-space point of the fix (the converted dump with
+// StereoParams; the ray is the same in both eyes) against the exact point this eye's pixel shows,
+// the mono baseline (the original) beyond the bound at > 90 % of the pixels. The fix reads 1/P00 off
+// the ray (k = x * ddx(ratio) - ratio), so its bound is the view ray's plus the correction's size
+// times k's error: each ratio v2.x / v2.z within kRatioUlps ulps of the largest the triangle's
+// vertices carry (3/f: the interpolation's plane equation runs over them, then one divide), x *
+// ddx(ratio) twice that times x. With the ray's z not the far plane's (a light volume's ray, cb0[5].x
+// doubled here), the converted dump must give the original's bits: it is left as it is.
+TEST_F(DeferredRender, DumpStyleFarPlaneRayOfAFullScreenPassFixedByExecution) {
+  constexpr double kViewRayBound = 5e-7, kRatioUlps = 8;
+  const char* name = "5c6d7e8f90123456-ps_replace.txt";
+  const std::vector<uint32_t> fullScreen = fullScreenVert_;
+  fullScreenVert_ = compileOriginal("far_plane_ray.vert", kFarPlaneRayVert, TranspileOptions{});
+  const Mat4 mono = projection(0), monoInverseProjection = inverse(mono);
+  const double f = mono[0], far = mono[14] / (mono[10] + 1.0);  // the far plane's distance
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    GBuffer linear = g;
+    for (size_t i = 0; i < g.depthValues.size(); ++i)
+      linear.depth.rgba[4 * i] = g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (double(g.depthValues[i]) + mono[10]));
+    const Mat4 stereoInverseProjection = inverse(projection(eye));
+    std::array<RenderResult, 3> fixedPosition, baseline, volumeFix, volumeOriginal;
+    for (int component = 0; component < 3; ++component) {
+      TranspileOptions options;
+      options.defines = {"POSITION_COMPONENT=" + std::to_string(component)};
+      const auto original = compileOriginal(name, kDumpFarPlaneRay.c_str(), options);
+      nlohmann::json report;
+      const auto fixedDump = compileDumpFixed(name, kDumpFarPlaneRay.c_str(), options, &report);
+      EXPECT_EQ(report["fixed"][0].value("construct", ""), "interpolated ray / its z * depth") << report.dump(2);
+      DumpFeed monoFeed{false, false}, stereoFeed{false, true};
+      monoFeed.row5 = stereoFeed.row5 = std::array<float, 4>{float(-far), float(1.0 / far), 0.0f, 0.0f};
+      fixedPosition[component] = renderLighting(linear, fixedDump, monoInverseProjection, nullptr, eye, stereoFeed);
+      baseline[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye, monoFeed);
+      DumpFeed volumeMono = monoFeed, volumeStereo = stereoFeed;
+      volumeMono.row5 = volumeStereo.row5 = std::array<float, 4>{float(-2 * far), float(1.0 / far), 0.0f, 0.0f};
+      volumeFix[component] = renderLighting(linear, fixedDump, monoInverseProjection, nullptr, eye, volumeStereo);
+      volumeOriginal[component] = renderLighting(linear, original, monoInverseProjection, nullptr, eye, volumeMono);
+      ASSERT_TRUE(fixedPosition[component].ok() && baseline[component].ok() && volumeFix[component].ok() &&
+                  volumeOriginal[component].ok());
+    }
+    double worstFix = 0, worstBaseline = 0, worstK = 0;
+    size_t pixels = 0, outside = 0, baselineWrong = 0, volumeChanged = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        const size_t i = size_t(y) * kSize + x;
+        if (g.depthValues[i] >= 1.0f) continue;
+        ++pixels;
+        const std::array<double, 4> v = {(x + 0.5) / kSize * 2 - 1, (y + 0.5) / kSize * 2 - 1, g.depthValues[i], 1.0};
+        const std::array<double, 4> exact = times(stereoInverseProjection, v);
+        const double depth = -exact[2] / exact[3];
+        const double kError = (2 * (x + 0.5) + 1) * kRatioUlps * std::ldexp(3.0 / f, -24);
+        const double correctionBound = std::abs(kSeparation * (depth - kConvergence)) * kError;
+        double length = 0, fixError = 0, baselineError = 0;
+        for (int c = 0; c < 3; ++c) {
+          const double p = exact[c] / exact[3];
+          length += p * p;
+          fixError = std::max(fixError, std::abs(bitsAt(fixedPosition[c], i) - p));
+          baselineError = std::max(baselineError, std::abs(bitsAt(baseline[c], i) - p));
+          volumeChanged += bitsAt(volumeFix[c], i) != bitsAt(volumeOriginal[c], i);
+        }
+        length = std::sqrt(length);
+        const double bound = kViewRayBound * length + correctionBound;
+        worstFix = std::max(worstFix, fixError / bound);
+        worstK = std::max(worstK, correctionBound / length);
+        worstBaseline = std::max(worstBaseline, baselineError / length);
+        outside += fixError > bound;
+        baselineWrong += baselineError > 1000 * bound;
+      }
+    std::cout << std::setprecision(3) << "[dump far-plane ray] eye " << eye << ": view-space position over " << pixels
+              << " pixels, fix error / bound " << worstFix << " (the bound's 1/P00 part at most " << worstK
+              << " of |p|); mono baseline max |p - p_exact| / |p| " << worstBaseline << ", beyond 1000x the bound at "
+              << baselineWrong << " pixels; a light volume's ray changed at " << volumeChanged << " values\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_EQ(outside, 0u) << "eye " << eye;
+    EXPECT_GT(baselineWrong, pixels * 9 / 10) << "eye " << eye << ": the mono baseline should be wrong";
+    EXPECT_EQ(volumeChanged, 0u) << "eye " << eye << ": a ray whose z is not the far plane's must be left as it is";
+  }
+  fullScreenVert_ = fullScreen;
+}
+
 // SSAO's or a reflection's step as a decompiled dump writes it: kDumpMadLighting's rebuild, the point
 // projected back through the matrix the inverse undoes (cb0[7..10], renderLighting's `forward`, in
 // columns) and the depth texture read again where it lands. The pixel's own surface point: in this

@@ -40,11 +40,12 @@ class HlslPixelSpliceRoute final : public BackEndRoute {
     const SourceInfo& info = r.context.source;
     const DeferredFacts& deferred = r.context.record.deferred;
     if (info.language != SourceLanguage::Hlsl || r.target != TargetLanguage::Hlsl || info.stage != Stage::Fragment ||
-        (deferred.textFixes.empty() && deferred.rayTextFixes.empty()))
+        (deferred.textFixes.empty() && deferred.rayTextFixes.empty() && deferred.interpolatedRayTextFixes.empty()))
       return RouteDecision::decline("not an HLSL pixel shader with corrections for its text");
     if (!r.context.record.passesWithEditsBeyond(editSet(EditKind::UnprojectionCorrection)).empty() ||
         deferred.fixed.size() != deferred.textFixes.size() + deferred.rayTextFixes.size() +
-                                     deferred.cameraTextFixes.size() + deferred.reprojectionTextFixes.size())
+                                     deferred.cameraTextFixes.size() + deferred.reprojectionTextFixes.size() +
+                                     deferred.interpolatedRayTextFixes.size())
       return RouteDecision::decline("a pass changed what only the IR carries besides the text corrections", true);
     return RouteDecision::accept();
   }

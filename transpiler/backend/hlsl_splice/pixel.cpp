@@ -377,6 +377,47 @@ std::string reprojectionBlock(const ReprojectionTextFix& fix, const Located& at,
   return t;
 }
 
+// Where an interpolated ray's p.x and p.z live (as a rebuild's components 0 and 3, locate()), and the
+// name of the pixel-position input (`float4 v0 : SV_Position0`) whose x the block reads.
+Located locateInterpolatedRay(const Lines& lines, const InterpolatedRayTextFix& fix) {
+  RowProductTextFix asProduct;
+  asProduct.afterLine = fix.afterLine;
+  asProduct.present = {true, false, false, true};
+  asProduct.lines = {fix.lines[0], 0, 0, fix.lines[1]};
+  asProduct.lanes = {fix.lanes[0], 0, 0, fix.lanes[1]};
+  Located at = locate(lines, asProduct);
+  if (!at.error.empty()) return at;
+  static const std::regex position(R"(\b([A-Za-z_]\w*)\s*:\s*SV_Position\d*\b)", std::regex::icase);
+  std::smatch m;
+  if (!std::regex_search(lines.text, m, position))
+    return failedAt(at, fix.afterLine, "the shader has no SV_Position input, whose x tells the ray's 1/P00");
+  at.depth = m[1].str() + ".x";
+  return at;
+}
+
+// p.x -= s.x * (|p.z| - s.y) * sign(p.z) * k with k = x * ddx(ratio) - ratio (InterpolatedRayTextFix),
+// where the ray's z is the far plane's (a full-screen pass's ray, kept mono); nothing for another.
+std::string interpolatedRayBlock(const InterpolatedRayTextFix& fix, const Located& at, const std::string& indent,
+                                 const std::string& nl) {
+  const std::string s = std::string(kPrefix) + "_stereo", ratio = std::string(kPrefix) + "_ratio",
+                    k = std::string(kPrefix) + "_k", d = std::string(kPrefix) + "_d", in = indent + "  ";
+  const std::string& px = at.component[0], pz = at.component[3];
+  std::string t = indent + "// ---- stereoshift: this eye's position rebuild (line " + std::to_string(fix.afterLine) +
+                  ": p = ray * (" + fix.farPlane + " / " + fix.rayZ + ") * depth, the ray a full-screen pass's) ----" + nl;
+  t += indent + "{" + nl;
+  t += in + "float4 " + s + " = StereoParams.Load(int3(0, 0, 0));" + nl;
+  t += in + "float " + ratio + " = " + fix.rayX + " / " + fix.rayZ + ";" + nl;
+  t += in + "float " + k + " = " + at.depth + " * ddx(" + ratio + ") - " + ratio + ";" + nl;
+  t += in + "float " + d + " = " + s + ".x * (abs(" + pz + ") - " + s + ".y) * sign(" + pz + ") * " + k + ";" + nl;
+  // A full-screen pass's rays share one z, the far plane's (up to the fp32 rounding of a far point
+  // an inverse projection makes, ulp * far / near); a light volume's z is its surface's depth.
+  t += in + "if (abs(" + fix.farPlane + " / " + fix.rayZ + " - 1) > 0.01 || ddx(" + fix.rayZ + ") != 0 || ddy(" +
+       fix.rayZ + ") != 0) " + d + " = 0;" + nl;
+  t += in + px + " -= " + d + ";" + nl;
+  t += indent + "}" + nl + indent + "// ---- end stereoshift ----" + nl;
+  return t;
+}
+
 // Inserts `block` after line `line`, with a line break first when the file's last line has none.
 void insertAfterLine(EditBuffer& edits, const Lines& lines, const std::string& source, uint32_t line, std::string block) {
   size_t end = lines.endOf(line);
@@ -430,6 +471,13 @@ HlslSpliceResult splicePixelCorrections(const std::string& source, const Deferre
     if (!at.error.empty()) return failAt(at, "re-projection");
     std::string indent = indentOf(lines.line(fix.afterLine));
     insertAfterLine(edits, lines, source, fix.afterLine, reprojectionBlock(fix, at, indent, edits.newline()));
+    ++result.sites;
+  }
+  for (const auto& fix : facts.interpolatedRayTextFixes) {
+    Located at = locateInterpolatedRay(lines, fix);
+    if (!at.error.empty()) return failAt(at, "position rebuild");
+    std::string indent = indentOf(lines.line(fix.afterLine));
+    insertAfterLine(edits, lines, source, fix.afterLine, interpolatedRayBlock(fix, at, indent, edits.newline()));
     ++result.sites;
   }
   for (const auto& fix : facts.rayTextFixes) {
