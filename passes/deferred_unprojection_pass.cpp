@@ -47,6 +47,7 @@
 #include "passes/deferred_unprojection/row_products.h"
 #include "passes/deferred_unprojection/unprojection.h"
 #include "passes/eye_param_emitter.h"
+#include "passes/ir/image_instructions.h"
 #include "passes/ir/walker.h"
 #include "passes/pass.h"
 #include "passes/pass_registry.h"
@@ -305,10 +306,32 @@ void recordUnprojectionTexts(const ValueFlow& index, const std::vector<Product>&
   facts.viewRayTexts = std::move(rays);
 }
 
-// Each matrix product: an unprojection (fixed), a re-projection of a fixed view-ray position
-// (shifted back to this eye's screen), or left alone with the reason.
+// The matrix products whose results reach the coordinate of a read of a depth texture a fixed
+// unprojection reads: a point projected back to the screen and read at in this eye's image (SSAO's
+// samples, a reflection's march), not a light-space lookup of a shadow map drawn once for both eyes.
+std::set<uint32_t> productsReadAtInTheDepth(const spirv::Module& m, const std::vector<Product>& products,
+                                            SourceAnalysis& flow) {
+  std::set<std::string> depths;
+  for (const auto& p : products)
+    if (p.recognised) depths.insert(p.z.textures.begin(), p.z.textures.end());
+  std::set<uint32_t> found;
+  if (depths.empty()) return found;
+  spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+    if (!spirv::isTexelRead(inst.opcode) || inst.operands.size() < 2) return;
+    const Sources read = flow.value(inst.resultId);
+    if (std::none_of(read.textures.begin(), read.textures.end(), [&](const std::string& t) { return depths.count(t) > 0; }))
+      return;
+    const Sources coordinate = flow.value(inst.operand(1));
+    found.insert(coordinate.products.begin(), coordinate.products.end());
+  });
+  return found;
+}
+
+// Each matrix product: an unprojection (fixed), a re-projection of a fixed view-ray position or of
+// a point computed from a fixed unprojection read at in its depth texture (shifted back to this
+// eye's screen), or left alone with the reason.
 void decideProducts(const std::vector<Product>& products, const std::set<uint32_t>& fixedResults,
-                    SourceAnalysis& besidesFixes, Findings& found) {
+                    const std::set<uint32_t>& readAtInTheDepth, SourceAnalysis& besidesFixes, Findings& found) {
   for (const auto& p : products) {
     std::string matrixName = joined(p.matrixSources.uniforms);
     if (p.recognised) {
@@ -332,6 +355,13 @@ void decideProducts(const std::vector<Product>& products, const std::set<uint32_
     // A re-projection of a corrected (mono) view-space position back to this eye's screen (SSAO
     // samples, screen-space reflections) must land where this eye's depth buffer has it: it gets
     // the shift of docs/stereo-math.md section 1, as the G-buffer pass's position did.
+    if (followsFix && readAtInTheDepth.count(p.result) && isUniformOnly(p.matrixSources)) {
+      entry.construct = "matrix * rebuilt position, read at in the depth texture";
+      entry.fix = "x + eyeSign*separation*(w - convergence): back to this eye's screen";
+      found.fixed.push_back(entry);
+      found.reprojections.push_back(&p);
+      continue;
+    }
     if (followsRay && !followsFix && isUniformOnly(p.matrixSources)) {
       entry.construct = "matrix * view-ray position";
       entry.fix = "x + eyeSign*separation*(w - convergence): back to this eye's screen";
@@ -564,7 +594,7 @@ class DeferredUnprojectionPass final : public Pass {
     Findings found;
     std::vector<ViewDependentUse> rayFixes, rayLeftAlone;
     decideViewRays(ctx, index, besidesFixes, products, rays, found, rayFixes, rayLeftAlone);
-    decideProducts(products, fixedResults, besidesFixes, found);
+    decideProducts(products, fixedResults, productsReadAtInTheDepth(m, products, besidesFixes), besidesFixes, found);
     found.fixed.insert(found.fixed.end(), rayFixes.begin(), rayFixes.end());
     found.leftAlone.insert(found.leftAlone.end(), rayLeftAlone.begin(), rayLeftAlone.end());
     reportFragCoordUses(ctx, index, besidesFixes, found.leftAlone);

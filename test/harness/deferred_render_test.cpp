@@ -1557,6 +1557,85 @@ TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
   }
 }
 
+// The matrix form's rebuild re-projected: the world position rebuilt through the inverse
+// view-projection (kLightingFrag's), projected back through the view-projection (the frame block's
+// last member, which renderLighting() fills with the matrix the inverse undoes) and the depth texture
+// read again where it lands (SSAO's or a reflection's step); writes the NDC x it lands at minus the
+// pixel's. In this eye's image the pixel's own point is the pixel itself.
+const char* kRebuildReprojectedFrag = R"(#version 450
+layout(set = 0, binding = 0) uniform FrameUBO {
+    mat4 invViewProj;
+    vec4 viewportSize;
+    vec4 light[2];
+    mat4 viewProj;
+} frame;
+layout(set = 1, binding = 2) uniform sampler2D gDepth;
+layout(location = 0) in vec2 inUV;
+layout(location = 0) out vec4 outColor;
+void main()
+{
+    float depth = texture(gDepth, inUV).r;
+    vec2 ndc = gl_FragCoord.xy * frame.viewportSize.zw * 2.0 - 1.0;
+    vec4 q = frame.invViewProj * vec4(ndc, depth, 1.0);
+    vec3 p = q.xyz / q.w;
+    vec4 back = frame.viewProj * vec4(p, 1.0);
+    vec2 uv = back.xy / back.w * 0.5 + 0.5;
+    if (texture(gDepth, uv).r > 2.0) discard;
+    outColor = unpackUnorm4x8(floatBitsToUint(back.x / back.w - ndc.x));
+}
+)";
+
+// A re-projection of the matrix form's corrected position, read at in the depth texture, gets the
+// shift back to this eye's screen (as a view-ray position's does): through the SPIR-V route and the
+// spliced text, the pixel's own point lands on the pixel within the view-ray test's bound; with the
+// re-projection's fix taken out of the text (the rebuild alone corrected), off by s*(1 - C/w) at
+// > 90 % of the pixels.
+TEST_F(DeferredRender, ReprojectedRebuiltPositionLandsOnItsPixelInThisEye) {
+  constexpr double kBound = 4e-6;  // a few ulps of NDC values near 1, through two matrix products
+  TranspileOptions options;
+  Transpiled viaSpirv = compileTranspiled("rebuild_reproject.frag", kRebuildReprojectedFrag, options);
+  const auto& pass = viaSpirv.report["passes"]["deferred-unprojection"];
+  ASSERT_EQ(pass["fixed"].size(), 2u) << pass.dump(2);
+  EXPECT_EQ(pass["fixed"][1].value("construct", ""), "matrix * rebuilt position, read at in the depth texture");
+  TranspileOptions textOptions = options;
+  textOptions.target = TargetLanguage::Auto;
+  TranspileResult spliced = transpile(SourceFile{"rebuild_reproject.frag", kRebuildReprojectedFrag}, textOptions);
+  ASSERT_TRUE(spliced.ok) << spliced.diagnostics.format();
+  ASSERT_EQ(spliced.report.value("route", std::string()), "glsl-source-splice") << spliced.report.dump(2);
+  const std::string wrapped = "stereoshift_reproject_frame_viewProj(";
+  size_t at = spliced.output.find(wrapped, spliced.output.find("void main"));
+  ASSERT_NE(at, std::string::npos) << spliced.output;
+  std::string withoutReprojection = spliced.output;
+  withoutReprojection.replace(at, wrapped.size(), "(");
+  Transpiled viaText = viaSpirv, viaTextUnfixed = viaSpirv;
+  viaText.spirv = compileOriginal("rebuild_reproject.frag", spliced.output.c_str(), options);
+  viaTextUnfixed.spirv = compileOriginal("rebuild_reproject.frag", withoutReprojection.c_str(), options);
+  const Mat4 monoInverse = inverse(multiply(projection(0), view()));
+  for (double eye : {-1.0, 1.0}) {
+    GBuffer g = renderGBuffer(eye);
+    RenderResult a = renderLighting(g, viaSpirv.spirv, monoInverse, &viaSpirv, eye);
+    RenderResult b = renderLighting(g, viaText.spirv, monoInverse, &viaText, eye);
+    RenderResult c = renderLighting(g, viaTextUnfixed.spirv, monoInverse, &viaTextUnfixed, eye);
+    ASSERT_TRUE(a.ok() && b.ok() && c.ok());
+    double worstSpirv = 0, worstText = 0;
+    size_t pixels = 0, unfixedWrong = 0;
+    for (size_t i = 0; i < g.depthValues.size(); ++i) {
+      if (g.depthValues[i] >= 1.0f) continue;
+      ++pixels;
+      worstSpirv = std::max(worstSpirv, std::abs(double(bitsAt(a, i))));
+      worstText = std::max(worstText, std::abs(double(bitsAt(b, i))));
+      unfixedWrong += std::abs(double(bitsAt(c, i))) > 1000 * kBound;
+    }
+    std::cout << std::setprecision(3) << "[rebuild re-projected] eye " << eye << ": max |ndc - pixel| over " << pixels
+              << " pixels: SPIR-V " << worstSpirv << ", spliced text " << worstText
+              << "; without the re-projection's fix beyond 1000x the bound at " << unfixedWrong << " pixels\n";
+    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
+    EXPECT_LT(worstSpirv, kBound) << "eye " << eye;
+    EXPECT_LT(worstText, kBound) << "eye " << eye;
+    EXPECT_GT(unfixedWrong, pixels * 9 / 10) << "eye " << eye << ": without the re-projection's fix it should be off";
+  }
+}
+
 // The view-ray form as a decompiled dump writes it, one component at a time (kDumpViewRay): the
 // converted text's view-space x corrected by s.x*(|depth| - s.y)*|k| after its statement, the same
 // bound as the SPIR-V fix of the GLSL shader.
