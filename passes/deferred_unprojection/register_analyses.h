@@ -126,9 +126,11 @@ inline bool depthSampledAt(Decomposer& d, Lane z, Lane screenX, Lane screenY) {
 // The cbuffer vectors a product's components read, as the source names them, in numeric order.
 std::string rowsText(const spirv::Module& m, const std::array<const Member*, 4>& q);
 
-// The re-projections (reprojections.cpp) of points computed from the fixed ones of `rebuilds`,
-// among the products findRowProducts found with other terms (a.otherProducts).
-std::vector<Reprojection> findReprojections(RegisterAnalyses& a, const std::vector<RowProduct>& rebuilds);
+// The re-projections (reprojections.cpp), among the products findRowProducts found with other terms
+// (a.otherProducts), of points computed from the fixed ones of `rebuilds` or from the view-space x a
+// fixed per-component view ray of `rays` corrects.
+std::vector<Reprojection> findReprojections(RegisterAnalyses& a, const std::vector<RowProduct>& rebuilds,
+                                            const std::vector<ComponentRay>& rays);
 
 // The basis form (basis_rays.cpp): a position rebuilt as (bx * x + by * y + bz) * depth (+ camera)
 // over cbuffer basis vectors, as the screen-to-world form's RowProduct.

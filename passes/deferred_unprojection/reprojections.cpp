@@ -1,14 +1,17 @@
 // deferred-unprojection's re-projections: turns `clip = VP * (p, 1)` over cbuffer rows in a
 // decompiled pixel shader, p computed from a position the shader rebuilt from depth (which the
-// rebuild's text fix makes the true point), and clip x the coordinate the shader reads that same
-// depth texture at again (SSAO's samples, a screen-space reflection's march, contact shadows),
-// into a Reprojection: the text fix that moves clip x to where this eye's image has the point.
+// rebuild's text fix makes the true point: a matrix rebuild's q, or the view-space x a per-component
+// view ray corrects), and clip x the coordinate the shader reads that same depth texture at again
+// (SSAO's samples, a screen-space reflection's march, contact shadows), into a Reprojection: the
+// text fix that moves clip x to where this eye's image has the point.
 //
 // Why: the rebuild's fix makes p the point the pixel shows in this eye; VP is the mono matrix, so
 // clip is where the mono image has it, while the depth texture read there is this eye's. This eye's
 // projection is the mono one followed by x += s.x * (w - s.y) in clip space (docs/stereo-math.md),
 // so clip.x + s.x * (clip.w - s.y) is exact, in NDC units; a VP to another space (UV: u = 0.5 x +
-// 0.5 w) scales x by a = VP's row of x times InvM's column of NDC x, which the fix computes. Before
+// 0.5 w) scales x by a = VP's row of x times InvM's column of NDC x, which the fix computes (after a
+// view ray, whose x moves by |k| = 1/P00 per unit of NDC x times the depth, VP's element of x times
+// |k|). Before
 // this, correcting the rebuild alone made such a shader worse than leaving it: its samples landed
 // at mono positions in this eye's image.
 //
@@ -19,6 +22,8 @@
 #include "passes/deferred_unprojection/register_analyses.h"
 #include "passes/ir/image_instructions.h"
 
+#include <array>
+#include <optional>
 #include <set>
 
 namespace stereoshift::deferred {
@@ -73,52 +78,88 @@ std::vector<TexelRead> texelReads(RegisterAnalyses& a) {
   return reads;
 }
 
-// The rebuilds a re-projection may follow: fixed ones whose correction's column is InvM's column of
-// NDC x as the text names it, read from a depth texture.
-bool followable(const RowProduct& p) {
-  return p.reason.empty() && !p.interpolated && !p.fix.scaleFromTheMatrix && !p.fix.basisRay && p.z.texel &&
-         p.qIds[0] && p.qIds[1] && p.qIds[2];
+// A corrected position a re-projection may follow: the values it is traced back to, the depth
+// texture it was rebuilt from, and how the correction moves it along the screen's x (the column of
+// NDC x: InvM's for a rebuild, (|k|, 0, 0) in view space for a view ray, k = 1/P00).
+struct Followed {
+  std::set<uint32_t> values;
+  std::set<std::string> textures;
+  std::array<std::string, 3> column;
+  bool viewRay = false;  // only its x is corrected: p's x is the term computed from it
+};
+
+std::vector<Followed> followedPositions(const std::vector<RowProduct>& rebuilds, const std::vector<ComponentRay>& rays) {
+  std::vector<Followed> out;
+  // Fixed rebuilds whose correction's column is InvM's column of NDC x as the text names it (not
+  // scaled at run time), read from a depth texture.
+  for (const RowProduct& p : rebuilds) {
+    if (!p.reason.empty() || p.interpolated || p.fix.scaleFromTheMatrix || p.fix.basisRay || !p.z.texel ||
+        !p.qIds[0] || !p.qIds[1] || !p.qIds[2])
+      continue;
+    Followed f{{}, p.z.textures, {p.fix.column[0], p.fix.column[1], p.fix.column[2]}, false};
+    for (uint32_t id : p.qIds)
+      if (id) f.values.insert(id);
+    out.push_back(std::move(f));
+  }
+  for (const ComponentRay& r : rays)
+    if (r.reason.empty() && r.xId) out.push_back({{r.xId}, r.depth.textures, {"abs(" + r.fix.scale + ")", "0", "0"}, true});
+  return out;
+}
+
+// VP's coefficients of p's x, y and z in clip x: by the lanes of p's terms (`r4.xyzw = r2.xxxx *
+// cb0[7].xyzw + ...`: lanes 0-2 of p), or, after a view ray, the coefficient of the one term computed
+// from its x (the column has nothing in y and z). Empty where the text does not tell them.
+std::optional<std::array<std::string, 3>> rowOfX(RegisterAnalyses& a, const Member& x, const Followed& f) {
+  std::array<std::string, 3> row;
+  if (f.viewRay) {
+    row = {"", "0", "0"};
+    for (const auto& [term, c] : x.byTerm)
+      if (computedFrom(a.d, term.id, f.values, a.factorVisits)) {
+        if (!row[0].empty()) return std::nullopt;
+        row[0] = elementText(a.registers, c);
+      }
+    return row;
+  }
+  for (const auto& [term, c] : x.byTerm) {
+    if (term.lane > 2 || !row[term.lane].empty()) return std::nullopt;
+    row[term.lane] = elementText(a.registers, c);
+  }
+  return row;
 }
 
 }  // namespace
 
-std::vector<Reprojection> findReprojections(RegisterAnalyses& a, const std::vector<RowProduct>& rebuilds) {
+std::vector<Reprojection> findReprojections(RegisterAnalyses& a, const std::vector<RowProduct>& rebuilds,
+                                            const std::vector<ComponentRay>& rays) {
   std::vector<Reprojection> found;
-  if (a.otherProducts.empty() || std::none_of(rebuilds.begin(), rebuilds.end(), followable)) return found;
+  if (a.otherProducts.empty()) return found;
+  const std::vector<Followed> followed = followedPositions(rebuilds, rays);
+  if (followed.empty()) return found;
   const std::vector<TexelRead> reads = texelReads(a);
   for (const auto& clip : a.otherProducts) {
     if (!clip[0] || !clip[3]) continue;  // clip x and w
     const Member& x = *clip[0];
-    // p's axes by the lanes of its terms (`r4.xyzw = r2.xxxx * cb0[7].xyzw + ...`: lanes 0-2 of p).
-    std::array<std::optional<Lane>, 3> axis;
-    for (const auto& [term, c] : x.byTerm)
-      if (term.lane < 3 && !axis[term.lane]) axis[term.lane] = term;
-    for (const RowProduct& p : rebuilds) {
-      if (!followable(p)) continue;
-      std::set<uint32_t> q;
-      for (uint32_t id : p.qIds)
-        if (id) q.insert(id);
-      bool fromQ = true;
-      for (const auto& [term, c] : x.byTerm) fromQ = fromQ && computedFrom(a.d, term.id, q, a.factorVisits);
-      if (!fromQ) continue;
+    for (const Followed& f : followed) {
+      // Every term of p is computed from the rebuilt position; after a view ray, one of them.
+      size_t fromIt = 0;
+      for (const auto& [term, c] : x.byTerm) fromIt += computedFrom(a.d, term.id, f.values, a.factorVisits);
+      if (fromIt == 0 || (!f.viewRay && fromIt != x.byTerm.size())) continue;
       const std::set<uint32_t> clipXw{x.at.id, clip[3]->at.id};
       const auto again = std::find_if(reads.begin(), reads.end(), [&](const TexelRead& r) {
-        return p.z.textures.count(r.texture) && computedFrom(a.d, r.coordinate, clipXw, a.factorVisits);
+        return f.textures.count(r.texture) && computedFrom(a.d, r.coordinate, clipXw, a.factorVisits);
       });
       if (again == reads.end()) continue;
       Reprojection r;
       r.texture = again->texture;
-      std::array<const Member*, 4> rows = clip;
-      r.rows = rowsText(a.registers, rows);
+      r.rows = rowsText(a.registers, clip);
       r.fix.lines = {a.lines.lineOf(x.at.id), a.lines.lineOf(clip[3]->at.id)};
       r.fix.lanes = {x.at.lane, clip[3]->at.lane};
       r.fix.afterLine = std::max(r.fix.lines[0], r.fix.lines[1]);
-      for (uint32_t k = 0; k < 3; ++k) {
-        r.fix.column[k] = p.fix.column[k];
-        if (axis[k]) r.fix.rowX[k] = elementText(a.registers, x.byTerm.at(*axis[k]));
-      }
-      if (!axis[0] || !axis[1] || !axis[2])
-        r.reason = "the re-projected point's x, y and z are not lanes 0-2 of the values it is computed in";
+      r.fix.column = f.column;
+      const auto row = rowOfX(a, x, f);
+      if (row) r.fix.rowX = *row;
+      if (!row)
+        r.reason = "the re-projected point's x, y and z are not told apart by the lanes of the values it is computed in";
       else if (std::any_of(r.fix.rowX.begin(), r.fix.rowX.end(), [](const std::string& e) { return e.empty(); }))
         r.reason = "a matrix element is not a cbuffer element the source can name";
       else if (!r.fix.lines[0] || !r.fix.lines[1])

@@ -323,7 +323,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
   Decomposer& d = a.d;
   const LineMap& lines = a.lines;
   // Every lane of every float value that is one component of a product, once (by the value that
-  // computes it), in module order.
+  // computes it), in module order, kept for findReprojections.
   std::vector<Member>& members = a.members;
   std::set<Lane> seen;
   spirv::forEachFunctionInstruction(registers, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
@@ -366,8 +366,7 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
         RowProduct seen;
         seen.interpolated = true;
         seen.rows = rowsText(registers, q);
-        for (const auto& [term, c] : any->byTerm)
-          seen.x |= sourcesOf(flow, d, term);
+        for (const auto& [term, c] : any->byTerm) seen.x |= sourcesOf(flow, d, term);
         for (uint32_t i = 0; i < 4; ++i)
           if (q[i]) seen.fix.afterLine = std::max(seen.fix.afterLine, lines.lineOf(q[i]->at.id));
         found.push_back(std::move(seen));
@@ -377,10 +376,12 @@ std::vector<RowProduct> findRowProducts(RegisterAnalyses& a) {
       continue;
     }
     if (!q[3] && !*scaled) continue;  // (ndc, depth, 1) needs q.w for its divide: not a rebuild
-    // Scaled terms must be the screen coordinate times that very depth.
+    // Scaled terms must be the coordinate times that very depth; else q is a point (findReprojections).
     if (*scaled && (!scaledScreenTerm(d, flow, *x, *z, 1u, a.factorVisits) ||
-                    !scaledScreenTerm(d, flow, *y, *z, 2u, a.factorVisits)))
+                    !scaledScreenTerm(d, flow, *y, *z, 2u, a.factorVisits))) {
+      a.otherProducts.push_back(q);
       continue;
+    }
     // A pixel's x that is a screen input as it is, or scaled by one constant or uniform (a UV, a pixel
     // position), is not known to run from -1 to 1 across the screen: a matrix from UV space has
     // twice InvM's column where the correction needs InvM's own. Reported, not fixed.
@@ -619,6 +620,7 @@ std::vector<ComponentRay> findComponentRays(RegisterAnalyses& a) {
     r.fix.depthLine = lines.lineOf(c.depth.id);
     r.fix.depthLane = c.depth.lane;
     r.fix.scale = scaleText(registers, c);
+    r.xId = c.at.id;
     if (c.notNdc)
       r.reason = "the pixel's x is a screen input read as it is: the pixel position (its element a screen size, not "
                  "1/P00), or a texture coordinate that may carry a UV, NDC or a colour; not known to be a view ray, "
@@ -718,7 +720,7 @@ DecompiledForms findDecompiledForms(const spirv::Module& registers, bool hlsl, c
   forms.products = findRowProducts(analyses);
   forms.rays = findComponentRays(analyses);
   forms.interpolatedRays = findInterpolatedRays(analyses);
-  forms.reprojections = findReprojections(analyses, forms.products);
+  forms.reprojections = findReprojections(analyses, forms.products, forms.rays);
   for (RowProduct& p : findBasisRays(analyses)) forms.products.push_back(std::move(p));
   // A screen-to-world product's x * z term is a product of the screen and the depth like a view ray's
   // x: one correction, the product's.

@@ -69,6 +69,7 @@ struct Reprojection {
 struct ComponentRay {
   ViewRayTextFix fix;
   Sources x, depth;
+  uint32_t xId = 0;  // the register copy's value of x (findReprojections)
   std::string reason;  // empty when x and the depth have lines of the main file
 };
 

@@ -771,6 +771,11 @@ class DeferredRender : public ::testing::Test {
   void checkViewVector(const char* name, const char* text, const char* tag, bool screenToWorldForm = false,
                        bool fromCamera = false, bool pixelSpace = false);
 
+  // The re-projection check: the dump `text` writes the NDC x its corrected point lands at, projected
+  // back through cb0[7..10], minus the pixel's; `viewSpace`: it rebuilds a view-space point from the
+  // linear depth (the inverse projection fed), else a world-space one from the depth buffer.
+  void checkDumpReprojection(const char* name, const std::string& text, bool viewSpace, const char* tag);
+
   bool splicedText_ = false;  // the fix through the GLSL splice's text (compileTranspiled)
   std::unique_ptr<VulkanContext> context_;
   std::vector<uint32_t> gbufferVert_, albedoFrag_, normalFrag_, fullScreenVert_;
@@ -1823,11 +1828,9 @@ std::string reprojectionDump() {
 // converted dump with the re-projection's block taken out (the rebuild alone corrected) lands where
 // the mono image has the point, off by s.x*(1 - s.y/w) in NDC: worse than no fix for a screen-space
 // effect, whose samples of this eye's image then miss by that much.
-TEST_F(DeferredRender, DumpStyleReprojectionOfTheCorrectedPointLandsOnItsPixelInThisEye) {
+void DeferredRender::checkDumpReprojection(const char* name, const std::string& text, bool viewSpace, const char* tag) {
   constexpr double kBound = 4e-6;  // a few ulps of NDC values near 1, through two matrix products
-  const std::string text = reprojectionDump();
   ASSERT_FALSE(text.empty());
-  const char* name = "4b5c6d7e8f901234-ps_replace.txt";
   TranspileResult converted = transpile(SourceFile{name, text}, dumpConversion(TranspileOptions{}));
   ASSERT_TRUE(converted.ok) << converted.diagnostics.format();
   ASSERT_EQ(converted.report["passes"]["deferred-unprojection"]["fixed"].size(), 2u) << converted.report.dump(2);
@@ -1842,10 +1845,11 @@ TEST_F(DeferredRender, DumpStyleReprojectionOfTheCorrectedPointLandsOnItsPixelIn
   const auto original = compileOriginal(name, text.c_str(), TranspileOptions{});
   const auto fixedDump = compileOriginal(name, converted.output.c_str(), TranspileOptions{});
   const auto rebuildOnlyDump = compileOriginal(name, rebuildOnly.c_str(), TranspileOptions{});
-  const Mat4 viewMatrix = view();
+  const Mat4 viewMatrix = viewSpace ? Mat4{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1} : view();
   const Mat4 monoInverse = inverse(multiply(projection(0), viewMatrix));
   for (double eye : {-1.0, 1.0}) {
     GBuffer g = renderGBuffer(eye);
+    if (viewSpace) g = linearDepth(g, projection(0));
     DumpFeed mono{false, false}, stereo{false, true};
     RenderResult truth = renderLighting(g, original, inverse(multiply(projection(eye), viewMatrix)), nullptr, eye, mono);
     RenderResult fixed = renderLighting(g, fixedDump, monoInverse, nullptr, eye, stereo);
@@ -1860,14 +1864,51 @@ TEST_F(DeferredRender, DumpStyleReprojectionOfTheCorrectedPointLandsOnItsPixelIn
       worstFix = std::max(worstFix, std::abs(double(bitsAt(fixed, i))));
       unfixedWrong += std::abs(double(bitsAt(unfixed, i))) > 1000 * kBound;
     }
-    std::cout << std::setprecision(3) << "[dump re-projection] eye " << eye << ": max |ndc - pixel| over " << pixels
+    std::cout << std::setprecision(3) << "[" << tag << "] eye " << eye << ": max |ndc - pixel| over " << pixels
               << " pixels: truth " << worstTruth << ", fix " << worstFix
               << "; the rebuild alone corrected: beyond 1000x the bound at " << unfixedWrong << " pixels\n";
     EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
-    EXPECT_LT(worstTruth, kBound) << "eye " << eye;
+    // A view ray spelled per component reads only the inverse projection's diagonal, so the original
+    // with this eye's (sheared) inverse is no truth for it; the fix is checked against the pixel alone.
+    if (!viewSpace) EXPECT_LT(worstTruth, kBound) << "eye " << eye;
     EXPECT_LT(worstFix, kBound) << "eye " << eye;
     EXPECT_GT(unfixedWrong, pixels * 9 / 10) << "eye " << eye << ": without the re-projection's fix it should be off";
   }
+}
+
+TEST_F(DeferredRender, DumpStyleReprojectionOfTheCorrectedPointLandsOnItsPixelInThisEye) {
+  checkDumpReprojection("4b5c6d7e8f901234-ps_replace.txt", reprojectionDump(), false, "dump re-projection");
+}
+
+// The same after a per-component view ray (kDumpViewRay's view-space point, its x corrected by the
+// ray's fix), projected back through the projection: the re-projection's a is VP's element of x
+// times |k|, k = 1/P00 the ray's own element.
+TEST_F(DeferredRender, DumpStyleReprojectionOfACorrectedViewRayLandsOnItsPixelInThisEye) {
+  std::string text = kDumpPrologue + R"(  r4.x = r2.x;
+  r2.xy = r2.xy * r1.xx;
+  r3.x = r2.x * cb0[0].x;
+  r3.y = r2.y * cb0[1].y;
+  r3.z = -r1.x;
+  r5.xyzw = cb0[8].xyzw * r3.yyyy;
+  r5.xyzw = r3.xxxx * cb0[7].xyzw + r5.xyzw;
+  r5.xyzw = r3.zzzz * cb0[9].xyzw + r5.xyzw;
+  r5.xyzw = cb0[10].xyzw + r5.xyzw;
+  r5.xy = r5.xy / r5.ww;
+  r0.xy = r5.xy * float2(0.5,0.5) + float2(0.5,0.5);
+  r0.xy = r0.xy * cb0[4].xy;
+  r0.xy = (int2)r0.xy;
+  r0.zw = float2(0,0);
+  r0.z = t2.Load(r0.xyz).x;
+  r0.w = cmp(1e30 < r0.z);
+  if (r0.w != 0) discard;
+  uiDest.x = asuint(r5.x - r4.x);
+  o0.xyzw = float4(uiDest.x & 0xffu, (uiDest.x >> 8) & 0xffu, (uiDest.x >> 16) & 0xffu, uiDest.x >> 24) / 255.0;
+  return;
+}
+)";
+  text.replace(text.find("float4 r0,r1,r2,r3;"), std::string("float4 r0,r1,r2,r3;").size(), "float4 r0,r1,r2,r3,r4,r5;");
+  text.replace(text.find("float4 cb0[7];"), std::string("float4 cb0[7];").size(), "float4 cb0[11];");
+  checkDumpReprojection("4b5c6d7e8f901235-ps_replace.txt", text, true, "dump view ray re-projection");
 }
 
 }  // namespace
