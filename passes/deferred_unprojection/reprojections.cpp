@@ -11,9 +11,8 @@
 // so clip.x + s.x * (clip.w - s.y) is exact, in NDC units; a VP to another space (UV: u = 0.5 x +
 // 0.5 w) scales x by a = VP's row of x times InvM's column of NDC x, which the fix computes (after a
 // view ray, whose x moves by |k| = 1/P00 per unit of NDC x times the depth, VP's element of x times
-// |k|). Before
-// this, correcting the rebuild alone made such a shader worse than leaving it: its samples landed
-// at mono positions in this eye's image.
+// |k|). Before this, correcting the rebuild alone made such a shader worse than leaving it: its
+// samples landed at mono positions in this eye's image.
 //
 // Only where the depth texture is read at it: a shadow map or a projector's texture read at a
 // light-space transform of the same point was drawn once for both eyes and stays mono. What a
@@ -44,23 +43,34 @@ std::vector<uint32_t> valueOperands(const Instruction& def) {
   return {def.operands.begin() + std::min(from, to), def.operands.begin() + to};
 }
 
-// Whether `from` is computed from one of `targets`: through every instruction (a loop's phi too),
-// looking at each value once.
-bool computedFrom(const Decomposer& d, uint32_t from, const std::set<uint32_t>& targets, size_t& visits) {
-  std::set<uint32_t> seen;
-  std::vector<uint32_t> stack{from};
-  while (!stack.empty()) {
-    const uint32_t id = stack.back();
-    stack.pop_back();
-    if (targets.count(id)) return true;
-    if (!seen.insert(id).second) continue;
-    ++visits;
-    if (const Instruction* def = d.definition(id))
-      for (uint32_t operand : valueOperands(*def))
-        if (d.definition(operand)) stack.push_back(operand);
+// The values computed from `seeds` (through every instruction, a loop's phi too), seeds included:
+// one pass over the module in order per loop nesting it takes to settle, so each question below is a
+// lookup, whatever the number of products and reads.
+class Dependents {
+ public:
+  explicit Dependents(const spirv::Module& m) {
+    spirv::forEachFunctionInstruction(m, [&](const Instruction& inst, const spirv::Function&, const spirv::Block&) {
+      if (inst.resultId) order_.push_back(&inst);
+    });
   }
-  return false;
-}
+  size_t size() const { return order_.size(); }
+  std::set<uint32_t> of(std::set<uint32_t> reached, size_t& work) const {
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (const Instruction* inst : order_) {
+        ++work;
+        if (reached.count(inst->resultId)) continue;
+        const std::vector<uint32_t> operands = valueOperands(*inst);
+        if (std::any_of(operands.begin(), operands.end(), [&](uint32_t id) { return reached.count(id) > 0; }))
+          changed = reached.insert(inst->resultId).second || changed;
+      }
+    }
+    return reached;
+  }
+
+ private:
+  std::vector<const Instruction*> order_;
+};
 
 // A texel read: the texture it reads and the coordinate it reads it at.
 struct TexelRead {
@@ -82,7 +92,7 @@ std::vector<TexelRead> texelReads(RegisterAnalyses& a) {
 // texture it was rebuilt from, and how the correction moves it along the screen's x (the column of
 // NDC x: InvM's for a rebuild, (|k|, 0, 0) in view space for a view ray, k = 1/P00).
 struct Followed {
-  std::set<uint32_t> values;
+  std::set<uint32_t> values;  // with Dependents::of, every value computed from them
   std::set<std::string> textures;
   std::array<std::string, 3> column;
   bool viewRay = false;  // only its x is corrected: p's x is the term computed from it
@@ -114,7 +124,7 @@ std::optional<std::array<std::string, 3>> rowOfX(RegisterAnalyses& a, const Memb
   if (f.viewRay) {
     row = {"", "0", "0"};
     for (const auto& [term, c] : x.byTerm)
-      if (computedFrom(a.d, term.id, f.values, a.factorVisits)) {
+      if (f.values.count(term.id)) {
         if (!row[0].empty()) return std::nullopt;
         row[0] = elementText(a.registers, c);
       }
@@ -133,20 +143,28 @@ std::vector<Reprojection> findReprojections(RegisterAnalyses& a, const std::vect
                                             const std::vector<ComponentRay>& rays) {
   std::vector<Reprojection> found;
   if (a.otherProducts.empty()) return found;
-  const std::vector<Followed> followed = followedPositions(rebuilds, rays);
+  std::vector<Followed> followed = followedPositions(rebuilds, rays);
   if (followed.empty()) return found;
+  const Dependents dependents(a.registers);
+  const size_t start = a.factorVisits;
+  constexpr size_t kPassesPerShader = 256;
+  for (Followed& f : followed) f.values = dependents.of(std::move(f.values), a.factorVisits);
   const std::vector<TexelRead> reads = texelReads(a);
   for (const auto& clip : a.otherProducts) {
     if (!clip[0] || !clip[3]) continue;  // clip x and w
     const Member& x = *clip[0];
+    std::optional<std::set<uint32_t>> fromClip;  // what clip x and w reach, once per product
     for (const Followed& f : followed) {
       // Every term of p is computed from the rebuilt position; after a view ray, one of them.
       size_t fromIt = 0;
-      for (const auto& [term, c] : x.byTerm) fromIt += computedFrom(a.d, term.id, f.values, a.factorVisits);
+      for (const auto& [term, c] : x.byTerm) fromIt += f.values.count(term.id);
       if (fromIt == 0 || (!f.viewRay && fromIt != x.byTerm.size())) continue;
-      const std::set<uint32_t> clipXw{x.at.id, clip[3]->at.id};
+      // One pass per product: a shader of a great many products (a fuzzer's) stops at a budget
+      // linear in its size rather than walking it once for each.
+      if (!fromClip && a.factorVisits - start > kPassesPerShader * dependents.size()) return found;
+      if (!fromClip) fromClip = dependents.of({x.at.id, clip[3]->at.id}, a.factorVisits);
       const auto again = std::find_if(reads.begin(), reads.end(), [&](const TexelRead& r) {
-        return f.textures.count(r.texture) && computedFrom(a.d, r.coordinate, clipXw, a.factorVisits);
+        return f.textures.count(r.texture) && fromClip->count(r.coordinate);
       });
       if (again == reads.end()) continue;
       Reprojection r;
