@@ -775,6 +775,10 @@ class DeferredRender : public ::testing::Test {
   // back through cb0[7..10], minus the pixel's; `viewSpace`: it rebuilds a view-space point from the
   // linear depth (the inverse projection fed), else a world-space one from the depth buffer.
   void checkDumpReprojection(const char* name, const std::string& text, bool viewSpace, const char* tag);
+  // The same for a GLSL shader, through the SPIR-V route and the spliced text (its re-projection
+  // through `wrapped`), and that text with the wrapper taken out (the rebuild alone corrected).
+  void checkReprojectionLandsOnItsPixel(const char* name, const char* text, const TranspileOptions& options,
+                                        const std::string& wrapped, bool viewSpace, const char* tag);
 
   bool splicedText_ = false;  // the fix through the GLSL splice's text (compileTranspiled)
   std::unique_ptr<VulkanContext> context_;
@@ -1513,35 +1517,30 @@ TEST_F(DeferredRender, SplicedGlslViewRayWithinBoundOfTheTruePosition) {
 // 2.4e-7 (lavapipe, both eyes, both routes); with the view ray corrected and the re-projection's fix
 // taken out of the text, off by e*S*(1 - C/w): beyond 1000 times the bound at 57618 of 63100 pixels
 // (left) and 57930 of 63470 (right), right only near the convergence depth.
-TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
+void DeferredRender::checkReprojectionLandsOnItsPixel(const char* name, const char* text, const TranspileOptions& options,
+                                                      const std::string& wrapped, bool viewSpace, const char* tag) {
   constexpr double kBound = 4e-6;  // a few ulps of NDC values near 1, through two matrix products
-  const Mat4 monoInverseProjection = inverse(projection(0));
   const Mat4 mono = projection(0);
-  TranspileOptions options;
-  options.defines = {"REPROJECT"};
-  Transpiled viaSpirv = compileTranspiled("reproject.frag", kViewRayFrag, options);
+  const Mat4 monoInverse = inverse(viewSpace ? mono : multiply(mono, view()));
+  Transpiled viaSpirv = compileTranspiled(name, text, options);
   TranspileOptions textOptions = options;
   textOptions.target = TargetLanguage::Auto;
-  TranspileResult spliced = transpile(SourceFile{"reproject.frag", kViewRayFrag}, textOptions);
+  TranspileResult spliced = transpile(SourceFile{name, text}, textOptions);
   ASSERT_TRUE(spliced.ok) << spliced.diagnostics.format();
   ASSERT_EQ(spliced.report.value("route", std::string()), "glsl-source-splice") << spliced.report.dump(2);
-  const std::string wrapped = "stereoshift_reproject_frame_projection(";
   size_t at = spliced.output.find(wrapped, spliced.output.find("void main"));
   ASSERT_NE(at, std::string::npos) << spliced.output;
   std::string withoutReprojection = spliced.output;
   withoutReprojection.replace(at, wrapped.size(), "(");
   Transpiled viaText = viaSpirv, viaTextUnfixed = viaSpirv;
-  viaText.spirv = compileOriginal("reproject.frag", spliced.output.c_str(), options);
-  viaTextUnfixed.spirv = compileOriginal("reproject.frag", withoutReprojection.c_str(), options);
+  viaText.spirv = compileOriginal(name, spliced.output.c_str(), options);
+  viaTextUnfixed.spirv = compileOriginal(name, withoutReprojection.c_str(), options);
   for (double eye : {-1.0, 1.0}) {
     GBuffer g = renderGBuffer(eye);
-    GBuffer linear = g;
-    for (size_t i = 0; i < g.depthValues.size(); ++i)
-      linear.depth.rgba[4 * i] =
-          g.depthValues[i] >= 1.0f ? 0.0f : float(mono[14] / (double(g.depthValues[i]) + mono[10]));
-    RenderResult a = renderLighting(linear, viaSpirv.spirv, monoInverseProjection, &viaSpirv, eye);
-    RenderResult b = renderLighting(linear, viaText.spirv, monoInverseProjection, &viaText, eye);
-    RenderResult c = renderLighting(linear, viaTextUnfixed.spirv, monoInverseProjection, &viaTextUnfixed, eye);
+    if (viewSpace) g = linearDepth(g, mono);
+    RenderResult a = renderLighting(g, viaSpirv.spirv, monoInverse, &viaSpirv, eye);
+    RenderResult b = renderLighting(g, viaText.spirv, monoInverse, &viaText, eye);
+    RenderResult c = renderLighting(g, viaTextUnfixed.spirv, monoInverse, &viaTextUnfixed, eye);
     ASSERT_TRUE(a.ok() && b.ok() && c.ok());
     double worstSpirv = 0, worstText = 0;
     size_t pixels = 0, unfixedWrong = 0;
@@ -1552,7 +1551,7 @@ TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
       worstText = std::max(worstText, std::abs(double(bitsAt(b, i))));
       unfixedWrong += std::abs(double(bitsAt(c, i))) > 1000 * kBound;
     }
-    std::cout << std::setprecision(3) << "[view ray re-projected] eye " << eye << ": max |ndc - pixel| over " << pixels
+    std::cout << std::setprecision(3) << "[" << tag << "] eye " << eye << ": max |ndc - pixel| over " << pixels
               << " pixels: SPIR-V " << worstSpirv << ", spliced text " << worstText
               << "; without the re-projection's fix beyond 1000x the bound at " << unfixedWrong << " pixels\n";
     EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
@@ -1560,6 +1559,13 @@ TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
     EXPECT_LT(worstText, kBound) << "eye " << eye;
     EXPECT_GT(unfixedWrong, pixels * 9 / 10) << "eye " << eye << ": without the re-projection's fix it should be off";
   }
+}
+
+TEST_F(DeferredRender, ReprojectedViewRayPositionLandsOnItsPixelInThisEye) {
+  TranspileOptions options;
+  options.defines = {"REPROJECT"};
+  checkReprojectionLandsOnItsPixel("reproject.frag", kViewRayFrag, options, "stereoshift_reproject_frame_projection(", true,
+                                   "view ray re-projected");
 }
 
 // The matrix form's rebuild re-projected: the world position rebuilt through the inverse
@@ -1596,49 +1602,12 @@ void main()
 // re-projection's fix taken out of the text (the rebuild alone corrected), off by s*(1 - C/w) at
 // > 90 % of the pixels.
 TEST_F(DeferredRender, ReprojectedRebuiltPositionLandsOnItsPixelInThisEye) {
-  constexpr double kBound = 4e-6;  // a few ulps of NDC values near 1, through two matrix products
-  TranspileOptions options;
-  Transpiled viaSpirv = compileTranspiled("rebuild_reproject.frag", kRebuildReprojectedFrag, options);
+  Transpiled viaSpirv = compileTranspiled("rebuild_reproject.frag", kRebuildReprojectedFrag, TranspileOptions{});
   const auto& pass = viaSpirv.report["passes"]["deferred-unprojection"];
   ASSERT_EQ(pass["fixed"].size(), 2u) << pass.dump(2);
   EXPECT_EQ(pass["fixed"][1].value("construct", ""), "matrix * rebuilt position, read at in the depth texture");
-  TranspileOptions textOptions = options;
-  textOptions.target = TargetLanguage::Auto;
-  TranspileResult spliced = transpile(SourceFile{"rebuild_reproject.frag", kRebuildReprojectedFrag}, textOptions);
-  ASSERT_TRUE(spliced.ok) << spliced.diagnostics.format();
-  ASSERT_EQ(spliced.report.value("route", std::string()), "glsl-source-splice") << spliced.report.dump(2);
-  const std::string wrapped = "stereoshift_reproject_frame_viewProj(";
-  size_t at = spliced.output.find(wrapped, spliced.output.find("void main"));
-  ASSERT_NE(at, std::string::npos) << spliced.output;
-  std::string withoutReprojection = spliced.output;
-  withoutReprojection.replace(at, wrapped.size(), "(");
-  Transpiled viaText = viaSpirv, viaTextUnfixed = viaSpirv;
-  viaText.spirv = compileOriginal("rebuild_reproject.frag", spliced.output.c_str(), options);
-  viaTextUnfixed.spirv = compileOriginal("rebuild_reproject.frag", withoutReprojection.c_str(), options);
-  const Mat4 monoInverse = inverse(multiply(projection(0), view()));
-  for (double eye : {-1.0, 1.0}) {
-    GBuffer g = renderGBuffer(eye);
-    RenderResult a = renderLighting(g, viaSpirv.spirv, monoInverse, &viaSpirv, eye);
-    RenderResult b = renderLighting(g, viaText.spirv, monoInverse, &viaText, eye);
-    RenderResult c = renderLighting(g, viaTextUnfixed.spirv, monoInverse, &viaTextUnfixed, eye);
-    ASSERT_TRUE(a.ok() && b.ok() && c.ok());
-    double worstSpirv = 0, worstText = 0;
-    size_t pixels = 0, unfixedWrong = 0;
-    for (size_t i = 0; i < g.depthValues.size(); ++i) {
-      if (g.depthValues[i] >= 1.0f) continue;
-      ++pixels;
-      worstSpirv = std::max(worstSpirv, std::abs(double(bitsAt(a, i))));
-      worstText = std::max(worstText, std::abs(double(bitsAt(b, i))));
-      unfixedWrong += std::abs(double(bitsAt(c, i))) > 1000 * kBound;
-    }
-    std::cout << std::setprecision(3) << "[rebuild re-projected] eye " << eye << ": max |ndc - pixel| over " << pixels
-              << " pixels: SPIR-V " << worstSpirv << ", spliced text " << worstText
-              << "; without the re-projection's fix beyond 1000x the bound at " << unfixedWrong << " pixels\n";
-    EXPECT_GT(pixels, size_t(kSize) * kSize / 2);
-    EXPECT_LT(worstSpirv, kBound) << "eye " << eye;
-    EXPECT_LT(worstText, kBound) << "eye " << eye;
-    EXPECT_GT(unfixedWrong, pixels * 9 / 10) << "eye " << eye << ": without the re-projection's fix it should be off";
-  }
+  checkReprojectionLandsOnItsPixel("rebuild_reproject.frag", kRebuildReprojectedFrag, TranspileOptions{},
+                                   "stereoshift_reproject_frame_viewProj(", false, "rebuild re-projected");
 }
 
 // The view-ray form as a decompiled dump writes it, one component at a time (kDumpViewRay): the

@@ -450,43 +450,30 @@ HlslSpliceResult splicePixelCorrections(const std::string& source, const Deferre
     result.line = static_cast<int>(at.errorLine);
     std::string text = lines.line(at.errorLine);
     result.column = static_cast<int>(std::min(text.find_first_not_of(" \t"), text.size())) + 1;
-    return result;
   };
-  for (const auto& fix : facts.textFixes) {
-    Located at = locate(lines, fix);
-    if (!at.error.empty()) return failAt(at, "position rebuild");
-    std::string indent = indentOf(lines.line(fix.afterLine));
-    insertAfterLine(edits, lines, source, fix.afterLine, correctionBlock(fix, at, indent, edits.newline()));
-    ++result.sites;
-  }
-  for (const auto& fix : facts.cameraTextFixes) {
-    Located at = locateCamera(lines, fix);
-    if (!at.error.empty()) return failAt(at, "camera");
-    std::string indent = indentOf(lines.line(fix.line));
-    insertAfterLine(edits, lines, source, fix.line, cameraBlock(fix, at, indent, edits.newline()));
-    ++result.sites;
-  }
-  for (const auto& fix : facts.reprojectionTextFixes) {
-    Located at = locateReprojection(lines, fix);
-    if (!at.error.empty()) return failAt(at, "re-projection");
-    std::string indent = indentOf(lines.line(fix.afterLine));
-    insertAfterLine(edits, lines, source, fix.afterLine, reprojectionBlock(fix, at, indent, edits.newline()));
-    ++result.sites;
-  }
-  for (const auto& fix : facts.interpolatedRayTextFixes) {
-    Located at = locateInterpolatedRay(lines, fix);
-    if (!at.error.empty()) return failAt(at, "position rebuild");
-    std::string indent = indentOf(lines.line(fix.afterLine));
-    insertAfterLine(edits, lines, source, fix.afterLine, interpolatedRayBlock(fix, at, indent, edits.newline()));
-    ++result.sites;
-  }
-  for (const auto& fix : facts.rayTextFixes) {
-    Located at = locateRay(lines, fix);
-    if (!at.error.empty()) return failAt(at, "view-space position");
-    std::string indent = indentOf(lines.line(fix.line));
-    insertAfterLine(edits, lines, source, fix.line, rayBlock(fix, at, indent, edits.newline()));
-    ++result.sites;
-  }
+  // Each fix of one kind: where its values live in the text (or why it cannot be placed), its block
+  // after the line `after` names. False when one cannot be placed (result says where and why).
+  auto place = [&](const auto& fixes, auto locateFix, auto block, const std::string& what, auto after) {
+    for (const auto& fix : fixes) {
+      Located at = locateFix(lines, fix);
+      if (!at.error.empty()) {
+        failAt(at, what);
+        return false;
+      }
+      const uint32_t line = after(fix);
+      insertAfterLine(edits, lines, source, line, block(fix, at, indentOf(lines.line(line)), edits.newline()));
+      ++result.sites;
+    }
+    return true;
+  };
+  auto afterLine = [](const auto& fix) { return fix.afterLine; };
+  auto line = [](const auto& fix) { return fix.line; };
+  if (!place(facts.textFixes, locate, correctionBlock, "position rebuild", afterLine) ||
+      !place(facts.cameraTextFixes, locateCamera, cameraBlock, "camera", line) ||
+      !place(facts.reprojectionTextFixes, locateReprojection, reprojectionBlock, "re-projection", afterLine) ||
+      !place(facts.interpolatedRayTextFixes, locateInterpolatedRay, interpolatedRayBlock, "position rebuild", afterLine) ||
+      !place(facts.rayTextFixes, locateRay, rayBlock, "view-space position", line))
+    return result;
   // The dump's own declaration (its "3Dmigoto declarations") is the one 3Dmigoto binds.
   if (!top.names.count("StereoParams")) {
     for (size_t k = 0; k + 2 < view.tokens.size(); ++k)
