@@ -343,15 +343,22 @@ std::string cameraBlock(const CameraTextFix& fix, const Located& at, const std::
   return t;
 }
 
+// Where the two values a fix reads and writes live, found as a rebuild's components 0 and 3
+// (locate()): each on the line of its statement, neither written or read again up to `afterLine`.
+Located locatePair(const Lines& lines, uint32_t afterLine, const std::array<uint32_t, 2>& at,
+                   const std::array<uint32_t, 2>& lanes) {
+  RowProductTextFix asProduct;
+  asProduct.afterLine = afterLine;
+  asProduct.present = {true, false, false, true};
+  asProduct.lines = {at[0], 0, 0, at[1]};
+  asProduct.lanes = {lanes[0], 0, 0, lanes[1]};
+  return locate(lines, asProduct);
+}
+
 // Where a re-projection's clip x and w live: as a rebuild's components 0 and 3 (locate()), the
 // lines between them and the block neither rewriting nor reading x.
 Located locateReprojection(const Lines& lines, const ReprojectionTextFix& fix) {
-  RowProductTextFix asProduct;
-  asProduct.afterLine = fix.afterLine;
-  asProduct.present = {true, false, false, true};
-  asProduct.lines = {fix.lines[0], 0, 0, fix.lines[1]};
-  asProduct.lanes = {fix.lanes[0], 0, 0, fix.lanes[1]};
-  Located at = locate(lines, asProduct);
+  Located at = locatePair(lines, fix.afterLine, fix.lines, fix.lanes);
   if (at.error.find("rebuilt position") != std::string::npos) {
     // Say it of what it is.
     for (const auto& [from, to] : {std::pair<std::string, std::string>{"the rebuilt position's statements", "clip x and w"},
@@ -380,12 +387,7 @@ std::string reprojectionBlock(const ReprojectionTextFix& fix, const Located& at,
 // Where an interpolated ray's p.x and p.z live (as a rebuild's components 0 and 3, locate()), and the
 // name of the pixel-position input (`float4 v0 : SV_Position0`) whose x the block reads.
 Located locateInterpolatedRay(const Lines& lines, const InterpolatedRayTextFix& fix) {
-  RowProductTextFix asProduct;
-  asProduct.afterLine = fix.afterLine;
-  asProduct.present = {true, false, false, true};
-  asProduct.lines = {fix.lines[0], 0, 0, fix.lines[1]};
-  asProduct.lanes = {fix.lanes[0], 0, 0, fix.lanes[1]};
-  Located at = locate(lines, asProduct);
+  Located at = locatePair(lines, fix.afterLine, fix.lines, fix.lanes);
   if (!at.error.empty()) return at;
   static const std::regex position(R"(\b([A-Za-z_]\w*)\s*:\s*SV_Position\d*\b)", std::regex::icase);
   std::smatch m;
