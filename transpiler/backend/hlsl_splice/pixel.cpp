@@ -212,12 +212,11 @@ std::string halfWidthLines(const std::array<std::string, 3>& columnX, const std:
                            const std::array<std::string, 4>& translation, bool affine, const std::string& h,
                            const std::string& in, const std::string& nl) {
   const std::string x = std::string(kPrefix) + "_column";
-  auto vec3 = [](const auto& c) { return float3Of(c); };
-  std::string t = in + "float3 " + x + " = " + vec3(columnX) + ";" + nl;
+  std::string t = in + "float3 " + x + " = " + float3Of(columnX) + ";" + nl;
   if (affine)  // M (c z, c' z, z, 1): the point minus the camera (M's constant column) is z (x c + y c' + z)
-    t += in + "float " + h + " = -dot(" + vec3(columnZ) + ", " + x + ") / dot(" + x + ", " + x + ");" + nl;
+    t += in + "float " + h + " = -dot(" + float3Of(columnZ) + ", " + x + ") / dot(" + x + ", " + x + ");" + nl;
   else
-    t += in + "float " + h + " = -dot(" + vec3(translation) + " * " + columnZ[3] + " - " + vec3(columnZ) + " * " +
+    t += in + "float " + h + " = -dot(" + float3Of(translation) + " * " + columnZ[3] + " - " + float3Of(columnZ) + " * " +
          translation[3] + ", " + x + ") / (dot(" + x + ", " + x + ") * " + columnZ[3] + ");" + nl;
   t += in + h + " = " + h + " > 0.25 ? " + h + " : 1;" + nl;
   return t;
